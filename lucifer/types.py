@@ -55,6 +55,11 @@ class GroundingResult(BaseModel):
     status: Status = Status.OK
     backend: str = "builtin"
     report_id: str | None = None
+    denied: list[GroundedObject] = Field(
+        default_factory=list,
+        description="Claims the report explicitly denies or revokes ('the fire at the bakery is out'). "
+        "Not part of SPEC §2 objects; belief maintenance uses them to revise earlier reports.",
+    )
     errors: list[str] = Field(default_factory=list, description="Why a fallback happened, if one did.")
     latency_s: float = 0.0
 
