@@ -105,7 +105,15 @@ class QueryOption(_Strict):
     """An information-gathering query a client can run at an information location."""
 
     name: str
-    description: str = ""
+    description: str = Field(default="", description="What the query finds and when it helps.")
+    info_type: str | None = Field(
+        default=None,
+        description="Optional: the mission information the query reveals (victim | hazard | safe_route).",
+    )
+    cues: list[str] = Field(
+        default_factory=list,
+        description="Optional example observations that call for this query; matched like the description.",
+    )
 
     _n = field_validator("name")(classmethod(lambda cls, v: _clean_name(v)))
 
