@@ -1,0 +1,1 @@
+"""Offline language analysis for the builtin grounding backend (no LLM)."""

@@ -1,0 +1,661 @@
+"""The builtin report analyzer: places, category cues, self-repairs, negation and KB relations.
+
+It works in stages that the grounding graph exposes as separate nodes:
+
+* :meth:`ReportAnalyzer.extract` finds place mentions (landmark names and aliases from the KB),
+  resolves relational references through KB relations ("the shop attached to the bakery"),
+  and applies self-repairs ("the bank — no wait — the bakery") and place negation ("not the
+  school"), marking each mention ``active``, ``retracted``, ``negated`` or ``reference``.
+* :meth:`ReportAnalyzer.classify` finds category cues (glossary terms, category names and
+  descriptions, and a role vocabulary mapped onto the KB's categories), applies cue negation
+  and category repairs, and attaches cues to places clause by clause.
+
+Everything the analyzer knows about places and categories comes from the knowledge base; the
+built-in vocabulary is about *roles* (undesirable / desirable / critical), so a KB with other
+category names works unchanged. MiniLM embeddings break ties the vocabulary cannot (a role
+shared by several categories, a relational head noun that fits several landmarks, an unknown
+relation phrase).
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field, replace
+from typing import Literal
+
+import numpy as np
+
+from lucifer.embeddings import Embedder
+from lucifer.kb import KnowledgeBase, Relation, Role
+from lucifer.language import lexicon as lx
+from lucifer.language.text import PhraseMatcher, Tokens, norm, norm_phrase, tokenize
+
+MentionStatus = Literal["active", "retracted", "negated", "reference"]
+
+
+@dataclass(frozen=True)
+class PlaceMention:
+    start_tok: int
+    end_tok: int
+    start: int
+    end: int
+    text: str
+    landmark: str
+    status: MentionStatus = "active"
+    reason: str = ""
+    via: str | None = None  # "pharmacy attached_to bakery" when reached through a relation
+
+    def as_dict(self) -> dict[str, object]:
+        d: dict[str, object] = {"text": self.text, "span": [self.start, self.end], "landmark": self.landmark,
+                                "status": self.status}
+        if self.reason:
+            d["reason"] = self.reason
+        if self.via:
+            d["via"] = self.via
+        return d
+
+
+@dataclass(frozen=True)
+class CueMention:
+    start_tok: int
+    end_tok: int
+    start: int
+    end: int
+    text: str
+    category: str
+    source: str  # glossary | category | lexicon | embedding
+    polarity: Literal["affirmed", "denied"] = "affirmed"
+    status: Literal["active", "retracted"] = "active"
+    reason: str = ""
+
+    def as_dict(self) -> dict[str, object]:
+        d: dict[str, object] = {"text": self.text, "span": [self.start, self.end], "category": self.category,
+                                "source": self.source, "polarity": self.polarity, "status": self.status}
+        if self.reason:
+            d["reason"] = self.reason
+        return d
+
+
+@dataclass(frozen=True)
+class Claim:
+    place: PlaceMention
+    cue: CueMention
+
+    @property
+    def key(self) -> tuple[str, str]:
+        return (self.place.landmark, self.cue.category)
+
+
+@dataclass
+class Extraction:
+    """Output of the extract stage."""
+
+    tokens: Tokens
+    places: list[PlaceMention]
+    markers: list[tuple[int, int, bool]] = field(default_factory=list)  # (start_tok, end_tok, strong)
+
+    @property
+    def active(self) -> list[PlaceMention]:
+        return [p for p in self.places if p.status == "active"]
+
+
+@dataclass
+class Classification:
+    cues: list[CueMention]
+    claims: list[Claim]
+    denied: list[Claim]
+
+
+_REL_SPLIT = re.compile(r"[_\-\s]+")
+
+
+class ReportAnalyzer:
+    """Builtin, LLM-free analysis of one report against one knowledge base."""
+
+    def __init__(self, kb: KnowledgeBase, embedder: Embedder | None = None):
+        self.kb = kb
+        self.embedder = embedder
+        self._places: PhraseMatcher[str] = PhraseMatcher()
+        for lm in kb.landmarks:
+            for form in lm.surface_forms:
+                key = norm_phrase(form)
+                while key and key[0] in ("the", "a", "an"):
+                    key = key[1:]
+                self._places.add(key, lm.name)
+        self._role_category = self._map_roles()
+        self._cues: PhraseMatcher[tuple[str, str]] = PhraseMatcher()
+        self._build_cues()
+        self._markers: PhraseMatcher[bool] = PhraseMatcher()
+        for m in lx.WEAK_REPAIR:
+            self._markers.add(norm_phrase(m), False)
+        for m in lx.STRONG_REPAIR:
+            self._markers.add(norm_phrase(m), True)
+        self._negators: PhraseMatcher[str] = PhraseMatcher()
+        for n in lx.NEGATOR_PHRASES:
+            self._negators.add(norm_phrase(n), n)
+        self._cancel: PhraseMatcher[str] = PhraseMatcher()
+        for c in lx.CANCEL_AFTER:
+            self._cancel.add(norm_phrase(c), c)
+        self._relations: PhraseMatcher[str] = PhraseMatcher()  # phrase -> canonical relation phrase
+        self._build_relations()
+
+    # ------------------------------------------------------------------ vocabulary
+    def _map_roles(self) -> dict[str, str | None]:
+        out: dict[str, str | None] = {}
+        for role in Role:
+            cats = self.kb.categories_with_role(role)
+            out[role.value] = cats[0].name if len(cats) == 1 else None
+        return out
+
+    def _category_for_role(self, role: str, phrase: str) -> str | None:
+        cat = self._role_category.get(role)
+        if cat is not None:
+            return cat
+        cats = self.kb.categories_with_role(role)
+        if not cats:
+            return None
+        if self.embedder is None:
+            return cats[0].name
+        vecs = self.embedder.embed([phrase] + [f"{c.name.replace('_', ' ')}: {c.description}" for c in cats])
+        sims = vecs[1:] @ vecs[0]
+        return cats[int(np.argmax(sims))].name
+
+    def _build_cues(self) -> None:
+        entries: dict[tuple[str, ...], tuple[str, str]] = {}
+        # 1. role vocabulary (weakest), mapped onto the KB's categories
+        for phrase, role in lx.ROLE_CUES.items():
+            cat = self._category_for_role(role, phrase)
+            if cat:
+                entries[norm_phrase(phrase)] = (cat, "lexicon")
+        # 2. words listed in category descriptions, e.g. "(fire, gas, collapse, flooding)"
+        for cat in self.kb.categories:
+            for inner in re.findall(r"\(([^)]*)\)", cat.description):
+                for part in re.split(r",|;|\bor\b|\band\b", inner):
+                    key = norm_phrase(part)
+                    if 0 < len(key) <= 3 and not (set(key) & {"e", "g", "eg", "etc"}):
+                        entries[key] = (cat.name, "category")
+        # 3. category names themselves ("hazard", "safe zone")
+        for cat in self.kb.categories:
+            entries[norm_phrase(cat.name.replace("_", " "))] = (cat.name, "category")
+        # 4. the glossary (strongest: the KB says so explicitly)
+        for term in self.kb.glossary:
+            entries[norm_phrase(term.term)] = (term.category, "glossary")
+        for key, val in entries.items():
+            self._cues.add(key, val)
+
+    def _build_relations(self) -> None:
+        canonical_of: dict[str, str] = {}
+        for canon, syns in lx.RELATION_SYNONYMS.items():
+            for s in syns:
+                canonical_of[s] = canon
+        for rel in self.kb.relations:
+            phrase = rel.phrase
+            self._relations.add(norm_phrase(phrase), phrase)
+        for syn, canon in canonical_of.items():
+            self._relations.add(norm_phrase(syn), canon)
+        self._kb_relation_phrases = sorted({r.phrase for r in self.kb.relations})
+
+    # ------------------------------------------------------------------ extract
+    def extract(self, text: str) -> Extraction:
+        toks = tokenize(text)
+        norms = toks.norms(0, len(toks))
+        places: list[PlaceMention] = []
+        for a, b, landmark in self._places.find_all(norms):
+            places.append(self._mention(toks, a, b, landmark))
+        markers = self._find_markers(toks, {i for p in places for i in range(p.start_tok, p.end_tok)})
+        ex = Extraction(toks, places, markers)
+        self._resolve_relations(ex)
+        self._apply_place_negation(ex)
+        self._apply_place_repairs(ex)
+        ex.places.sort(key=lambda p: p.start_tok)
+        return ex
+
+    @staticmethod
+    def _mention(toks: Tokens, a: int, b: int, landmark: str, **kw: object) -> PlaceMention:
+        start, end = toks.tokens[a].start, toks.tokens[b - 1].end
+        return PlaceMention(a, b, start, end, toks.text[start:end], landmark, **kw)  # type: ignore[arg-type]
+
+    def _find_markers(self, toks: Tokens, blocked: set[int]) -> list[tuple[int, int, bool]]:
+        norms = toks.norms(0, len(toks))
+        out: list[tuple[int, int, bool]] = []
+        for a, b, strong in self._markers.find_all(norms, blocked):
+            words = norms[a:b]
+            nxt = norms[b] if b < len(norms) else None
+            pause_after = b >= len(norms) or toks.clause_start[b]
+            if words == ("no",) or words == ("nope",):
+                # "no, the bakery" / "no no" is a repair; "no fire" / "no one" is negation
+                if not (pause_after or nxt in ("no", "wait", "sorry", "the", "its", "it")):
+                    continue
+                if nxt == "the" and not (a > 0 and toks.clause_start[a]):
+                    continue
+            elif words in (("wait",), ("actually",), ("rather",), ("hang", "on"), ("hold", "on")):
+                # only a repair mid-sentence, set off as a pause, or "actually the X"
+                if toks.sentence_start[a] and words != ("wait",):
+                    continue
+                if not (toks.clause_start[a] or pause_after or nxt in ("the", "its", "it", "make")):
+                    continue
+            elif words == ("sorry",):
+                pass
+            elif words in (("negative",), ("wrong", "one"), ("correction",)):
+                pass
+            out.append((a, b, strong))
+        return out
+
+    def _resolve_relations(self, ex: Extraction) -> None:
+        """Replace "<generic head> <relation> <place>" by the place the KB relation leads to.
+
+        Chains ("the cafe next to the shop attached to the bakery") resolve right to left.
+        """
+        toks = ex.tokens
+        norms = toks.norms(0, len(toks))
+        place_tokens = {i for p in ex.places for i in range(p.start_tok, p.end_tok)}
+        rel_hits = self._relations.find_all(norms, place_tokens)
+        for a, b, phrase in sorted(rel_hits, key=lambda h: -h[0]):
+            anchor = next((p for p in ex.places if p.start_tok >= b and p.status == "active"
+                           and all(norms[j] in lx.DETERMINERS or norms[j] in lx.FILLERS for j in range(b, p.start_tok))), None)
+            if anchor is None:
+                continue
+            # the described place: the phrase right before the relation words
+            head_end = a
+            head_place = next((p for p in ex.places if p.end_tok == head_end and p.status == "active"), None)
+            if head_place is not None:
+                # "the pharmacy next to the bakery": the place is named; the anchor is only a reference
+                idx = ex.places.index(anchor)
+                ex.places[idx] = replace(anchor, status="reference", reason=f"reference point for '{head_place.text}'")
+                continue
+            head_start = head_end
+            while head_start > 0 and head_end - head_start < 4 and not toks.clause_start[head_start] \
+                    and norms[head_start - 1] not in lx.PREPOSITIONS and norms[head_start - 1] not in lx.COPULAS \
+                    and (head_start - 1) not in place_tokens:
+                head_start -= 1
+            # keep only the head noun phrase: drop leading determiners/fillers
+            words = [norms[j] for j in range(head_start, head_end)]
+            while words and (words[0] in lx.DETERMINERS or words[0] in lx.FILLERS):
+                words.pop(0)
+                head_start += 1
+            if not words or not any(w in lx.GENERIC_HEADS for w in words[-2:]):
+                continue
+            # a cue word as head ("fire next to the bank") is not a place description
+            if self._cues.match_at(norms, head_end - 1) is not None:
+                continue
+            target, via = self._follow(anchor.landmark, phrase, " ".join(toks.tokens[j].text for j in range(head_start, head_end)))
+            idx = ex.places.index(anchor)
+            if target is None:
+                ex.places[idx] = replace(anchor, status="reference", reason=f"reference point of an unresolved '{phrase}' description")
+                continue
+            ex.places[idx] = replace(anchor, status="reference", reason=f"reference point: {via}")
+            det_start = head_start
+            while det_start > 0 and norms[det_start - 1] in lx.DETERMINERS and not toks.clause_start[det_start]:
+                det_start -= 1
+            new = self._mention(toks, det_start, anchor.end_tok, target, via=via)
+            ex.places.append(new)
+            place_tokens.update(range(det_start, anchor.end_tok))
+
+    def _relation_matches(self, rel: Relation, phrase: str) -> bool:
+        rp = rel.phrase
+        if rp == phrase:
+            return True
+        for canon, syns in lx.RELATION_SYNONYMS.items():
+            if phrase == canon and (rp == canon or rp in syns):
+                return True
+        return False
+
+    def _follow(self, anchor: str, phrase: str, head: str) -> tuple[str | None, str | None]:
+        """Landmarks standing in relation ``phrase`` to ``anchor``; ties broken by the head noun."""
+        cands: list[tuple[str, str]] = []
+        for rel in self.kb.relations:
+            if not self._relation_matches(rel, phrase):
+                if not self._fuzzy_relation(rel.phrase, phrase):
+                    continue
+            if rel.object == anchor:
+                cands.append((rel.subject, f"{rel.subject} {rel.relation} {rel.object}"))
+            elif rel.subject == anchor and any(h in rel.phrase for h in lx.SYMMETRIC_HINTS):
+                cands.append((rel.object, f"{rel.subject} {rel.relation} {rel.object}"))
+        if not cands:
+            cands = self._grid_relation(anchor, phrase)
+        uniq = {c[0]: c for c in cands}
+        if not uniq:
+            return None, None
+        if len(uniq) == 1:
+            return next(iter(uniq.values()))
+        return self._pick_by_head(list(uniq.values()), head)
+
+    def _fuzzy_relation(self, kb_phrase: str, phrase: str) -> bool:
+        """An unknown KB relation name ("abuts") against a report phrase, via MiniLM."""
+        known = {c for c in lx.RELATION_SYNONYMS} | {s for v in lx.RELATION_SYNONYMS.values() for s in v}
+        if kb_phrase in known or self.embedder is None:
+            return False
+        v = self.embedder.embed([kb_phrase, phrase])
+        return float(v[0] @ v[1]) >= 0.6
+
+    def _grid_relation(self, anchor: str, phrase: str) -> list[tuple[str, str]]:
+        deltas = {"north of": (-1, 0), "south of": (1, 0), "east of": (0, 1), "west of": (0, -1)}
+        if phrase not in deltas:
+            return []
+        dr, dc = deltas[phrase]
+        owner = self.kb.cell_owner
+        out = []
+        for r, c in self.kb.landmark_by_name[anchor].cells:
+            name = owner.get((r + dr, c + dc))
+            if name and name != anchor:
+                out.append((name, f"{name} {phrase.replace(' ', '_')} {anchor} (grid)"))
+        return out
+
+    def _pick_by_head(self, cands: list[tuple[str, str]], head: str) -> tuple[str | None, str | None]:
+        head_keys = set(norm_phrase(head)) - lx.DETERMINERS - {"one", "place", "building", "thing", "spot"}
+        scored = []
+        for name, via in cands:
+            lm = self.kb.landmark_by_name[name]
+            words = set(norm_phrase(" ".join(lm.surface_forms) + " " + lm.description))
+            scored.append((len(head_keys & words), name, via))
+        scored.sort(key=lambda s: -s[0])
+        if scored[0][0] > 0 and (len(scored) == 1 or scored[0][0] > scored[1][0]):
+            return scored[0][1], scored[0][2]
+        if self.embedder is not None and head_keys:
+            texts = [head] + [f"{self.kb.landmark_by_name[n].name}: {self.kb.landmark_by_name[n].description}" for n, _ in cands]
+            v = self.embedder.embed(texts)
+            sims = v[1:] @ v[0]
+            order = np.argsort(-sims)
+            if sims[order[0]] - sims[order[1]] >= 0.05:
+                return cands[int(order[0])]
+        return None, None
+
+    def _apply_place_negation(self, ex: Extraction) -> None:
+        toks = ex.tokens
+        norms = toks.norms(0, len(toks))
+        for idx, p in enumerate(ex.places):
+            if p.status != "active":
+                continue
+            j = p.start_tok - 1
+            while j >= 0 and (norms[j] in lx.DETERMINERS or norms[j] in lx.PREPOSITIONS or norms[j] in lx.FILLERS) \
+                    and p.start_tok - j <= 4 and not toks.clause_start[j + 1]:
+                j -= 1
+            if j < 0:
+                continue
+            neg = norms[j] in ("not", "nt", "isnt", "wasnt") or (
+                j > 0 and norms[j - 1 : j + 1] in (("rather", "than"), ("instead", "of"))
+            ) or norms[j] == "instead"
+            # "not the school" but not "not on fire at the school" (that negates a cue)
+            if neg and not self._cue_between(norms, j + 1, p.start_tok):
+                ex.places[idx] = replace(p, status="negated", reason=f"negated by '{toks.tokens[j].text}'")
+
+    def _cue_between(self, norms: tuple[str, ...], a: int, b: int) -> bool:
+        return any(self._cues.match_at(norms, k) is not None for k in range(a, b))
+
+    def _apply_place_repairs(self, ex: Extraction) -> None:
+        """A marker followed by a place retracts the last place before the marker."""
+        toks = ex.tokens
+        for k, (a, b, strong) in enumerate(ex.markers):
+            # the window after the marker: up to the next marker or sentence end
+            nxt_marker = ex.markers[k + 1][0] if k + 1 < len(ex.markers) else len(toks)
+            end = next((t for t in range(b, nxt_marker) if t > b and toks.sentence_start[t]), nxt_marker)
+            after = [p for p in ex.places if b <= p.start_tok < end and p.status in ("active", "negated")]
+            if not after:
+                continue
+            start = self._repair_window_start(ex, k)
+            before = [p for p in ex.places if start <= p.start_tok < a and p.status in ("active", "reference")]
+            if not before:
+                continue
+            last = max(before, key=lambda p: p.end_tok)
+            i = ex.places.index(last)
+            ex.places[i] = replace(last, status="retracted",
+                                   reason=f"self-repair: '{toks.span_text(a, b)}' then '{after[0].text}'")
+            # a retracted relational description takes its reference point with it
+            for j, q in enumerate(ex.places):
+                if q.status == "reference" and last.start_tok <= q.start_tok < last.end_tok:
+                    ex.places[j] = replace(q, status="retracted", reason="inside a retracted description")
+
+    @staticmethod
+    def _repair_window_start(ex: Extraction, k: int) -> int:
+        """First token a repair marker can reach back to: its sentence (a strong marker that opens
+        a sentence reaches into the previous one), never past the previous marker."""
+        toks = ex.tokens
+        a, _, strong = ex.markers[k]
+        prev_marker_end = ex.markers[k - 1][1] if k > 0 else 0
+        sent_starts = [t for t in range(0, a + 1) if toks.sentence_start[t]]
+        start = sent_starts[-1] if sent_starts else 0
+        if strong and start == a and len(sent_starts) >= 2:
+            start = sent_starts[-2]
+        return max(start, prev_marker_end)
+
+    # ------------------------------------------------------------------ classify
+    def classify(self, ex: Extraction) -> Classification:
+        toks = ex.tokens
+        norms = toks.norms(0, len(toks))
+        all_place_tokens = {i for p in ex.places for i in range(p.start_tok, p.end_tok)
+                            if p.via is None or p.status != "active"}
+        # tokens inside a resolved relational description (e.g. "shop attached to") are not cues,
+        # but the words of named places are never cues either
+        blocked = set(all_place_tokens)
+        for p in ex.places:
+            if p.via is not None:
+                blocked.update(range(p.start_tok, p.end_tok))
+        marker_tokens = {i for a, b, _ in ex.markers for i in range(a, b)}
+        blocked |= marker_tokens
+        cues: list[CueMention] = []
+        for a, b, (cat, source) in self._cues.find_all(norms, blocked):
+            start, end = toks.tokens[a].start, toks.tokens[b - 1].end
+            cue = CueMention(a, b, start, end, toks.text[start:end], cat, source)
+            cues.append(self._apply_cue_negation(toks, norms, cue))
+        cues = self._apply_cue_repairs(ex, cues)
+        cues = [c for c in cues if c is not None]
+        claims, denied = self._associate(ex, cues)
+        return Classification(cues, claims, denied)
+
+    def _undesirable(self) -> str | None:
+        return self._role_category.get("undesirable") or next(
+            (c.name for c in self.kb.categories_with_role(Role.UNDESIRABLE)), None)
+
+    def _apply_cue_negation(self, toks: Tokens, norms: tuple[str, ...], cue: CueMention) -> CueMention:
+        # negator shortly before, inside the clause: "no fire", "not safe", "no one trapped"
+        negated_by = None
+        j = cue.start_tok - 1
+        steps = 0
+        while j >= 0 and steps < 4:
+            if norms[j] in lx.NEGATORS or norms[j].endswith("nt") and norms[j] in ("isnt", "arent", "wasnt", "werent", "dont", "doesnt", "didnt", "hasnt", "havent", "cant"):
+                negated_by = toks.tokens[j].text
+                break
+            hit = None
+            for k in range(max(0, j - 3), j + 1):
+                h = self._negators.match_at(norms, k)
+                if h is not None and h[0] == j + 1:
+                    hit = h
+            if hit is not None:
+                negated_by = hit[1]
+                break
+            if toks.clause_start[j + 1] and j + 1 <= cue.start_tok:
+                if j + 1 != cue.start_tok or toks.clause_start[cue.start_tok]:
+                    break
+            if self._cues.match_at(norms, j) is not None:
+                break
+            j -= 1
+            steps += 1
+        cancelled_by = None
+        # cancellation after: "the fire is out", "gas leak fixed", "fire under control"
+        k = cue.end_tok
+        steps = 0
+        while k < len(norms) and steps < 5 and not toks.clause_start[k]:
+            h = self._cancel.match_at(norms, k)
+            if h is not None:
+                cancelled_by = h[1]
+                break
+            if norms[k] == "out" and (k + 1 >= len(norms) or toks.clause_start[k + 1] or norms[k + 1] in ("now", "completely", "over")):
+                cancelled_by = "out"
+                break
+            if self._cues.match_at(norms, k) is not None:
+                break
+            k += 1
+            steps += 1
+        if negated_by is None and cancelled_by is None:
+            return cue
+        why = negated_by or cancelled_by
+        role = self.kb.category_by_name[cue.category].role
+        if role == Role.DESIRABLE and negated_by is not None and (cue.end_tok - cue.start_tok) >= 1:
+            # "not safe" / "no longer safe" means unsafe: the place is undesirable now
+            und = self._undesirable()
+            if und is not None:
+                return replace(cue, category=und, source=cue.source, reason=f"'{negated_by}' + desirable cue means undesirable")
+        return replace(cue, polarity="denied", reason=f"negated by '{why}'")
+
+    def _apply_cue_repairs(self, ex: Extraction, cues: list[CueMention]) -> list[CueMention]:
+        """A marker followed by a cue (and no new place) retracts the last cue before it."""
+        toks = ex.tokens
+        out = list(cues)
+        for k, (a, b, strong) in enumerate(ex.markers):
+            nxt_marker = ex.markers[k + 1][0] if k + 1 < len(ex.markers) else len(toks)
+            end = next((t for t in range(b, nxt_marker) if t > b and toks.sentence_start[t]), nxt_marker)
+            after_cues = [c for c in out if b <= c.start_tok < end and c.status == "active"]
+            if not after_cues:
+                continue
+            after_places = [p for p in ex.places if b <= p.start_tok < end and p.status == "active"]
+            first_cue = min(after_cues, key=lambda c: c.start_tok)
+            # "the bank, no, the bakery is on fire": a place comes first, so it is a place repair
+            if after_places and min(p.start_tok for p in after_places) < first_cue.start_tok:
+                before_places = [p for p in ex.places if p.end_tok <= a and p.status == "retracted"]
+                if not before_places:
+                    continue
+            lo = self._repair_window_start(ex, k)
+            before = [c for c in out if lo <= c.start_tok < a and c.status == "active"]
+            if not before:
+                continue
+            last = max(before, key=lambda c: c.start_tok)
+            i = out.index(last)
+            out[i] = replace(last, status="retracted", reason=f"self-repair: '{toks.span_text(a, b)}' then '{first_cue.text}'")
+        return out
+
+    def _segments(self, ex: Extraction) -> list[tuple[int, int]]:
+        toks = ex.tokens
+        norms = toks.norms(0, len(toks))
+        marker_tokens = {i for a, b, _ in ex.markers for i in range(a, b)}
+        cuts = [0]
+        for i in range(1, len(toks)):
+            if toks.clause_start[i] or norms[i] in lx.COORDINATORS or i in marker_tokens and (i - 1) not in marker_tokens:
+                cuts.append(i)
+        cuts.append(len(toks))
+        segs = [(cuts[k], cuts[k + 1]) for k in range(len(cuts) - 1) if cuts[k] < cuts[k + 1]]
+        # relational descriptions span their own words; never cut inside a mention
+        merged: list[tuple[int, int]] = []
+        for s in segs:
+            if merged and any(p.start_tok < s[0] < p.end_tok for p in ex.places):
+                merged[-1] = (merged[-1][0], s[1])
+            else:
+                merged.append(s)
+        return merged
+
+    def _associate(self, ex: Extraction, cues: list[CueMention]) -> tuple[list[Claim], list[Claim]]:
+        toks = ex.tokens
+        norms = toks.norms(0, len(toks))
+        places = [p for p in ex.places if p.status == "active"]
+        live = [c for c in cues if c.status == "active"]
+        segs = self._segments(ex)
+
+        def seg_of(tok: int) -> int:
+            return next(k for k, (a, b) in enumerate(segs) if a <= tok < b)
+
+        seg_places: dict[int, list[PlaceMention]] = {}
+        for p in places:
+            seg_places.setdefault(seg_of(p.start_tok), []).append(p)
+        seg_cues: dict[int, list[CueMention]] = {}
+        for c in live:
+            seg_cues.setdefault(seg_of(c.start_tok), []).append(c)
+        sentence_of = []
+        s = -1
+        for i in range(len(toks)):
+            if toks.sentence_start[i]:
+                s += 1
+            sentence_of.append(s)
+
+        pairs: list[Claim] = []
+        # 1. places and cues in the same segment
+        for k, ps in seg_places.items():
+            cs = seg_cues.get(k, [])
+            if not cs:
+                continue
+            if len(ps) == 1:
+                pairs.extend(Claim(ps[0], c) for c in cs)
+                continue
+            # several places: each cue binds to its nearest place (prepositional binding first);
+            # places left without a cue take the nearest cue
+            got: dict[int, list[CueMention]] = {id(p): [] for p in ps}
+            for c in cs:
+                best = min(ps, key=lambda p: self._bind_cost(norms, c, p))
+                got[id(best)].append(c)
+            for p in ps:
+                mine = got[id(p)] or [min(cs, key=lambda c: self._bind_cost(norms, c, p))]
+                pairs.extend(Claim(p, c) for c in mine)
+        # 2. place-only segments borrow the cues of a list they belong to
+        order = sorted(seg_places)
+        for k in order:
+            if seg_cues.get(k):
+                continue
+            donor = self._donor_for_places(k, segs, seg_places, seg_cues, sentence_of)
+            if donor is not None:
+                pairs.extend(Claim(p, c) for p in seg_places[k] for c in seg_cues[donor])
+        # 3. cue-only segments attach to the places they talk about
+        for k, cs in seg_cues.items():
+            if seg_places.get(k):
+                continue
+            target = self._target_for_cues(k, segs, seg_places, seg_cues, sentence_of)
+            if target is not None:
+                pairs.extend(Claim(p, c) for p in seg_places[target] for c in cs)
+        claims = [c for c in pairs if c.cue.polarity == "affirmed"]
+        denied = [c for c in pairs if c.cue.polarity == "denied"]
+        return claims, denied
+
+    @staticmethod
+    def _bind_cost(norms: tuple[str, ...], c: CueMention, p: PlaceMention) -> float:
+        if c.end_tok <= p.start_tok:  # cue before place: "fire at the bakery"
+            between = norms[c.end_tok : p.start_tok]
+            glue = all(w in lx.PREPOSITIONS or w in lx.DETERMINERS or w in lx.FILLERS or w in lx.COPULAS for w in between)
+            return len(between) - (2.5 if glue and any(w in lx.PREPOSITIONS for w in between) else 0)
+        between = norms[p.end_tok : c.start_tok]  # place before cue: "the bakery is on fire"
+        glue = all(w in lx.COPULAS or w in lx.FILLERS or w in lx.PREPOSITIONS or w in lx.DETERMINERS or w in lx.PRONOUNS for w in between)
+        return len(between) - (2.0 if glue else 0) + 0.25
+
+    @staticmethod
+    def _donor_for_places(k: int, segs: list[tuple[int, int]], seg_places: dict[int, list[PlaceMention]],
+                          seg_cues: dict[int, list[CueMention]], sentence_of: list[int]) -> int | None:
+        sent = sentence_of[segs[k][0]]
+        # forward through a list: "the bakery, the school and the library are on fire"
+        j = k + 1
+        while j < len(segs) and sentence_of[segs[j][0]] == sent:
+            if seg_cues.get(j):
+                ps = seg_places.get(j, [])
+                if not ps or min(p.start_tok for p in ps) <= min(c.start_tok for c in seg_cues[j]):
+                    return j
+                break
+            if not seg_places.get(j):
+                break
+            j += 1
+        # backward: "fire at the bakery and the school"
+        j = k - 1
+        while j >= 0 and sentence_of[segs[j][0]] == sent:
+            if seg_cues.get(j):
+                return j
+            if not seg_places.get(j):
+                break
+            j -= 1
+        return None
+
+    @staticmethod
+    def _target_for_cues(k: int, segs: list[tuple[int, int]], seg_places: dict[int, list[PlaceMention]],
+                         seg_cues: dict[int, list[CueMention]], sentence_of: list[int]) -> int | None:
+        # the nearest earlier segment with places ("the bakery — it's on fire", "Checked the school. All clear.")
+        for j in range(k - 1, -1, -1):
+            if seg_places.get(j):
+                if sentence_of[segs[j][0]] < sentence_of[segs[k][0]] - 1:
+                    return None
+                return j
+        # else the next one in the same sentence ("on fire, the bakery")
+        j = k + 1
+        if j < len(segs) and seg_places.get(j) and not seg_cues.get(j) and sentence_of[segs[j][0]] == sentence_of[segs[k][0]]:
+            return j
+        return None
+
+
+def analyze(analyzer: ReportAnalyzer, text: str) -> tuple[Extraction, Classification]:
+    ex = analyzer.extract(text)
+    return ex, analyzer.classify(ex)
+
+
+__all__ = ["Claim", "Classification", "CueMention", "Extraction", "PlaceMention", "ReportAnalyzer", "analyze", "norm"]

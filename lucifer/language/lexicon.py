@@ -1,0 +1,145 @@
+"""Seed vocabularies of radio-report language.
+
+These are *role* vocabularies, not category names: a cue such as "on fire" means "undesirable",
+and is mapped at run time to whichever Information Space category of the knowledge base has
+that role (or, if several do, to the one whose description is closest in MiniLM space). The
+KB's glossary and category names/descriptions are added on top at run time, so a knowledge
+base with other category names works without code changes.
+"""
+
+from __future__ import annotations
+
+UNDESIRABLE = "undesirable"
+DESIRABLE = "desirable"
+CRITICAL = "critical"
+
+# phrase -> role. Multi-word phrases win over their parts (longest match).
+ROLE_CUES: dict[str, str] = {}
+
+
+def _add(role: str, phrases: str) -> None:
+    for p in phrases.split("|"):
+        p = p.strip()
+        if p:
+            ROLE_CUES[p] = role
+
+
+_add(UNDESIRABLE, """
+fire|fires|on fire|burning|burnt|burned|burned out|burnt out|blaze|blazing|ablaze|flames|flame|in flames|
+engulfed|inferno|smoke|smoking|smoky|smoke everywhere|thick smoke|fumes|toxic fumes|
+gas|gas leak|leaking gas|smell of gas|smells of gas|leak|leaking|explosion|exploded|explosive|blast|
+collapse|collapsed|collapsing|caved in|cave in|cave-in|caving in|fell in|falling down|come down|came down|
+rubble|debris|unstable|crumbling|cracked|cracking|sagging|structural damage|structurally unsafe|
+flood|floods|flooded|flooding|underwater|under water|water rising|rising water|submerged|knee deep|
+live wire|live wires|power line down|power lines down|downed lines|sparking|sparks|electrified|arcing|
+chemical|chemicals|toxic|spill|spilled|spilt|hazmat|contaminated|radiation|asbestos|
+dangerous|danger|unsafe|hazard|hazardous|hazards|threat|no go|no-go|off limits|do not enter|keep out|stay away|
+avoid|blocked|impassable|sinkhole|landslide|mudslide|hot spot|hotspot|burning debris|roof down|roof collapsed|
+gunfire|shooter|armed|looters|riot|on fire again|reignited|spreading|spread
+""".replace("\n", ""))
+
+_add(DESIRABLE, """
+safe|safe zone|safe area|safe to enter|safe to shelter|safe to pass|safe passage|safe route|
+clear|all clear|cleared|clear now|secure|secured|secure now|sheltering|shelter|shelter point|
+evacuation point|evacuation centre|evacuation center|rally point|rendezvous point|
+staging point|triage|triage area|first aid post|first aid station|aid station|relief centre|relief center|
+passable|good to go|accessible|open route|route open|no hazards|no hazard|checked and safe|stable|
+structurally sound|intact|usable|refuge|sanctuary|holding area|collection point|gathering point
+""".replace("\n", ""))
+
+_add(CRITICAL, """
+trapped|trapped inside|stuck|stuck inside|pinned|pinned down|buried|injured|injuries|injury|hurt|
+wounded|bleeding|unconscious|unresponsive|not breathing|not moving|cardiac arrest|broken leg|broken arm|
+casualty|casualties|victim|victims|survivor|survivors|patient|patients|
+needs help|need help|needs rescue|need rescue|needs rescuing|need rescuing|calling for help|crying for help|
+cries for help|screaming|shouting for help|banging|knocking|someone inside|people inside|person inside|
+kids inside|children inside|family inside|elderly inside|residents inside|
+missing person|missing persons|missing|man down|person down|woman down|people down|
+medical emergency|medical help|needs a medic|needs medic|needs an ambulance|needs evacuation|
+can't get out|cannot get out|can't move|cannot move|burns victim|overcome by smoke|
+stranded|cut off|trapped people|trapped persons|people trapped|someone trapped|somebody trapped|
+hypothermic|drowning|bleeding out|critical condition|in shock|lost consciousness|passed out|fainted|collapsed inside
+""".replace("\n", ""))
+
+# "collapsed" alone is structural (hazard); "collapsed inside" / "passed out" is a person.
+
+# Words that negate a following cue within a short window (same clause).
+NEGATORS = {
+    "no", "not", "never", "nobody", "none", "without", "zero", "isnt", "arent", "wasnt", "werent",
+    "dont", "doesnt", "didnt", "hasnt", "havent", "cant", "cannot", "nothing", "neither", "nor",
+    "nt",
+}
+NEGATOR_PHRASES = ["no one", "no longer", "not any", "free of", "clear of", "no sign of", "no signs of",
+                   "no more", "not anymore", "any more", "no trace of", "no evidence of", "ruled out"]
+
+# Phrases after a hazard cue that cancel it ("the fire is out").
+CANCEL_AFTER = ["is out", "s out", "are out", "was out", "put out", "out now", "been put out",
+                "extinguished", "under control", "contained", "is over", "has stopped", "stopped",
+                "died down", "cleared up", "gone", "is gone", "has gone", "fixed", "repaired",
+                "turned off", "shut off", "capped", "receded", "drained", "false alarm",
+                "all rescued", "rescued", "evacuated", "got out", "out safely", "accounted for",
+                "no longer"]
+
+# Whole-report "nothing to see" markers that cancel every claim in their sentence.
+FALSE_ALARM = ["false alarm", "disregard", "ignore that", "never mind", "nevermind"]
+
+# Self-repair markers. Strong ones reach back into the previous sentence.
+STRONG_REPAIR = [
+    "no wait", "wait no", "no no", "correction", "scratch that", "strike that", "disregard that",
+    "i mean", "i meant", "i misspoke", "my mistake", "my bad", "let me correct", "let me rephrase",
+    "negative", "check that", "cancel that", "wrong", "that's wrong", "thats wrong", "not right",
+    "make that", "sorry i mean", "sorry i meant", "belay that", "correcting", "i said wrong",
+    "wrong one", "not that one",
+]
+WEAK_REPAIR = ["sorry", "actually", "or rather", "rather", "wait", "no", "nope", "er no", "uh no", "well no",
+               "oops", "whoops", "hang on", "hold on"]
+
+# Spatial phrases that link a described place to a landmark; relation names in the KB are
+# matched verbatim ("attached_to" -> "attached to") and through these synonyms.
+RELATION_SYNONYMS: dict[str, list[str]] = {
+    "attached to": ["attached to", "built onto", "built on to", "joined to", "connected to", "adjoining",
+                    "adjoins", "attached onto", "stuck onto", "part of"],
+    "next to": ["next to", "next door to", "beside", "besides", "alongside", "adjacent to", "right by",
+                "right next to", "just next to", "by", "neighbouring", "neighboring", "next door from"],
+    "across from": ["across from", "opposite", "opposite to", "across the street from", "across the road from",
+                    "facing", "over the road from", "across the square from", "across the way from"],
+    "behind": ["behind", "round the back of", "around the back of", "at the back of", "in back of",
+               "back of", "to the rear of", "at the rear of", "out back of"],
+    "in front of": ["in front of", "out front of"],
+    "inside": ["inside", "within"],
+    "above": ["above", "on top of", "upstairs from"],
+    "below": ["below", "under", "underneath", "beneath", "downstairs from"],
+    "north of": ["north of", "to the north of", "northside of", "up from"],
+    "south of": ["south of", "to the south of", "down from"],
+    "east of": ["east of", "to the east of"],
+    "west of": ["west of", "to the west of"],
+    "near": ["near", "close to", "near to", "nearby"],
+}
+SYMMETRIC_HINTS = ("next", "adjacent", "beside", "across", "opposite", "adjoin", "near", "attached", "connected",
+                   "joined", "facing", "neighbo")
+
+# Nouns that describe a place generically; "the shop attached to X" is a relational reference.
+GENERIC_HEADS = {
+    "shop", "store", "building", "place", "house", "one", "unit", "premises", "structure", "site",
+    "block", "office", "hall", "station", "centre", "center", "business", "spot", "property", "venue",
+    "facility", "storefront", "shopfront", "outlet", "annex", "annexe", "extension", "warehouse",
+    "garage", "shed", "barn", "hut", "home", "residence", "tower", "depot", "yard", "lot", "area",
+    "establishment", "complex", "church", "school", "clinic", "restaurant", "pub", "bar", "market",
+    "bridge", "mill", "plant", "factory", "workshop", "cottage", "cabin", "dock", "pier", "square",
+    "park", "field", "ground", "grounds", "point", "thing", "bit", "side", "corner", "room",
+}
+
+FILLERS = {"uh", "um", "er", "erm", "ah", "eh", "hmm", "like", "so", "okay", "ok", "well", "yeah", "right",
+           "just", "basically", "kinda", "sorta", "literally", "over", "copy", "roger", "base", "team"}
+DETERMINERS = {"the", "a", "an", "that", "this", "those", "these", "its", "their", "our", "some", "old", "little"}
+PREPOSITIONS = {"at", "in", "on", "inside", "near", "from", "by", "outside", "behind", "around", "into",
+                "within", "of", "to", "towards", "toward", "under", "over", "across", "through", "beside",
+                "next", "out", "along", "past", "up", "down", "for", "with"}
+COPULAS = {"is", "are", "was", "were", "s", "re", "has", "have", "had", "got", "gotten", "looks", "seems",
+           "appears", "be", "been", "being", "still", "now", "currently", "definitely", "totally",
+           "completely", "fully", "all", "partly", "partially", "badly", "also", "too", "reported",
+           "confirmed", "showing", "shows", "looking", "sounds", "sound", "feels", "very", "really",
+           "pretty", "quite", "heavily", "seriously", "apparently", "probably", "possibly", "maybe"}
+PRONOUNS = {"it", "its", "there", "that", "they", "them", "this", "place", "building", "same"}
+COORDINATORS = {"and", "but", "while", "whereas", "plus", "also", "then", "meanwhile", "however",
+                "though", "although", "yet", "additionally"}

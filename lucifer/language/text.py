@@ -1,0 +1,117 @@
+"""Tokenisation with character offsets, boundaries and a longest-match phrase matcher."""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterable
+from dataclasses import dataclass
+from typing import Generic, TypeVar
+
+T = TypeVar("T")
+
+_TOKEN = re.compile(r"[a-z0-9]+(?:['’][a-z]+)*", re.IGNORECASE)
+_SENTENCE_END = re.compile(r"[.!?]")
+_CLAUSE = re.compile(r"[,;:()\[\]—–/]|\s-\s|--|^-|-$|\.\.\.|…")
+
+
+def norm(word: str) -> str:
+    """Matching key of a word: lower case, no apostrophes, a plural/possessive 's' dropped.
+
+    >>> [norm(w) for w in ["Bakeries", "chemist's", "gas", "Fires", "isn't", "class"]]
+    ['bakerie', 'chemist', 'gas', 'fire', 'isnt', 'class']
+    """
+    w = word.lower().replace("’", "").replace("'", "")
+    if len(w) > 3 and w.endswith("s") and not w.endswith("ss") and not w.endswith("us") and not w.endswith("is"):
+        w = w[:-1]
+    return w
+
+
+def norm_phrase(phrase: str) -> tuple[str, ...]:
+    """Token keys of a phrase. ``norm_phrase("The Baker's")`` -> ``('the', 'baker')``."""
+    return tuple(norm(m.group()) for m in _TOKEN.finditer(phrase))
+
+
+@dataclass(frozen=True)
+class Token:
+    i: int
+    text: str
+    norm: str
+    start: int
+    end: int
+
+
+@dataclass(frozen=True)
+class Tokens:
+    text: str
+    tokens: tuple[Token, ...]
+    gaps: tuple[str, ...]  # gaps[i] = raw text between token i-1 and token i (gaps[0]: before the first)
+    sentence_start: tuple[bool, ...]  # token i starts a new sentence
+    clause_start: tuple[bool, ...]  # token i starts a new clause (sentence starts included)
+
+    def __len__(self) -> int:
+        return len(self.tokens)
+
+    def span_text(self, a: int, b: int) -> str:
+        return self.text[self.tokens[a].start : self.tokens[b - 1].end]
+
+    def norms(self, a: int, b: int) -> tuple[str, ...]:
+        return tuple(t.norm for t in self.tokens[a:b])
+
+
+def tokenize(text: str) -> Tokens:
+    toks: list[Token] = []
+    gaps: list[str] = []
+    prev_end = 0
+    for i, m in enumerate(_TOKEN.finditer(text)):
+        toks.append(Token(i, m.group(), norm(m.group()), m.start(), m.end()))
+        gaps.append(text[prev_end : m.start()])
+        prev_end = m.end()
+    sent: list[bool] = []
+    clause: list[bool] = []
+    for i, gap in enumerate(gaps):
+        g = gap.replace("...", " , ").replace("…", " , ")
+        is_sent = i == 0 or bool(_SENTENCE_END.search(g)) or "\n" in gap
+        sent.append(is_sent)
+        clause.append(is_sent or bool(_CLAUSE.search(gap.strip())) or bool(_CLAUSE.search(g)))
+    return Tokens(text, tuple(toks), tuple(gaps), tuple(sent), tuple(clause))
+
+
+class PhraseMatcher(Generic[T]):
+    """Longest-match lookup of token-key phrases, each carrying a payload."""
+
+    def __init__(self) -> None:
+        self._by_first: dict[str, list[tuple[tuple[str, ...], T]]] = {}
+
+    def add(self, key: tuple[str, ...], payload: T) -> None:
+        if not key:
+            return
+        bucket = self._by_first.setdefault(key[0], [])
+        bucket.append((key, payload))
+        bucket.sort(key=lambda kv: -len(kv[0]))
+
+    def match_at(self, norms: tuple[str, ...], i: int, blocked: Iterable[int] = ()) -> tuple[int, T] | None:
+        """The longest phrase starting at token ``i``: ``(end, payload)`` or ``None``."""
+        blocked_set = set(blocked)
+        for key, payload in self._by_first.get(norms[i], ()):
+            end = i + len(key)
+            if end <= len(norms) and norms[i:end] == key and not blocked_set.intersection(range(i, end)):
+                return end, payload
+        return None
+
+    def find_all(self, norms: tuple[str, ...], blocked: set[int] | None = None) -> list[tuple[int, int, T]]:
+        """Non-overlapping longest matches, left to right, skipping ``blocked`` tokens."""
+        blocked = blocked or set()
+        out: list[tuple[int, int, T]] = []
+        i = 0
+        while i < len(norms):
+            if i in blocked:
+                i += 1
+                continue
+            hit = self.match_at(norms, i, blocked)
+            if hit is None:
+                i += 1
+                continue
+            end, payload = hit
+            out.append((i, end, payload))
+            i = end
+        return out
