@@ -393,15 +393,16 @@ def load_context_space(
         data: Any = dict(source)
     else:
         text = str(source)
-        path = Path(text)
-        if not text.lstrip().startswith("{") and path.is_file():
+        looks_json = text.lstrip()[:1] in ("{", "[")
+        if not looks_json:
+            path = Path(text)
+            if not path.is_file():
+                raise BadRequest(f"context file {text} does not exist")
             where = str(path)
             try:
                 text = path.read_text(encoding="utf-8")
             except (OSError, UnicodeDecodeError) as exc:
                 raise BadRequest(f"{where}: cannot read: {exc}") from None
-        elif not text.lstrip().startswith("{"):
-            raise BadRequest(f"context file {text} does not exist")
         try:
             data = json.loads(text)
         except json.JSONDecodeError as exc:

@@ -333,14 +333,12 @@ def contract_from_tables(t: ContractTables, space: ContextSpace, params: Contrac
         outcomes[x] = {okeys[j]: keys[nx[j]] for j in js}
         admissible[x] = [okeys[j] for j in js if t.admissible[i, j]]
         priors[x] = {okeys[j]: prior_l[i][j] for j in js}
-        src: dict[str, None] = {}
+        src: set[int] = set()
         for j in js:
             y = int(nx[j])
             if member[y]:
-                for bi in t.located.get(y, []):
-                    if t.beliefs[bi].confidence >= params.min_confidence:
-                        src[ids[bi]] = None
-        adm_src[x] = list(src)
+                src.update(bi for bi in t.located.get(y, []) if t.beliefs[bi].confidence >= params.min_confidence)
+        adm_src[x] = [ids[bi] for bi in sorted(src)]
     located = {keys[i]: [ids[b] for b in bs] for i, bs in t.located.items()}
     infl = t.influence if t.influence is not None else np.zeros((len(st.ext), 0))
     pot_src = {keys[i]: [ids[b] for b in np.flatnonzero(np.abs(infl[i]) > 1e-12).tolist()] for i in range(n)}
