@@ -69,6 +69,13 @@ class SpaceTable:
     cell_coords: np.ndarray  # (n_ext, k, 2) int: cells of each ext context, padded
     cell_valid: np.ndarray  # (n_ext, k) bool: which of those are real
     index: dict[Hashable, int]  # ext context -> row
+    order: tuple[tuple[int, ...], ...] | None = None  # per row: option columns in U(x) order
+
+    def columns(self, i: int) -> list[int]:
+        """Option columns of U(x_i), in the order the client listed them."""
+        if self.order is not None:
+            return list(self.order[i])
+        return np.flatnonzero(self.available[i]).tolist()
 
     @property
     def n(self) -> int:
@@ -171,6 +178,7 @@ class ContextSpace(ABC):
             cell_coords=coords,
             cell_valid=valid,
             index=index,
+            order=tuple(tuple(j for j, _ in row) for row in rows),
         )
 
 

@@ -323,11 +323,10 @@ def contract_from_tables(t: ContractTables, space: ContextSpace, params: Contrac
     admissible: dict[str, list[str]] = {}
     priors: dict[str, dict[str, float]] = {}
     adm_src: dict[str, list[str]] = {}
-    avail = st.available
     prior_l = t.prior.tolist()
     for i in range(n):
         x = keys[i]
-        js = np.flatnonzero(avail[i]).tolist()
+        js = st.columns(i)
         options[x] = [okeys[j] for j in js]
         nx = st.next[i]
         outcomes[x] = {okeys[j]: keys[nx[j]] for j in js}
