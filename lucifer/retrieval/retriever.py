@@ -25,8 +25,11 @@ class Retriever:
         self._collection = collection
         self._embedder = embedder
 
-    def retrieve(self, queries: list[str], k: int = 8) -> list[Retrieved]:
-        """Top-``k`` KB documents for each query, merged (best score per document)."""
+    def retrieve(self, queries: list[str], k: int = 8, kinds: tuple[str, ...] | None = None) -> list[Retrieved]:
+        """Top-``k`` KB documents for each query, merged (best score per document).
+
+        ``kinds`` restricts the search to some document kinds (``landmark``, ``relation``, ...).
+        """
         queries = [q for q in queries if q.strip()]
         if not queries:
             return []
@@ -34,6 +37,7 @@ class Retriever:
         res = self._collection.query(
             query_embeddings=[v.tolist() for v in vectors],
             n_results=k,
+            where={"kind": {"$in": list(kinds)}} if kinds else None,
             include=["metadatas", "documents", "distances"],
         )
         best: dict[str, Retrieved] = {}

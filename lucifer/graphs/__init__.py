@@ -1,0 +1,1 @@
+"""LangGraph graphs: grounding (language -> contract objects) and discovery (telemetry -> query)."""
