@@ -278,3 +278,15 @@ def test_any_stream_keeps_beliefs_consistent(events):
     assert sorted(b.id for b in c.beliefs) == sorted(b.id for b in active)
     for x in c.contexts:
         assert set(c.admissible[x]) <= set(c.options[x]) and c.admissible[x]
+
+
+async def test_cancelled_grounding_does_not_block_later_reports():
+    table = {"Fire at the bakery.": ([("bakery", "hazard", "bakery")], []), "slow": ([], [])}
+    s = BeliefSession(KB, grounder=FakeGrounder(table, {"a": 10.0, "b": 0.0}))
+    slow = asyncio.create_task(s.ingest_report("slow", report_id="a"))
+    fast = asyncio.create_task(s.ingest_report("Fire at the bakery.", report_id="b"))
+    await asyncio.sleep(0.01)
+    assert not fast.done()  # waits for report a, issued first
+    slow.cancel()
+    out = await asyncio.wait_for(fast, 1.0)
+    assert out.report_id == "b" and s.find("bakery", "hazard") is not None

@@ -142,7 +142,8 @@ class BeliefSession:
         self._next_id = 1
         self._seq_issued = 0
         self._seq_done = 0
-        self._turn = asyncio.Condition()
+        self._pending: dict[int, GroundingResult | None] = {}
+        self._waiting: dict[int, asyncio.Future[IngestOutcome | None]] = {}
         self._cache: tuple[Any, ...] | None = None
 
     # --- queries --------------------------------------------------------------------
@@ -188,31 +189,42 @@ class BeliefSession:
         """Ground ``text`` with the session's grounder, then ingest it.
 
         Groundings may run concurrently; results are applied in the order the calls were
-        made, so a later report always revises an earlier one.
+        made, so a later report always revises an earlier one. A call whose grounding fails
+        (or is cancelled) raises and is skipped; the reports after it still apply.
+        (A plain :meth:`ingest` call applies at once, not queued behind pending ones.)
         """
         if self.grounder is None:
             raise RuntimeError("this BeliefSession has no grounder; pass grounder= or call ingest()")
         seq = self._seq_issued
         self._seq_issued += 1
+        done: asyncio.Future[IngestOutcome | None] = asyncio.get_running_loop().create_future()
+        self._waiting[seq] = done
+        result: GroundingResult | None = None
         try:
             result = await self.grounder.ground(text, report_id=report_id)
-        except BaseException:
-            await self._finish_turn(seq, None)
-            raise
-        if result.report_id is None and report_id is not None:
-            result = result.model_copy(update={"report_id": report_id})
-        out = await self._finish_turn(seq, result)
+            if result.report_id is None and report_id is not None:
+                result = result.model_copy(update={"report_id": report_id})
+        finally:
+            self._pending[seq] = result  # None: failed, skip it
+            self._drain()
+        out = await done
         assert out is not None
         return out
 
-    async def _finish_turn(self, seq: int, result: GroundingResult | None) -> IngestOutcome | None:
-        async with self._turn:
-            await self._turn.wait_for(lambda: self._seq_done == seq)
+    def _drain(self) -> None:
+        """Apply every finished grounding whose predecessors are all applied (in order)."""
+        while self._seq_done in self._pending:
+            seq = self._seq_done
+            result = self._pending.pop(seq)
+            fut = self._waiting.pop(seq)
+            self._seq_done += 1
+            if result is None:
+                fut.set_result(None)
+                continue
             try:
-                return None if result is None else self.ingest(result)
-            finally:
-                self._seq_done += 1
-                self._turn.notify_all()
+                fut.set_result(self.ingest(result))
+            except Exception as exc:  # surfaced to the caller that awaits this report
+                fut.set_exception(exc)
 
     def ingest(self, result: GroundingResult) -> IngestOutcome:
         """Apply one grounding result: its denials, then its claims."""
