@@ -38,8 +38,8 @@ from pydantic import BaseModel, ConfigDict, Field
 from lucifer.contract.space import ContextSpace
 from lucifer.contract.transducer import (
     ContractTables,
-    _cells,
     build_tables,
+    cells_of_object,
     contract_from_tables,
     provenance_of,
 )
@@ -306,7 +306,7 @@ class BeliefSession:
             id=new_id,
             location=obj.location,
             category=obj.category,
-            cells=_cells(obj, self.kb),
+            cells=cells_of_object(obj, self.kb),
             confidence=c,
             provenance=[provenance_of(o, rid, trace_id, "claim") for o in [obj, *others]],
             replaces=replaced,

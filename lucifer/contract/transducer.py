@@ -41,7 +41,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Any, TypeVar
+from typing import TYPE_CHECKING, Any, Literal, TypeVar
 
 import numpy as np
 
@@ -124,7 +124,10 @@ def _span(s: Any) -> tuple[int, int] | None:
 
 
 def provenance_of(
-    obj: GroundedObject, report_id: str | None, trace_id: str | None, kind: str = "claim"
+    obj: GroundedObject,
+    report_id: str | None,
+    trace_id: str | None,
+    kind: Literal["claim", "confirmation", "denial"] = "claim",
 ) -> Provenance:
     """The provenance record of one grounded object."""
     return Provenance(
@@ -135,11 +138,12 @@ def provenance_of(
         cue=obj.cue,
         cue_span=_span(obj.cue_span),
         confidence=obj.confidence,
-        kind=kind,  # type: ignore[arg-type]
+        kind=kind,
     )
 
 
-def _cells(obj: GroundedObject, kb: KnowledgeBase | None) -> list[tuple[int, int]]:
+def cells_of_object(obj: GroundedObject, kb: KnowledgeBase | None) -> list[tuple[int, int]]:
+    """The object's own cells, else its KB landmark's cells, else none."""
     if obj.cells:
         return [(int(c[0]), int(c[1])) for c in obj.cells]
     if kb is not None and obj.location in kb.landmark_by_name:
@@ -169,7 +173,7 @@ def beliefs_from_objects(
                 id=f"b{len(merged) + 1}",
                 location=obj.location,
                 category=obj.category,
-                cells=_cells(obj, kb),
+                cells=cells_of_object(obj, kb),
                 confidence=obj.confidence,
                 provenance=[prov],
             )

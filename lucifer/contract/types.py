@@ -11,7 +11,6 @@ from __future__ import annotations
 from enum import StrEnum
 from typing import Any, Literal
 
-import numpy as np
 from pydantic import BaseModel, ConfigDict, Field, PrivateAttr, field_validator
 
 from lucifer.kb.models import Role
@@ -188,11 +187,3 @@ class SignalContract(BaseModel):
         """Plain-JSON form (what ``lucifer ground --json --signals`` prints)."""
         return self.model_dump(mode="json")
 
-
-def as_float_list(a: np.ndarray) -> list[float]:
-    """Round-trip-safe Python floats from a numpy vector.
-
-    >>> as_float_list(np.array([0.5, -1.0]))
-    [0.5, -1.0]
-    """
-    return [float(v) for v in a.tolist()]
