@@ -327,24 +327,33 @@ def contract_from_tables(t: ContractTables, space: ContextSpace, params: Contrac
     admissible: dict[str, list[str]] = {}
     priors: dict[str, dict[str, float]] = {}
     adm_src: dict[str, list[str]] = {}
-    prior_l = t.prior.tolist()
+    # Plain lists once: per-row numpy calls dominate on large spaces.
+    prior_l, adm_l, next_l = t.prior.tolist(), t.admissible.tolist(), st.next.tolist()
+    if st.order is not None:
+        cols = [list(o) for o in st.order]
+    else:
+        avail_l = st.available.tolist()
+        cols = [[j for j, a in enumerate(row) if a] for row in avail_l]
+    strong_at: dict[int, list[int]] = {}  # ext row -> strong belief idx standing there
+    member_l = member.tolist()
+    for y, bs in t.located.items():
+        if member_l[y]:
+            strong_at[y] = [bi for bi in bs if t.beliefs[bi].confidence >= params.min_confidence]
     for i in range(n):
         x = keys[i]
-        js = st.columns(i)
+        js = cols[i]
+        nx, pr, ad = next_l[i], prior_l[i], adm_l[i]
         options[x] = [okeys[j] for j in js]
-        nx = st.next[i]
         outcomes[x] = {okeys[j]: keys[nx[j]] for j in js}
-        admissible[x] = [okeys[j] for j in js if t.admissible[i, j]]
-        priors[x] = {okeys[j]: prior_l[i][j] for j in js}
-        src: set[int] = set()
-        for j in js:
-            y = int(nx[j])
-            if member[y]:
-                src.update(bi for bi in t.located.get(y, []) if t.beliefs[bi].confidence >= params.min_confidence)
+        admissible[x] = [okeys[j] for j in js if ad[j]]
+        priors[x] = {okeys[j]: pr[j] for j in js}
+        src = {bi for j in js for bi in strong_at.get(nx[j], ())}
         adm_src[x] = [ids[bi] for bi in sorted(src)]
     located = {keys[i]: [ids[b] for b in bs] for i, bs in t.located.items()}
-    infl = t.influence if t.influence is not None else np.zeros((len(st.ext), 0))
-    pot_src = {keys[i]: [ids[b] for b in np.flatnonzero(np.abs(infl[i]) > 1e-12).tolist()] for i in range(n)}
+    pot_src: dict[str, list[str]] = {k: [] for k in keys[:n]}
+    if t.influence is not None and t.influence.size:
+        for i, b in zip(*np.nonzero(np.abs(t.influence[:n]) > 1e-12), strict=True):
+            pot_src[keys[i]].append(ids[b])
     contract = SignalContract(
         space=space.describe(),
         rule=t.rule,
