@@ -274,6 +274,24 @@ def _fits(template: str, open_space: bool) -> bool:
     return not open_space or not any(w in template for w in _INDOOR)
 
 
+def _plural(np_text: str) -> bool:
+    """Whether a place phrase takes a plural verb ("the flats are").
+
+    >>> _plural("the flats"), _plural("st mary's"), _plural("the bus station")
+    (True, False, False)
+    """
+    last = np_text.split()[-1].lower()
+    return last.endswith("s") and not last.endswith(("'s", "ss", "us")) and last != "works"
+
+
+def _agree(template: str, p: str) -> str:
+    """Fill ``{p}`` and make a following "is/has/looks" agree with it."""
+    if _plural(p):
+        for sing, plur in (("{p} is ", "{p} are "), ("{p} has ", "{p} have "), ("{p} looks ", "{p} look ")):
+            template = template.replace(sing, plur)
+    return template.format(p=p)
+
+
 def _cap(s: str) -> str:
     return s[:1].upper() + s[1:] if s else s
 
@@ -315,7 +333,7 @@ class Generator:
 
     def claim(self, role: Role, p: str, *names: str) -> str:
         """A claim of ``role`` about the place text ``p`` (landmark ``names``)."""
-        return self.choose(CLAIMS[role], *names).format(p=p)
+        return _agree(self.choose(CLAIMS[role], *names), p)
 
     # -- relations: (target, phrase-template) reachable in one unique hop from an anchor
     def _hops(self) -> dict[str, list[tuple[str, str]]]:
