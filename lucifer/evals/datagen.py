@@ -467,7 +467,7 @@ class Generator:
         (p,) = self.pick(1, used)
         used.append(p)
         role = self.role()
-        op = self.rng.choice(("repair", "repair", "double", "catrep", "catrep", "neg", "neg", "stutter", "plain"))
+        op = self.rng.choice(("repair", "repair", "double", "catrep", "catrep", "neg", "neg", "stutter", "plain", "plain"))
         fill = self.filler(0.35)
         if op in ("repair", "double"):
             return fill + self.claim(role, self._repaired_np(p, used, op == "double"), p), [(p, role)]
@@ -498,7 +498,7 @@ class Generator:
         return text.replace(" -- ", " — ")
 
     def messy(self) -> Report:
-        n = self.rng.choice((1, 1, 2, 2, 3))
+        n = self.rng.choice((1, 1, 1, 2, 2, 3))
         used: list[str] = []
         clauses, exp = [], []
         if self.rng.random() < 0.25:
