@@ -49,12 +49,12 @@ def model_dir() -> Path:
 def _layer_norm(x: np.ndarray, w: np.ndarray, b: np.ndarray, eps: float) -> np.ndarray:
     mu = x.mean(-1, keepdims=True)
     var = ((x - mu) ** 2).mean(-1, keepdims=True)
-    return (x - mu) / np.sqrt(var + eps) * w + b
+    return (x - mu) / np.sqrt(var + eps) * w + b  # stays float32: eps is a Python float
 
 
 def _gelu(x: np.ndarray) -> np.ndarray:
     # exact (erf) GELU, as BERT uses; erf via a vectorised high-precision approximation
-    return 0.5 * x * (1.0 + _erf(x / np.sqrt(2.0)))
+    return 0.5 * x * (1.0 + _erf(x * 0.7071067811865476))
 
 
 def _erf(x: np.ndarray) -> np.ndarray:
@@ -131,14 +131,14 @@ class _NumpyMiniLM:
         x = _layer_norm(x, w["embeddings.LayerNorm.weight"], w["embeddings.LayerNorm.bias"], self.eps)
         h = self.heads
         d = x.shape[-1] // h
-        bias = ((1.0 - mask) * -1e9)[:, None, None, :]
+        bias = ((1.0 - mask) * np.float32(-1e9))[:, None, None, :]
         for qkv_w, qkv_b, o_w, o_b, ln1w, ln1b, i_w, i_b, f_w, f_b, ln2w, ln2b in self.layers:
             qkv = x @ qkv_w + qkv_b
             q, k, v = np.split(qkv, 3, axis=-1)
             q = q.reshape(n, seq, h, d).transpose(0, 2, 1, 3)
             k = k.reshape(n, seq, h, d).transpose(0, 2, 3, 1)
             v = v.reshape(n, seq, h, d).transpose(0, 2, 1, 3)
-            s = (q @ k) / np.sqrt(d) + bias
+            s = (q @ k) * float(1.0 / np.sqrt(d)) + bias
             s = s - s.max(-1, keepdims=True)
             p = np.exp(s)
             p /= p.sum(-1, keepdims=True)

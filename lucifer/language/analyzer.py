@@ -136,6 +136,9 @@ class ReportAnalyzer:
         self._cancel: PhraseMatcher[str] = PhraseMatcher()
         for c in lx.CANCEL_AFTER:
             self._cancel.add(norm_phrase(c), c)
+        self._transit: PhraseMatcher[str] = PhraseMatcher()
+        for t in lx.TRANSIT:
+            self._transit.add(norm_phrase(t), t)
         self._relations: PhraseMatcher[str] = PhraseMatcher()  # phrase -> canonical relation phrase
         self._build_relations()
 
@@ -202,13 +205,45 @@ class ReportAnalyzer:
         places: list[PlaceMention] = []
         for a, b, landmark in self._places.find_all(norms):
             places.append(self._mention(toks, a, b, landmark))
+        places.extend(self._false_starts(toks, {i for p in places for i in range(p.start_tok, p.end_tok)}))
         markers = self._find_markers(toks, {i for p in places for i in range(p.start_tok, p.end_tok)})
         ex = Extraction(toks, places, markers)
         self._resolve_relations(ex)
         self._apply_place_negation(ex)
+        self._apply_restarts(ex)
         self._apply_place_repairs(ex)
+        self._apply_transit(ex)
         ex.places.sort(key=lambda p: p.start_tok)
         return ex
+
+    def _false_starts(self, toks: Tokens, taken: set[int]) -> list[PlaceMention]:
+        """Cut-off words ("the fire st— at the police station") that begin a landmark name."""
+        out = []
+        for t in toks.tokens:
+            nxt_gap = toks.gaps[t.i + 1] if t.i + 1 < len(toks) else toks.text[t.end:]
+            if t.i in taken or not nxt_gap[:1] in ("-", "—", "–") or len(t.text) > 6:
+                continue
+            frag = t.text.lower()
+            for lm in self.kb.landmarks:
+                for form in lm.surface_forms:
+                    words = [w for w in norm_phrase(form) if w not in ("the", "a", "an")]
+                    for n in range(1, len(words) + 1):
+                        start = t.i - (n - 1)
+                        if start < 0 or any(i in taken for i in range(start, t.i + 1)):
+                            continue
+                        if list(toks.norms(start, t.i)) == words[: n - 1] and words[n - 1].startswith(frag) \
+                                and words[n - 1] != frag and (n > 1 or len(frag) >= 2):
+                            out.append(self._mention(toks, start, t.i + 1, lm.name, status="retracted",
+                                                     reason="false start (word cut off)"))
+                            taken.update(range(start, t.i + 1))
+                            break
+                    else:
+                        continue
+                    break
+                else:
+                    continue
+                break
+        return out
 
     @staticmethod
     def _mention(toks: Tokens, a: int, b: int, landmark: str, **kw: object) -> PlaceMention:
@@ -223,23 +258,31 @@ class ReportAnalyzer:
             nxt = norms[b] if b < len(norms) else None
             pause_after = b >= len(norms) or toks.clause_start[b]
             if words == ("no",) or words == ("nope",):
-                # "no, the bakery" / "no no" is a repair; "no fire" / "no one" is negation
-                if not (pause_after or nxt in ("no", "wait", "sorry", "the", "its", "it")):
+                # "no, the bakery" / "no no" is a repair; "no fire" / "no one" is negation;
+                # "the warehouse no the library" (no pause) is a repair when a place precedes
+                if not (pause_after or nxt in ("no", "wait", "sorry", "the", "its", "it", "i", "actually", "make")):
                     continue
                 if nxt == "the" and not (a > 0 and toks.clause_start[a]):
-                    continue
+                    if not (b + 1 < len(norms) and (b + 1) in blocked or b + 2 < len(norms) and (b + 2) in blocked):
+                        continue
+                    if not any(i in blocked for i in range(max(0, a - 8), a)):
+                        continue
             elif words in (("wait",), ("actually",), ("rather",), ("hang", "on"), ("hold", "on")):
                 # only a repair mid-sentence, set off as a pause, or "actually the X"
                 if toks.sentence_start[a] and words != ("wait",):
                     continue
                 if not (toks.clause_start[a] or pause_after or nxt in ("the", "its", "it", "make")):
                     continue
-            elif words == ("sorry",):
-                pass
-            elif words in (("negative",), ("wrong", "one"), ("correction",)):
-                pass
             out.append((a, b, strong))
-        return out
+        # adjacent markers ("no, actually", "sorry, I mean", "no, sorry") act as one
+        merged: list[tuple[int, int, bool]] = []
+        for a, b, strong in out:
+            if merged and all(norms[i] in lx.FILLERS for i in range(merged[-1][1], a)):
+                pa, _, ps = merged[-1]
+                merged[-1] = (pa, b, ps or strong)
+            else:
+                merged.append((a, b, strong))
+        return merged
 
     def _resolve_relations(self, ex: Extraction) -> None:
         """Replace "<generic head> <relation> <place>" by the place the KB relation leads to.
@@ -263,11 +306,16 @@ class ReportAnalyzer:
                 idx = ex.places.index(anchor)
                 ex.places[idx] = replace(anchor, status="reference", reason=f"reference point for '{head_place.text}'")
                 continue
+            marker_tokens = {i for ma, mb, _ in ex.markers for i in range(ma, mb)}
             head_start = head_end
-            while head_start > 0 and head_end - head_start < 4 and not toks.clause_start[head_start] \
-                    and norms[head_start - 1] not in lx.PREPOSITIONS and norms[head_start - 1] not in lx.COPULAS \
-                    and (head_start - 1) not in place_tokens:
+            while head_start > 0 and head_end - head_start < 4 and not toks.clause_start[head_start]:
+                prev = head_start - 1
+                w = norms[prev]
+                if w in lx.PREPOSITIONS or w in lx.COPULAS or prev in place_tokens or prev in marker_tokens:
+                    break
                 head_start -= 1
+                if w in lx.DETERMINERS:
+                    break
             # keep only the head noun phrase: drop leading determiners/fillers
             words = [norms[j] for j in range(head_start, head_end)]
             while words and (words[0] in lx.DETERMINERS or words[0] in lx.FILLERS):
@@ -382,28 +430,78 @@ class ReportAnalyzer:
     def _cue_between(self, norms: tuple[str, ...], a: int, b: int) -> bool:
         return any(self._cues.match_at(norms, k) is not None for k in range(a, b))
 
+    def _apply_transit(self, ex: Extraction) -> None:
+        """"heading to the bakery", "passing the church": the team moves; nothing is claimed there."""
+        toks = ex.tokens
+        norms = toks.norms(0, len(toks))
+        for idx, p in enumerate(ex.places):
+            if p.status != "active" or p.via is not None:
+                continue
+            j = p.start_tok
+            while j > 0 and norms[j - 1] in lx.DETERMINERS | lx.FILLERS | {"at", "to", "by", "the", "from"} \
+                    and p.start_tok - j < 3 and not toks.clause_start[j]:
+                j -= 1
+            for k in range(max(0, j - 5), j):
+                hit = self._transit.match_at(norms, k)
+                if hit is not None and hit[0] == j and not any(toks.clause_start[i] for i in range(k + 1, j + 1) if i < p.start_tok):
+                    ex.places[idx] = replace(p, status="reference", reason=f"in transit ('{hit[1]}'): no claim")
+                    break
+
+    def _apply_restarts(self, ex: Extraction) -> None:
+        """"the church is — the church is being used": the first mention is a false start."""
+        norms = ex.tokens.norms(0, len(ex.tokens))
+        ordered = sorted((p for p in ex.places if p.status == "active"), key=lambda p: p.start_tok)
+        for p, q in zip(ordered, ordered[1:], strict=False):
+            if p.landmark != q.landmark:
+                continue
+            between = norms[p.end_tok : q.start_tok]
+            if between and len(between) <= 4 and all(w in lx.COPULAS | lx.FILLERS | lx.DETERMINERS | lx.PRONOUNS for w in between) \
+                    and any(ex.tokens.clause_start[i] for i in range(p.end_tok, q.start_tok + 1)):
+                i = ex.places.index(p)
+                ex.places[i] = replace(p, status="retracted", reason="restarted: the speaker repeats the place")
+
+    def _after_clause(self, ex: Extraction, k: int) -> tuple[int, int]:
+        """Tokens of the first clause after marker ``k`` (up to a clause break, coordinator or marker)."""
+        toks = ex.tokens
+        norms = toks.norms(0, len(toks))
+        _, b, _ = ex.markers[k]
+        nxt_marker = ex.markers[k + 1][0] if k + 1 < len(ex.markers) else len(toks)
+        end = b
+        while end < nxt_marker:
+            if end > b and (toks.clause_start[end] or norms[end] in lx.COORDINATORS):
+                # a clause that is only a place ("no wait, the bakery — is on fire") runs on
+                if not any(p.start_tok >= b and p.end_tok <= end for p in ex.places) or toks.sentence_start[end]:
+                    break
+                if not self._has_content(norms, end, nxt_marker):
+                    break
+                if toks.sentence_start[end] or norms[end] in lx.COORDINATORS:
+                    break
+            end += 1
+        return b, end
+
+    def _has_content(self, norms: tuple[str, ...], a: int, b: int) -> bool:
+        return any(self._cues.match_at(norms, i) is not None for i in range(a, min(b, a + 6)))
+
     def _apply_place_repairs(self, ex: Extraction) -> None:
         """A marker followed by a place retracts the last place before the marker."""
         toks = ex.tokens
-        for k, (a, b, strong) in enumerate(ex.markers):
-            # the window after the marker: up to the next marker or sentence end
-            nxt_marker = ex.markers[k + 1][0] if k + 1 < len(ex.markers) else len(toks)
-            end = next((t for t in range(b, nxt_marker) if t > b and toks.sentence_start[t]), nxt_marker)
+        for k, (a, b, _strong) in enumerate(ex.markers):
+            b, end = self._after_clause(ex, k)
             after = [p for p in ex.places if b <= p.start_tok < end and p.status in ("active", "negated")]
             if not after:
                 continue
             start = self._repair_window_start(ex, k)
-            before = [p for p in ex.places if start <= p.start_tok < a and p.status in ("active", "reference")]
+            before = [p for p in ex.places if start <= p.start_tok < a and p.status == "active"]
             if not before:
                 continue
             last = max(before, key=lambda p: p.end_tok)
             i = ex.places.index(last)
             ex.places[i] = replace(last, status="retracted",
                                    reason=f"self-repair: '{toks.span_text(a, b)}' then '{after[0].text}'")
-            # a retracted relational description takes its reference point with it
+            # its reference points ("the cafe across from the church") go with it
             for j, q in enumerate(ex.places):
-                if q.status == "reference" and last.start_tok <= q.start_tok < last.end_tok:
-                    ex.places[j] = replace(q, status="retracted", reason="inside a retracted description")
+                if q.status == "reference" and last.start_tok <= q.start_tok < a:
+                    ex.places[j] = replace(q, status="retracted", reason="reference point of a retracted place")
 
     @staticmethod
     def _repair_window_start(ex: Extraction, k: int) -> int:
@@ -432,6 +530,7 @@ class ReportAnalyzer:
                 blocked.update(range(p.start_tok, p.end_tok))
         marker_tokens = {i for a, b, _ in ex.markers for i in range(a, b)}
         blocked |= marker_tokens
+        self._place_tokens = {i for p in ex.places for i in range(p.start_tok, p.end_tok)}
         cues: list[CueMention] = []
         for a, b, (cat, source) in self._cues.find_all(norms, blocked):
             start, end = toks.tokens[a].start, toks.tokens[b - 1].end
@@ -451,7 +550,8 @@ class ReportAnalyzer:
         negated_by = None
         j = cue.start_tok - 1
         steps = 0
-        while j >= 0 and steps < 4:
+        place_toks = self._place_tokens
+        while j >= 0 and steps < 4 and j not in place_toks:
             if norms[j] in lx.NEGATORS or norms[j].endswith("nt") and norms[j] in ("isnt", "arent", "wasnt", "werent", "dont", "doesnt", "didnt", "hasnt", "havent", "cant"):
                 negated_by = toks.tokens[j].text
                 break
@@ -479,7 +579,8 @@ class ReportAnalyzer:
             if h is not None:
                 cancelled_by = h[1]
                 break
-            if norms[k] == "out" and (k + 1 >= len(norms) or toks.clause_start[k + 1] or norms[k + 1] in ("now", "completely", "over")):
+            if norms[k] == "out" and (k == cue.end_tok or norms[k - 1] in ("is", "s", "are", "was", "been", "now", "all")) \
+                    and (k + 1 >= len(norms) or toks.clause_start[k + 1] or norms[k + 1] in ("now", "completely", "over")):
                 cancelled_by = "out"
                 break
             if self._cues.match_at(norms, k) is not None:
@@ -501,19 +602,16 @@ class ReportAnalyzer:
         """A marker followed by a cue (and no new place) retracts the last cue before it."""
         toks = ex.tokens
         out = list(cues)
-        for k, (a, b, strong) in enumerate(ex.markers):
-            nxt_marker = ex.markers[k + 1][0] if k + 1 < len(ex.markers) else len(toks)
-            end = next((t for t in range(b, nxt_marker) if t > b and toks.sentence_start[t]), nxt_marker)
+        for k, (a, _b, _strong) in enumerate(ex.markers):
+            b, end = self._after_clause(ex, k)
             after_cues = [c for c in out if b <= c.start_tok < end and c.status == "active"]
             if not after_cues:
                 continue
-            after_places = [p for p in ex.places if b <= p.start_tok < end and p.status == "active"]
+            after_places = [p for p in ex.places if b <= p.start_tok < end]
             first_cue = min(after_cues, key=lambda c: c.start_tok)
             # "the bank, no, the bakery is on fire": a place comes first, so it is a place repair
             if after_places and min(p.start_tok for p in after_places) < first_cue.start_tok:
-                before_places = [p for p in ex.places if p.end_tok <= a and p.status == "retracted"]
-                if not before_places:
-                    continue
+                continue
             lo = self._repair_window_start(ex, k)
             before = [c for c in out if lo <= c.start_tok < a and c.status == "active"]
             if not before:
@@ -565,6 +663,13 @@ class ReportAnalyzer:
                 s += 1
             sentence_of.append(s)
 
+        marker_tokens = {i for a, b, _ in ex.markers for i in range(a, b)}
+        inactive_tokens = {i for p in ex.places if p.status != "active" for i in range(p.start_tok, p.end_tok)}
+        cue_tokens = {i for c in cues for i in range(c.start_tok, c.end_tok)}
+        hollow = {k for k, (a, b) in enumerate(segs)
+                  if all((i in marker_tokens or i in inactive_tokens or norms[i] in lx.FILLERS or norms[i] in lx.COORDINATORS
+                          or norms[i] in lx.DETERMINERS or norms[i] in lx.PREPOSITIONS or norms[i] in ("just", "only", "its", "it"))
+                         and i not in cue_tokens for i in range(a, b))}
         pairs: list[Claim] = []
         # 1. places and cues in the same segment
         for k, ps in seg_places.items():
@@ -588,13 +693,24 @@ class ReportAnalyzer:
         for k in order:
             if seg_cues.get(k):
                 continue
-            donor = self._donor_for_places(k, segs, seg_places, seg_cues, sentence_of)
+            donor = self._donor_for_places(k, segs, seg_places, seg_cues, sentence_of, hollow)
             if donor is not None:
                 pairs.extend(Claim(p, c) for p in seg_places[k] for c in seg_cues[donor])
-        # 3. cue-only segments attach to the places they talk about
+        # 3. cue-only segments attach to the places they talk about; a segment whose place was
+        #    repaired away keeps its cues for the replacement (step 2), they do not float
         for k, cs in seg_cues.items():
             if seg_places.get(k):
                 continue
+            a, b = segs[k]
+            if any(p.status != "active" and a <= p.start_tok < b and not p.reason.startswith("in transit") for p in ex.places):
+                continue
+            if norms[b - 1] in lx.PREPOSITIONS or norms[b - 1] in lx.DETERMINERS:
+                nxt = k + 1
+                while nxt in hollow:
+                    nxt += 1
+                if seg_places.get(nxt):
+                    pairs.extend(Claim(p, c) for p in seg_places[nxt] for c in cs)
+                    continue
             target = self._target_for_cues(k, segs, seg_places, seg_cues, sentence_of)
             if target is not None:
                 pairs.extend(Claim(p, c) for p in seg_places[target] for c in cs)
@@ -614,8 +730,16 @@ class ReportAnalyzer:
 
     @staticmethod
     def _donor_for_places(k: int, segs: list[tuple[int, int]], seg_places: dict[int, list[PlaceMention]],
-                          seg_cues: dict[int, list[CueMention]], sentence_of: list[int]) -> int | None:
+                          seg_cues: dict[int, list[CueMention]], sentence_of: list[int], hollow: set[int]) -> int | None:
         sent = sentence_of[segs[k][0]]
+        # backward: "fire at the bakery and the school", "people trapped in the, um, school, no, the library"
+        j = k - 1
+        while j >= 0 and sentence_of[segs[j][0]] == sent:
+            if seg_cues.get(j):
+                return j
+            if not seg_places.get(j) and j not in hollow:
+                break
+            j -= 1
         # forward through a list: "the bakery, the school and the library are on fire"
         j = k + 1
         while j < len(segs) and sentence_of[segs[j][0]] == sent:
@@ -624,17 +748,9 @@ class ReportAnalyzer:
                 if not ps or min(p.start_tok for p in ps) <= min(c.start_tok for c in seg_cues[j]):
                     return j
                 break
-            if not seg_places.get(j):
+            if not seg_places.get(j) and j not in hollow:
                 break
             j += 1
-        # backward: "fire at the bakery and the school"
-        j = k - 1
-        while j >= 0 and sentence_of[segs[j][0]] == sent:
-            if seg_cues.get(j):
-                return j
-            if not seg_places.get(j):
-                break
-            j -= 1
         return None
 
     @staticmethod

@@ -35,7 +35,9 @@ live wire|live wires|power line down|power lines down|downed lines|sparking|spar
 chemical|chemicals|toxic|spill|spilled|spilt|hazmat|contaminated|radiation|asbestos|
 dangerous|danger|unsafe|hazard|hazardous|hazards|threat|no go|no-go|off limits|do not enter|keep out|stay away|
 avoid|blocked|impassable|sinkhole|landslide|mudslide|hot spot|hotspot|burning debris|roof down|roof collapsed|
-gunfire|shooter|armed|looters|riot|on fire again|reignited|spreading|spread
+gunfire|shooter|armed|looters|riot|on fire again|reignited|spreading|spread|unsound|structurally unsound|
+compromised|unstable structure|partially collapsed|caving|smouldering|smoldering|charred|gutted|
+smell of gas|strong smell of gas|gas smell|water damage|waist deep|chest deep|electrical hazard|exposed wiring
 """.replace("\n", ""))
 
 _add(DESIRABLE, """
@@ -58,7 +60,9 @@ missing person|missing persons|missing|man down|person down|woman down|people do
 medical emergency|medical help|needs a medic|needs medic|needs an ambulance|needs evacuation|
 can't get out|cannot get out|can't move|cannot move|burns victim|overcome by smoke|
 stranded|cut off|trapped people|trapped persons|people trapped|someone trapped|somebody trapped|
-hypothermic|drowning|bleeding out|critical condition|in shock|lost consciousness|passed out|fainted|collapsed inside
+hypothermic|drowning|bleeding out|critical condition|in shock|lost consciousness|passed out|fainted|collapsed inside|
+pinned under debris|pinned under rubble|trapped under debris|trapped under rubble|buried under rubble|buried under debris|
+trapped in rubble|under the rubble|needs medics|need medics|needs a doctor|requires evacuation|unaccounted for
 """.replace("\n", ""))
 
 # "collapsed" alone is structural (hazard); "collapsed inside" / "passed out" is a person.
@@ -140,6 +144,17 @@ COPULAS = {"is", "are", "was", "were", "s", "re", "has", "have", "had", "got", "
            "completely", "fully", "all", "partly", "partially", "badly", "also", "too", "reported",
            "confirmed", "showing", "shows", "looking", "sounds", "sound", "feels", "very", "really",
            "pretty", "quite", "heavily", "seriously", "apparently", "probably", "possibly", "maybe"}
+# Places in these phrases are being passed or travelled to: the report claims nothing about them.
+TRANSIT = ["heading to", "heading for", "heading towards", "heading toward", "headed to", "headed for", "head to",
+           "passing", "passed", "moving past", "going past", "driving past", "walking past", "past",
+           "on our way to", "on the way to", "our way to", "en route to", "enroute to", "going to", "driving to",
+           "walking to", "moving to", "moving towards", "proceeding to", "approaching", "leaving",
+           "just left", "came from", "come from", "just came from", "coming back from", "returning to",
+           "returning from", "parked at", "parked by", "parked near", "parked the truck at", "parked the truck by",
+           "staged at", "regrouping at", "relocating to", "diverting to", "rerouting to", "going round",
+           "we're at", "we are at", "currently at", "positioned at", "standing by at", "checking", "will check",
+           "about to check", "searching", "sweeping", "en route"]
+
 PRONOUNS = {"it", "its", "there", "that", "they", "them", "this", "place", "building", "same"}
 COORDINATORS = {"and", "but", "while", "whereas", "plus", "also", "then", "meanwhile", "however",
                 "though", "although", "yet", "additionally"}

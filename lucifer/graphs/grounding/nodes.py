@@ -49,9 +49,6 @@ async def retrieve_context(state: GroundingState, runtime: Runtime[GroundingCont
     if res.retriever is None:
         return {"retrieved": [], "trace": _step("retrieve_context", t0, {"report": state.report}, {"retrieved": []})}
     queries = [state.report[:2000]]
-    sentences = [s.strip() for s in state.report.replace("!", ".").replace("?", ".").split(".") if len(s.strip()) > 3]
-    if len(sentences) > 1:
-        queries += sentences[:8]
     hits = await asyncio.to_thread(res.retriever.retrieve, queries, runtime.context.top_k, GROUNDING_KINDS)
     retrieved = [h.as_dict() | {"text": h.text} for h in hits[: runtime.context.top_k * 2]]
     return {
