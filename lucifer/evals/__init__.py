@@ -1,0 +1,1 @@
+"""Benchmarks and evaluations behind ``lucifer eval``."""
