@@ -139,7 +139,7 @@ class ReportAnalyzer:
         self._transit: PhraseMatcher[str] = PhraseMatcher()
         for t in lx.TRANSIT:
             self._transit.add(norm_phrase(t), t)
-        self._relations: PhraseMatcher[str] = PhraseMatcher()  # phrase -> canonical relation phrase
+        self._relations: PhraseMatcher[tuple[str, bool]] = PhraseMatcher()  # phrase -> (relation, inverse)
         self._build_relations()
 
     # ------------------------------------------------------------------ vocabulary
@@ -187,16 +187,21 @@ class ReportAnalyzer:
             self._cues.add(key, val)
 
     def _build_relations(self) -> None:
-        canonical_of: dict[str, str] = {}
+        """Surface forms of every relation: synonym groups plus forms derived from the KB's own names.
+
+        The matcher maps a phrase to ``(relation phrase, inverse)``; ``inverse`` means the report
+        reads the relation backwards ("downstream of" for ``upstream_of``, "overlooked by" for
+        ``overlooks``).
+        """
+        forms: dict[tuple[str, ...], tuple[str, bool]] = {}
         for canon, syns in lx.RELATION_SYNONYMS.items():
-            for s in syns:
-                canonical_of[s] = canon
+            for syn in syns:
+                forms[norm_phrase(syn)] = (canon, False)
         for rel in self.kb.relations:
-            phrase = rel.phrase
-            self._relations.add(norm_phrase(phrase), phrase)
-        for syn, canon in canonical_of.items():
-            self._relations.add(norm_phrase(syn), canon)
-        self._kb_relation_phrases = sorted({r.phrase for r in self.kb.relations})
+            for form, inverse in _relation_forms(rel.phrase):
+                forms[norm_phrase(form)] = (rel.phrase, inverse)
+        for key, val in forms.items():
+            self._relations.add(key, val)
 
     # ------------------------------------------------------------------ extract
     def extract(self, text: str) -> Extraction:
@@ -221,7 +226,7 @@ class ReportAnalyzer:
         out = []
         for t in toks.tokens:
             nxt_gap = toks.gaps[t.i + 1] if t.i + 1 < len(toks) else toks.text[t.end:]
-            if t.i in taken or not nxt_gap[:1] in ("-", "—", "–") or len(t.text) > 6:
+            if t.i in taken or nxt_gap[:1] not in ("-", "—", "–") or len(t.text) > 6:
                 continue
             frag = t.text.lower()
             for lm in self.kb.landmarks:
@@ -285,59 +290,160 @@ class ReportAnalyzer:
         return merged
 
     def _resolve_relations(self, ex: Extraction) -> None:
-        """Replace "<generic head> <relation> <place>" by the place the KB relation leads to.
+        """Replace relational descriptions by the place the KB relation leads to.
 
-        Chains ("the cafe next to the shop attached to the bakery") resolve right to left.
+        * "the shop attached to the bakery" / "the one next to it" (generic head + relation + anchor)
+        * "casualties round the back of the hardware store" (a cue, then relation + anchor)
+        * "the one the garage sits behind" (inverse: head + anchor + relation)
+        Chains ("the cafe next to the shop attached to the bakery") resolve right to left; the
+        anchor becomes a reference point, not a claim.
         """
         toks = ex.tokens
         norms = toks.norms(0, len(toks))
         place_tokens = {i for p in ex.places for i in range(p.start_tok, p.end_tok)}
+        marker_tokens = {i for ma, mb, _ in ex.markers for i in range(ma, mb)}
         rel_hits = self._relations.find_all(norms, place_tokens)
-        for a, b, phrase in sorted(rel_hits, key=lambda h: -h[0]):
-            anchor = next((p for p in ex.places if p.start_tok >= b and p.status == "active"
-                           and all(norms[j] in lx.DETERMINERS or norms[j] in lx.FILLERS for j in range(b, p.start_tok))), None)
-            if anchor is None:
-                continue
-            # the described place: the phrase right before the relation words
+        ordered = sorted(rel_hits, key=lambda h: -h[0])
+        for pass_no in (1, 2):
+            for a, b, (phrase, flipped) in ordered:
+                self._resolve_one(ex, toks, norms, a, b, phrase, flipped, place_tokens, marker_tokens,
+                                  inverse_pass=pass_no == 2)
+
+    def _resolve_one(self, ex: Extraction, toks: Tokens, norms: tuple[str, ...], a: int, b: int, phrase: str,
+                     flipped: bool, place_tokens: set[int], marker_tokens: set[int], inverse_pass: bool) -> None:
+        if True:
+            if any(i in place_tokens for i in range(a, b)):
+                return  # already inside a resolved description
+            anchor, anchor_end, pronoun = self._anchor_after(ex, norms, b)
+            if (anchor is None) != inverse_pass:
+                return
             head_end = a
             head_place = next((p for p in ex.places if p.end_tok == head_end and p.status == "active"), None)
-            if head_place is not None:
+            if anchor is not None and head_place is not None:
                 # "the pharmacy next to the bakery": the place is named; the anchor is only a reference
+                if not pronoun:
+                    idx = ex.places.index(anchor)
+                    ex.places[idx] = replace(anchor, status="reference", reason=f"reference point for '{head_place.text}'")
+                return
+            head_start, words = self._head_before(toks, norms, head_end, place_tokens, marker_tokens)
+            head_text = " ".join(toks.tokens[j].text for j in range(head_start, head_end))
+            generic = bool(words) and any(w in lx.GENERIC_HEADS for w in words[-2:]) \
+                and self._cues.match_at(norms, head_end - 1) is None
+            if anchor is None:
+                # inverse: "the one (that) the garage sits behind"
+                if generic or not words:
+                    return
+                found = self._inverse_anchor(ex, norms, a)
+                if found is None:
+                    return
+                anchor_p, hs, named = found
+                inv = anchor_p if named else None
+                if isinstance(inv, PlaceMention):
+                    ex.places[ex.places.index(inv)] = replace(inv, status="reference", reason="reference point of a named place")
+                    return
+                target, via = self._follow(anchor_p.landmark, phrase, " ".join(toks.tokens[j].text for j in range(hs, anchor_p.start_tok)), inverse=not flipped)
+                if target is None:
+                    return
+                ex.places[ex.places.index(anchor_p)] = replace(anchor_p, status="reference", reason=f"reference point: {via}")
+                new = self._mention(toks, hs, b, target, via=via)
+                ex.places.append(new)
+                place_tokens.update(range(hs, b))
+                return
+            if not generic:
+                # a cue (or nothing) before the relation: "man down across the street from the fire station"
+                if norms[a:b] in lx.AMBIGUOUS_HEADLESS or (words and not self._is_cue_end(norms, head_end)):
+                    return
+                head_start, head_text = a, ""
+            target, via = self._follow(anchor.landmark, phrase, head_text, inverse=flipped)
+            if not pronoun:
                 idx = ex.places.index(anchor)
-                ex.places[idx] = replace(anchor, status="reference", reason=f"reference point for '{head_place.text}'")
-                continue
-            marker_tokens = {i for ma, mb, _ in ex.markers for i in range(ma, mb)}
-            head_start = head_end
-            while head_start > 0 and head_end - head_start < 4 and not toks.clause_start[head_start]:
-                prev = head_start - 1
-                w = norms[prev]
-                if w in lx.PREPOSITIONS or w in lx.COPULAS or prev in place_tokens or prev in marker_tokens:
-                    break
-                head_start -= 1
-                if w in lx.DETERMINERS:
-                    break
-            # keep only the head noun phrase: drop leading determiners/fillers
-            words = [norms[j] for j in range(head_start, head_end)]
-            while words and (words[0] in lx.DETERMINERS or words[0] in lx.FILLERS):
-                words.pop(0)
-                head_start += 1
-            if not words or not any(w in lx.GENERIC_HEADS for w in words[-2:]):
-                continue
-            # a cue word as head ("fire next to the bank") is not a place description
-            if self._cues.match_at(norms, head_end - 1) is not None:
-                continue
-            target, via = self._follow(anchor.landmark, phrase, " ".join(toks.tokens[j].text for j in range(head_start, head_end)))
-            idx = ex.places.index(anchor)
-            if target is None:
-                ex.places[idx] = replace(anchor, status="reference", reason=f"reference point of an unresolved '{phrase}' description")
-                continue
-            ex.places[idx] = replace(anchor, status="reference", reason=f"reference point: {via}")
+                if target is None:
+                    ex.places[idx] = replace(anchor, status="reference",
+                                             reason=f"reference point of an unresolved '{phrase}' description")
+                    return
+                ex.places[idx] = replace(anchor, status="reference", reason=f"reference point: {via}")
+            elif target is None:
+                return
             det_start = head_start
-            while det_start > 0 and norms[det_start - 1] in lx.DETERMINERS and not toks.clause_start[det_start]:
+            while det_start > 0 and norms[det_start - 1] in lx.DETERMINERS and not toks.clause_start[det_start] \
+                    and head_text:
                 det_start -= 1
-            new = self._mention(toks, det_start, anchor.end_tok, target, via=via)
+            new = self._mention(toks, det_start, anchor_end, target, via=via)
             ex.places.append(new)
-            place_tokens.update(range(det_start, anchor.end_tok))
+            place_tokens.update(range(det_start, anchor_end))
+
+    def _is_cue_end(self, norms: tuple[str, ...], end: int) -> bool:
+        """Does a cue phrase end right before token ``end`` (allowing prepositions in between)?"""
+        j = end
+        while j > 0 and norms[j - 1] in lx.PREPOSITIONS | lx.DETERMINERS | lx.FILLERS and end - j < 3:
+            j -= 1
+        for k in range(max(0, j - 4), j):
+            hit = self._cues.match_at(norms, k)
+            if hit is not None and hit[0] == j:
+                return True
+        return False
+
+    def _anchor_after(self, ex: Extraction, norms: tuple[str, ...], b: int) -> tuple[PlaceMention | None, int, bool]:
+        """The landmark a relation phrase points at: a place right after it, or a pronoun."""
+        j = b
+        while j < len(norms) and (norms[j] in lx.DETERMINERS or norms[j] in lx.FILLERS) and j - b < 3:
+            j += 1
+        place = next((p for p in ex.places if p.start_tok == j or (p.start_tok >= b and p.start_tok <= j and p.status == "active")), None)
+        if place is not None and place.status in ("active", "retracted", "negated"):
+            if place.status == "active" or place.start_tok == j:
+                return place, place.end_tok, False
+        if j < len(norms) and norms[j] in ("it", "them", "that", "there", "us"):
+            if norms[j] in ("that", "there") and j + 1 < len(norms) and not ex.tokens.clause_start[j + 1] \
+                    and norms[j + 1] not in lx.COPULAS:
+                return None, b, False
+            before = [p for p in ex.places if p.end_tok <= b]
+            if norms[j] == "us":
+                before = [p for p in before if p.reason.startswith("in transit")] or before
+            if before:
+                ante = max(before, key=lambda p: p.end_tok)
+                return ante, j + 1, True
+        return None, b, False
+
+    def _head_before(self, toks: Tokens, norms: tuple[str, ...], head_end: int, place_tokens: set[int],
+                     marker_tokens: set[int]) -> tuple[int, list[str]]:
+        head_start = head_end
+        while head_start > 0 and head_end - head_start < 4 and not toks.clause_start[head_start]:
+            prev = head_start - 1
+            w = norms[prev]
+            if w in lx.PREPOSITIONS or w in lx.COPULAS or prev in place_tokens or prev in marker_tokens:
+                break
+            head_start -= 1
+            if w in lx.DETERMINERS:
+                break
+        words = [norms[j] for j in range(head_start, head_end)]
+        while words and (words[0] in lx.DETERMINERS or words[0] in lx.FILLERS):
+            words.pop(0)
+            head_start += 1
+        return head_start, words
+
+    def _inverse_anchor(self, ex: Extraction, norms: tuple[str, ...], a: int) -> tuple[PlaceMention, int, bool] | None:
+        """"the one (that) the garage sits behind": (anchor, start of the description, head is a named place)."""
+        j = a
+        while j > 0 and norms[j - 1] in lx.INVERSE_VERBS and a - j < 3:
+            j -= 1
+        anchor = next((p for p in ex.places if p.end_tok == j and p.status == "active"), None)
+        if anchor is None:
+            return None
+        k = anchor.start_tok
+        while k > 0 and norms[k - 1] in lx.DETERMINERS | {"that", "which", "where"} and anchor.start_tok - k < 3:
+            k -= 1
+        named = next((p for p in ex.places if p.end_tok == k and p.status == "active" and p is not anchor), None)
+        if named is not None and k < anchor.start_tok:
+            # "the green the abbey overlooks": the head is named, the anchor is a reference
+            return anchor, named.start_tok, True
+        hs = k
+        while hs > 0 and k - hs < 3 and norms[hs - 1] not in lx.PREPOSITIONS | lx.COPULAS and not ex.tokens.clause_start[hs]:
+            hs -= 1
+            if norms[hs] in lx.GENERIC_HEADS:
+                while hs > 0 and norms[hs - 1] in lx.DETERMINERS:
+                    hs -= 1
+                return anchor, hs, False
+        return None
 
     def _relation_matches(self, rel: Relation, phrase: str) -> bool:
         rp = rel.phrase
@@ -348,17 +454,32 @@ class ReportAnalyzer:
                 return True
         return False
 
-    def _follow(self, anchor: str, phrase: str, head: str) -> tuple[str | None, str | None]:
-        """Landmarks standing in relation ``phrase`` to ``anchor``; ties broken by the head noun."""
+    def _follow(self, anchor: str, phrase: str, head: str, inverse: bool = False) -> tuple[str | None, str | None]:
+        """Landmarks standing in relation ``phrase`` to ``anchor``; ties broken by the head noun.
+
+        ``X phrase anchor`` normally; with ``inverse`` the description reads ``anchor phrase X``.
+        An inverse phrase ("in front of" for "behind") reads the KB relation backwards.
+        """
         cands: list[tuple[str, str]] = []
+        opposite = lx.INVERSE_PHRASES.get(phrase)
         for rel in self.kb.relations:
-            if not self._relation_matches(rel, phrase):
-                if not self._fuzzy_relation(rel.phrase, phrase):
-                    continue
-            if rel.object == anchor:
-                cands.append((rel.subject, f"{rel.subject} {rel.relation} {rel.object}"))
-            elif rel.subject == anchor and any(h in rel.phrase for h in lx.SYMMETRIC_HINTS):
-                cands.append((rel.object, f"{rel.subject} {rel.relation} {rel.object}"))
+            desc = f"{rel.subject} {rel.relation} {rel.object}"
+            symmetric = any(h in rel.phrase for h in lx.SYMMETRIC_HINTS)
+            if self._relation_matches(rel, phrase) or self._fuzzy_relation(rel.phrase, phrase):
+                forward_hit = rel.subject if rel.object == anchor else None
+                backward_hit = rel.object if rel.subject == anchor else None
+                if inverse:
+                    forward_hit, backward_hit = backward_hit, forward_hit
+                if forward_hit:
+                    cands.append((forward_hit, desc))
+                elif backward_hit and symmetric:
+                    cands.append((backward_hit, desc))
+            elif opposite and self._relation_matches(rel, opposite):
+                hit = rel.object if rel.subject == anchor else None
+                if inverse:
+                    hit = rel.subject if rel.object == anchor else None
+                if hit:
+                    cands.append((hit, desc))
         if not cands:
             cands = self._grid_relation(anchor, phrase)
         uniq = {c[0]: c for c in cands}
@@ -693,7 +814,8 @@ class ReportAnalyzer:
         for k in order:
             if seg_cues.get(k):
                 continue
-            donor = self._donor_for_places(k, segs, seg_places, seg_cues, sentence_of, hollow)
+            donor = self._donor_for_places(k, segs, seg_places, seg_cues, sentence_of, hollow,
+                                           [norms[a] for a, _ in segs])
             if donor is not None:
                 pairs.extend(Claim(p, c) for p in seg_places[k] for c in seg_cues[donor])
         # 3. cue-only segments attach to the places they talk about; a segment whose place was
@@ -730,8 +852,17 @@ class ReportAnalyzer:
 
     @staticmethod
     def _donor_for_places(k: int, segs: list[tuple[int, int]], seg_places: dict[int, list[PlaceMention]],
-                          seg_cues: dict[int, list[CueMention]], sentence_of: list[int], hollow: set[int]) -> int | None:
+                          seg_cues: dict[int, list[CueMention]], sentence_of: list[int], hollow: set[int],
+                          first_norm: list[str]) -> int | None:
         sent = sentence_of[segs[k][0]]
+        # a list closed by "and": "the hotel and the market square are all clear"
+        j = k + 1
+        while j < len(segs) and sentence_of[segs[j][0]] == sent and (j in hollow or (seg_places.get(j) and not seg_cues.get(j))):
+            j += 1
+        if j < len(segs) and sentence_of[segs[j][0]] == sent and seg_cues.get(j) and seg_places.get(j) \
+                and first_norm[j] in ("and", "or", "plus") \
+                and min(p.start_tok for p in seg_places[j]) < min(c.start_tok for c in seg_cues[j]):
+            return j
         # backward: "fire at the bakery and the school", "people trapped in the, um, school, no, the library"
         j = k - 1
         while j >= 0 and sentence_of[segs[j][0]] == sent:
@@ -767,6 +898,49 @@ class ReportAnalyzer:
         if j < len(segs) and seg_places.get(j) and not seg_cues.get(j) and sentence_of[segs[j][0]] == sentence_of[segs[k][0]]:
             return j
         return None
+
+
+def _relation_forms(phrase: str) -> list[tuple[str, bool]]:
+    """Forward and inverse surface forms of a KB relation name.
+
+    >>> sorted(f for f, inv in _relation_forms("overlooks") if inv)[:3]
+    ['looked over by', 'overlooked by']
+    >>> ("downstream of", True) in _relation_forms("upstream of")
+    True
+    """
+    words = phrase.split()
+    out: list[tuple[str, bool]] = [(phrase, False)]
+    # antonym swap reads the relation backwards: "upstream of" -> "downstream of"
+    swapped = [lx.ANTONYMS.get(w, w) for w in words]
+    if swapped != words:
+        out.append((" ".join(swapped), True))
+    verb = words[0]
+    rest = " ".join(words[1:])
+    if not (len(words) == 1 or verb.endswith("s")) or verb in lx.ANTONYMS or verb.endswith("ss"):
+        return _with_group_inverses(phrase, out)
+    stems = {verb}
+    for suffix in ("es", "s"):
+        if verb.endswith(suffix) and len(verb) > len(suffix) + 2:
+            stems.add(verb[: -len(suffix)])
+            break
+    for stem in list(stems):
+        base = stem[:-1] if stem.endswith("e") else stem
+        for v in (stem, stem + "s", base + "ing"):
+            out.append((f"{v} {rest}".strip(), False))
+            out.append((f"that {v} {rest}".strip(), False))
+        for v in (base + "ed", stem + "ed"):
+            out.append((f"{v} by", True))
+    return _with_group_inverses(phrase, out)
+
+
+def _with_group_inverses(phrase: str, out: list[tuple[str, bool]]) -> list[tuple[str, bool]]:
+    """Add the synonyms of the opposite relation group as inverse forms."""
+    for canon, syns in lx.RELATION_SYNONYMS.items():
+        if phrase == canon or phrase in syns:
+            opposite = lx.INVERSE_PHRASES.get(canon)
+            if opposite:
+                out.extend((syn, True) for syn in lx.RELATION_SYNONYMS.get(opposite, []))
+    return list(dict.fromkeys(out))
 
 
 def analyze(analyzer: ReportAnalyzer, text: str) -> tuple[Extraction, Classification]:

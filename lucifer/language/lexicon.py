@@ -62,7 +62,11 @@ can't get out|cannot get out|can't move|cannot move|burns victim|overcome by smo
 stranded|cut off|trapped people|trapped persons|people trapped|someone trapped|somebody trapped|
 hypothermic|drowning|bleeding out|critical condition|in shock|lost consciousness|passed out|fainted|collapsed inside|
 pinned under debris|pinned under rubble|trapped under debris|trapped under rubble|buried under rubble|buried under debris|
-trapped in rubble|under the rubble|needs medics|need medics|needs a doctor|requires evacuation|unaccounted for
+trapped in rubble|under the rubble|needs medics|need medics|needs a doctor|requires evacuation|unaccounted for|
+people still inside|still inside|someone still inside|people stuck|people stuck inside|with people inside|
+man collapsed|woman collapsed|person collapsed|someone collapsed|somebody collapsed|he collapsed|she collapsed|
+needs oxygen|need oxygen|having a heart attack|heart attack|seizure|having a seizure|can't breathe|cannot breathe|
+stuck on the roof|stranded on the roof|on the roof waiting|waving from|trapped upstairs|trapped on
 """.replace("\n", ""))
 
 # "collapsed" alone is structural (hazard); "collapsed inside" / "passed out" is a person.
@@ -101,26 +105,56 @@ WEAK_REPAIR = ["sorry", "actually", "or rather", "rather", "wait", "no", "nope",
 # Spatial phrases that link a described place to a landmark; relation names in the KB are
 # matched verbatim ("attached_to" -> "attached to") and through these synonyms.
 RELATION_SYNONYMS: dict[str, list[str]] = {
-    "attached to": ["attached to", "built onto", "built on to", "joined to", "connected to", "adjoining",
-                    "adjoins", "attached onto", "stuck onto", "part of"],
+    "attached to": ["attached to", "built onto", "built on to", "joined to", "joined onto", "joined on to",
+                    "connected to", "adjoining", "adjoins", "adjoin", "attached onto", "stuck onto",
+                    "sharing a wall with", "shares a wall with", "that shares a wall with", "built against",
+                    "abutting", "abuts", "butting onto", "bolted onto", "tacked onto"],
     "next to": ["next to", "next door to", "beside", "besides", "alongside", "adjacent to", "right by",
-                "right next to", "just next to", "by", "neighbouring", "neighboring", "next door from"],
+                "right next to", "just next to", "by", "neighbouring", "neighboring", "next door from",
+                "immediately next to", "directly next to", "to the side of"],
     "across from": ["across from", "opposite", "opposite to", "across the street from", "across the road from",
-                    "facing", "over the road from", "across the square from", "across the way from"],
+                    "facing", "over the road from", "across the square from", "across the way from",
+                    "over the street from", "directly across from", "straight across from", "that faces",
+                    "faces", "opposite of"],
     "behind": ["behind", "round the back of", "around the back of", "at the back of", "in back of",
-               "back of", "to the rear of", "at the rear of", "out back of"],
-    "in front of": ["in front of", "out front of"],
+               "back of", "to the rear of", "at the rear of", "out back of", "directly behind", "right behind",
+               "just behind"],
+    "in front of": ["in front of", "out front of", "directly in front of", "right in front of", "at the front of"],
     "inside": ["inside", "within"],
-    "above": ["above", "on top of", "upstairs from"],
-    "below": ["below", "under", "underneath", "beneath", "downstairs from"],
-    "north of": ["north of", "to the north of", "northside of", "up from"],
-    "south of": ["south of", "to the south of", "down from"],
+    "above": ["above", "on top of", "upstairs from", "overlooks", "overlooking", "overlook", "looks over",
+              "looking over", "looks down on", "looking down on", "looking down over", "up above", "up from",
+              "higher than", "uphill from", "up the hill from"],
+    "below": ["below", "under", "underneath", "beneath", "downstairs from", "down below", "overlooked by",
+              "looked over by", "down from", "downhill from", "down the hill from", "at the foot of"],
+    "upstream of": ["upstream of", "upstream from", "up the river from", "upriver of", "upriver from",
+                    "up the stream from", "further up the river from"],
+    "downstream of": ["downstream of", "downstream from", "down the river from", "downriver of", "downriver from",
+                      "down the stream from", "further down the river from"],
+    "north of": ["north of", "to the north of", "northside of"],
+    "south of": ["south of", "to the south of"],
     "east of": ["east of", "to the east of"],
     "west of": ["west of", "to the west of"],
     "near": ["near", "close to", "near to", "nearby"],
 }
+# Word swaps that turn a relation phrase into its inverse ("upstream of" <-> "downstream of").
+ANTONYMS = {"upstream": "downstream", "downstream": "upstream", "upriver": "downriver", "downriver": "upriver",
+            "above": "below", "below": "above", "over": "under", "under": "over", "north": "south",
+            "south": "north", "east": "west", "west": "east", "uphill": "downhill", "downhill": "uphill",
+            "before": "after", "after": "before", "upstairs": "downstairs", "downstairs": "upstairs",
+            "front": "back", "back": "front", "inside": "outside", "outside": "inside", "higher": "lower",
+            "lower": "higher", "feeds": "fed", "supplies": "supplied"}
 SYMMETRIC_HINTS = ("next", "adjacent", "beside", "across", "opposite", "adjoin", "near", "attached", "connected",
-                   "joined", "facing", "neighbo")
+                   "joined", "facing", "neighbo", "abut", "border", "touch", "share", "bord")
+
+# "X in front of Y" is "Y behind X": a report phrase read against the opposite KB relation.
+INVERSE_PHRASES = {"in front of": "behind", "behind": "in front of", "above": "below", "below": "above",
+                   "north of": "south of", "south of": "north of", "east of": "west of", "west of": "east of",
+                   "upstream of": "downstream of", "downstream of": "upstream of"}
+# Words between an anchor and a trailing relation: "the one the garage sits behind".
+INVERSE_VERBS = {"sits", "sit", "is", "s", "stands", "stand", "lies", "lie", "located", "situated", "are", "was",
+                 "right", "directly", "just"}
+# Relation words too common to resolve without a head noun ("blocked by the bank").
+AMBIGUOUS_HEADLESS = {("by",), ("inside",), ("within",), ("near",), ("above",), ("below",), ("before",)}
 
 # Nouns that describe a place generically; "the shop attached to X" is a relational reference.
 GENERIC_HEADS = {
@@ -131,6 +165,9 @@ GENERIC_HEADS = {
     "establishment", "complex", "church", "school", "clinic", "restaurant", "pub", "bar", "market",
     "bridge", "mill", "plant", "factory", "workshop", "cottage", "cabin", "dock", "pier", "square",
     "park", "field", "ground", "grounds", "point", "thing", "bit", "side", "corner", "room",
+    "space", "green", "lawn", "garden", "gardens", "road", "street", "alley", "terrace", "plot", "land", "apartments",
+    "flats", "bay", "wing", "hotel", "inn", "library", "hospital", "quarter", "section", "zone", "ones",
+    "neighbour", "neighbor", "door", "location", "address", "greenspace", "premise", "whatever",
 }
 
 FILLERS = {"uh", "um", "er", "erm", "ah", "eh", "hmm", "like", "so", "okay", "ok", "well", "yeah", "right",
