@@ -44,6 +44,7 @@ class PlaceMention:
     status: MentionStatus = "active"
     reason: str = ""
     via: str | None = None  # "pharmacy attached_to bakery" when reached through a relation
+    replaces: int | None = None  # start token of the mention this one repairs
 
     def as_dict(self) -> dict[str, object]:
         d: dict[str, object] = {"text": self.text, "span": [self.start, self.end], "landmark": self.landmark,
@@ -67,6 +68,7 @@ class CueMention:
     polarity: Literal["affirmed", "denied"] = "affirmed"
     status: Literal["active", "retracted"] = "active"
     reason: str = ""
+    replaces: int | None = None  # start token of the cue this one repairs
 
     def as_dict(self) -> dict[str, object]:
         d: dict[str, object] = {"text": self.text, "span": [self.start, self.end], "category": self.category,
@@ -210,7 +212,13 @@ class ReportAnalyzer:
         places: list[PlaceMention] = []
         for a, b, landmark in self._places.find_all(norms):
             places.append(self._mention(toks, a, b, landmark))
-        places.extend(self._false_starts(toks, {i for p in places for i in range(p.start_tok, p.end_tok)}))
+        starts = self._false_starts(toks, {i for p in places for i in range(p.start_tok, p.end_tok)})
+        for fs in starts:
+            nxt = min((p for p in places if p.start_tok >= fs.end_tok and p.start_tok - fs.end_tok <= 3),
+                      key=lambda p: p.start_tok, default=None)
+            if nxt is not None and nxt.replaces is None:
+                places[places.index(nxt)] = replace(nxt, replaces=fs.start_tok)
+        places.extend(starts)
         markers = self._find_markers(toks, {i for p in places for i in range(p.start_tok, p.end_tok)})
         ex = Extraction(toks, places, markers)
         self._resolve_relations(ex)
@@ -564,7 +572,7 @@ class ReportAnalyzer:
                 j -= 1
             for k in range(max(0, j - 5), j):
                 hit = self._transit.match_at(norms, k)
-                if hit is not None and hit[0] == j and not any(toks.clause_start[i] for i in range(k + 1, j + 1) if i < p.start_tok):
+                if hit is not None and j <= hit[0] <= p.start_tok and not any(toks.clause_start[i] for i in range(k + 1, min(hit[0], p.start_tok) + 1) if i < p.start_tok):
                     ex.places[idx] = replace(p, status="reference", reason=f"in transit ('{hit[1]}'): no claim")
                     break
 
@@ -580,6 +588,7 @@ class ReportAnalyzer:
                     and any(ex.tokens.clause_start[i] for i in range(p.end_tok, q.start_tok + 1)):
                 i = ex.places.index(p)
                 ex.places[i] = replace(p, status="retracted", reason="restarted: the speaker repeats the place")
+                ex.places[ex.places.index(q)] = replace(q, replaces=p.start_tok)
 
     def _after_clause(self, ex: Extraction, k: int) -> tuple[int, int]:
         """Tokens of the first clause after marker ``k`` (up to a clause break, coordinator or marker)."""
@@ -619,6 +628,9 @@ class ReportAnalyzer:
             i = ex.places.index(last)
             ex.places[i] = replace(last, status="retracted",
                                    reason=f"self-repair: '{toks.span_text(a, b)}' then '{after[0].text}'")
+            successor = next((p for p in sorted(after, key=lambda p: p.start_tok) if p.status == "active"), None)
+            if successor is not None and successor.replaces is None:
+                ex.places[ex.places.index(successor)] = replace(successor, replaces=last.start_tok)
             # its reference points ("the cafe across from the church") go with it
             for j, q in enumerate(ex.places):
                 if q.status == "reference" and last.start_tok <= q.start_tok < a:
@@ -652,6 +664,7 @@ class ReportAnalyzer:
         marker_tokens = {i for a, b, _ in ex.markers for i in range(a, b)}
         blocked |= marker_tokens
         self._place_tokens = {i for p in ex.places for i in range(p.start_tok, p.end_tok)}
+        self._marker_tokens = marker_tokens
         cues: list[CueMention] = []
         for a, b, (cat, source) in self._cues.find_all(norms, blocked):
             start, end = toks.tokens[a].start, toks.tokens[b - 1].end
@@ -671,7 +684,7 @@ class ReportAnalyzer:
         negated_by = None
         j = cue.start_tok - 1
         steps = 0
-        place_toks = self._place_tokens
+        place_toks = self._place_tokens | self._marker_tokens
         while j >= 0 and steps < 4 and j not in place_toks:
             if norms[j] in lx.NEGATORS or norms[j].endswith("nt") and norms[j] in ("isnt", "arent", "wasnt", "werent", "dont", "doesnt", "didnt", "hasnt", "havent", "cant"):
                 negated_by = toks.tokens[j].text
@@ -740,6 +753,8 @@ class ReportAnalyzer:
             last = max(before, key=lambda c: c.start_tok)
             i = out.index(last)
             out[i] = replace(last, status="retracted", reason=f"self-repair: '{toks.span_text(a, b)}' then '{first_cue.text}'")
+            j = out.index(first_cue)
+            out[j] = replace(first_cue, replaces=last.start_tok)
         return out
 
     def _segments(self, ex: Extraction) -> list[tuple[int, int]]:
@@ -762,28 +777,100 @@ class ReportAnalyzer:
         return merged
 
     def _associate(self, ex: Extraction, cues: list[CueMention]) -> tuple[list[Claim], list[Claim]]:
+        """Attach cues to places.
+
+        1. Natural binding: inside a segment every cue (live or retracted) binds to its nearest
+           place (active, retracted or negated), prepositional and copular binding first.
+        2. Repairs carry bindings over: a replacement place inherits the cues of the place it
+           replaced ("fire at the bank, sorry, the bakery"), a replacement cue binds to the place
+           of the cue it replaced ("the school is safe, sorry, it's on fire").
+        3. Cues in a segment without places attach to the place they talk about.
+        4. Places still without a cue borrow from the list they belong to.
+        """
         toks = ex.tokens
         norms = toks.norms(0, len(toks))
-        places = [p for p in ex.places if p.status == "active"]
-        live = [c for c in cues if c.status == "active"]
+        usable = [p for p in ex.places if p.status in ("active", "retracted", "negated")]
+        active = [p for p in usable if p.status == "active"]
         segs = self._segments(ex)
+        seg_index = [0] * len(toks)
+        for k, (a, b) in enumerate(segs):
+            for i in range(a, b):
+                seg_index[i] = k
+        place_at = {p.start_tok: p for p in usable}
+        cue_at = {c.start_tok: c for c in cues}
 
-        def seg_of(tok: int) -> int:
-            return next(k for k, (a, b) in enumerate(segs) if a <= tok < b)
+        # 1. natural binding
+        seg_usable: dict[int, list[PlaceMention]] = {}
+        for p in usable:
+            seg_usable.setdefault(seg_index[p.start_tok], []).append(p)
+        bound: dict[int, PlaceMention] = {}  # cue start -> place
+        for c in cues:
+            ps = seg_usable.get(seg_index[c.start_tok], [])
+            if ps:
+                bound[c.start_tok] = ps[0] if len(ps) == 1 else min(ps, key=lambda p: self._bind_cost(norms, c, p))
+        own: dict[int, list[CueMention]] = {}  # place start -> live cues bound naturally
+        for c in cues:
+            if c.status == "active" and c.start_tok in bound and c.replaces is None:
+                own.setdefault(bound[c.start_tok].start_tok, []).append(c)
+
+        successor: dict[int, PlaceMention] = {}
+        for p in usable:
+            if p.replaces is not None:
+                successor[p.replaces] = p
+
+        def forward(p: PlaceMention | None) -> PlaceMention | None:
+            seen = 0
+            while p is not None and p.status != "active" and seen < 10:
+                p = successor.get(p.start_tok)
+                seen += 1
+            return p if p is not None and p.status == "active" else None
+
+        def owner(c: CueMention) -> PlaceMention | None:
+            seen = 0
+            while c.replaces is not None and c.replaces in cue_at and seen < 10:
+                c = cue_at[c.replaces]
+                seen += 1
+            return bound.get(c.start_tok)
+
+        pairs: list[Claim] = []
+        claimed_places: set[int] = set()
+        handled: set[int] = set()
+        for c in cues:
+            if c.status != "active":
+                continue
+            if c.replaces is not None:
+                tgt = forward(owner(c))
+                if tgt is not None:
+                    pairs.append(Claim(tgt, c))
+                    claimed_places.add(tgt.start_tok)
+                    handled.add(c.start_tok)
+                    continue
+            p = bound.get(c.start_tok)
+            if p is None:
+                continue
+            handled.add(c.start_tok)
+            if p.status == "active":
+                pairs.append(Claim(p, c))
+                claimed_places.add(p.start_tok)
+                continue
+            tgt = forward(p)
+            if tgt is not None and not own.get(tgt.start_tok):
+                pairs.append(Claim(tgt, c))
+                claimed_places.add(tgt.start_tok)
 
         seg_places: dict[int, list[PlaceMention]] = {}
-        for p in places:
-            seg_places.setdefault(seg_of(p.start_tok), []).append(p)
+        for p in active:
+            seg_places.setdefault(seg_index[p.start_tok], []).append(p)
         seg_cues: dict[int, list[CueMention]] = {}
-        for c in live:
-            seg_cues.setdefault(seg_of(c.start_tok), []).append(c)
+        for c in cues:
+            if c.status == "active":
+                seg_cues.setdefault(seg_index[c.start_tok], []).append(c)
         sentence_of = []
-        s = -1
+        sn = -1
         for i in range(len(toks)):
             if toks.sentence_start[i]:
-                s += 1
-            sentence_of.append(s)
-
+                sn += 1
+            sentence_of.append(sn)
         marker_tokens = {i for a, b, _ in ex.markers for i in range(a, b)}
         inactive_tokens = {i for p in ex.places if p.status != "active" for i in range(p.start_tok, p.end_tok)}
         cue_tokens = {i for c in cues for i in range(c.start_tok, c.end_tok)}
@@ -791,51 +878,40 @@ class ReportAnalyzer:
                   if all((i in marker_tokens or i in inactive_tokens or norms[i] in lx.FILLERS or norms[i] in lx.COORDINATORS
                           or norms[i] in lx.DETERMINERS or norms[i] in lx.PREPOSITIONS or norms[i] in ("just", "only", "its", "it"))
                          and i not in cue_tokens for i in range(a, b))}
-        pairs: list[Claim] = []
-        # 1. places and cues in the same segment
-        for k, ps in seg_places.items():
-            cs = seg_cues.get(k, [])
-            if not cs:
-                continue
-            if len(ps) == 1:
-                pairs.extend(Claim(ps[0], c) for c in cs)
-                continue
-            # several places: each cue binds to its nearest place (prepositional binding first);
-            # places left without a cue take the nearest cue
-            got: dict[int, list[CueMention]] = {id(p): [] for p in ps}
-            for c in cs:
-                best = min(ps, key=lambda p: self._bind_cost(norms, c, p))
-                got[id(best)].append(c)
-            for p in ps:
-                mine = got[id(p)] or [min(cs, key=lambda c: self._bind_cost(norms, c, p))]
-                pairs.extend(Claim(p, c) for c in mine)
-        # 2. place-only segments borrow the cues of a list they belong to
-        order = sorted(seg_places)
-        for k in order:
-            if seg_cues.get(k):
-                continue
-            donor = self._donor_for_places(k, segs, seg_places, seg_cues, sentence_of, hollow,
-                                           [norms[a] for a, _ in segs])
-            if donor is not None:
-                pairs.extend(Claim(p, c) for p in seg_places[k] for c in seg_cues[donor])
+
         # 3. cue-only segments attach to the places they talk about; a segment whose place was
         #    repaired away keeps its cues for the replacement (step 2), they do not float
         for k, cs in seg_cues.items():
-            if seg_places.get(k):
+            cs = [c for c in cs if c.start_tok not in handled]
+            if not cs or seg_usable.get(k):
                 continue
             a, b = segs[k]
-            if any(p.status != "active" and a <= p.start_tok < b and not p.reason.startswith("in transit") for p in ex.places):
-                continue
             if norms[b - 1] in lx.PREPOSITIONS or norms[b - 1] in lx.DETERMINERS:
                 nxt = k + 1
                 while nxt in hollow:
                     nxt += 1
                 if seg_places.get(nxt):
                     pairs.extend(Claim(p, c) for p in seg_places[nxt] for c in cs)
+                    claimed_places.update(p.start_tok for p in seg_places[nxt])
                     continue
             target = self._target_for_cues(k, segs, seg_places, seg_cues, sentence_of)
             if target is not None:
                 pairs.extend(Claim(p, c) for p in seg_places[target] for c in cs)
+                claimed_places.update(p.start_tok for p in seg_places[target])
+
+        # 2b/4. places without a cue: inherit from the place they replaced, else borrow from a list
+        for p in sorted(active, key=lambda p: p.start_tok):
+            if p.start_tok in claimed_places:
+                continue
+            k = seg_index[p.start_tok]
+            if seg_cues.get(k) and len(seg_places.get(k, [])) == 1 and not any(
+                    q.status != "active" for q in seg_usable.get(k, [])):
+                pairs.extend(Claim(p, c) for c in seg_cues[k])
+                continue
+            donor = self._donor_for_places(k, segs, seg_places, seg_cues, sentence_of, hollow,
+                                           [norms[a] for a, _ in segs])
+            if donor is not None:
+                pairs.extend(Claim(p, c) for c in seg_cues[donor])
         claims = [c for c in pairs if c.cue.polarity == "affirmed"]
         denied = [c for c in pairs if c.cue.polarity == "denied"]
         return claims, denied
@@ -918,11 +994,7 @@ def _relation_forms(phrase: str) -> list[tuple[str, bool]]:
     rest = " ".join(words[1:])
     if not (len(words) == 1 or verb.endswith("s")) or verb in lx.ANTONYMS or verb.endswith("ss"):
         return _with_group_inverses(phrase, out)
-    stems = {verb}
-    for suffix in ("es", "s"):
-        if verb.endswith(suffix) and len(verb) > len(suffix) + 2:
-            stems.add(verb[: -len(suffix)])
-            break
+    stems = {verb[:-1]} if verb.endswith("s") and len(verb) > 4 else {verb}
     for stem in list(stems):
         base = stem[:-1] if stem.endswith("e") else stem
         for v in (stem, stem + "s", base + "ing"):
