@@ -185,6 +185,8 @@ class ReportAnalyzer:
         # 4. the glossary (strongest: the KB says so explicitly)
         for term in self.kb.glossary:
             entries[norm_phrase(term.term)] = (term.category, "glossary")
+        for phrase in lx.NEUTRAL_PHRASES:
+            entries[norm_phrase(phrase)] = ("", "neutral")
         for key, val in entries.items():
             self._cues.add(key, val)
 
@@ -276,7 +278,8 @@ class ReportAnalyzer:
                 if not (pause_after or nxt in ("no", "wait", "sorry", "the", "its", "it", "i", "actually", "make")):
                     continue
                 if nxt == "the" and not (a > 0 and toks.clause_start[a]):
-                    if not (b + 1 < len(norms) and (b + 1) in blocked or b + 2 < len(norms) and (b + 2) in blocked):
+                    ahead = [i for i in (b + 1, b + 2) if i < len(norms)]
+                    if not any(i in blocked or norms[i] in lx.GENERIC_HEADS for i in ahead):
                         continue
                     if not any(i in blocked for i in range(max(0, a - 8), a)):
                         continue
@@ -310,6 +313,7 @@ class ReportAnalyzer:
         norms = toks.norms(0, len(toks))
         place_tokens = {i for p in ex.places for i in range(p.start_tok, p.end_tok)}
         marker_tokens = {i for ma, mb, _ in ex.markers for i in range(ma, mb)}
+        self._marker_cache = marker_tokens
         rel_hits = self._relations.find_all(norms, place_tokens)
         ordered = sorted(rel_hits, key=lambda h: -h[0])
         for pass_no in (1, 2):
@@ -339,7 +343,7 @@ class ReportAnalyzer:
                 and self._cues.match_at(norms, head_end - 1) is None
             if anchor is None:
                 # inverse: "the one (that) the garage sits behind"
-                if generic or not words:
+                if generic:
                     return
                 found = self._inverse_anchor(ex, norms, a)
                 if found is None:
@@ -374,7 +378,7 @@ class ReportAnalyzer:
                 return
             det_start = head_start
             while det_start > 0 and norms[det_start - 1] in lx.DETERMINERS and not toks.clause_start[det_start] \
-                    and head_text:
+                    and head_text and (det_start - 1) not in marker_tokens:
                 det_start -= 1
             new = self._mention(toks, det_start, anchor_end, target, via=via)
             ex.places.append(new)
@@ -448,7 +452,7 @@ class ReportAnalyzer:
         while hs > 0 and k - hs < 3 and norms[hs - 1] not in lx.PREPOSITIONS | lx.COPULAS and not ex.tokens.clause_start[hs]:
             hs -= 1
             if norms[hs] in lx.GENERIC_HEADS:
-                while hs > 0 and norms[hs - 1] in lx.DETERMINERS:
+                while hs > 0 and norms[hs - 1] in lx.DETERMINERS and (hs - 1) not in self._marker_cache:
                     hs -= 1
                 return anchor, hs, False
         return None
@@ -609,13 +613,47 @@ class ReportAnalyzer:
             end += 1
         return b, end
 
+    def _cue_starts(self, ex: Extraction) -> list[tuple[int, int]]:
+        """Cue spans as the classify stage will see them (used to decide repair kinds)."""
+        norms = ex.tokens.norms(0, len(ex.tokens))
+        blocked = {i for p in ex.places for i in range(p.start_tok, p.end_tok)}
+        blocked |= {i for a, b, _ in ex.markers for i in range(a, b)}
+        return [(a, b) for a, b, (_, src) in self._cues.find_all(norms, blocked) if src != "neutral"]
+
+    def _repair_kind(self, ex: Extraction, k: int, cue_spans: list[tuple[int, int]]) -> str | None:
+        """What marker ``k`` repairs: ``place``, ``cue``, ``full`` (cue + place restated) or ``None``.
+
+        Decided by what comes first after the marker: "no wait, the bakery" repairs the place,
+        "sorry, it's on fire" the category, "correction, fire at the library" restates both.
+        """
+        norms = ex.tokens.norms(0, len(ex.tokens))
+        b, end = self._after_clause(ex, k)
+        first_place = min((p for p in ex.places if b <= p.start_tok < end and p.status in ("active", "negated")),
+                          key=lambda p: p.start_tok, default=None)
+        first_cue = min(((ca, cb) for ca, cb in cue_spans if b <= ca < end), default=None)
+        if first_place is None and first_cue is None:
+            return None
+        if first_cue is None or (first_place is not None and first_place.start_tok < first_cue[0]):
+            return "place"
+        if first_place is not None:
+            between = norms[first_cue[1] : first_place.start_tok]
+            if len(between) <= 4 and all(w in lx.PREPOSITIONS | lx.DETERMINERS | lx.FILLERS | lx.COPULAS for w in between):
+                return "full"
+        return "cue"
+
     def _has_content(self, norms: tuple[str, ...], a: int, b: int) -> bool:
         return any(self._cues.match_at(norms, i) is not None for i in range(a, min(b, a + 6)))
 
     def _apply_place_repairs(self, ex: Extraction) -> None:
         """A marker followed by a place retracts the last place before the marker."""
         toks = ex.tokens
+        cue_spans = self._cue_starts(ex)
+        self._repair_kinds = {}
         for k, (a, b, _strong) in enumerate(ex.markers):
+            kind = self._repair_kind(ex, k, cue_spans)
+            self._repair_kinds[k] = kind
+            if kind not in ("place", "full"):
+                continue
             b, end = self._after_clause(ex, k)
             after = [p for p in ex.places if b <= p.start_tok < end and p.status in ("active", "negated")]
             if not after:
@@ -667,13 +705,33 @@ class ReportAnalyzer:
         self._marker_tokens = marker_tokens
         cues: list[CueMention] = []
         for a, b, (cat, source) in self._cues.find_all(norms, blocked):
+            if source == "neutral":
+                continue
             start, end = toks.tokens[a].start, toks.tokens[b - 1].end
             cue = CueMention(a, b, start, end, toks.text[start:end], cat, source)
             cues.append(self._apply_cue_negation(toks, norms, cue))
         cues = self._apply_cue_repairs(ex, cues)
-        cues = [c for c in cues if c is not None]
+        cues = self._apply_false_alarms(toks, norms, cues)
         claims, denied = self._associate(ex, cues)
         return Classification(cues, claims, denied)
+
+    def _apply_false_alarms(self, toks: Tokens, norms: tuple[str, ...], cues: list[CueMention]) -> list[CueMention]:
+        """"... the smoke was a false alarm": every claim of that sentence is denied."""
+        sentence_of = []
+        sn = -1
+        for i in range(len(toks)):
+            sn += toks.sentence_start[i]
+            sentence_of.append(sn)
+        alarms = set()
+        for phrase in lx.FALSE_ALARM:
+            key = norm_phrase(phrase)
+            for i in range(len(norms) - len(key) + 1):
+                if norms[i : i + len(key)] == key:
+                    alarms.add(sentence_of[i])
+        if not alarms:
+            return cues
+        return [replace(c, polarity="denied", reason="false alarm") if sentence_of[c.start_tok] in alarms else c
+                for c in cues]
 
     def _undesirable(self) -> str | None:
         return self._role_category.get("undesirable") or next(
@@ -713,7 +771,10 @@ class ReportAnalyzer:
             if h is not None:
                 cancelled_by = h[1]
                 break
-            if norms[k] == "out" and (k == cue.end_tok or norms[k - 1] in ("is", "s", "are", "was", "been", "now", "all")) \
+            undesirable = self.kb.category_by_name[cue.category].role == Role.UNDESIRABLE
+            contracted = toks.tokens[cue.end_tok - 1].text.lower().endswith(("'s", "’s"))
+            right_after = k == cue.end_tok and undesirable and (contracted or k + 1 < len(norms))
+            if norms[k] == "out" and undesirable and (right_after or norms[k - 1] in ("is", "s", "are", "was", "been", "now", "all")) \
                     and (k + 1 >= len(norms) or toks.clause_start[k + 1] or norms[k + 1] in ("now", "completely", "over")):
                 cancelled_by = "out"
                 break
@@ -736,16 +797,16 @@ class ReportAnalyzer:
         """A marker followed by a cue (and no new place) retracts the last cue before it."""
         toks = ex.tokens
         out = list(cues)
+        cue_spans = [(c.start_tok, c.end_tok) for c in out]
         for k, (a, _b, _strong) in enumerate(ex.markers):
+            kind = self._repair_kind(ex, k, cue_spans)
+            if kind not in ("cue", "full"):
+                continue
             b, end = self._after_clause(ex, k)
             after_cues = [c for c in out if b <= c.start_tok < end and c.status == "active"]
             if not after_cues:
                 continue
-            after_places = [p for p in ex.places if b <= p.start_tok < end]
             first_cue = min(after_cues, key=lambda c: c.start_tok)
-            # "the bank, no, the bakery is on fire": a place comes first, so it is a place repair
-            if after_places and min(p.start_tok for p in after_places) < first_cue.start_tok:
-                continue
             lo = self._repair_window_start(ex, k)
             before = [c for c in out if lo <= c.start_tok < a and c.status == "active"]
             if not before:
@@ -753,8 +814,9 @@ class ReportAnalyzer:
             last = max(before, key=lambda c: c.start_tok)
             i = out.index(last)
             out[i] = replace(last, status="retracted", reason=f"self-repair: '{toks.span_text(a, b)}' then '{first_cue.text}'")
-            j = out.index(first_cue)
-            out[j] = replace(first_cue, replaces=last.start_tok)
+            if kind == "cue":  # a restated claim ("full") keeps its own binding
+                j = out.index(first_cue)
+                out[j] = replace(first_cue, replaces=last.start_tok)
         return out
 
     def _segments(self, ex: Extraction) -> list[tuple[int, int]]:

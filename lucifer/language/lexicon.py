@@ -88,6 +88,13 @@ CANCEL_AFTER = ["is out", "s out", "are out", "was out", "put out", "out now", "
                 "all rescued", "rescued", "evacuated", "got out", "out safely", "accounted for",
                 "no longer"]
 
+# Phrases that contain cue words but claim nothing ("the smoke alarm went off", "fire crew on site").
+NEUTRAL_PHRASES = ["smoke alarm", "smoke alarms", "fire alarm", "fire alarms", "fire exit", "fire escape",
+                   "fire brigade", "fire crew", "fire engine", "fire truck", "fire service", "fire department",
+                   "fire team", "firefighter", "firefighters", "fire fighter", "fire fighters", "fire hydrant",
+                   "fire door", "gas mask", "gas masks", "safe word", "safety officer", "clear the area",
+                   "all units", "flood light", "floodlight", "floodlights", "rescue team", "rescue teams"]
+
 # Whole-report "nothing to see" markers that cancel every claim in their sentence.
 FALSE_ALARM = ["false alarm", "disregard", "ignore that", "never mind", "nevermind"]
 
