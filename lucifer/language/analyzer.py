@@ -404,7 +404,7 @@ class ReportAnalyzer:
         if place is not None and place.status in ("active", "retracted", "negated"):
             if place.status == "active" or place.start_tok == j:
                 return place, place.end_tok, False
-        if j < len(norms) and norms[j] in ("it", "them", "that", "there", "us"):
+        if j < len(norms) and norms[j] in ("it", "them", "that", "there", "us") and not ex.tokens.clause_start[j]:
             if norms[j] in ("that", "there") and j + 1 < len(norms) and not ex.tokens.clause_start[j + 1] \
                     and norms[j + 1] not in lx.COPULAS:
                 return None, b, False
@@ -636,8 +636,13 @@ class ReportAnalyzer:
         if first_cue is None or (first_place is not None and first_place.start_tok < first_cue[0]):
             return "place"
         if first_place is not None:
+            # "fire at the library", "the smoke's coming from the warehouse": the claim is restated
             between = norms[first_cue[1] : first_place.start_tok]
-            if len(between) <= 4 and all(w in lx.PREPOSITIONS | lx.DETERMINERS | lx.FILLERS | lx.COPULAS for w in between):
+            glue = lx.PREPOSITIONS | lx.DETERMINERS | lx.FILLERS | lx.COPULAS
+            new_clause = {"its", "it", "there", "theres", "thats", "that", "we", "were", "i"}
+            if len(between) <= 4 and not new_clause & set(between) and (
+                    all(w in glue for w in between) or (len([w for w in between if w not in glue]) <= 1
+                                                        and any(w in lx.PREPOSITIONS for w in between))):
                 return "full"
         return "cue"
 
@@ -709,7 +714,10 @@ class ReportAnalyzer:
                 continue
             start, end = toks.tokens[a].start, toks.tokens[b - 1].end
             cue = CueMention(a, b, start, end, toks.text[start:end], cat, source)
-            cues.append(self._apply_cue_negation(toks, norms, cue))
+            checked = self._apply_cue_negation(toks, norms, cue)
+            cues.append(checked)
+            if checked.category != cue.category:  # "no longer safe": unsafe now, and no longer safe
+                cues.append(replace(cue, polarity="denied", reason=checked.reason))
         cues = self._apply_cue_repairs(ex, cues)
         cues = self._apply_false_alarms(toks, norms, cues)
         claims, denied = self._associate(ex, cues)
@@ -858,7 +866,6 @@ class ReportAnalyzer:
         for k, (a, b) in enumerate(segs):
             for i in range(a, b):
                 seg_index[i] = k
-        place_at = {p.start_tok: p for p in usable}
         cue_at = {c.start_tok: c for c in cues}
 
         # 1. natural binding
