@@ -234,19 +234,18 @@ class Middleware:
         """
         if not self.discovery:
             return None
-        key = (signature, tuple(trace), tuple(options))
+        opts = tuple(options) or tuple(o.name for o in self.kb.query_options)
+        key = (signature, tuple(trace), opts)
         hit = self._advice_cache.get(key)
         if hit is not None:
             return hit
         self.calls["discover"] += 1
-        advice = await self._discover(signature, list(trace), list(options))
+        advice = await self._discover(signature, list(trace), list(opts))
         self._advice_cache[key] = advice
         return advice
 
     async def _discover(self, signature: str, trace: list[str], options: list[str]) -> Advice:
-        result = await self._get_discoverer().discover(
-            {"signature": signature, "trace": trace, "options": options or [o.name for o in self.kb.query_options]}
-        )
+        result = await self._get_discoverer().discover({"signature": signature, "trace": trace, "options": options})
         return _advice_from(result)
 
     def record(self, signature: str, option: str, outcome: float, trace: Sequence[str] = (), client: str | None = None) -> None:

@@ -99,6 +99,7 @@ class HybridPlanner:
         self.rng = rng
         self.options = env.query_options
         self._paths: dict[tuple[int, int, int, int], list[int] | None] = {}
+        self._moves: dict[tuple[int, int, int, int, int], int] = {}  # decision cache
         self.fallbacks = 0
 
     def _path(self, sig: GridSignals, pos: int, goal: int, order_i: int) -> list[int]:
@@ -142,9 +143,13 @@ class HybridPlanner:
                     option = untried[int(self.rng.integers(len(untried)))]
                 action = int(Actions.QUERY_0) + self.options.index(option)
             else:
-                targets = [c for k, c in enumerate(env.layout.info_cells) if not env.collected[k]]
-                goal = self._nearest(sig, pos, targets, order_i)
-                action = self._path(sig, pos, goal, order_i)[0]
+                c = env.collected
+                key = (id(sig), pos, c[0] + 2 * c[1] + 4 * c[2], order_i, env.layout_index)
+                action = self._moves.get(key, -1)
+                if action < 0:
+                    targets = [cell for k, cell in enumerate(env.layout.info_cells) if not c[k]]
+                    goal = self._nearest(sig, pos, targets, order_i)
+                    action = self._moves[key] = self._path(sig, pos, goal, order_i)[0]
             obs, _, terminated, truncated, info = env.step(action)
             if record_path and action < N_MOVES:
                 path.append(env.agent)

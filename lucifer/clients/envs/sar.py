@@ -162,6 +162,16 @@ class SAREnv(gym.Env):
             [[info_report(self.kb, lay.layout, t, s) for s in STYLES] for t in INFO_TYPES] for lay in self.layouts
         ]
 
+        def frozen(values: Any, dtype: Any) -> np.ndarray:
+            a = np.array(values, dtype=dtype)
+            a.flags.writeable = False
+            return a
+
+        self._agent_obs = [frozen(divmod(cell, self.cols), np.int64) for cell in range(self.n_cells)]
+        self._collected_obs = [frozen([(m >> i) & 1 for i in range(3)], np.int8) for m in range(8)]
+        self._targets_obs = [frozen([v for cell in lay.info_cells for v in divmod(cell, self.cols)], np.int64)
+                             for lay in self.layouts]
+
         self.action_space = spaces.Discrete(int(Actions.QUERY_0) + self.n_queries)
         self.observation_space = spaces.Dict(
             {
@@ -183,6 +193,7 @@ class SAREnv(gym.Env):
         self.step_count = 0
         self.collisions = 0
         self.visited: list[int] = []
+        self._episode_reports: list[str] = []
 
     # ------------------------------------------------------------------ helpers
     @property
@@ -200,6 +211,18 @@ class SAREnv(gym.Env):
         """The right query at information location ``k`` (for evaluation and pictures)."""
         return self.query_options[self.correct[k]]
 
+    def signature_pool(self) -> tuple[tuple[str, ...], ...]:
+        """The signatures each query option can show (indexed like ``query_options``)."""
+        return self._signatures
+
+    def episode_reports(self) -> list[str]:
+        """Every report of this episode so far, in arrival order."""
+        return list(self._episode_reports)
+
+    def cell_labels(self) -> dict[int, str]:
+        """Cell index -> the KB place standing on it."""
+        return {r * self.cols + c: name for (r, c), name in self.kb.cell_owner.items()}
+
     def distinct_texts(self) -> tuple[list[str], list[str]]:
         """Every report and signature this env can emit (to warm a middleware cache)."""
         reports = sorted({t for per in self._briefings for s in per for t in s}
@@ -208,16 +231,13 @@ class SAREnv(gym.Env):
         return reports, sigs
 
     def _obs(self) -> dict[str, Any]:
-        lay = self.layouts[self.layout_index]
-        r, c = divmod(self.agent, self.cols)
+        # Observation arrays are precomputed; each call returns fresh copies (gymnasium's rule).
+        c = self.collected
         k = self._info_index[self.layout_index][self.agent]
-        targets = []
-        for cell in lay.info_cells:
-            targets.extend(divmod(cell, self.cols))
         return {
-            "agent": np.array((r, c), dtype=np.int64),
-            "collected": np.array(self.collected, dtype=np.int8),
-            "targets": np.array(targets, dtype=np.int64),
+            "agent": self._agent_obs[self.agent].copy(),
+            "collected": self._collected_obs[c[0] + 2 * c[1] + 4 * c[2]].copy(),
+            "targets": self._targets_obs[self.layout_index].copy(),
             "at_info": 0 if k < 0 else k + 1,
             "layout": self.layout_index,
         }
@@ -245,8 +265,9 @@ class SAREnv(gym.Env):
         self.step_count = 0
         self.collisions = 0
         self.visited = [self.agent]
+        self._episode_reports = list(self._briefings[self.layout_index][self.style])
         info = {
-            "reports": list(self._briefings[self.layout_index][self.style]),
+            "reports": list(self._episode_reports),
             "signature": self._signature_here(),
             "query": None,
             "collision": False,
@@ -293,6 +314,7 @@ class SAREnv(gym.Env):
                     self.collected[k] = True
                     reward = REWARD_COLLECT
                     reports.append(self._info_reports[li][k][self.style])
+                    self._episode_reports.append(reports[-1])
                 else:
                     self.attempts[k] += 1
                     reward = REWARD_WRONG_QUERY
