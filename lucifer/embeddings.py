@@ -215,6 +215,32 @@ class Embedder:
     def embed_one(self, text: str) -> np.ndarray:
         return self.embed([text])[0]
 
+    def embed_fixed(self, texts: Sequence[str]) -> np.ndarray:
+        """Embeddings of a fixed text set (exemplars, KB entries), memoised on disk.
+
+        Keyed by the texts and the engine, so an edited set is recomputed; a cold process
+        then reads one small ``.npy`` instead of running the model.
+        """
+        import hashlib
+
+        from lucifer.paths import home
+
+        key = hashlib.sha256(("\x00".join(texts) + "\x01" + self.engine + MODEL_NAME).encode()).hexdigest()[:20]
+        path = home() / "embcache" / f"{key}.npy"
+        if path.is_file():
+            try:
+                arr = np.load(path)
+                if arr.shape == (len(texts), DIM):
+                    return arr
+            except (OSError, ValueError):
+                pass  # a damaged cache file is simply recomputed
+        arr = self.embed(list(texts))
+        path.parent.mkdir(parents=True, exist_ok=True)
+        tmp = path.with_suffix(f".{os.getpid()}.tmp.npy")
+        np.save(tmp, arr)
+        os.replace(tmp, path)
+        return arr
+
 
 @lru_cache(maxsize=4)
 def get_embedder(engine: str | None = None) -> Embedder:

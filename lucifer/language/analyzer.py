@@ -721,7 +721,86 @@ class ReportAnalyzer:
         cues = self._apply_cue_repairs(ex, cues)
         cues = self._apply_false_alarms(toks, norms, cues)
         claims, denied = self._associate(ex, cues)
+        if self.embedder is not None and self.semantic_fallback:
+            extra = self._semantic_claims(ex, claims, denied)
+            claims.extend(extra)
+            cues.extend(c.cue for c in extra)
         return Classification(cues, claims, denied)
+
+    # ------------------------------------------------------------------ semantic fallback
+    semantic_fallback: bool = True
+    FALLBACK_MIN_SIM = 0.38
+    FALLBACK_MARGIN = 0.08
+
+    def _exemplars(self) -> tuple[np.ndarray, list[str]]:
+        if getattr(self, "_ex_cache", None) is None:
+            texts: list[str] = []
+            labels: list[str] = []
+            for role, phrases in lx.EXEMPLARS.items():
+                label = role if role == "none" else self._category_for_role(role, phrases[0])
+                if label is None:
+                    continue
+                texts.extend(phrases)
+                labels.extend([label] * len(phrases))
+            for term in self.kb.glossary:
+                texts.append(term.term)
+                labels.append(term.category)
+            assert self.embedder is not None
+            self._ex_cache = (self.embedder.embed_fixed(texts), labels)
+        return self._ex_cache
+
+    def _predicate_region(self, ex: Extraction, p: PlaceMention) -> tuple[int, int]:
+        toks = ex.tokens
+        marker_starts = {a for a, _, _ in ex.markers}
+        others = [q.start_tok for q in ex.places if q.start_tok > p.start_tok and q.status == "active"]
+        stop = min(others + [len(toks)])
+        end = p.end_tok
+        while end < stop and end - p.end_tok < 14 and not toks.sentence_start[end] and end not in marker_starts:
+            end += 1
+        start = p.start_tok
+        while start > 0 and p.start_tok - start < 6 and not toks.clause_start[start]:
+            if any(q.end_tok == start for q in ex.places):
+                break
+            start -= 1
+        return start, end
+
+    def _semantic_claims(self, ex: Extraction, claims: list[Claim], denied: list[Claim]) -> list[Claim]:
+        """Places the vocabulary left without a category: classify their predicate with MiniLM."""
+        done = {id(c.place) for c in claims} | {id(c.place) for c in denied}
+        done_keys = {(c.place.start_tok) for c in claims} | {c.place.start_tok for c in denied}
+        todo = [p for p in ex.places if p.status == "active" and id(p) not in done and p.start_tok not in done_keys]
+        if not todo:
+            return []
+        toks = ex.tokens
+        texts, regions = [], []
+        for p in todo:
+            a, b = self._predicate_region(ex, p)
+            words = [t.text for t in toks.tokens[a : p.start_tok] if t.norm not in lx.FILLERS and t.norm not in lx.DETERMINERS]
+            words += [t.text for t in toks.tokens[p.end_tok : b] if t.norm not in lx.FILLERS]
+            texts.append(" ".join(words))
+            regions.append((a, b))
+        if all(b - a <= (p.end_tok - p.start_tok) + 1 for p, (a, b) in zip(todo, regions, strict=True)):
+            return []
+        assert self.embedder is not None
+        mat, labels = self._exemplars()
+        vecs = self.embedder.embed(texts)
+        out = []
+        for p, (a, b), v in zip(todo, regions, vecs, strict=True):
+            sims = mat @ v
+            best: dict[str, float] = {}
+            for lab in set(labels):
+                vals = np.sort(sims[[i for i, x in enumerate(labels) if x == lab]])[-2:]
+                best[lab] = float(vals.mean())
+            ranked = sorted(best.items(), key=lambda kv: -kv[1])
+            label, score = ranked[0]
+            runner = ranked[1][1] if len(ranked) > 1 else -1.0
+            if label == "none" or score < self.FALLBACK_MIN_SIM or score - runner < self.FALLBACK_MARGIN:
+                continue
+            start, end = toks.tokens[a].start, toks.tokens[b - 1].end
+            cue = CueMention(a, b, start, end, toks.text[start:end], label, "embedding",
+                             reason=f"MiniLM predicate match {score:.2f} (runner-up {runner:.2f})")
+            out.append(Claim(p, cue))
+        return out
 
     def _apply_false_alarms(self, toks: Tokens, norms: tuple[str, ...], cues: list[CueMention]) -> list[CueMention]:
         """"... the smoke was a false alarm": every claim of that sentence is denied."""

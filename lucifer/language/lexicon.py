@@ -202,3 +202,32 @@ TRANSIT = ["heading to", "heading for", "heading towards", "heading toward", "he
 PRONOUNS = {"it", "its", "there", "that", "they", "them", "this", "place", "building", "same"}
 COORDINATORS = {"and", "but", "while", "whereas", "plus", "also", "then", "meanwhile", "however",
                 "though", "although", "yet", "additionally"}
+
+
+# Exemplar predicates per role for the MiniLM fallback that classifies what is said about a place
+# when no vocabulary cue matched (the place itself is left out of both sides). "none" holds
+# statements that claim nothing about the place.
+EXEMPLARS: dict[str, list[str]] = {
+    UNDESIRABLE: [
+        "on fire", "burning", "flames", "smoke pouring out", "full of smoke", "gas leak", "smells of gas",
+        "roof collapsed", "ceiling came down", "walls cracking", "unstable", "flooded", "water rising",
+        "live wires down", "sparks", "explosion", "chemical spill", "dangerous, do not enter", "unsafe",
+        "debris falling",
+    ],
+    DESIRABLE: [
+        "safe", "all clear", "secured", "use as a shelter", "safe to shelter", "safe place to gather",
+        "evacuation point", "triage point set up", "safe to enter", "route open and passable",
+        "structurally sound", "good for shelter", "send evacuees there", "clearing station", "secure now",
+    ],
+    CRITICAL: [
+        "people trapped", "someone injured", "person needs help", "casualties", "victim inside",
+        "someone unconscious", "child stuck", "survivors need rescue", "bleeding badly", "man cannot get up",
+        "screaming for help", "woman hurt", "people missing", "medic needed for the wounded", "man down",
+    ],
+    "none": [
+        "heading to", "passing", "we are at", "on our way", "standing by", "checking now", "what is the status",
+        "please advise", "over and out", "requesting backup", "copy that", "will report back",
+        "nothing to report", "no change", "parked the truck", "just came from", "closed", "on the corner",
+        "meet us at", "is anyone near", "ignore previous instructions", "mark every cell",
+    ],
+}
