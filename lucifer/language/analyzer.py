@@ -320,6 +320,78 @@ class ReportAnalyzer:
             for a, b, (phrase, flipped) in ordered:
                 self._resolve_one(ex, toks, norms, a, b, phrase, flipped, place_tokens, marker_tokens,
                                   inverse_pass=pass_no == 2)
+        if self.embedder is not None and self.kb.relations:
+            self._resolve_open(ex, toks, norms, place_tokens, marker_tokens)
+
+    OPEN_RELATION_MIN_SIM = 0.55
+    OPEN_RELATION_HINT_SIM = 0.35
+
+    def _relation_texts(self) -> tuple[np.ndarray, list[tuple[str, bool]]]:
+        """Embedded surface forms of the KB's relations, each with its direction."""
+        if getattr(self, "_rel_cache", None) is None:
+            forms: dict[str, tuple[str, bool]] = {}
+            for rel in self.kb.relations:
+                for form, inverse in _relation_forms(rel.phrase):
+                    forms.setdefault(form, (rel.phrase, inverse))
+                for canon, syns in lx.RELATION_SYNONYMS.items():
+                    if rel.phrase == canon or rel.phrase in syns:
+                        for syn in syns:
+                            forms.setdefault(syn, (rel.phrase, False))
+            texts = sorted(forms)
+            assert self.embedder is not None
+            self._rel_cache = (self.embedder.embed_fixed(texts), [forms[t] for t in texts])
+        return self._rel_cache
+
+    def _resolve_open(self, ex: Extraction, toks: Tokens, norms: tuple[str, ...], place_tokens: set[int],
+                      marker_tokens: set[int]) -> None:
+        """"the place sharing a wall with the mill": an unknown linking phrase between a generic
+        head and a place, matched to the KB's relation forms with MiniLM (antonyms flip direction)."""
+        cue_tokens = {i for a, b, (_, src) in self._cues.find_all(norms, place_tokens | marker_tokens)
+                      if src != "neutral" for i in range(a, b)}
+        for anchor in sorted([p for p in ex.places if p.status == "active" and p.via is None], key=lambda p: -p.start_tok):
+            j = anchor.start_tok
+            while j > 0 and norms[j - 1] in lx.DETERMINERS and anchor.start_tok - j < 2:
+                j -= 1
+            if j == 0 or norms[j - 1] not in lx.RELATION_ENDINGS:
+                continue
+            # walk back over the linking words to a generic head noun
+            k = j - 1
+            while k > 0 and j - k < 6:
+                w = norms[k - 1]
+                if (k - 1) in place_tokens or (k - 1) in marker_tokens or (k - 1) in cue_tokens or toks.clause_start[k]:
+                    break
+                if w in lx.GENERIC_HEADS and k - 1 > 0 and norms[k - 2] in lx.DETERMINERS:
+                    break
+                k -= 1
+            if k == 0 or norms[k - 1] not in lx.GENERIC_HEADS or j - k < 2 or toks.clause_start[k] \
+                    or (k - 1) in place_tokens or (k - 1) in cue_tokens:
+                continue
+            link = " ".join(toks.tokens[i].text.lower() for i in range(k, j))
+            if self._relations.match_at(norms, k) is not None:
+                continue  # a known phrase: the table-driven pass owns it
+            mat, meta = self._relation_texts()
+            sims = mat @ self.embedder.embed_one(link)  # type: ignore[union-attr]
+            best = int(np.argmax(sims))
+            head_start = k - 1
+            while head_start > 0 and norms[head_start - 1] in lx.DETERMINERS and (head_start - 1) not in marker_tokens:
+                head_start -= 1
+            idx = ex.places.index(anchor)
+            if sims[best] < self.OPEN_RELATION_MIN_SIM:
+                if sims[best] >= self.OPEN_RELATION_HINT_SIM:
+                    ex.places[idx] = replace(anchor, status="reference",
+                                             reason=f"reference point of an unresolved description ('{link}')")
+                continue
+            phrase, inverse = meta[best]
+            words = set(link.split())
+            if any(lx.ANTONYMS.get(w) in phrase.split() for w in words):
+                inverse = not inverse
+            target, via = self._follow(anchor.landmark, phrase, toks.tokens[k - 1].text, inverse=inverse)
+            if target is None:
+                ex.places[idx] = replace(anchor, status="reference", reason=f"reference point of an unresolved '{link}'")
+                continue
+            ex.places[idx] = replace(anchor, status="reference", reason=f"reference point: {via} (matched '{link}')")
+            ex.places.append(self._mention(toks, head_start, anchor.end_tok, target, via=f"{via} ~ '{link}'"))
+            place_tokens.update(range(head_start, anchor.end_tok))
 
     def _resolve_one(self, ex: Extraction, toks: Tokens, norms: tuple[str, ...], a: int, b: int, phrase: str,
                      flipped: bool, place_tokens: set[int], marker_tokens: set[int], inverse_pass: bool) -> None:

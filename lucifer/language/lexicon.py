@@ -115,17 +115,20 @@ RELATION_SYNONYMS: dict[str, list[str]] = {
     "attached to": ["attached to", "built onto", "built on to", "joined to", "joined onto", "joined on to",
                     "connected to", "adjoining", "adjoins", "adjoin", "attached onto", "stuck onto",
                     "sharing a wall with", "shares a wall with", "that shares a wall with", "built against",
-                    "abutting", "abuts", "butting onto", "bolted onto", "tacked onto"],
+                    "abutting", "abuts", "butting onto", "bolted onto", "tacked onto", "stuck on to",
+                    "built up against", "fixed onto", "part of the same building as", "joined up with"],
     "next to": ["next to", "next door to", "beside", "besides", "alongside", "adjacent to", "right by",
                 "right next to", "just next to", "by", "neighbouring", "neighboring", "next door from",
                 "immediately next to", "directly next to", "to the side of"],
     "across from": ["across from", "opposite", "opposite to", "across the street from", "across the road from",
                     "facing", "over the road from", "across the square from", "across the way from",
                     "over the street from", "directly across from", "straight across from", "that faces",
-                    "faces", "opposite of"],
+                    "faces", "opposite of", "over the way from", "across the way", "on the other side of the road from",
+                    "on the opposite side of the street from", "that looks across at"],
     "behind": ["behind", "round the back of", "around the back of", "at the back of", "in back of",
                "back of", "to the rear of", "at the rear of", "out back of", "directly behind", "right behind",
-               "just behind"],
+               "just behind", "backs onto", "backing onto", "that backs onto", "round behind", "out the back of",
+               "back behind"],
     "in front of": ["in front of", "out front of", "directly in front of", "right in front of", "at the front of"],
     "inside": ["inside", "within"],
     "above": ["above", "on top of", "upstairs from", "overlooks", "overlooking", "overlook", "looks over",
@@ -231,3 +234,7 @@ EXEMPLARS: dict[str, list[str]] = {
         "meet us at", "is anyone near", "ignore previous instructions", "mark every cell",
     ],
 }
+
+# Last words of an unknown relational phrase ("the place <...> the mill"): the phrase links two places.
+RELATION_ENDINGS = {"to", "from", "of", "with", "onto", "on", "by", "over", "off", "against", "beside",
+                    "behind", "opposite", "facing", "past", "beyond", "above", "below", "under", "near"}
