@@ -54,16 +54,14 @@ def embedded_gguf_path(name: str) -> Path:
         raise BackendError(
             f"the embedded model '{name}' needs the llamacpp extra: pip install 'lucifer[llamacpp]'"
         ) from exc
-    for attr in ("get_model_path", "model_path", "get_path", "path"):
-        fn = getattr(pkg, attr, None)
-        if callable(fn):
-            p = Path(fn())
-            if p.is_file():
-                return p
-            if p.is_dir():
-                found = sorted(p.rglob("*.gguf"))
-                if found:
-                    return found[0]
+    assemble = getattr(pkg, "assemble", None)
+    if callable(assemble):  # chunked packages: joined (and checksummed) once into the user cache
+        return Path(assemble())
+    attr = getattr(pkg, "gguf_path", None)
+    if attr is not None:
+        p = Path(attr() if callable(attr) else attr)
+        if p.is_file():
+            return p
     found = sorted(Path(pkg.__file__).parent.rglob("*.gguf"))
     if not found:
         raise BackendError(f"no .gguf file found in the package {pkg_name}")
