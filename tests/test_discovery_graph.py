@@ -231,3 +231,17 @@ def test_cli_discover(tmp_path: Path, capsys: pytest.CaptureFixture[str], monkey
     assert out["recommendation"] == "gas_sniffer" and out["status"] == "ok"
     assert main(["discover", "--memory", str(tmp_path / "m.sqlite"), '{"signature": "x", "options": ["nope"]}']) == 2
     assert "unknown query option" in capsys.readouterr().err
+
+
+async def test_episodic_trace_counts_queries_already_run_here(builtin: Discoverer) -> None:
+    opts = ["acoustic_listen", "search_dog"]
+    plain = await builtin.discover({"signature": SIG, "options": opts})
+    assert plain.recommendation == "acoustic_listen"
+    failed = {"option": "acoustic_listen", "outcome": 0.0}
+    elsewhere = {**failed, "signature": "a different street"}
+    same = await builtin.discover({"signature": SIG, "options": opts, "trace": ["arrived", elsewhere] * 3})
+    assert same.distribution == pytest.approx(plain.distribution)  # other places do not count
+    after = await builtin.discover({"signature": SIG, "options": opts, "trace": ["arrived", *[failed] * 4]})
+    assert after.recommendation == "search_dog"
+    with pytest.raises(BadRequest):
+        parse_request({"signature": SIG, "options": opts, "trace": [{"option": "x", "outcome": 3}]})

@@ -24,7 +24,13 @@ from lucifer.errors import BackendError, BadRequest
 from lucifer.graphs.discovery.context import DiscoveryContext
 from lucifer.graphs.discovery.graph import build_graph, compile_graph
 from lucifer.graphs.discovery.resources import DiscoveryResources
-from lucifer.graphs.discovery.state import DiscoveryRequest, DiscoveryResult, DiscoveryState
+from lucifer.graphs.discovery.state import (
+    DiscoveryRequest,
+    DiscoveryResult,
+    DiscoveryState,
+    TraceStep,
+    trace_text,
+)
 from lucifer.graphs.discovery.tools import TOOL_NAMES, make_tools
 from lucifer.kb import KnowledgeBase, load_kb
 from lucifer.telemetry.embedcache import EmbeddingCache
@@ -37,6 +43,7 @@ __all__ = [
     "DiscoveryRequest",
     "DiscoveryResult",
     "DiscoveryState",
+    "TraceStep",
     "build_graph",
     "compile_graph",
     "parse_request",
@@ -131,12 +138,12 @@ class Discoverer:
         option: str,
         outcome: float,
         *,
-        trace: list[str] | str = "",
+        trace: list[str | TraceStep] | str = "",
         episode: str | None = None,
         client: str | None = None,
     ) -> None:
         """Append one query outcome to telemetry memory (the index folds it in on next use)."""
-        summary = trace if isinstance(trace, str) else "; ".join(trace)
+        summary = trace if isinstance(trace, str) else "; ".join(trace_text(t) for t in trace)
         self.memory.append(
             TelemetryRecord(signature=signature, trace=summary[:4000], option=option, outcome=outcome,
                             episode=episode, client=client)

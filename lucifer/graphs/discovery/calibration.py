@@ -66,7 +66,7 @@ async def dev_logits(directory: Path) -> tuple[list[np.ndarray], list[int]]:
             evidence: dict[str, Any] = {}
             for call in builtin_tool_calls(req, ctx):
                 evidence[call["name"]] = (await tools[call["name"]].ainvoke(call)).artifact
-            logits.append(policy.builtin_logits(evidence, req.options, ctx))
+            logits.append(policy.builtin_logits(evidence, req.options, ctx, req.episodic_outcomes()))
             answers.append(req.options.index(row["answer"]))
         memory.close()
     return logits, answers

@@ -44,7 +44,11 @@ class DiscoveryContext:
         default=4.0, metadata={"description": "Weight of cosine(signature clause, option description)."}
     )
     exact_weight: float = field(
-        default=1.0, metadata={"description": "Weight of net successes (+1/-1 per record) at exactly this signature."}
+        default=2.0,
+        metadata={
+            "description": "Log-odds per record at exactly this signature (+ per success, - per failure); "
+            "about log(0.9 / 0.1): a right query succeeds about 9 times in 10."
+        },
     )
     temperature: float = field(
         default=DEFAULT_TEMPERATURE,

@@ -68,7 +68,8 @@ def builtin_tool_calls(request: DiscoveryRequest, ctx: DiscoveryContext) -> list
 
 def builtin_proposal(evidence: dict[str, dict[str, Any]], request: DiscoveryRequest, ctx: DiscoveryContext) -> dict[str, Any]:
     opts = list(request.options)
-    dist = policy.distribution(policy.builtin_logits(evidence, opts, ctx), opts, ctx.temperature)
+    logits = policy.builtin_logits(evidence, opts, ctx, request.episodic_outcomes())
+    dist = policy.distribution(logits, opts, ctx.temperature)
     best, conf = policy.recommend(dist)
     return {"distribution": dist, "recommendation": best, "confidence": conf}
 

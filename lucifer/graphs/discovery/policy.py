@@ -12,7 +12,8 @@ normalises the scores into a log-distribution over U(x_t), and adds the clauses 
 weighted by its focus: how concentrated the votes of its nearest known clauses are over all
 options (a place phrase like "near the school" was seen with every option and barely counts).
 Without memory evidence a clause counts by its best cosine to an option description. When the signature itself is in memory, each option's net successes there
-(+1 per success, -1 per failure, times exact_weight) are added. The logits go through a softmax at the
+(+1 per success, -1 per failure, times exact_weight) are added, and likewise the
+outcomes of queries the episodic trace says were already run here in this episode. The logits go through a softmax at the
 calibrated temperature; the confidence is the probability of the recommendation.
 """
 
@@ -35,8 +36,14 @@ def _log_softmax(x: np.ndarray) -> np.ndarray:
     return x - m - np.log(np.exp(x - m).sum())
 
 
-def builtin_logits(evidence: dict[str, dict[str, Any]], options: list[str], ctx: DiscoveryContext) -> np.ndarray:
-    """Unnormalised log-probabilities of ``options`` from whatever tool evidence is present."""
+def builtin_logits(
+    evidence: dict[str, dict[str, Any]],
+    options: list[str],
+    ctx: DiscoveryContext,
+    episodic: dict[str, tuple[int, float]] | None = None,
+) -> np.ndarray:
+    """Unnormalised log-probabilities of ``options`` from whatever tool evidence is present,
+    plus ``episodic`` outcomes (queries already run here in this episode, from the trace)."""
     z = np.zeros(len(options))
     similar = evidence.get(SIMILAR_SIGNATURES)
     fit = evidence.get(OPTION_FIT)
@@ -62,6 +69,10 @@ def builtin_logits(evidence: dict[str, dict[str, Any]], options: list[str], ctx:
             s = exact["options"].get(o)
             if s:  # net successes: +1 per success, -1 per failure
                 z[j] += ctx.exact_weight * (2.0 * s["total"] - s["n"])
+    for j, o in enumerate(options):
+        if episodic and o in episodic:
+            n, total = episodic[o]
+            z[j] += ctx.exact_weight * (2.0 * total - n)
     return z
 
 

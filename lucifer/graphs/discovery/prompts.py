@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from lucifer.graphs.discovery.state import DiscoveryRequest
+from lucifer.graphs.discovery.state import DiscoveryRequest, trace_text
 from lucifer.kb import QueryOption
 
 SYSTEM_PROMPT = """\
@@ -23,7 +23,7 @@ The recommendation must be one of the candidate options, spelled exactly."""
 
 
 def request_prompt(request: DiscoveryRequest, options: dict[str, QueryOption]) -> str:
-    trace = "\n".join(f"- {step}" for step in request.trace) or "- (empty)"
+    trace = "\n".join(f"- {trace_text(step)}" for step in request.trace) or "- (empty)"
     cands = "\n".join(f"- {name}: {options[name].description}" for name in request.options)
     return (
         f"Location signature: {request.signature}\n\n"

@@ -17,6 +17,27 @@ from pydantic import BaseModel, ConfigDict, Field, field_validator, model_valida
 from lucifer.types import Status
 
 
+class TraceStep(BaseModel):
+    """A structured step of the episodic trace: a query already run in this episode."""
+
+    model_config = ConfigDict(extra="forbid", frozen=True)
+
+    option: str = Field(min_length=1, max_length=200, description="The query option that was run.")
+    outcome: float = Field(ge=0.0, le=1.0, description="1 = it found the information.")
+    signature: str | None = Field(
+        default=None, max_length=1000, description="Where it ran; omitted = at the current location."
+    )
+    note: str = Field(default="", max_length=500)
+
+    def text(self) -> str:
+        where = f" at '{self.signature}'" if self.signature else " here"
+        return f"ran {self.option}{where}: outcome {self.outcome:g}" + (f" ({self.note})" if self.note else "")
+
+
+def trace_text(step: str | TraceStep) -> str:
+    return step if isinstance(step, str) else step.text()
+
+
 class DiscoveryRequest(BaseModel):
     """One decision point: where the client is, what just happened, what it could ask."""
 
@@ -27,10 +48,11 @@ class DiscoveryRequest(BaseModel):
         max_length=1000,
         description="Location signature x_t: a short text of what is observed at the location.",
     )
-    trace: list[str] = Field(
+    trace: list[str | TraceStep] = Field(
         default_factory=list,
         max_length=50,
-        description="Episodic trace xi: the last few steps of the episode, as short texts.",
+        description="Episodic trace xi: the last few steps of the episode, as short texts or "
+        "structured steps {option, outcome, signature?} for queries already run in this episode.",
     )
     options: list[str] = Field(
         min_length=1,
@@ -61,6 +83,18 @@ class DiscoveryRequest(BaseModel):
             raise ValueError("options must be unique")
         object.__setattr__(self, "options", cleaned)
         return self
+
+    def episodic_outcomes(self) -> dict[str, tuple[int, float]]:
+        """``option -> (runs, summed outcome)`` of trace steps run at this signature."""
+        from lucifer.telemetry.memory import signature_key
+
+        here = signature_key(self.signature)
+        out: dict[str, tuple[int, float]] = {}
+        for step in self.trace:
+            if isinstance(step, TraceStep) and (step.signature is None or signature_key(step.signature) == here):
+                n, t = out.get(step.option, (0, 0.0))
+                out[step.option] = (n + 1, t + step.outcome)
+        return out
 
 
 class DiscoveryResult(BaseModel):
