@@ -109,9 +109,10 @@ class HierQ:
         return ties[0] if len(ties) == 1 else ties[int(self.rng.integers(len(ties)))]
 
     # ------------------------------------------------------------------ episode
-    async def run_episode(self, seed: int | None = None, record_path: bool = False) -> EpisodeResult:
+    async def run_episode(self, seed: int | None = None, record_path: bool = False,
+                          options: dict[str, Any] | None = None) -> EpisodeResult:
         env, mw, p = self.env, self.mw, self.p
-        _, info = env.reset(seed=seed)
+        _, info = env.reset(seed=seed, options=options)
         reports: list[str] = list(info["reports"])
         sig = await mw.signals(reports)
         use_g = not sig.neutral
@@ -175,7 +176,8 @@ class HierQ:
             tried_names: list[str] = []
             while not env.collected[k]:
                 qi = -1
-                if info["signature"] is not None:
+                signature = info["signature"]
+                if signature is not None:
                     advice = await mw.discover(info["signature"], tried_names, self.options)
                     if advice is not None:
                         name = next((o for o in advice.ranked() if o not in tried_names), None)
@@ -186,6 +188,7 @@ class HierQ:
                 _, _, terminated, truncated, info = env.step(int(Actions.QUERY_0) + qi)
                 qrec = info["query"]
                 if qrec is not None:
+                    mw.outcome(signature or "", qrec["option"], bool(qrec["correct"]))
                     queries += 1
                     ok = bool(qrec["correct"])
                     correct += ok

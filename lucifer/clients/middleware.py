@@ -112,6 +112,7 @@ class Middleware:
         contract_params: Any = None,
         memory: Any = None,
         trace_grounding: bool = False,
+        record_outcomes: bool = False,
     ) -> None:
         self.kb = kb if isinstance(kb, KnowledgeBase) else load_kb(kb)
         self.grounding = grounding
@@ -122,6 +123,10 @@ class Middleware:
         self._contract_params = contract_params
         self.memory = memory
         self.trace_grounding = trace_grounding
+        self.record_outcomes = record_outcomes
+        self._outcomes: list[tuple[str, str, float]] = []
+        #: optional callback ``observer(event, payload)`` for displays ("discover": signature, advice)
+        self.observer: Any = None
         self._space: Any = None
         self.n_cells = self.kb.rows * self.kb.cols
         self._neutral = GridSignals.neutral_for(self.n_cells)
@@ -186,12 +191,13 @@ class Middleware:
         if not self.grounding:
             return self._neutral
         key = tuple(reports)
-        hit = self._signal_cache.get(key)
-        if hit is not None:
-            return hit
-        results = await asyncio.gather(*(self.ground(r) for r in key))
-        sig = self._build_signals(results)
-        self._signal_cache[key] = sig
+        sig = self._signal_cache.get(key)
+        if sig is None:
+            results = await asyncio.gather(*(self.ground(r) for r in key))
+            sig = self._build_signals(results)
+            self._signal_cache[key] = sig
+        if self.observer is not None:
+            self.observer("signals", {"reports": key, "signals": sig})
         return sig
 
     def _build_signals(self, results: Sequence[GroundingResult]) -> GridSignals:
@@ -236,12 +242,13 @@ class Middleware:
             return None
         opts = tuple(options) or tuple(o.name for o in self.kb.query_options)
         key = (signature, tuple(trace), opts)
-        hit = self._advice_cache.get(key)
-        if hit is not None:
-            return hit
-        self.calls["discover"] += 1
-        advice = await self._discover(signature, list(trace), list(opts))
-        self._advice_cache[key] = advice
+        advice = self._advice_cache.get(key)
+        if advice is None:
+            self.calls["discover"] += 1
+            advice = await self._discover(signature, list(trace), list(opts))
+            self._advice_cache[key] = advice
+        if self.observer is not None:
+            self.observer("discover", {"signature": signature, "trace": list(trace), "advice": advice})
         return advice
 
     async def _discover(self, signature: str, trace: list[str], options: list[str]) -> Advice:
@@ -251,6 +258,20 @@ class Middleware:
     def record(self, signature: str, option: str, outcome: float, trace: Sequence[str] = (), client: str | None = None) -> None:
         """Append one query outcome to telemetry memory (what discovery learns from)."""
         self._get_discoverer().record(signature, option, float(outcome), trace=list(trace), client=client)
+
+    def outcome(self, signature: str, option: str, correct: bool) -> None:
+        """A client reports how a query went; buffered into telemetry memory when recording is on."""
+        if self.record_outcomes:
+            self._outcomes.append((signature, option, 1.0 if correct else 0.0))
+            if len(self._outcomes) >= 256:
+                self.flush()
+
+    def flush(self) -> int:
+        """Write buffered query outcomes to telemetry memory; returns how many."""
+        batch, self._outcomes = self._outcomes, []
+        if batch:
+            self.record_many(batch)
+        return len(batch)
 
     def record_many(self, records: Sequence[tuple[str, str, float]], client: str | None = None) -> None:
         """Append many (signature, option, outcome) records in one transaction."""
@@ -262,6 +283,17 @@ class Middleware:
         finally:
             if mem is not self.memory:
                 mem.close()
+
+    async def aclose(self) -> None:
+        """Flush telemetry and close the backends this middleware opened (trace store, memory)."""
+        self.flush()
+        g, self._grounder = self._grounder, None
+        close = getattr(g, "aclose", None)
+        if close is not None:
+            await close()
+        d, self._discoverer = self._discoverer, None
+        if d is not None and hasattr(d, "close"):
+            d.close()
 
     # ------------------------------------------------------------------ cache warming
     async def warm(self, reports: Sequence[str] = (), signatures: Sequence[str] = (), concurrency: int = 8) -> None:

@@ -366,11 +366,13 @@ class MiniGridPlanner:
         walls = frozenset(env.wall_cells())
         tried: list[str] = []
         queries = correct = 0
+        signature = ""
         path = [env.agent_cell] if record_path else []
         while True:
             pos = env.agent_cell
             if info["signature"] is not None:
-                advice = await mw.discover(info["signature"], tried, self.options)
+                signature = info["signature"]
+                advice = await mw.discover(signature, tried, self.options)
                 option = next((o for o in advice.ranked() if o not in tried), None) if advice else None
                 if option is None:
                     untried = [o for o in self.options if o not in tried]
@@ -395,6 +397,7 @@ class MiniGridPlanner:
                 path.append(env.agent_cell)
             q = info["query"]
             if q is not None:
+                mw.outcome(signature, q["option"], bool(q["correct"]))
                 queries += 1
                 correct += bool(q["correct"])
                 tried = [] if q["correct"] else [*tried, q["option"]]

@@ -118,21 +118,24 @@ class HybridPlanner:
     def _nearest(self, sig: GridSignals, pos: int, targets: list[int], order_i: int) -> int:
         return min(targets, key=lambda t: (len(self._path(sig, pos, t, order_i)), t))
 
-    async def run_episode(self, seed: int | None = None, record_path: bool = False) -> EpisodeResult:
+    async def run_episode(self, seed: int | None = None, record_path: bool = False,
+                          options: dict[str, Any] | None = None) -> EpisodeResult:
         env, mw = self.env, self.mw
-        obs, info = env.reset(seed=seed)
+        obs, info = env.reset(seed=seed, options=options)
         reports: list[str] = list(info["reports"])
         sig = await mw.signals(reports)  # ground the briefing
         order_i = int(self.rng.integers(len(_ORDERS)))
         tried: list[str] = []
         queries = correct = 0
         success = False
+        signature = ""
         path = [env.agent] if record_path else []
         while True:
             pos = env.agent
             if all(env.collected):
                 action = int(Actions.done)  # triage: transmit the situation report
             elif info["signature"] is not None:
+                signature = info["signature"]
                 advice = await mw.discover(info["signature"], tried, self.options)
                 if advice is not None:
                     option = next((o for o in advice.ranked() if o not in tried), None)
@@ -155,6 +158,7 @@ class HybridPlanner:
                 path.append(env.agent)
             q = info["query"]
             if q is not None:
+                mw.outcome(signature, q["option"], q["correct"])
                 queries += 1
                 if q["correct"]:
                     correct += 1

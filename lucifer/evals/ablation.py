@@ -25,6 +25,7 @@ import argparse
 import asyncio
 import json
 import os
+import pickle
 import sys
 import tempfile
 import time
@@ -85,20 +86,25 @@ CLIENTS: dict[str, Callable[[str | None], Prepared]] = {
 _WORKER: dict[str, Any] = {}
 
 
-def _init_worker(client: str, kb_arg: str | None, cache: dict[str, Any], memory: str, model: str) -> None:
+def _init_worker(client: str, kb_arg: str | None, cache_file: str, memory: str, model: str) -> None:
     _WORKER.clear()
-    _WORKER.update(client=client, kb_arg=kb_arg, cache=cache, memory=memory, model=model, mws={})
+    _WORKER.update(client=client, kb_arg=kb_arg, cache_file=cache_file, memory=memory, model=model, mws={})
     _WORKER["prepared"] = CLIENTS[client](kb_arg)
 
 
 def _middleware(config: str) -> Any:
+    """This process's middleware for ``config``; grounding/discovery answers come from the warm cache."""
     from lucifer.clients.middleware import Middleware
 
     mws = _WORKER["mws"]
     if config not in mws:
         g, d = flags(config)
         mw = Middleware(_WORKER["prepared"].kb, grounding=g, discovery=d, memory=_WORKER["memory"], model=_WORKER["model"])
-        mw.import_cache(_WORKER["cache"])
+        if g or d:  # the baseline needs no cache, so it can run while the parent still warms it
+            if "cache" not in _WORKER:
+                with open(_WORKER["cache_file"], "rb") as fh:
+                    _WORKER["cache"] = pickle.load(fh)
+            mw.import_cache(_WORKER["cache"])
         mws[config] = mw
     return mws[config]
 
@@ -158,7 +164,9 @@ def prior_missions(env: Any, rng: np.random.Generator) -> list[tuple[str, str, f
 async def _warm(mw: Any, env: Any, concurrency: int) -> dict[str, Any]:
     reports, sigs = env.distinct_texts()
     await mw.warm(reports, sigs, concurrency=concurrency)
-    return mw.export_cache()
+    cache = mw.export_cache()
+    await mw.aclose()
+    return cache
 
 
 def run_ablation(
@@ -189,18 +197,27 @@ def run_ablation(
         tmp = tempfile.TemporaryDirectory(prefix="lucifer-ablation-")
         memory = os.path.join(tmp.name, "telemetry.sqlite")
     try:
-        mw = Middleware(prepared.kb, grounding=True, discovery=True, memory=memory, model=model)
-        mw.record_many(prior_missions(env, np.random.default_rng(seed)), client=f"{client}-prior")
-        cache = asyncio.run(_warm(mw, env, concurrency=8))
-        warm_s = time.perf_counter() - t0
-        say(f"warm-up: {mw.calls['ground']} reports grounded, {mw.calls['discover']} signatures discovered "
-            f"in {warm_s:.1f}s")
-
-        results: dict[str, list[dict[str, Any]]] = {c: [None] * runs for c in CONFIGS}  # type: ignore[list-item]
+        cache_file = os.path.join(tmp.name if tmp else tempfile.mkdtemp(prefix="lucifer-ablation-"), "cache.pkl")
+        results: dict[str, list[dict[str, Any]]] = {c: [{}] * runs for c in CONFIGS}
         n_workers = workers or min(2, os.cpu_count() or 1)
         tasks = [(cfg, seed, r, episodes, curves and r == 0) for r in range(runs) for cfg in CONFIGS]
+        first = [t for t in tasks if t[0] == "baseline"]
+        rest = [t for t in tasks if t[0] != "baseline"]
+        mw = Middleware(prepared.kb, grounding=True, discovery=True, memory=memory, model=model)
+
+        def warm() -> float:
+            mw.record_many(prior_missions(env, np.random.default_rng(seed)), client=f"{client}-prior")
+            cache = asyncio.run(_warm(mw, env, concurrency=8))
+            with open(cache_file, "wb") as fh:
+                pickle.dump(cache, fh)
+            s = time.perf_counter() - t0
+            say(f"warm-up: {mw.calls['ground']} reports grounded, {mw.calls['discover']} signatures "
+                f"discovered in {s:.1f}s")
+            return s
+
         if n_workers <= 1:
-            _init_worker(client, kb, cache, memory, model)
+            warm_s = warm()
+            _init_worker(client, kb, cache_file, memory, model)
             for t in tasks:
                 cfg, r, out = _task(*t)
                 results[cfg][r] = out
@@ -209,8 +226,10 @@ def run_ablation(
 
             ctx = mp.get_context("spawn")
             with ProcessPoolExecutor(n_workers, mp_context=ctx, initializer=_init_worker,
-                                     initargs=(client, kb, cache, memory, model)) as pool:
-                futs = [pool.submit(_task, *t) for t in tasks]
+                                     initargs=(client, kb, cache_file, memory, model)) as pool:
+                futs = [pool.submit(_task, *t) for t in first]  # baseline runs overlap the warm-up
+                warm_s = warm()
+                futs += [pool.submit(_task, *t) for t in rest]
                 for i, f in enumerate(futs, 1):
                     cfg, r, out = f.result()
                     results[cfg][r] = out
@@ -309,6 +328,7 @@ async def episode_picture(client: str, png: str | Path, *, kb: str | None = None
         if hasattr(c, "epsilon"):
             c.epsilon = 0.0
         ep = await c.run_episode(seed=env_seed + 1, record_path=True)
+        await mw.aclose()
         return await picture_of(env, mw, ep, png, title=f"{client} +D+G: {ep.layout}, "
                                 f"{'success' if ep.success else 'failure'}, {ep.collisions} collisions, "
                                 f"{ep.correct_queries}/{ep.queries} queries right")
