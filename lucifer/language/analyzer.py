@@ -212,8 +212,15 @@ class ReportAnalyzer:
         toks = tokenize(text)
         norms = toks.norms(0, len(toks))
         places: list[PlaceMention] = []
+        cue_hits = [(a, b) for a, b, (_, src) in self._cues.find_all(norms) if b - a > 1]
         for a, b, landmark in self._places.find_all(norms):
+            if any(ca <= a and b <= cb and cb - ca > b - a for ca, cb in cue_hits):
+                continue  # "first aid post" is a cue, not the post office
             places.append(self._mention(toks, a, b, landmark))
+        places.extend(self._partial_names(toks, norms, {i for p in places for i in range(p.start_tok, p.end_tok)}))
+        for idx, p in enumerate(places):
+            if p.end_tok < len(norms) and norms[p.end_tok] in lx.MODIFIED_BY and not toks.clause_start[p.end_tok]:
+                places[idx] = replace(p, status="reference", reason=f"modifier of '{toks.tokens[p.end_tok].text}'")
         starts = self._false_starts(toks, {i for p in places for i in range(p.start_tok, p.end_tok)})
         for fs in starts:
             nxt = min((p for p in places if p.start_tok >= fs.end_tok and p.start_tok - fs.end_tok <= 3),
@@ -230,6 +237,40 @@ class ReportAnalyzer:
         self._apply_transit(ex)
         ex.places.sort(key=lambda p: p.start_tok)
         return ex
+
+    def _partial_names(self, toks: Tokens, norms: tuple[str, ...], taken: set[int]) -> list[PlaceMention]:
+        """"the hardware —": the first words of a multi-word name, cut off by a pause."""
+        if not hasattr(self, "_prefixes"):
+            counts: dict[tuple[str, ...], set[str]] = {}
+            for lm in self.kb.landmarks:
+                for form in lm.surface_forms:
+                    words = tuple(w for w in norm_phrase(form) if w not in ("the", "a", "an"))
+                    for n in range(1, len(words)):
+                        counts.setdefault(words[:n], set()).add(lm.name)
+            cue_words = {w for key in self._cue_keys() for w in key}
+            self._prefixes = {k: next(iter(v)) for k, v in counts.items()
+                              if len(v) == 1 and not set(k) & cue_words and not set(k) & lx.GENERIC_HEADS}
+        out = []
+        for i in range(1, len(norms)):
+            if norms[i - 1] != "the" or i in taken:
+                continue
+            for n in (2, 1):
+                key = norms[i : i + n]
+                end = i + n
+                if len(key) < n or key not in self._prefixes or any(j in taken for j in range(i, end)):
+                    continue
+                gap = toks.gaps[end] if end < len(norms) else toks.text[toks.tokens[end - 1].end :]
+                if end < len(norms) and not re.search(r"[—–\-]|\.\.\.|…", gap):
+                    continue
+                if not gap[:1].isspace() or len(" ".join(key)) < 4:
+                    continue  # "st--" is a word cut off (a false start), not a short name
+                out.append(self._mention(toks, i, end, self._prefixes[key]))
+                taken.update(range(i, end))
+                break
+        return out
+
+    def _cue_keys(self) -> list[tuple[str, ...]]:
+        return [key for bucket in self._cues._by_first.values() for key, _ in bucket]
 
     def _false_starts(self, toks: Tokens, taken: set[int]) -> list[PlaceMention]:
         """Cut-off words ("the fire st— at the police station") that begin a landmark name."""
@@ -399,6 +440,12 @@ class ReportAnalyzer:
             if any(i in place_tokens for i in range(a, b)):
                 return  # already inside a resolved description
             anchor, anchor_end, pronoun = self._anchor_after(ex, norms, b)
+            if anchor is None and norms[a:b] in lx.IMPLICIT_ANCHOR and (b >= len(norms) or ex.tokens.clause_start[b]
+                                                                        or not any(p.start_tok == b for p in ex.places)):
+                # "the building next door": the anchor is the place last spoken of
+                before = [p for p in ex.places if p.end_tok <= a and p.status != "retracted"]
+                if before and not self._inverse_anchor(ex, norms, a):
+                    anchor, anchor_end, pronoun = max(before, key=lambda p: p.end_tok), b, True
             if (anchor is None) != inverse_pass:
                 return
             head_end = a
@@ -625,12 +672,22 @@ class ReportAnalyzer:
                 j -= 1
             if j < 0:
                 continue
-            neg = norms[j] in ("not", "nt", "isnt", "wasnt") or (
+            neg = norms[j] in ("not", "nt", "isnt", "wasnt") or norms[j] in lx.RETRACT_VERBS or (
                 j > 0 and norms[j - 1 : j + 1] in (("rather", "than"), ("instead", "of"))
             ) or norms[j] == "instead"
             # "not the school" but not "not on fire at the school" (that negates a cue)
             if neg and not self._cue_between(norms, j + 1, p.start_tok):
                 ex.places[idx] = replace(p, status="negated", reason=f"negated by '{toks.tokens[j].text}'")
+                # "the clinic ... no, not the clinic, the police station": the earlier mention is retracted
+                sent_start = max(t for t in range(0, p.start_tok + 1) if toks.sentence_start[t])
+                earlier = [q for q in ex.places if q.status == "active" and q.landmark == p.landmark
+                           and sent_start <= q.start_tok < p.start_tok]
+                for q in earlier:
+                    ex.places[ex.places.index(q)] = replace(q, status="retracted", reason=f"then '{toks.tokens[j].text} {p.text}'")
+                nxt = min((q for q in ex.places if q.status == "active" and q.start_tok >= p.end_tok
+                           and q.start_tok - p.end_tok <= 3), key=lambda q: q.start_tok, default=None)
+                if earlier and nxt is not None and nxt.replaces is None:
+                    ex.places[ex.places.index(nxt)] = replace(nxt, replaces=earlier[-1].start_tok)
 
     def _cue_between(self, norms: tuple[str, ...], a: int, b: int) -> bool:
         return any(self._cues.match_at(norms, k) is not None for k in range(a, b))
@@ -700,7 +757,7 @@ class ReportAnalyzer:
         """
         norms = ex.tokens.norms(0, len(ex.tokens))
         b, end = self._after_clause(ex, k)
-        first_place = min((p for p in ex.places if b <= p.start_tok < end and p.status in ("active", "negated")),
+        first_place = min((p for p in ex.places if b <= p.start_tok < end and p.status != "reference"),
                           key=lambda p: p.start_tok, default=None)
         first_cue = min(((ca, cb) for ca, cb in cue_spans if b <= ca < end), default=None)
         if first_place is None and first_cue is None:
@@ -746,6 +803,10 @@ class ReportAnalyzer:
             successor = next((p for p in sorted(after, key=lambda p: p.start_tok) if p.status == "active"), None)
             if successor is not None and successor.replaces is None:
                 ex.places[ex.places.index(successor)] = replace(successor, replaces=last.start_tok)
+            # every earlier mention of the retracted place in the window goes too ("I said the bank")
+            for j, q in enumerate(ex.places):
+                if q.status == "active" and q.landmark == last.landmark and start <= q.start_tok < a:
+                    ex.places[j] = replace(q, status="retracted", reason=f"self-repair of '{last.text}'")
             # its reference points ("the cafe across from the church") go with it
             for j, q in enumerate(ex.places):
                 if q.status == "reference" and last.start_tok <= q.start_tok < a:
@@ -790,8 +851,11 @@ class ReportAnalyzer:
             cues.append(checked)
             if checked.category != cue.category:  # "no longer safe": unsafe now, and no longer safe
                 cues.append(replace(cue, polarity="denied", reason=checked.reason))
+        cues.extend(self._predicative_cues(ex, norms, blocked | {i for c in cues for i in range(c.start_tok, c.end_tok)}))
+        cues.sort(key=lambda c: c.start_tok)
         cues = self._apply_cue_repairs(ex, cues)
         cues = self._apply_false_alarms(toks, norms, cues)
+        cues = self._apply_non_reports(toks, norms, cues)
         claims, denied = self._associate(ex, cues)
         if self.embedder is not None and self.semantic_fallback:
             extra = self._semantic_claims(ex, claims, denied)
@@ -873,6 +937,53 @@ class ReportAnalyzer:
                              reason=f"MiniLM predicate match {score:.2f} (runner-up {runner:.2f})")
             out.append(Claim(p, cue))
         return out
+
+    def _predicative_cues(self, ex: Extraction, norms: tuple[str, ...], blocked: set[int]) -> list[CueMention]:
+        """"the library is sound", "bank is red": adjectives that are cues only after a copula."""
+        toks = ex.tokens
+        ends = {p.end_tok for p in ex.places}
+        out = []
+        for i, w in enumerate(norms):
+            role = lx.PREDICATIVE_CUES.get(w)
+            if role is None or i in blocked or i == 0:
+                continue
+            after = norms[i + 1] if i + 1 < len(norms) else ""
+            if after in lx.GENERIC_HEADS or after in ("light", "zone", "tag", "line", "team", "of"):
+                continue
+            if not (norms[i - 1] in ("is", "s", "are", "was", "now", "still", "as", "looks", "seems", "be", "completely",
+                                     "structurally", "totally", "all") or i in ends):
+                continue
+            cat = self._category_for_role(role, w)
+            if cat:
+                t = toks.tokens[i]
+                out.append(CueMention(i, i + 1, t.start, t.end, t.text, cat, "lexicon"))
+        return out
+
+    def _apply_non_reports(self, toks: Tokens, norms: tuple[str, ...], cues: list[CueMention]) -> list[CueMention]:
+        """Questions and instructions to the system claim nothing."""
+        sentences: list[tuple[int, int]] = []
+        for i in range(len(toks)):
+            if toks.sentence_start[i]:
+                sentences.append((i, i + 1))
+            else:
+                sentences[-1] = (sentences[-1][0], i + 1)
+        dropped: dict[int, str] = {}
+        for n, (a, b) in enumerate(sentences):
+            tail = toks.gaps[b] if b < len(toks) else toks.text[toks.tokens[b - 1].end :]
+            if "?" in tail:
+                dropped[n] = "a question, not a report"
+                continue
+            first = next((norms[i] for i in range(a, b) if norms[i] not in lx.FILLERS), "")
+            if first in lx.INSTRUCTION_VERBS and set(norms[a:b]) & lx.INSTRUCTION_WORDS:
+                dropped[n] = "an instruction to the system, not a report"
+        if not dropped:
+            return cues
+        sent_of = {}
+        for n, (a, b) in enumerate(sentences):
+            for i in range(a, b):
+                sent_of[i] = n
+        return [replace(c, status="retracted", reason=dropped[sent_of[c.start_tok]]) if sent_of.get(c.start_tok) in dropped
+                else c for c in cues]
 
     def _apply_false_alarms(self, toks: Tokens, norms: tuple[str, ...], cues: list[CueMention]) -> list[CueMention]:
         """"... the smoke was a false alarm": every claim of that sentence is denied."""
@@ -957,8 +1068,16 @@ class ReportAnalyzer:
         toks = ex.tokens
         out = list(cues)
         cue_spans = [(c.start_tok, c.end_tok) for c in out]
-        for k, (a, _b, _strong) in enumerate(ex.markers):
+        for k, (a, _b, strong) in enumerate(ex.markers):
             kind = self._repair_kind(ex, k, cue_spans)
+            if kind is None and strong:
+                # "smoke at the cafe, correction, that's just steam": the claim is withdrawn
+                lo = self._repair_window_start(ex, k)
+                before = [c for c in out if lo <= c.start_tok < a and c.status == "active"]
+                if before:
+                    last = max(before, key=lambda c: c.start_tok)
+                    out[out.index(last)] = replace(last, status="retracted", reason="withdrawn by a correction")
+                continue
             if kind not in ("cue", "full"):
                 continue
             b, end = self._after_clause(ex, k)
@@ -982,9 +1101,11 @@ class ReportAnalyzer:
         toks = ex.tokens
         norms = toks.norms(0, len(toks))
         marker_tokens = {i for a, b, _ in ex.markers for i in range(a, b)}
+        coord = {i for phrase in lx.COORDINATOR_PHRASES for i in range(len(norms))
+                 if norms[i : i + len(phrase.split())] == norm_phrase(phrase)}
         cuts = [0]
         for i in range(1, len(toks)):
-            if toks.clause_start[i] or norms[i] in lx.COORDINATORS or i in marker_tokens and (i - 1) not in marker_tokens:
+            if toks.clause_start[i] or norms[i] in lx.COORDINATORS or i in coord or i in marker_tokens and (i - 1) not in marker_tokens:
                 cuts.append(i)
         cuts.append(len(toks))
         segs = [(cuts[k], cuts[k + 1]) for k in range(len(cuts) - 1) if cuts[k] < cuts[k + 1]]
@@ -1108,7 +1229,9 @@ class ReportAnalyzer:
             a, b = segs[k]
             if norms[b - 1] in lx.PREPOSITIONS or norms[b - 1] in lx.DETERMINERS:
                 nxt = k + 1
-                while nxt in hollow:
+                skipped = 0
+                while nxt < len(segs) and (nxt in hollow or (not seg_places.get(nxt) and not seg_cues.get(nxt) and skipped < 2)):
+                    skipped += nxt not in hollow
                     nxt += 1
                 if seg_places.get(nxt):
                     pairs.extend(Claim(p, c) for p in seg_places[nxt] for c in cs)
@@ -1131,7 +1254,12 @@ class ReportAnalyzer:
             donor = self._donor_for_places(k, segs, seg_places, seg_cues, sentence_of, hollow,
                                            [norms[a] for a, _ in segs])
             if donor is not None:
-                pairs.extend(Claim(p, c) for c in seg_cues[donor])
+                for c in seg_cues[donor]:
+                    if c.polarity == "denied" and c.reason.startswith(("negated by 'not'", "negated by 'n't'", "negated by 'isn't'",
+                                                                          "negated by 's not'", "negated by 'nt'")):
+                        # "the station is not flooded, the clinic is": the contrast takes the claim
+                        c = replace(c, polarity="affirmed", reason="contrast with a negated claim")
+                    pairs.append(Claim(p, c))
         claims = [c for c in pairs if c.cue.polarity == "affirmed"]
         denied = [c for c in pairs if c.cue.polarity == "denied"]
         return claims, denied

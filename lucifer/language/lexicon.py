@@ -37,6 +37,10 @@ dangerous|danger|unsafe|hazard|hazardous|hazards|threat|no go|no-go|off limits|d
 avoid|blocked|impassable|sinkhole|landslide|mudslide|hot spot|hotspot|burning debris|roof down|roof collapsed|
 gunfire|shooter|armed|looters|riot|on fire again|reignited|spreading|spread|unsound|structurally unsound|
 compromised|unstable structure|partially collapsed|caving|smouldering|smoldering|charred|gutted|
+alight|well alight|fully involved|going up in flames|gone up in flames|bowing|buckling|wall's bowing|could go any second|
+about to collapse|coming down|falling in|roof has come in|roof's come in|roof came in|ceiling's down|ceiling down|
+ceiling has come in|ceiling's come in|ceiling collapsed|keep clear|stay clear|red for entry|sparks everywhere|
+stinks of gas|reeks of gas|fuel leak|oil spill|overtopping|burst its banks|breached|landslip|slipping|
 smell of gas|strong smell of gas|gas smell|water damage|waist deep|chest deep|electrical hazard|exposed wiring
 """.replace("\n", ""))
 
@@ -45,7 +49,8 @@ safe|safe zone|safe area|safe to enter|safe to shelter|safe to pass|safe passage
 clear|all clear|cleared|clear now|secure|secured|secure now|sheltering|shelter|shelter point|
 evacuation point|evacuation centre|evacuation center|rally point|rendezvous point|
 staging point|triage|triage area|first aid post|first aid station|aid station|relief centre|relief center|
-passable|good to go|accessible|open route|route open|no hazards|no hazard|checked and safe|stable|
+passable|good to go|accessible|open route|route open|checked and safe|stable|casualty clearing station|
+clearing station|welfare centre|welfare center|rest centre|rest center|green for entry|safe for entry|first aid point|
 structurally sound|intact|usable|refuge|sanctuary|holding area|collection point|gathering point
 """.replace("\n", ""))
 
@@ -66,7 +71,10 @@ trapped in rubble|under the rubble|needs medics|need medics|needs a doctor|requi
 people still inside|still inside|someone still inside|people stuck|people stuck inside|with people inside|
 man collapsed|woman collapsed|person collapsed|someone collapsed|somebody collapsed|he collapsed|she collapsed|
 needs oxygen|need oxygen|having a heart attack|heart attack|seizure|having a seizure|can't breathe|cannot breathe|
-stuck on the roof|stranded on the roof|on the roof waiting|waving from|trapped upstairs|trapped on
+stuck on the roof|stranded on the roof|on the roof waiting|waving from|trapped upstairs|trapped on|
+can't get up|cannot get up|can't get out|can't free|cannot free|waving for help|yelling for help|for help|
+head wound|head injury|hurt bad|badly hurt|walking wounded|screaming inside|kids screaming|someone in the water|
+person in the water|in the water|unaccounted for|still inside|not responding|no pulse|crush injury|burns
 """.replace("\n", ""))
 
 # "collapsed" alone is structural (hazard); "collapsed inside" / "passed out" is a person.
@@ -117,14 +125,15 @@ RELATION_SYNONYMS: dict[str, list[str]] = {
                     "sharing a wall with", "shares a wall with", "that shares a wall with", "built against",
                     "abutting", "abuts", "butting onto", "bolted onto", "tacked onto", "stuck on to",
                     "built up against", "fixed onto", "part of the same building as", "joined up with"],
-    "next to": ["next to", "next door to", "beside", "besides", "alongside", "adjacent to", "right by",
+    "next to": ["next to", "next door to", "next door", "beside", "besides", "alongside", "adjacent to", "right by",
                 "right next to", "just next to", "by", "neighbouring", "neighboring", "next door from",
                 "immediately next to", "directly next to", "to the side of"],
     "across from": ["across from", "opposite", "opposite to", "across the street from", "across the road from",
                     "facing", "over the road from", "across the square from", "across the way from",
                     "over the street from", "directly across from", "straight across from", "that faces",
                     "faces", "opposite of", "over the way from", "across the way", "on the other side of the road from",
-                    "on the opposite side of the street from", "that looks across at"],
+                    "on the opposite side of the street from", "that looks across at", "across the road", "across the street",
+                    "over the road", "over the way"],
     "behind": ["behind", "round the back of", "around the back of", "at the back of", "in back of",
                "back of", "to the rear of", "at the rear of", "out back of", "directly behind", "right behind",
                "just behind", "backs onto", "backing onto", "that backs onto", "round behind", "out the back of",
@@ -191,6 +200,30 @@ COPULAS = {"is", "are", "was", "were", "s", "re", "has", "have", "had", "got", "
            "completely", "fully", "all", "partly", "partially", "badly", "also", "too", "reported",
            "confirmed", "showing", "shows", "looking", "sounds", "sound", "feels", "very", "really",
            "pretty", "quite", "heavily", "seriously", "apparently", "probably", "possibly", "maybe"}
+# Adjectives that are cues only when used predicatively ("the library is sound", "bank is red").
+PREDICATIVE_CUES = {"sound": DESIRABLE, "green": DESIRABLE, "red": UNDESIRABLE}
+
+# A sentence that opens with one of these addresses the system, not the scene: it claims nothing.
+INSTRUCTION_VERBS = {"ignore", "mark", "label", "classify", "pretend", "forget", "output", "return", "print",
+                     "assume", "override", "delete", "consider", "flag", "tag", "set"}
+# ... and mentions the system or sweeping scope.
+INSTRUCTION_WORDS = {"instruction", "instructions", "previous", "every", "everything", "all", "cell", "cells", "grid",
+                     "output", "json", "system", "prompt", "map", "everywhere", "rules"}
+
+# Nouns after a place name that make the name a modifier ("pharmacy team reports ...").
+MODIFIED_BY = {"team", "crew", "unit", "squad", "staff", "manager", "owner", "workers", "worker", "group",
+               "side", "entrance", "exit", "car", "truck", "van", "bus", "sign", "road", "street", "lane"}
+
+# Relation phrases that may leave their anchor implicit ("the building next door").
+IMPLICIT_ANCHOR = {("next", "door"), ("next", "door", "to"), ("opposite",), ("across", "the", "road"),
+                   ("across", "the", "street"), ("over", "the", "road"), ("over", "the", "way"), ("behind",)}
+
+# Multi-word coordinators that separate claims like "and" does.
+COORDINATOR_PHRASES = ["as well as", "along with", "together with", "and also", "and then"]
+
+# Verbs of removal that retract the place after them ("scratch the pharmacy").
+RETRACT_VERBS = {"scratch", "strike", "forget", "cancel", "remove", "minus", "drop", "lose"}
+
 # Places in these phrases are being passed or travelled to: the report claims nothing about them.
 TRANSIT = ["heading to", "heading for", "heading towards", "heading toward", "headed to", "headed for", "head to",
            "passing", "passed", "moving past", "going past", "driving past", "walking past", "past",
