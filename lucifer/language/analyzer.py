@@ -797,6 +797,9 @@ class ReportAnalyzer:
             if not before:
                 continue
             last = max(before, key=lambda p: p.end_tok)
+            first_after = min((p for p in after if p.status == "active"), key=lambda p: p.start_tok, default=None)
+            if first_after is not None and first_after.landmark == last.landmark:
+                continue  # "I mean the chapel, st mary's, same place": a restatement, not a repair
             i = ex.places.index(last)
             ex.places[i] = replace(last, status="retracted",
                                    reason=f"self-repair: '{toks.span_text(a, b)}' then '{after[0].text}'")
@@ -904,7 +907,9 @@ class ReportAnalyzer:
         """Places the vocabulary left without a category: classify their predicate with MiniLM."""
         done = {id(c.place) for c in claims} | {id(c.place) for c in denied}
         done_keys = {(c.place.start_tok) for c in claims} | {c.place.start_tok for c in denied}
-        todo = [p for p in ex.places if p.status == "active" and id(p) not in done and p.start_tok not in done_keys]
+        silent = getattr(self, "_non_report_tokens", set())
+        todo = [p for p in ex.places if p.status == "active" and id(p) not in done and p.start_tok not in done_keys
+                and p.start_tok not in silent]
         if not todo:
             return []
         toks = ex.tokens
@@ -951,7 +956,7 @@ class ReportAnalyzer:
             if after in lx.GENERIC_HEADS or after in ("light", "zone", "tag", "line", "team", "of"):
                 continue
             if not (norms[i - 1] in ("is", "s", "are", "was", "now", "still", "as", "looks", "seems", "be", "completely",
-                                     "structurally", "totally", "all") or i in ends):
+                                     "structurally", "totally", "all", "thats", "its", "theyre", "whos") or i in ends):
                 continue
             cat = self._category_for_role(role, w)
             if cat:
@@ -976,6 +981,7 @@ class ReportAnalyzer:
             first = next((norms[i] for i in range(a, b) if norms[i] not in lx.FILLERS), "")
             if first in lx.INSTRUCTION_VERBS and set(norms[a:b]) & lx.INSTRUCTION_WORDS:
                 dropped[n] = "an instruction to the system, not a report"
+        self._non_report_tokens = {i for n, (a, b) in enumerate(sentences) if n in dropped for i in range(a, b)}
         if not dropped:
             return cues
         sent_of = {}
@@ -1056,7 +1062,7 @@ class ReportAnalyzer:
             return cue
         why = negated_by or cancelled_by
         role = self.kb.category_by_name[cue.category].role
-        if role == Role.DESIRABLE and negated_by is not None and (cue.end_tok - cue.start_tok) >= 1:
+        if role == Role.DESIRABLE and negated_by is not None and " ".join(norms[cue.start_tok:cue.end_tok]) in lx.NEGATABLE_STATES:
             # "not safe" / "no longer safe" means unsafe: the place is undesirable now
             und = self._undesirable()
             if und is not None:
@@ -1068,9 +1074,11 @@ class ReportAnalyzer:
         toks = ex.tokens
         out = list(cues)
         cue_spans = [(c.start_tok, c.end_tok) for c in out]
+        norms_all = toks.norms(0, len(toks))
         for k, (a, _b, strong) in enumerate(ex.markers):
             kind = self._repair_kind(ex, k, cue_spans)
-            if kind is None and strong:
+            b_after, e_after = self._after_clause(ex, k)
+            if kind is None and strong and set(norms_all[b_after:e_after]) & lx.DISMISSALS:
                 # "smoke at the cafe, correction, that's just steam": the claim is withdrawn
                 lo = self._repair_window_start(ex, k)
                 before = [c for c in out if lo <= c.start_tok < a and c.status == "active"]
@@ -1237,10 +1245,13 @@ class ReportAnalyzer:
                     pairs.extend(Claim(p, c) for p in seg_places[nxt] for c in cs)
                     claimed_places.update(p.start_tok for p in seg_places[nxt])
                     continue
-            target = self._target_for_cues(k, segs, seg_places, seg_cues, sentence_of)
+            target = self._target_for_cues(k, segs, seg_usable, seg_cues, sentence_of)
             if target is not None:
-                pairs.extend(Claim(p, c) for p in seg_places[target] for c in cs)
-                claimed_places.update(p.start_tok for p in seg_places[target])
+                for q in seg_usable[target]:
+                    fq = forward(q)
+                    if fq is not None:
+                        pairs.extend(Claim(fq, c) for c in cs)
+                        claimed_places.add(fq.start_tok)
 
         # 2b/4. places without a cue: inherit from the place they replaced, else borrow from a list
         for p in sorted(active, key=lambda p: p.start_tok):
@@ -1317,10 +1328,14 @@ class ReportAnalyzer:
                 if sentence_of[segs[j][0]] < sentence_of[segs[k][0]] - 1:
                     return None
                 return j
-        # else the next one in the same sentence ("on fire, the bakery")
+        # else the next one in the same sentence ("on fire, the bakery"), over a short aside
         j = k + 1
-        if j < len(segs) and seg_places.get(j) and not seg_cues.get(j) and sentence_of[segs[j][0]] == sentence_of[segs[k][0]]:
-            return j
+        while j < len(segs) and j - k <= 3 and sentence_of[segs[j][0]] == sentence_of[segs[k][0]]:
+            if seg_places.get(j):
+                return j if not seg_cues.get(j) else None
+            if seg_cues.get(j):
+                return None
+            j += 1
         return None
 
 

@@ -104,7 +104,7 @@ NEUTRAL_PHRASES = ["smoke alarm", "smoke alarms", "fire alarm", "fire alarms", "
                    "all units", "flood light", "floodlight", "floodlights", "rescue team", "rescue teams"]
 
 # Whole-report "nothing to see" markers that cancel every claim in their sentence.
-FALSE_ALARM = ["false alarm", "disregard", "ignore that", "never mind", "nevermind"]
+FALSE_ALARM = ["false alarm", "never mind", "nevermind", "disregard my last", "disregard the last report"]
 
 # Self-repair markers. Strong ones reach back into the previous sentence.
 STRONG_REPAIR = [
@@ -181,8 +181,8 @@ GENERIC_HEADS = {
     "block", "office", "hall", "station", "centre", "center", "business", "spot", "property", "venue",
     "facility", "storefront", "shopfront", "outlet", "annex", "annexe", "extension", "warehouse",
     "garage", "shed", "barn", "hut", "home", "residence", "tower", "depot", "yard", "lot", "area",
-    "establishment", "complex", "church", "school", "clinic", "restaurant", "pub", "bar", "market",
-    "bridge", "mill", "plant", "factory", "workshop", "cottage", "cabin", "dock", "pier", "square",
+    "establishment", "complex", "crossing", "footbridge", "landing", "jetty", "wharf", "quay", "cottage", "cottages", "church", "school", "clinic", "restaurant", "pub", "bar", "market",
+    "bridge", "mill", "plant", "factory", "workshop", "cabin", "dock", "pier", "square",
     "park", "field", "ground", "grounds", "point", "thing", "bit", "side", "corner", "room",
     "space", "green", "lawn", "garden", "gardens", "road", "street", "alley", "terrace", "plot", "land", "apartments",
     "flats", "bay", "wing", "hotel", "inn", "library", "hospital", "quarter", "section", "zone", "ones",
@@ -271,3 +271,10 @@ EXEMPLARS: dict[str, list[str]] = {
 # Last words of an unknown relational phrase ("the place <...> the mill"): the phrase links two places.
 RELATION_ENDINGS = {"to", "from", "of", "with", "onto", "on", "by", "over", "off", "against", "beside",
                     "behind", "opposite", "facing", "past", "beyond", "above", "below", "under", "near"}
+
+# Desirable states whose negation means the place is unsafe ("not safe", "no longer secure");
+# a negated designation ("not the holding area") is only a denial.
+NEGATABLE_STATES = {"safe", "clear", "secure", "secured", "stable", "sound", "passable", "accessible", "cleared",
+                    "safe to enter", "safe to shelter", "all clear", "structurally sound", "green"}
+# Words after a correction that dismiss the claim before it ("correction, that's just steam").
+DISMISSALS = {"just", "only", "nothing", "false", "mistake", "steam", "mist", "dust", "fog", "nobody", "fine"}
