@@ -89,6 +89,25 @@ def _focus(p: np.ndarray) -> float:
     return float(1.0 + (q * np.log(q)).sum() / np.log(len(p)))
 
 
+def _focus_rows(v: np.ndarray) -> np.ndarray:
+    """:func:`_focus` of every row of ``v``."""
+    if v.shape[1] < 2:
+        return np.zeros(v.shape[0])
+    total = v.sum(1, keepdims=True)
+    q = np.where(total > 0, v / np.maximum(total, 1e-12), 0.0)
+    ent = -(np.where(q > 0, q * np.log(np.where(q > 0, q, 1.0)), 0.0)).sum(1)
+    return np.where(total[:, 0] > 0, 1.0 - ent / np.log(v.shape[1]), 0.0)
+
+
+def _grow(a: np.ndarray, rows: int, cols: int) -> np.ndarray:
+    """``a`` zero-padded to at least ``rows`` x ``cols``."""
+    if a.shape == (rows, cols):
+        return a
+    out = np.zeros((rows, cols))
+    out[: a.shape[0], : a.shape[1]] = a
+    return out
+
+
 class SignatureIndex:
     """Outcome statistics per signature and per clause, with clause embeddings."""
 
@@ -98,26 +117,30 @@ class SignatureIndex:
         self.cache = cache
         self._lock = threading.RLock()
         self._version: tuple[int, int] = (-1, -1)
+        self._vec: dict[str, np.ndarray] = {}  # clause -> unit vector (kept across rebuilds)
         self._reset()
 
     def _reset(self) -> None:
-        self._sig_text: dict[str, str] = {}
-        self._sig_stats: dict[str, dict[str, list[float]]] = defaultdict(lambda: defaultdict(lambda: [0, 0.0]))
-        self._clause_stats: dict[str, dict[str, list[float]]] = defaultdict(lambda: defaultdict(lambda: [0, 0.0]))
-        self._sig_clauses: dict[str, list[str]] = {}
-        self._opt_stats: dict[str, list[float]] = defaultdict(lambda: [0, 0.0])
-        self._vec: dict[str, np.ndarray] = {}
         self._last_id = 0
         self._count = 0
-        # materialised arrays
+        self._opt_stats: dict[str, list[float]] = defaultdict(lambda: [0, 0.0])
+        # rows: known clauses / signatures; columns: options, in order of first appearance
         self.clauses: list[str] = []
         self.options: list[str] = []
-        self._C = np.zeros((0, DIM), dtype=np.float32)
-        self._N = np.zeros((0, 0))
-        self._S = np.zeros((0, 0))
-        self._V = np.zeros((0, 0))
-        self._P = np.zeros((0, DIM))
+        self._clause_row: dict[str, int] = {}
+        self._opt_col: dict[str, int] = {}
         self._sig_keys: list[str] = []
+        self._sig_row: dict[str, int] = {}
+        self._sig_text: dict[str, str] = {}
+        self._sig_clauses: list[list[int]] = []
+        self._C = np.zeros((0, DIM), dtype=np.float32)  # clause vectors
+        self._N = np.zeros((0, 0))  # runs per (clause, option)
+        self._S = np.zeros((0, 0))  # summed outcome per (clause, option)
+        self._SN = np.zeros((0, 0))  # runs per (signature, option)
+        self._SS = np.zeros((0, 0))  # summed outcome per (signature, option)
+        # derived by _derive()
+        self._V = np.zeros((0, 0))  # share of a clause's signatures where the option worked best
+        self._P = np.zeros((0, DIM))  # option prototypes
         self._sig_clause_idx = np.zeros((0, 1), dtype=np.int64)
 
     # -- building ----------------------------------------------------------------------
@@ -127,68 +150,83 @@ class SignatureIndex:
             version = self.memory.version()
             if version == self._version:
                 return False
-            max_id, count = version
             rows = self.memory.signature_table(after_id=self._last_id)
-            if self._count + len(rows) != count:  # records were evicted: rebuild from scratch
+            if self._count + len(rows) != version[1]:  # records were evicted: rebuild from scratch
                 self._reset()
                 rows = self.memory.signature_table()
-            for rid, sig, key, opt, out in rows:
-                self._sig_text.setdefault(key, sig)
-                st = self._sig_stats[key][opt]
-                st[0] += 1
-                st[1] += out
-                g = self._opt_stats[opt]
-                g[0] += 1
-                g[1] += out
-                cl = self._sig_clauses.get(key)
-                if cl is None:
-                    cl = self._sig_clauses[key] = split_clauses(sig) or [key]
-                for c in cl:
-                    cs = self._clause_stats[c][opt]
-                    cs[0] += 1
-                    cs[1] += out
-                self._last_id = max(self._last_id, rid)
-            self._count = count
+            self._fold(rows)
+            self._count = version[1]
             self._version = version
-            self._materialise()
             return True
 
-    def _materialise(self) -> None:
-        self.clauses = list(self._clause_stats)
-        self.options = sorted(self._opt_stats)
-        col = {o: j for j, o in enumerate(self.options)}
-        self._ensure_vectors(self.clauses)
-        self._C = (
-            np.stack([self._vec[c] for c in self.clauses]) if self.clauses else np.zeros((0, DIM), np.float32)
-        )
-        n = np.zeros((len(self.clauses), len(self.options)))
-        s = np.zeros_like(n)
-        for i, c in enumerate(self.clauses):
-            for o, (cnt, tot) in self._clause_stats[c].items():
-                n[i, col[o]] = cnt
-                s[i, col[o]] = tot
-        self._N, self._S = n, s
-        votes = np.zeros_like(n)
-        row_of = {c: i for i, c in enumerate(self.clauses)}
-        for key, clauses in self._sig_clauses.items():
-            best = best_option({o: OptionStat(int(a), float(b)) for o, (a, b) in self._sig_stats[key].items()})
-            if best is not None:
-                for c in clauses:
-                    votes[row_of[c], col[best]] += 1.0
+    def _fold(self, rows: list[tuple[int, str, str, str, float]]) -> None:
+        new_clauses: list[str] = []
+        new_sigs = False
+        for _, sig, key, opt, _ in rows:
+            if opt not in self._opt_col:
+                self._opt_col[opt] = len(self.options)
+                self.options.append(opt)
+            if key not in self._sig_row:
+                self._sig_row[key] = len(self._sig_keys)
+                self._sig_keys.append(key)
+                self._sig_text[key] = sig
+                clause_rows = []
+                for c in split_clauses(sig) or [key]:
+                    if c not in self._clause_row:
+                        self._clause_row[c] = len(self.clauses)
+                        self.clauses.append(c)
+                        new_clauses.append(c)
+                    clause_rows.append(self._clause_row[c])
+                self._sig_clauses.append(clause_rows)
+                new_sigs = True
+        n_c, n_s, n_o = len(self.clauses), len(self._sig_keys), len(self.options)
+        self._N, self._S = _grow(self._N, n_c, n_o), _grow(self._S, n_c, n_o)
+        self._SN, self._SS = _grow(self._SN, n_s, n_o), _grow(self._SS, n_s, n_o)
+        for rid, _, key, opt, out in rows:
+            j, r = self._opt_col[opt], self._sig_row[key]
+            self._SN[r, j] += 1
+            self._SS[r, j] += out
+            for c in self._sig_clauses[r]:
+                self._N[c, j] += 1
+                self._S[c, j] += out
+            g = self._opt_stats[opt]
+            g[0] += 1
+            g[1] += out
+            self._last_id = max(self._last_id, rid)
+        if new_clauses:
+            self._ensure_vectors(new_clauses)
+            self._C = np.concatenate([self._C, np.stack([self._vec[c] for c in new_clauses])])
+        if new_sigs:
+            width = max((len(v) for v in self._sig_clauses), default=1)
+            idx = np.full((n_s, width), -1, dtype=np.int64)
+            for i, cl in enumerate(self._sig_clauses):
+                idx[i, : len(cl)] = cl
+            self._sig_clause_idx = idx
+        self._derive()
+
+    def _derive(self) -> None:
+        """Votes, focus and prototypes from the counts (vectorised; cheap to redo)."""
+        n_c, n_o = self._N.shape
+        if n_c == 0 or n_o == 0:
+            self._V, self._P = np.zeros((n_c, n_o)), np.zeros((n_o, DIM))
+            return
+        # best option per signature: highest posterior mean outcome among the options run there,
+        # ties to the alphabetically first name (as best_option does)
+        rank = np.argsort(np.argsort(self.options))
+        post = (self._SS + 1.0) / (self._SN + 2.0) - rank[None, :] * 1e-9
+        post[self._SN == 0] = -np.inf
+        best = post.argmax(1)
+        idx = self._sig_clause_idx
+        rows = np.repeat(np.arange(len(idx)), idx.shape[1])
+        flat = idx.reshape(-1)
+        keep = flat >= 0
+        votes = np.zeros((n_c, n_o))
+        np.add.at(votes, (flat[keep], best[rows[keep]]), 1.0)
         self._V = votes / np.maximum(votes.sum(1, keepdims=True), 1.0)
         # prototype of an option: mean vector of the clauses where it worked best, each clause
         # weighted by its focus so that place phrases shared by every option barely count
-        focus = np.array([_focus(v) for v in self._V]) if len(self._V) else np.zeros(0)
-        proto = (self._V * focus[:, None]).T @ self._C if len(self._V) else np.zeros((len(self.options), DIM))
+        proto = (self._V * _focus_rows(self._V)[:, None]).T @ self._C
         self._P = proto / np.maximum(np.linalg.norm(proto, axis=1, keepdims=True), 1e-12)
-        row = {c: i for i, c in enumerate(self.clauses)}
-        self._sig_keys = list(self._sig_clauses)
-        width = max((len(v) for v in self._sig_clauses.values()), default=1)
-        idx = np.full((len(self._sig_keys), width), -1, dtype=np.int64)
-        for i, k in enumerate(self._sig_keys):
-            for j, c in enumerate(self._sig_clauses[k]):
-                idx[i, j] = row[c]
-        self._sig_clause_idx = idx
 
     def _ensure_vectors(self, texts: Sequence[str]) -> None:
         missing = [t for t in dict.fromkeys(texts) if t not in self._vec]
@@ -216,8 +254,14 @@ class SignatureIndex:
     def signature_stats(self, signature: str) -> dict[str, OptionStat]:
         """Outcome statistics of the records at exactly this signature."""
         with self._lock:
-            stats = self._sig_stats.get(signature_key(signature))
-            return {o: OptionStat(int(n), float(t)) for o, (n, t) in (stats or {}).items()}
+            r = self._sig_row.get(signature_key(signature))
+            if r is None:
+                return {}
+            return {
+                o: OptionStat(int(self._SN[r, j]), float(self._SS[r, j]))
+                for o, j in self._opt_col.items()
+                if self._SN[r, j] > 0
+            }
 
     def option_stats(self) -> dict[str, OptionStat]:
         with self._lock:
@@ -225,7 +269,7 @@ class SignatureIndex:
 
     def is_known(self, signature: str) -> bool:
         with self._lock:
-            return signature_key(signature) in self._sig_stats
+            return signature_key(signature) in self._sig_row
 
     def option_prior(self, option: str) -> float:
         """Posterior mean outcome of an option over all memory (Beta(1, 1) prior)."""
@@ -254,7 +298,7 @@ class SignatureIndex:
             sims = vectors @ self._C.T  # (q, Nc)
             kk = min(k, sims.shape[1])
             top = np.argpartition(-sims, kk - 1, axis=1)[:, :kk]
-            col = {o: j for j, o in enumerate(self.options)}
+            col = self._opt_col
             prior = np.array([self.option_prior(o) for o in options])
             cols = np.array([col.get(o, -1) for o in options])
             out: list[ClauseMatch] = []
