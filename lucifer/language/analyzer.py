@@ -357,7 +357,9 @@ class ReportAnalyzer:
         self._marker_cache = marker_tokens
         rel_hits = self._relations.find_all(norms, place_tokens)
         ordered = sorted(rel_hits, key=lambda h: -h[0])
-        for pass_no in (1, 2):
+        self._rel_tokens = {i for a, b, _ in rel_hits for i in range(a, b)}
+        # forward descriptions, then inverse ones, then forward ones that anchor on an inverse one
+        for pass_no in (1, 2, 1):
             for a, b, (phrase, flipped) in ordered:
                 self._resolve_one(ex, toks, norms, a, b, phrase, flipped, place_tokens, marker_tokens,
                                   inverse_pass=pass_no == 2)
@@ -541,7 +543,8 @@ class ReportAnalyzer:
         while head_start > 0 and head_end - head_start < 4 and not toks.clause_start[head_start]:
             prev = head_start - 1
             w = norms[prev]
-            if w in lx.PREPOSITIONS or w in lx.COPULAS or prev in place_tokens or prev in marker_tokens:
+            if w in lx.PREPOSITIONS or w in lx.COPULAS or prev in place_tokens or prev in marker_tokens \
+                    or prev in getattr(self, "_rel_tokens", ()):
                 break
             head_start -= 1
             if w in lx.DETERMINERS:
@@ -791,7 +794,13 @@ class ReportAnalyzer:
             b, end = self._after_clause(ex, k)
             after = [p for p in ex.places if b <= p.start_tok < end and p.status in ("active", "negated")]
             if not after:
-                continue
+                # "belay that, in the mill — the mill": the new place was restarted; its repeat stands in
+                restarted = [p for p in ex.places if b <= p.start_tok < end and p.reason.startswith("restarted")]
+                if not restarted:
+                    continue
+                after = [q for q in ex.places if q.status == "active" and q.replaces in {r.start_tok for r in restarted}]
+                if not after:
+                    continue
             start = self._repair_window_start(ex, k)
             before = [p for p in ex.places if start <= p.start_tok < a and p.status == "active"]
             if not before:
