@@ -138,6 +138,7 @@ def test_graph_topology() -> None:
     assert set(g.nodes) == {"__start__", "plan_queries", "run_tools", "validate_answer", "fall_back", "__end__"}
     edges = {(e.source, e.target) for e in g.edges}
     assert {("run_tools", "plan_queries"), ("validate_answer", "plan_queries"), ("validate_answer", "fall_back"),
+            ("plan_queries", "plan_queries"),
             ("plan_queries", "fall_back"), ("fall_back", "__end__")} <= edges
 
 
@@ -245,3 +246,23 @@ async def test_episodic_trace_counts_queries_already_run_here(builtin: Discovere
     assert after.recommendation == "search_dog"
     with pytest.raises(BadRequest):
         parse_request({"signature": SIG, "options": opts, "trace": [{"option": "x", "outcome": 3}]})
+
+
+class FlakyModel(FakeToolModel):
+    failures: int = 1
+
+    async def _agenerate(self, messages: list[BaseMessage], *args: Any, **kwargs: Any) -> Any:
+        if self.failures > 0:
+            self.failures -= 1
+            raise RuntimeError("provider hiccup")
+        return await super()._agenerate(messages, *args, **kwargs)
+
+
+async def test_model_error_is_retried_then_falls_back(seeded: Any) -> None:
+    ok = FlakyModel(messages=iter([answer("gas_sniffer")]), seen=[], failures=1)
+    r = await with_model(seeded, ok).discover({"signature": SIG, "options": OPTIONS})
+    assert (r.recommendation, r.status) == ("gas_sniffer", Status.RETRIED)
+    assert r.errors == ["chat model failed: RuntimeError: provider hiccup"]
+    bad = FlakyModel(messages=iter([answer("gas_sniffer")]), seen=[], failures=5)
+    r = await with_model(seeded, bad, max_retries=2).discover({"signature": SIG, "options": OPTIONS})
+    assert r.status == Status.LLM_ERROR and r.recommendation == "acoustic_listen" and len(r.errors) == 3

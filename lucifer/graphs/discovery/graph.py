@@ -1,16 +1,22 @@
 """The discovery graph: an agent that calls memory tools, then a validated recommendation.
 
-    START -> plan_queries -> (run_tools -> plan_queries)* -> validate_answer -> END
-                        \\                                   |  \\
-                         \\-> fall_back -> END   <- retry ---/   \\-> fall_back -> END
+    START -> plan_queries
+    plan_queries    --tool calls-->                      run_tools --> plan_queries
+    plan_queries    --model error, retries left-->       plan_queries
+    plan_queries    --timeout / unreachable / errors-->  fall_back --> END
+    plan_queries    --answer-->                          validate_answer
+    validate_answer --valid-->                           END
+    validate_answer --invalid, retries left-->           plan_queries
+    validate_answer --invalid, cap reached-->            fall_back --> END
 
 ``plan_queries`` is the agent. With the ``builtin`` backend it deterministically asks for all
 four tools, then turns their evidence into a distribution (:mod:`.policy`); with a chat model
 it lets the model call tools and answer in JSON. ``validate_answer`` checks that the
 recommendation is in U(x_t) and the distribution is over U(x_t); an invalid answer is sent back
 (up to ``max_retries``), then ``fall_back`` computes the builtin answer from the same tools and
-records why (``status``). A chat-model failure (timeout, unreachable, any error) also falls
-back with its status.
+records why (``status``). A chat-model error is retried the same way (``plan_queries`` loops
+to itself), a timeout or an unreachable model falls back at once; either way the status says
+what happened.
 """
 
 from __future__ import annotations
@@ -149,10 +155,14 @@ async def plan_queries(state: DiscoveryState, runtime: Runtime[DiscoveryContext]
     model = res.chat_model if force_answer else res.bound_model()
     try:
         reply = await asyncio.wait_for(model.ainvoke(messages), timeout=ctx.timeout_s)
-    except Exception as exc:  # any model failure becomes an explicit status and a fallback
-        return {"messages": new, "status": _failure_status(exc), "invalid": None,
-                "errors": [f"chat model failed: {type(exc).__name__}: {exc}"], "proposal": None}
-    update: dict[str, Any] = {"messages": [*new, reply], "invalid": None, "proposal": None}
+    except Exception as exc:  # any model failure becomes an explicit status: retry or fall back
+        status = _failure_status(exc)
+        error = f"chat model failed: {type(exc).__name__}: {exc}"
+        if status == Status.LLM_ERROR and state.attempts < ctx.max_retries:
+            return {"messages": new, "errors": [error], "attempts": state.attempts + 1, "model_failed": True}
+        return {"messages": new, "status": status, "invalid": None, "errors": [error], "proposal": None,
+                "model_failed": False}
+    update: dict[str, Any] = {"messages": [*new, reply], "invalid": None, "proposal": None, "model_failed": False}
     if isinstance(reply, AIMessage) and reply.tool_calls and not force_answer:
         update["tool_rounds"] = state.tool_rounds + 1
         return update
@@ -243,7 +253,11 @@ async def fall_back(state: DiscoveryState, runtime: Runtime[DiscoveryContext]) -
 # -- routers -----------------------------------------------------------------------------
 
 
-def route_after_plan(state: DiscoveryState) -> Literal["run_tools", "validate_answer", "fall_back"]:
+def route_after_plan(
+    state: DiscoveryState,
+) -> Literal["plan_queries", "run_tools", "validate_answer", "fall_back"]:
+    if state.model_failed:
+        return "plan_queries"
     if state.status in (Status.LLM_TIMEOUT, Status.LLM_UNAVAILABLE, Status.LLM_ERROR):
         return "fall_back"
     last = state.messages[-1] if state.messages else None
@@ -280,7 +294,9 @@ def build_graph(tools: list[BaseTool]) -> StateGraph:
     builder.add_node(fall_back)
 
     builder.add_edge(START, "plan_queries")
-    builder.add_conditional_edges("plan_queries", route_after_plan, ["run_tools", "validate_answer", "fall_back"])
+    builder.add_conditional_edges(
+        "plan_queries", route_after_plan, ["plan_queries", "run_tools", "validate_answer", "fall_back"]
+    )
     builder.add_edge("run_tools", "plan_queries")
     builder.add_conditional_edges("validate_answer", route_after_validate, ["plan_queries", "fall_back", END])
     builder.add_edge("fall_back", END)

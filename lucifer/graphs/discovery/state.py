@@ -134,7 +134,8 @@ class DiscoveryState:
     # a candidate answer from the agent: {"distribution", "recommendation", "confidence"}
     proposal: dict[str, Any] | None = None
     invalid: str | None = None  # why the last proposal was rejected
-    attempts: int = 0  # validation failures so far
+    attempts: int = 0  # validation failures and retried model errors so far
+    model_failed: bool = False  # the last chat-model call raised and will be retried
     tool_rounds: int = 0
     status: Status = Status.OK
     errors: Annotated[list[str], operator.add] = field(default_factory=list)
