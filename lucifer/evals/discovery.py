@@ -154,18 +154,14 @@ async def replay(
 
 def seeded_memory(path: Path, seed_file: Path) -> Any:
     """A fresh telemetry memory at ``path`` holding the records of ``seed_file``."""
-    from lucifer.telemetry.benchmark import read_jsonl
-    from lucifer.telemetry.memory import TelemetryMemory, TelemetryRecord
+    from lucifer.telemetry import benchmark
 
     if not seed_file.is_file():
         raise BadRequest(f"memory seed not found: {seed_file}")
-    memory = TelemetryMemory(path)
     try:
-        memory.append(TelemetryRecord(**r) for r in read_jsonl(seed_file))
-    except (ValidationError, TypeError, ValueError) as exc:
-        memory.close()
+        return benchmark.seeded_memory(path, seed_file)
+    except (ValidationError, ValueError) as exc:
         raise BadRequest(f"{seed_file}: invalid telemetry record: {exc}") from None
-    return memory
 
 
 async def run_eval(

@@ -28,7 +28,7 @@ from typing import Any
 
 import numpy as np
 
-from lucifer.telemetry.memory import signature_key
+from lucifer.telemetry.memory import TelemetryMemory, signature_key
 from lucifer.telemetry.scenarios import OPTIONS, Pool, sample_candidates, sample_signature
 
 
@@ -148,6 +148,20 @@ def _point(pid: str, split: str, sig: str, option: str, rng: np.random.Generator
         "options": sample_candidates(option, rng),
         "answer": option,
     }
+
+
+def seeded_memory(path: str | Path, seed_file: Path | None = None, **kwargs: Any) -> TelemetryMemory:
+    """A telemetry memory at ``path`` holding the shipped seed telemetry (or ``seed_file``).
+
+    Clients that want discovery to start with experience use this; the eval does too.
+    """
+    memory = TelemetryMemory(path, **kwargs)
+    try:
+        memory.seed_from(seed_file or DEFAULT_DIR / MEMORY_FILE)
+    except BaseException:
+        memory.close()
+        raise
+    return memory
 
 
 def write_jsonl(path: Path, rows: Iterable[dict[str, Any]]) -> int:

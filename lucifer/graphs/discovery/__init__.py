@@ -92,6 +92,7 @@ class Discoverer:
         from lucifer.graphs.discovery.calibration import load_temperature
 
         self.kb = kb if isinstance(kb, KnowledgeBase) else load_kb(kb)
+        self._owns_memory = not isinstance(memory, TelemetryMemory)
         self.memory = memory if isinstance(memory, TelemetryMemory) else TelemetryMemory(memory)
         model = model or BUILTIN
         if chat_model is None and model != BUILTIN:
@@ -157,7 +158,9 @@ class Discoverer:
         return other
 
     def close(self) -> None:
-        self.memory.close()
+        """Close the telemetry memory if this discoverer opened it (a passed-in one stays open)."""
+        if self._owns_memory:
+            self.memory.close()
 
 
 def load_request_arg(arg: str | None) -> str:
