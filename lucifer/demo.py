@@ -33,8 +33,12 @@ def _cells(env: Any, flags: list[bool]) -> list[str]:
 
 
 async def run_demo(kb: str | None = None, seed: int = 0, out: str | Path = "out/demo",
-                   write: Any = print, model: str = "builtin") -> dict[str, Any]:
-    """Run the demo mission; returns a summary dict (also printed through ``write``)."""
+                   write: Any = print, model: str = "builtin", grounder: Any = None,
+                   discoverer: Any = None) -> dict[str, Any]:
+    """Run the demo mission; returns a summary dict (also printed through ``write``).
+
+    ``grounder`` / ``discoverer`` replace the real backends (tests).
+    """
     from lucifer.clients.envs.sar import SAREnv
     from lucifer.clients.middleware import Middleware
     from lucifer.clients.planner import HybridPlanner
@@ -48,7 +52,8 @@ async def run_demo(kb: str | None = None, seed: int = 0, out: str | Path = "out/
     out_dir.mkdir(parents=True, exist_ok=True)
     with tempfile.TemporaryDirectory(prefix="lucifer-demo-") as tmp:
         mw = Middleware(kbo, grounding=True, discovery=True, model=model, trace_grounding=True,
-                        record_outcomes=True, memory=os.path.join(tmp, "telemetry.sqlite"))
+                        record_outcomes=True, memory=os.path.join(tmp, "telemetry.sqlite"),
+                        grounder=grounder, discoverer=discoverer)
         mw.record_many(prior_missions(env, np.random.default_rng(seed)), client="demo-prior")
         rng = np.random.default_rng(seed)
         options = {"layout": seed % len(env.layouts), "style": "messy"}

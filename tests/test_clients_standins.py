@@ -13,7 +13,7 @@ from lucifer.kb import KnowledgeBase
 from lucifer.telemetry.scenarios import OPTIONS, POOLS, cue_phrases
 from lucifer.types import GroundedObject, GroundingResult
 
-_HAZARD = ("fire", "smoke", "gas", "collapse", "flood", "chemical", "wires", "unsafe", "no-go", "do not enter")
+_HAZARD = ("lava", "fire", "smoke", "gas", "collapse", "flood", "chemical", "wires", "unsafe", "no-go", "do not enter")
 _VICTIM = ("trapped", "survivor", "casualty", "kids inside", "pinned", "people")
 _SAFE = ("clear", "secure", "safe", "staging", "rally", "passable")
 _REPAIR = re.compile(r"no wait|correction|i mean|sorry", re.I)

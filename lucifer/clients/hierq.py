@@ -44,11 +44,14 @@ class HierQParams:
     epsilon_min: float = 0.01
     epsilon_decay: float = 0.99  # per episode
     prior_weight: float = 0.01  # +G: Ψ added to Q for the greedy choice (breaks ties)
+    prior_visits: float = 0.0  # > 0: the prior's weight decays as w / (1 + visits(x) / prior_visits)
     prior_explore: bool = True  # +G: explore in proportion to 1 + Ψ
     shaping_scale: float = 0.1  # +G: weight of F = γΦ(x') − Φ(x)
     step_cost: float = -0.1
     collision_cost: float = -1.0
     reach_bonus: float = 1.0
+    share_nav: bool = True  # one navigation table per target cell, shared across layouts
+    opportunistic: bool = True  # the SDE collects at any uncollected location the worker passes
     max_steps: int = 30
     max_queries: int = 15
 
@@ -67,26 +70,30 @@ class HierQ:
         self.options = env.query_options
         self.n_q = len(self.options)
         self.q_nav: list[list[list[list[float]]]] = [[[[0.0] * N_MOVES for _ in range(n_c)] for _ in range(3)] for _ in range(n_l)]
+        self.q_nav_shared: list[list[list[float]]] = [[[0.0] * N_MOVES for _ in range(n_c)] for _ in range(n_c)]
+        self.n_nav: list[list[list[int]]] = [[[0] * n_c for _ in range(3)] for _ in range(n_l)]
+        self.n_nav_shared: list[list[int]] = [[0] * n_c for _ in range(n_c)]
         self.q_sde: list[list[list[float]]] = [[[0.0] * 3 for _ in range(8)] for _ in range(n_l)]
         self.q_info: list[list[float]] = [[0.0] * self.n_q for _ in range(3)]
         # moves that stay on the grid: what the agent knows without any contract
         self.on_grid: list[tuple[int, ...]] = [tuple(a for a in range(N_MOVES) if env.next_cell[c][a] >= 0) for c in range(n_c)]
+        self._info_at = [[lay.info_cells.index(c) if c in lay.info_cells else -1 for c in range(n_c)]
+                         for lay in env.layouts]
         self.epsilon = self.p.epsilon
         self.episodes = 0
 
     # ------------------------------------------------------------------ choices
-    def _choose_move(self, q: list[float], moves: tuple[int, ...], prior: list[float] | None) -> int:
+    def _choose_move(self, q: list[float], moves: tuple[int, ...], prior: list[float] | None, k: float = 0.0) -> int:
         rng = self.rng
         if rng.random() < self.epsilon:
             if prior is None or not self.p.prior_explore:
                 return moves[int(rng.integers(len(moves)))]
             w = np.array([1.0 + prior[a] for a in moves]) + 1e-3
             return moves[int(rng.choice(len(moves), p=w / w.sum()))]
-        if prior is None or self.p.prior_weight == 0.0:
+        if prior is None or k == 0.0:
             best = max(q[a] for a in moves)
             ties = [a for a in moves if q[a] == best]
         else:
-            k = self.p.prior_weight
             vals = [q[a] + k * prior[a] for a in moves]
             best = max(vals)
             ties = [a for a, v in zip(moves, vals, strict=True) if v == best]
@@ -136,7 +143,8 @@ class HierQ:
             k = self._choose_target(q_sde_l[mask], todo)
             t0 = env.step_count
             target = info_cells[k]
-            q_nav = q_nav_l[k]
+            q_nav = self.q_nav_shared[target] if p.share_nav else q_nav_l[k]
+            visits = self.n_nav_shared[target] if p.share_nav else self.n_nav[li][k]
 
             # navigation worker
             while env.agent != target:
@@ -144,7 +152,12 @@ class HierQ:
                 moves = sig.allowed[pos] if use_g else self.on_grid[pos]
                 if not moves:
                     moves = self.on_grid[pos]
-                a = self._choose_move(q_nav[pos], moves, sig.prior[pos] if use_g else None)
+                if use_g:
+                    visits[pos] += 1
+                    w = p.prior_weight / (1.0 + visits[pos] / p.prior_visits) if p.prior_visits else p.prior_weight
+                    a = self._choose_move(q_nav[pos], moves, sig.prior[pos], w)
+                else:
+                    a = self._choose_move(q_nav[pos], moves, None)
                 _, _, terminated, truncated, info = env.step(a)
                 nxt = env.agent
                 if record_path:
@@ -168,6 +181,11 @@ class HierQ:
                 if terminated or truncated:
                     over = True
                     break
+                if p.opportunistic and not reached:
+                    other = self._info_at[li][nxt]
+                    if other >= 0 and not env.collected[other]:
+                        k = other  # interrupt: collect here, the SDE credits the option it got
+                        break
             if over:
                 break
 

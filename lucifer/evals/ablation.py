@@ -99,7 +99,8 @@ def _middleware(config: str) -> Any:
     mws = _WORKER["mws"]
     if config not in mws:
         g, d = flags(config)
-        mw = Middleware(_WORKER["prepared"].kb, grounding=g, discovery=d, memory=_WORKER["memory"], model=_WORKER["model"])
+        mw = Middleware(_WORKER["prepared"].kb, grounding=g, discovery=d, memory=_WORKER["memory"],
+                        model=_WORKER["model"], **_WORKER.get("backends", {}))
         if g or d:  # the baseline needs no cache, so it can run while the parent still warms it
             if "cache" not in _WORKER:
                 with open(_WORKER["cache_file"], "rb") as fh:
@@ -181,8 +182,14 @@ def run_ablation(
     memory: str | None = None,
     curves: bool = False,
     progress: Callable[[str], None] | None = None,
+    grounder: Any = None,
+    discoverer: Any = None,
 ) -> dict[str, Any]:
-    """Run the four configurations and return the SPEC §5 result (plus ``extra`` details)."""
+    """Run the four configurations and return the SPEC §5 result (plus ``extra`` details).
+
+    ``grounder`` / ``discoverer`` replace the real backends (tests); they are used in this
+    process only, so pass them with ``workers=1``.
+    """
     if client not in CLIENTS:
         raise ValueError(f"unknown client {client!r}; choose from {', '.join(CLIENTS)}")
     say = progress or (lambda s: None)
@@ -203,7 +210,8 @@ def run_ablation(
         tasks = [(cfg, seed, r, episodes, curves and r == 0) for r in range(runs) for cfg in CONFIGS]
         first = [t for t in tasks if t[0] == "baseline"]
         rest = [t for t in tasks if t[0] != "baseline"]
-        mw = Middleware(prepared.kb, grounding=True, discovery=True, memory=memory, model=model)
+        mw = Middleware(prepared.kb, grounding=True, discovery=True, memory=memory, model=model,
+                        grounder=grounder, discoverer=discoverer)
 
         def warm() -> float:
             mw.record_many(prior_missions(env, np.random.default_rng(seed)), client=f"{client}-prior")
@@ -218,6 +226,7 @@ def run_ablation(
         if n_workers <= 1:
             warm_s = warm()
             _init_worker(client, kb, cache_file, memory, model)
+            _WORKER["backends"] = {"grounder": grounder, "discoverer": discoverer}
             for t in tasks:
                 cfg, r, out = _task(*t)
                 results[cfg][r] = out

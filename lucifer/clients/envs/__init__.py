@@ -17,12 +17,18 @@ ENV_IDS: dict[str, dict[str, object]] = {
 }
 
 
+#: MiniGrid's lava crossing turned into a SAR mission (see :mod:`lucifer.clients.minigrid_client`)
+LAVA_ID = "LuciferLavaSAR-v0"
+
+
 def register_envs() -> None:
     for env_id, kwargs in ENV_IDS.items():
         if env_id not in registry:
             register(id=env_id, entry_point="lucifer.clients.envs.sar:SAREnv", kwargs=dict(kwargs))
+    if LAVA_ID not in registry:
+        register(id=LAVA_ID, entry_point="lucifer.clients.minigrid_client:LavaSARWrapper")
 
 
 register_envs()
 
-__all__ = ["ENV_IDS", "SAREnv", "register_envs"]
+__all__ = ["ENV_IDS", "LAVA_ID", "SAREnv", "register_envs"]
