@@ -71,10 +71,22 @@ def _erf(x: np.ndarray) -> np.ndarray:
     return np.where(x >= 0, 1.0 - r, r - 1.0)
 
 
+def _limit_blas_threads() -> None:
+    """Small matrix products run fastest on one BLAS thread, and a busy 2-core machine turns
+    OpenBLAS's spinning worker threads into a 40x slowdown. ``LUCIFER_BLAS_THREADS`` overrides."""
+    try:
+        from threadpoolctl import threadpool_limits
+    except ImportError:  # pragma: no cover - threadpoolctl is a dependency
+        return
+    threadpool_limits(limits=int(os.environ.get("LUCIFER_BLAS_THREADS", "1")), user_api="blas")
+
+
 class _NumpyMiniLM:
     def __init__(self, path: Path):
         from safetensors.numpy import load_file
         from tokenizers import Tokenizer
+
+        _limit_blas_threads()
 
         cfg = json.loads((path / "config.json").read_text())
         self.heads = int(cfg["num_attention_heads"])
