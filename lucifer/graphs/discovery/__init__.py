@@ -89,7 +89,7 @@ class Discoverer:
         **settings: Any,
     ):
         from lucifer.embeddings import get_embedder
-        from lucifer.graphs.discovery.calibration import load_temperature
+        from lucifer.graphs.discovery.calibration import load_calibration
 
         self.kb = kb if isinstance(kb, KnowledgeBase) else load_kb(kb)
         self._owns_memory = not isinstance(memory, TelemetryMemory)
@@ -103,7 +103,8 @@ class Discoverer:
             chat_model = load_chat_model(model, base_url, float(settings.get("timeout_s", 60.0)))
         elif chat_model is not None and model == BUILTIN:
             model = getattr(chat_model, "_llm_type", type(chat_model).__name__)
-        settings.setdefault("temperature", load_temperature())
+        for key, value in load_calibration().items():
+            settings.setdefault(key, value)
         self.resources = DiscoveryResources(
             kb=self.kb,
             memory=self.memory,

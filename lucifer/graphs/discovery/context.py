@@ -54,6 +54,10 @@ class DiscoveryContext:
         default=DEFAULT_TEMPERATURE,
         metadata={"description": "Confidence temperature, fitted on the calibration split (calibration.json)."},
     )
+    temperature_cold: float = field(
+        default=DEFAULT_TEMPERATURE,
+        metadata={"description": "Confidence temperature when memory offers no evidence (empty memory)."},
+    )
     resources: DiscoveryResources | Any = field(
         default=None, metadata={"description": "KB options, telemetry memory, index and chat model (not serialised)."}
     )

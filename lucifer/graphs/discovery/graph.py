@@ -75,7 +75,8 @@ def builtin_tool_calls(request: DiscoveryRequest, ctx: DiscoveryContext) -> list
 def builtin_proposal(evidence: dict[str, dict[str, Any]], request: DiscoveryRequest, ctx: DiscoveryContext) -> dict[str, Any]:
     opts = list(request.options)
     logits = policy.builtin_logits(evidence, opts, ctx, request.episodic_outcomes())
-    dist = policy.distribution(logits, opts, ctx.temperature)
+    warm = policy.has_memory_evidence(evidence) or bool(request.episodic_outcomes())
+    dist = policy.distribution(logits, opts, ctx.temperature if warm else ctx.temperature_cold)
     best, conf = policy.recommend(dist)
     return {"distribution": dist, "recommendation": best, "confidence": conf}
 

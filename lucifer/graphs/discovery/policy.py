@@ -76,6 +76,15 @@ def builtin_logits(
     return z
 
 
+def has_memory_evidence(evidence: dict[str, dict[str, Any]]) -> bool:
+    """Whether telemetry memory said anything: a known signature or a matched known clause."""
+    exact = evidence.get(SIGNATURE_OUTCOMES)
+    similar = evidence.get(SIMILAR_SIGNATURES)
+    return bool(exact and exact["known"]) or bool(
+        similar and any(c["match"] is not None for c in similar["clauses"])
+    )
+
+
 def distribution(logits: np.ndarray, options: list[str], temperature: float) -> dict[str, float]:
     """Softmax at ``temperature``, as ``{option: probability}`` (sums to 1).
 
