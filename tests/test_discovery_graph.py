@@ -266,3 +266,27 @@ async def test_model_error_is_retried_then_falls_back(seeded: Any) -> None:
     bad = FlakyModel(messages=iter([answer("gas_sniffer")]), seen=[], failures=5)
     r = await with_model(seeded, bad, max_retries=2).discover({"signature": SIG, "options": OPTIONS})
     assert r.status == Status.LLM_ERROR and r.recommendation == "acoustic_listen" and len(r.errors) == 3
+
+
+async def test_cold_memory_answers_from_kb_descriptions_which_are_editable(tmp_path: Path) -> None:
+    import shutil
+
+    import yaml
+
+    kb_dir = tmp_path / "kb"
+    shutil.copytree("knowledge_base", kb_dir)
+    cache = EmbeddingCache(tmp_path / "emb.sqlite")
+    req = {"signature": "hissing from a cracked pipe by the boiler", "options": ["gas_sniffer", "acoustic_listen"]}
+    d = Discoverer(kb_dir, memory=TelemetryMemory(tmp_path / "empty.sqlite"), embedding_cache=cache)
+    r = await d.discover(req)
+    assert (r.recommendation, r.status, r.known_signature) == ("gas_sniffer", Status.OK, False)
+    assert 0.5 < r.confidence < 1.0
+    # swap the two descriptions in the KB file: the answer follows the meaning, not the name
+    path = kb_dir / "query_options.yaml"
+    data = yaml.safe_load(path.read_text())
+    by_name = {o["name"]: o for o in data["options"]}
+    gas, listen = by_name["gas_sniffer"], by_name["acoustic_listen"]
+    gas["description"], listen["description"] = listen["description"], gas["description"]
+    path.write_text(yaml.safe_dump(data))
+    d2 = Discoverer(kb_dir, memory=TelemetryMemory(tmp_path / "empty2.sqlite"), embedding_cache=cache)
+    assert (await d2.discover(req)).recommendation == "acoustic_listen"
