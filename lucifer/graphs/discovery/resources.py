@@ -27,15 +27,18 @@ class DiscoveryResources:
     tools: list[BaseTool] = field(default_factory=list)  # set once the tools are made
     index: SignatureIndex = field(init=False)
     _bound: Any = field(init=False, default=None)
+    _options: dict[str, QueryOption] = field(init=False, default_factory=dict)
     _option_vecs: dict[str, np.ndarray] = field(init=False, default_factory=dict)
     _lock: threading.Lock = field(init=False, default_factory=threading.Lock)
 
     def __post_init__(self) -> None:
         self.index = SignatureIndex(self.memory, self.embedder, self.cache)
+        self._options = {o.name: o for o in self.kb.query_options}
 
     @property
     def options(self) -> dict[str, QueryOption]:
-        return {o.name: o for o in self.kb.query_options}
+        """The KB's query options by name (the KB is immutable; reload it to see edits)."""
+        return self._options
 
     def bound_model(self) -> Any:
         """The chat model with the discovery tools bound (built once)."""
