@@ -40,9 +40,10 @@ _MOVE_TO_DIR = {m: d for d, m in _DIR_TO_MOVE.items()}
 LAYOUT_SEEDS: tuple[int, ...] = tuple(range(12))
 INFO_TYPES = ("victim", "hazard", "safe_route")
 N_MG_ACTIONS = 7  # left, right, forward, pickup, drop, toggle, done
-#: what the right query at each information location reports
-_FOUND = ("found a survivor at {place}, injured, over", "survey of {place} done, readings logged, over",
-          "{place} is clear, route marked, over")
+#: what the right query at each information location reports (no place: the lava map stays as it is)
+_FOUND = ("uh, found a survivor here, injured, sending the position, over",
+          "survey done, readings logged, over",
+          "route from here checked, passable, over")
 
 
 def place_name(x: int, y: int) -> str:
@@ -201,6 +202,7 @@ class LavaSARWrapper(gym.Wrapper):
             lava = self._lava_of(s)
             for style in (0, 1):
                 reports.update(lava_reports(lava, style))
+        reports.update(_FOUND)
         return sorted(reports), sorted({s for pool in self._signatures for s in pool})
 
     def _lava_of(self, seed: int) -> list[tuple[int, int]]:
@@ -250,6 +252,8 @@ class LavaSARWrapper(gym.Wrapper):
         self.collisions = 0
         self.step_count = 0
         self._reports = lava_reports(lava, style)
+        obs = base.gen_obs()  # the view now shows the information tiles
+        self._last_obs = obs
         info = {**info, "reports": list(self._reports), "signature": self._signature_here(), "query": None,
                 "collision": False, "collisions": 0, "success": False, "layout": self.layout.name}
         return obs, info
@@ -285,6 +289,7 @@ class LavaSARWrapper(gym.Wrapper):
         success = False
         if a < N_MG_ACTIONS:
             obs, reward, terminated, truncated, info = self.env.step(a)
+            self._last_obs = obs
             cell = self.agent_cell
             if cell in self.layout.hazard_cells:
                 collision = True
@@ -294,7 +299,9 @@ class LavaSARWrapper(gym.Wrapper):
                 reward = float(reward) if success else 0.0
         else:
             base = self.env.unwrapped
-            obs, reward, terminated, truncated, info = base.gen_obs(), 0.0, False, False, {}
+            # a query does not move the agent: its view is the last one (fresh copies, not regenerated)
+            obs = {k: (v.copy() if isinstance(v, np.ndarray) else v) for k, v in self._last_obs.items()}
+            reward, terminated, truncated, info = 0.0, False, False, {}
             q = a - N_MG_ACTIONS
             cell = self.agent_cell
             if cell in self.layout.info_cells:
@@ -305,7 +312,7 @@ class LavaSARWrapper(gym.Wrapper):
                     if ok:
                         self.collected[k] = True
                         reward = 0.3
-                        reports.append(_FOUND[k].format(place=self.kb.cell_owner.get(divmod(cell, self.cols), "here")))
+                        reports.append(_FOUND[k])
                     else:
                         self.attempts[k] += 1
                         reward = -0.05
