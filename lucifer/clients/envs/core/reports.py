@@ -62,7 +62,7 @@ def briefing_reports(kb: KnowledgeBase, layout: Layout, style: str) -> list[str]
     if style == "standard":
         out.append(f"A caller says people are trapped at the {victim}.")
         out.append(f"Staging area is set up at the {safe}, it is safe.")
-        out.append(f"The survey team is standing by at the {post}, the area is secure.")
+        out.append(f"The {post} is secure, the survey team is waiting there.")
     elif style == "messy":
         out.append(f"uh, we got a call, someone trapped inside the, {_the(_alias(kb, victim))}, over")
         out.append(f"staging at the {_decoy(kb, layout, safe)}, sorry, I mean the {safe}, it's secure, over")
