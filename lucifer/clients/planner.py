@@ -98,6 +98,7 @@ class HybridPlanner:
         self.mw = middleware
         self.rng = rng
         self.options = env.query_options
+        self._option_index = {o: i for i, o in enumerate(self.options)}
         self._paths: dict[tuple[int, int, int, int], list[int] | None] = {}
         self._moves: dict[tuple[int, int, int, int, int], int] = {}  # decision cache
         self.fallbacks = 0
@@ -126,6 +127,7 @@ class HybridPlanner:
         sig = await mw.signals(reports)  # ground the briefing
         order_i = int(self.rng.integers(len(_ORDERS)))
         tried: list[str] = []
+        order: list[int] = []
         queries = correct = 0
         success = False
         signature = ""
@@ -142,9 +144,11 @@ class HybridPlanner:
                 else:
                     option = None
                 if option is None:
-                    untried = [o for o in self.options if o not in tried]
-                    option = untried[int(self.rng.integers(len(untried)))]
-                action = int(Actions.QUERY_0) + self.options.index(option)
+                    # a random untried option: walk one random permutation per location
+                    if not tried:
+                        order = self.rng.permutation(len(self.options)).tolist()
+                    option = next(self.options[i] for i in order if self.options[i] not in tried)
+                action = int(Actions.QUERY_0) + self._option_index[option]
             else:
                 c = env.collected
                 key = (id(sig), pos, c[0] + 2 * c[1] + 4 * c[2], order_i, env.layout_index)

@@ -320,7 +320,7 @@ def write_charts(result: dict[str, Any], directory: str | Path, kb: str | None =
     return paths
 
 
-async def episode_picture(client: str, png: str | Path, *, kb: str | None = None, seed: int = 0, train: int = 300) -> Path:
+async def episode_picture(client: str, png: str | Path, *, kb: str | None = None, seed: int = 0, train: int = 1000) -> Path:
     """Train the client briefly under +D+G, then draw one recorded episode."""
     from lucifer.clients.middleware import Middleware
 

@@ -157,6 +157,7 @@ class SAREnv(gym.Env):
             [lay.info_cells.index(cell) if cell in lay.info_cells else -1 for cell in range(self.n_cells)]
             for lay in self.layouts
         ]
+        self._layout_names = [lay.layout.name for lay in self.layouts]
         self._briefings = [[briefing_reports(self.kb, lay.layout, s) for s in STYLES] for lay in self.layouts]
         self._info_reports = [
             [[info_report(self.kb, lay.layout, t, s) for s in STYLES] for t in INFO_TYPES] for lay in self.layouts
@@ -328,7 +329,7 @@ class SAREnv(gym.Env):
             "collision": collision,
             "collisions": self.collisions,
             "success": success,
-            "layout": self.layouts[li].layout.name,
+            "layout": self._layout_names[li],
             "style": STYLES[self.style],
         }
         return self._obs(), reward, terminated, truncated, info
