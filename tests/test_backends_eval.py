@@ -124,3 +124,27 @@ def test_a_segfaulting_child_becomes_an_unavailable_row(tiny_split: Split, monke
     row = backends.run_backend_isolated("llamacpp:gemma3-270m", [tiny_split], limit=1)
     assert row["status"] == "unavailable"
     assert row["reason"] == "crashed (signal 11, SIGSEGV)"
+
+
+class _RefusingModel:
+    """A chat model whose server is down: every call is refused."""
+
+    def bind_tools(self, *_a: object, **_k: object) -> _RefusingModel:
+        return self
+
+    async def ainvoke(self, *_a: object, **_k: object) -> None:
+        raise ConnectionRefusedError("connection refused by fake server")
+
+
+def test_a_model_that_only_falls_back_is_unavailable(tiny_split: Split) -> None:
+    from lucifer.models import set_chat_model_factory
+
+    set_chat_model_factory(lambda *_a: _RefusingModel())
+    try:
+        table = build_table(["openai:down"], [tiny_split], llm_limit=2, isolate_llm=False)
+    finally:
+        set_chat_model_factory(None)
+    row = table["backends"][0]
+    assert row["status"] == "unavailable"
+    assert "connection refused" in row["reason"] and "fell back to builtin" in row["reason"]
+    assert row["splits"] == {}

@@ -47,7 +47,7 @@ LLM_FAILURES = ("llm_timeout", "llm_unavailable", "llm_error")
 #: is then ``partial`` and says how many reports each cell scored). On 2 shared CPU cores a
 #: 270M-parameter model needs 10-40 s per report, so --llm-limit 30 over three splits would
 #: take hours; the budget keeps `lucifer eval backends` to well under an hour.
-LLM_BUDGET_S = 900.0
+LLM_BUDGET_S = 720.0
 #: Seconds one chat-model call may take before that report falls back to builtin.
 LLM_CALL_TIMEOUT_S = 180.0
 #: Extra seconds the parent waits past the budget (model load, the last report) before killing.
@@ -102,9 +102,11 @@ def _unavailable(model: str, reason: str, limit: int | None, **extra: Any) -> di
 
 
 async def _preflight(grounder: Any, chat: Any = None) -> str | None:
-    """Load the backend and ground one throw-away report; return why it cannot run, or None.
+    """Load the backend (and warm a builtin one up); return why it cannot run, or None.
 
-    ``chat`` is a chat model already loaded for an earlier split (one llama.cpp load per run).
+    An LLM backend is only loaded (``chat`` is one already loaded for an earlier split): a
+    throw-away generation could take minutes of the time budget, and a report that times out
+    is scored as the fallback it became, not as a missing backend.
     """
     if is_llm(grounder.model):
         from lucifer.models import load_chat_model
@@ -114,6 +116,7 @@ async def _preflight(grounder: Any, chat: Any = None) -> str | None:
                                                                      grounder.timeout_s)
         except Exception as exc:  # recorded as the row's reason
             return f"{type(exc).__name__}: {exc}"
+        return None
     try:
         res = await grounder.ground(WARMUP_REPORT, report_id="warmup")
     except Exception as exc:  # recorded as the row's reason
@@ -136,6 +139,25 @@ def round_robin(rows: list[DatasetRow]) -> list[DatasetRow]:
     for i in range(max((len(q) for q in queues), default=0)):
         out += [q[i] for q in queues if i < len(q)]
     return out
+
+
+class _ErrorRecorder:
+    """Passes ``ground`` through to a Grounder and keeps the backend's error messages."""
+
+    def __init__(self, grounder: Any):
+        self.grounder = grounder
+        self.model = grounder.model
+        self.errors: list[str] = []
+
+    async def ground(self, text: str, report_id: str | None = None) -> Any:
+        res = await self.grounder.ground(text, report_id=report_id)
+        self.errors += [f"{report_id}: {e}"[:300] for e in res.errors]
+        return res
+
+
+#: This many first reports ending in nothing but model failures mark the backend unavailable.
+FAIL_FAST_N = 3
+MODEL_FAILURES = ("llm_unavailable", "llm_error", "llm_timeout")
 
 
 def _split_result(results: list[Any], planned: list[DatasetRow], wall_s: float) -> dict[str, Any]:
@@ -196,6 +218,7 @@ async def run_backend(model: str, splits: list[Split], limit: int | None = None,
                     return _finish(out)
                 return _unavailable(model, why, limit)
             chat = g.resources._chat_model
+            rec = _ErrorRecorder(g)
             results: list[Any] = []
             t0 = time.perf_counter()
             for row in rows:
@@ -203,14 +226,26 @@ async def run_backend(model: str, splits: list[Split], limit: int | None = None,
                     out["status"] = "partial"
                     out["reason"] = f"time budget of {budget_s:.0f} s reached"
                     break
-                results += (await evaluate(g, [row], 1)).results
+                results += (await evaluate(rec, [row], 1)).results
+                if len(results) == FAIL_FAST_N and all(r.status in MODEL_FAILURES for r in results):
+                    break  # the model does not run; spending the budget on fallbacks tells nothing
                 if on_progress is not None and len(results) % 10 == 0:
                     out["splits"][split.name] = _split_result(results, rows, time.perf_counter() - t0)
                     on_progress(_finish(out))
+            if results and all(r.status in MODEL_FAILURES for r in results):
+                out["splits"].pop(split.name, None)
+                why = (rec.errors[0] if rec.errors else f"every report ended {results[0].status}")
+                why = f"{why} (all {len(results)} reports tried fell back to builtin)"
+                if not out["splits"]:
+                    return _unavailable(model, why, limit, errors=rec.errors[:5])
+                out["status"], out["reason"] = "partial", f"{split.name}: {why}"
+                return _finish(out)
+            split_errors = rec.errors[:5]
         finally:
             await g.aclose()
         if results:
             out["splits"][split.name] = _split_result(results, rows, time.perf_counter() - t0)
+            out["splits"][split.name]["backend_errors"] = split_errors
         if on_progress is not None:
             on_progress(_finish(out))
         if out["status"] == "partial":
