@@ -86,9 +86,9 @@ CLIENTS: dict[str, Callable[[str | None], Prepared]] = {
 _WORKER: dict[str, Any] = {}
 
 
-def _init_worker(client: str, kb_arg: str | None, cache_file: str, memory: str, model: str) -> None:
+def _init_worker(client: str, kb_arg: str | None, cache_dir: str, memory: str, model: str) -> None:
     _WORKER.clear()
-    _WORKER.update(client=client, kb_arg=kb_arg, cache_file=cache_file, memory=memory, model=model, mws={})
+    _WORKER.update(client=client, kb_arg=kb_arg, cache_dir=cache_dir, memory=memory, model=model, mws={})
     _WORKER["prepared"] = CLIENTS[client](kb_arg)
 
 
@@ -101,11 +101,14 @@ def _middleware(config: str) -> Any:
         g, d = flags(config)
         mw = Middleware(_WORKER["prepared"].kb, grounding=g, discovery=d, memory=_WORKER["memory"],
                         model=_WORKER["model"], **_WORKER.get("backends", {}))
-        if g or d:  # the baseline needs no cache, so it can run while the parent still warms it
-            if "cache" not in _WORKER:
-                with open(_WORKER["cache_file"], "rb") as fh:
-                    _WORKER["cache"] = pickle.load(fh)
-            mw.import_cache(_WORKER["cache"])
+        # Each part of the warm cache is read when a configuration first needs it, so runs that
+        # need less (the baseline: nothing; +D: discovery only) start while the parent warms.
+        for part, needed in (("advice", d), ("ground", g)):
+            if needed:
+                if part not in _WORKER:
+                    with open(os.path.join(_WORKER["cache_dir"], f"{part}.pkl"), "rb") as fh:
+                        _WORKER[part] = pickle.load(fh)
+                mw.import_cache({part: _WORKER[part]})
         mws[config] = mw
     return mws[config]
 
@@ -162,12 +165,17 @@ def prior_missions(env: Any, rng: np.random.Generator) -> list[tuple[str, str, f
     return records
 
 
-async def _warm(mw: Any, env: Any, concurrency: int) -> dict[str, Any]:
+async def _warm(mw: Any, env: Any, cache_dir: str, on_part: Callable[[str], None], concurrency: int = 8) -> None:
+    """Discovery first (fast), then grounding; each part is written as soon as it is complete."""
     reports, sigs = env.distinct_texts()
-    await mw.warm(reports, sigs, concurrency=concurrency)
-    cache = mw.export_cache()
-    await mw.aclose()
-    return cache
+    try:
+        for part, texts in (("advice", ([], sigs)), ("ground", (reports, []))):
+            await mw.warm(*texts, concurrency=concurrency)
+            with open(os.path.join(cache_dir, f"{part}.pkl"), "wb") as fh:
+                pickle.dump(mw.export_cache()[part], fh)
+            on_part(part)
+    finally:
+        await mw.aclose()
 
 
 def run_ablation(
@@ -204,28 +212,27 @@ def run_ablation(
         tmp = tempfile.TemporaryDirectory(prefix="lucifer-ablation-")
         memory = os.path.join(tmp.name, "telemetry.sqlite")
     try:
-        cache_file = os.path.join(tmp.name if tmp else tempfile.mkdtemp(prefix="lucifer-ablation-"), "cache.pkl")
+        cache_dir = tmp.name if tmp else tempfile.mkdtemp(prefix="lucifer-ablation-")
         results: dict[str, list[dict[str, Any]]] = {c: [{}] * runs for c in CONFIGS}
         n_workers = workers or min(2, os.cpu_count() or 1)
         tasks = [(cfg, seed, r, episodes, curves and r == 0) for r in range(runs) for cfg in CONFIGS]
-        first = [t for t in tasks if t[0] == "baseline"]
-        rest = [t for t in tasks if t[0] != "baseline"]
+        # which configurations can start once a cache part is written
+        after = {"start": ["baseline"], "advice": ["+D"], "ground": ["+G", "+D+G"]}
         mw = Middleware(prepared.kb, grounding=True, discovery=True, memory=memory, model=model,
                         grounder=grounder, discoverer=discoverer)
+        futs: list[Any] = []
 
-        def warm() -> float:
+        def warm(submit: Callable[[str], None]) -> float:
             mw.record_many(prior_missions(env, np.random.default_rng(seed)), client=f"{client}-prior")
-            cache = asyncio.run(_warm(mw, env, concurrency=8))
-            with open(cache_file, "wb") as fh:
-                pickle.dump(cache, fh)
+            asyncio.run(_warm(mw, env, cache_dir, submit))
             s = time.perf_counter() - t0
             say(f"warm-up: {mw.calls['ground']} reports grounded, {mw.calls['discover']} signatures "
                 f"discovered in {s:.1f}s")
             return s
 
         if n_workers <= 1:
-            warm_s = warm()
-            _init_worker(client, kb, cache_file, memory, model)
+            warm_s = warm(lambda part: None)
+            _init_worker(client, kb, cache_dir, memory, model)
             _WORKER["backends"] = {"grounder": grounder, "discoverer": discoverer}
             for t in tasks:
                 cfg, r, out = _task(*t)
@@ -235,10 +242,13 @@ def run_ablation(
 
             ctx = mp.get_context("spawn")
             with ProcessPoolExecutor(n_workers, mp_context=ctx, initializer=_init_worker,
-                                     initargs=(client, kb, cache_file, memory, model)) as pool:
-                futs = [pool.submit(_task, *t) for t in first]  # baseline runs overlap the warm-up
-                warm_s = warm()
-                futs += [pool.submit(_task, *t) for t in rest]
+                                     initargs=(client, kb, cache_dir, memory, model)) as pool:
+
+                def submit(part: str) -> None:
+                    futs.extend(pool.submit(_task, *t) for t in tasks if t[0] in after[part])
+
+                submit("start")  # the baseline needs no middleware: it overlaps the warm-up
+                warm_s = warm(submit)
                 for i, f in enumerate(futs, 1):
                     cfg, r, out = f.result()
                     results[cfg][r] = out
