@@ -20,6 +20,39 @@ CLIENTS = (
 PAPER = {"rl": {"msr": 66.5, "csr": 99.9, "sms": 66.5}, "planner": {"msr": 100.0, "csr": 96.8, "sms": 100.0}}
 
 
+NOTES = """## How these numbers are made
+
+* **Testbed** (`LuciferSAR-v0`, `lucifer/clients/envs/`): the shipped Market Square KB (5×5, every
+  cell a named place), 10 layouts with 3-5 hazard places the agent cannot see and three information
+  locations (victim, hazard, safe route). Hazards reach clients only as radio reports (standard, messy
+  with self-repairs, or advanced-messy with aliases and KB relations). At an information location one
+  of the 15 query options is right, given by the location's signature; the right query returns a
+  report. Entering a hazard is a collision (the mission goes on). The mission ends with `done` once all
+  three types are in.
+* **Clients** never read text: they await `Middleware.signals(reports)` (grounding → Signal Contract:
+  U'(x), Ψ, Φ) and `Middleware.discover(signature)` (u*). Baseline = neither, +G = contract only,
+  +D = u* only.
+* **HierQ** (RL): strategic decision engine (SMDP Q over collected set × next location) sequencing a
+  navigation worker (tabular Q per target cell), an information-collection worker (Q over the 15
+  options) and a triage worker (transmits the report); 30-step episodes, ≤ 15 query attempts per
+  location. +G = constraint masking with U'(x), priors Ψ (exploration and tie-breaks), shaping
+  F = γΦ(x')−Φ(x); +D = follow u*. MSR/SMS include the learning episodes.
+* **Hybrid planner**: A* to the nearest uncollected location + heuristics, 100-step cap, no
+  learning; +G filters A* neighbours with U'(x); +D executes u* instead of a random untried query.
+* **MiniGrid**: Farama's `MiniGrid-LavaCrossingS9N2-v0` (12 layouts), wrapped without changing its
+  code: a KB is generated from the grid (every floor cell a named place), lava arrives only as reports
+  grounded through that KB, three blue tiles are information locations. Same middleware class.
+  Lava ends the episode (MiniGrid's rule), so SMS = MSR in every configuration there.
+* **Calls**: real `Grounder` (builtin) and `Discoverer` (builtin); identical requests are cached: every
+  distinct report is grounded once and every distinct signature discovered once (warm-up in the
+  parent), the contract is rebuilt once per distinct report sequence per process. Telemetry memory
+  is a fresh SQLite file seeded with one prior mission per signature the env can show.
+* **Runs**: run *i* uses seed sequence (seed, i) in every configuration (paired), 2 worker processes.
+  `wall_s` includes imports, warm-up and pool start; this machine was shared with other jobs (load
+  average 3-6 during these runs), so walls vary about 2×.
+"""
+
+
 def main() -> None:
     lines = ["# System-level ablation (SPEC §5)", ""]
     for name, title in CLIENTS:
@@ -44,6 +77,7 @@ def main() -> None:
             if (HERE / img).is_file():
                 lines.append(f"![{img}](benchmarks/ablation/{img})")
         lines.append("")
+    lines += NOTES.splitlines()
     (HERE / "RESULTS.md").write_text("\n".join(lines), encoding="utf-8")
     print((HERE / "RESULTS.md").read_text())
 

@@ -324,7 +324,7 @@ def write_charts(result: dict[str, Any], directory: str | Path, kb: str | None =
     name = result["client"]
     paths = [plot_ablation(d / f"ablation_{name}.png", result)]
     curves = result.get("extra", {}).get("curves")
-    if curves:
+    if curves and name == "rl":  # only the learning client has a curve worth drawing
         paths.append(plot_curves(d / f"curves_{name}.png", curves, f"{name}: run 0, success per 50 episodes"))
     paths.append(asyncio.run(episode_picture(name, d / f"episode_{name}.png", kb=kb, seed=seed)))
     return paths
