@@ -193,7 +193,6 @@ class SAREnv(gym.Env):
         self.attempts = [0, 0, 0]
         self.step_count = 0
         self.collisions = 0
-        self.visited: list[int] = []
         self._episode_reports: list[str] = []
 
     # ------------------------------------------------------------------ helpers
@@ -256,7 +255,12 @@ class SAREnv(gym.Env):
         rng = self.np_random
         self.layout_index = int(options["layout"]) if "layout" in options else int(rng.integers(len(self.layouts)))
         style = options.get("style")
-        self.style = STYLES.index(style) if isinstance(style, str) else int(rng.integers(len(STYLES))) if style is None else int(style)
+        if style is None:
+            self.style = int(rng.integers(len(STYLES)))
+        elif isinstance(style, str):
+            self.style = STYLES.index(style)
+        else:
+            self.style = int(style)
         self.correct = [int(rng.choice(opts)) for opts in self._options_for_type]
         n_sig = len(self._signatures[0])
         self.signature_index = [int(rng.integers(n_sig)) for _ in INFO_TYPES]
@@ -265,7 +269,6 @@ class SAREnv(gym.Env):
         self.attempts = [0, 0, 0]
         self.step_count = 0
         self.collisions = 0
-        self.visited = [self.agent]
         self._episode_reports = list(self._briefings[self.layout_index][self.style])
         info = {
             "reports": list(self._episode_reports),
@@ -294,7 +297,6 @@ class SAREnv(gym.Env):
             nxt = self.next_cell[self.agent][a]
             if nxt >= 0:
                 self.agent = nxt
-                self.visited.append(nxt)
                 if self._hazard[li][nxt]:
                     collision = True
                     self.collisions += 1
