@@ -2,8 +2,9 @@
 
 The strategic decision engine (SDE) sequences three workers:
 
-* **navigation worker**: tabular Q over (layout, target, cell) × 4 moves, to reach the
-  information location the SDE picked;
+* **navigation worker**: tabular Q over (target cell, cell) × 4 moves, shared across layouts
+  (``share_nav``; per-layout tables otherwise), to reach the information location the SDE picked
+  (it stops early at any other uncollected location it passes, ``opportunistic``);
 * **information-collection worker**: picks queries at the location, tabular Q over
   (information type) × 15 options, never repeating a rejected option at one visit;
 * **triage worker**: once all three information types are in, transmits the report.
@@ -15,8 +16,11 @@ attempts (the env's ``max_queries``).
 Contract hooks, all through :class:`~lucifer.clients.middleware.Middleware` signals:
 
 * **+G** is policy shaping: constraint masking (moves outside U'(x) are never taken),
-  priors Ψ_x(u) bias the greedy choice and exploration, and potential-based reward shaping
-  F = γΦ(x') − Φ(x) is added to the navigation reward.
+  priors Ψ_x(u) bias exploration (in proportion to 1 + Ψ) and break ties of the greedy choice,
+  and potential-based reward shaping F = γΦ(x') − Φ(x) (scaled by ``shaping_scale``) is added to
+  the navigation reward. The weights are small on purpose: Φ and Ψ come from language about
+  victims, safe places and hazards, not from the worker's current target, so they guide early
+  exploration and must not override what the worker learns.
 * **+D** is following u*: the collection worker executes discovery's recommendation
   (then the next-ranked untried option) instead of its own choice.
 """

@@ -178,6 +178,6 @@ class HybridPlanner:
         return EpisodeResult(success, env.collisions, queries, correct, env.step_count, info["layout"], path)
 
 
-def make_planner(env_kwargs: dict[str, Any] | None = None) -> dict[str, Any]:
+def planner_env_kwargs(env_kwargs: dict[str, Any] | None = None) -> dict[str, Any]:
     """Env settings of the planner protocol: 100-step cap."""
     return {"max_steps": 100, **(env_kwargs or {})}

@@ -63,10 +63,10 @@ def _prepare_rl(kb_arg: str | None) -> Prepared:
 
 def _prepare_planner(kb_arg: str | None) -> Prepared:
     from lucifer.clients.envs.sar import SAREnv
-    from lucifer.clients.planner import HybridPlanner, make_planner
+    from lucifer.clients.planner import HybridPlanner, planner_env_kwargs
 
     kb = load_kb(kb_arg)
-    return Prepared(kb, lambda: SAREnv(kb, **make_planner()), HybridPlanner)
+    return Prepared(kb, lambda: SAREnv(kb, **planner_env_kwargs()), HybridPlanner)
 
 
 def _prepare_minigrid(kb_arg: str | None) -> Prepared:
