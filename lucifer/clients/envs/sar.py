@@ -261,7 +261,7 @@ class SAREnv(gym.Env):
             self.style = STYLES.index(style)
         else:
             self.style = int(style)
-        self.correct = [int(rng.choice(opts)) for opts in self._options_for_type]
+        self.correct = [opts[int(rng.integers(len(opts)))] for opts in self._options_for_type]
         n_sig = len(self._signatures[0])
         self.signature_index = [int(rng.integers(n_sig)) for _ in INFO_TYPES]
         self.agent = self.layouts[self.layout_index].start
