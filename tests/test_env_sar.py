@@ -32,6 +32,7 @@ def test_check_env_every_registered_id(env_id):
     env.close()
 
 
+@pytest.mark.filterwarnings("ignore:.*different from the unwrapped version")
 def test_lava_wrapper_registered_and_checked(tmp_path, monkeypatch):
     from lucifer.clients.minigrid_client import LavaSARWrapper
 
