@@ -110,6 +110,6 @@ def load_chat_model(spec: str, base_url: str | None = None, timeout_s: float = 6
             import llama_cpp  # noqa: F401
         except ImportError as exc:
             raise BackendError("llamacpp: models need the llamacpp extra: pip install 'lucifer[llamacpp]'") from exc
-        return ChatLlamaCpp(model_path=str(path), n_ctx=4096, temperature=0.0, max_tokens=512,
-                            n_threads=max(1, os.cpu_count() or 1), verbose=False, seed=0)
+        return ChatLlamaCpp(model_path=str(path), n_ctx=2048, temperature=0.0, max_tokens=160,
+                            n_threads=int(os.environ.get("LUCIFER_LLM_THREADS", "1")), verbose=False, seed=0)
     raise BackendError(f"unknown model provider {provider!r} in {spec!r} (ollama, openai, llamacpp)")

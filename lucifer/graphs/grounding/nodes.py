@@ -22,6 +22,7 @@ from lucifer.language.analyzer import CueMention, Extraction, PlaceMention
 from lucifer.language.text import norm_phrase, tokenize
 from lucifer.types import Status
 
+LLM_CONTEXT_DOCS = 8  # retrieved KB documents shown to a chat model (small local models are slow readers)
 GROUNDING_KINDS = ("landmark", "relation", "glossary", "category")
 LLM_FAILURES = {Status.LLM_TIMEOUT.value, Status.LLM_UNAVAILABLE.value, Status.LLM_ERROR.value}
 
@@ -82,7 +83,7 @@ async def extract_places(state: GroundingState, runtime: Runtime[GroundingContex
 
 
 def _context_text(state: GroundingState, res: GroundingResources) -> str:
-    lines = [f"- {r['text']}" for r in state.retrieved]
+    lines = [f"- {r['text']}" for r in state.retrieved[:LLM_CONTEXT_DOCS]]
     mentioned = {p["landmark"] for p in state.places}
     for name in sorted(mentioned):
         lm = res.kb.landmark_by_name[name]
@@ -122,7 +123,8 @@ async def _llm_extract(state: GroundingState, runtime: Runtime[GroundingContext]
                                                         tool=TOOL_NAME), tool_call_id=call_id))
     try:
         model = res.chat_model()
-        bound = model.bind_tools([ReportObjects], tool_choice=TOOL_NAME)
+        # the OpenAI dict form forces the tool on llama.cpp (a grammar) and OpenAI-compatible servers
+        bound = model.bind_tools([ReportObjects], tool_choice={"type": "function", "function": {"name": TOOL_NAME}})
         msg = await asyncio.wait_for(bound.ainvoke(messages), timeout=ctx.timeout_s)
     except Exception as exc:  # every failure becomes an explicit status, then the fallback
         status = _classify_failure(exc)
