@@ -715,16 +715,16 @@ class ReportAnalyzer:
     def _apply_restarts(self, ex: Extraction) -> None:
         """"the church is — the church is being used": the first mention is a false start."""
         norms = ex.tokens.norms(0, len(ex.tokens))
-        ordered = sorted((p for p in ex.places if p.status == "active"), key=lambda p: p.start_tok)
-        for p, q in zip(ordered, ordered[1:], strict=False):
+        order = sorted((i for i, p in enumerate(ex.places) if p.status == "active"), key=lambda i: ex.places[i].start_tok)
+        for i, j in zip(order, order[1:], strict=False):
+            p, q = ex.places[i], ex.places[j]
             if p.landmark != q.landmark:
                 continue
             between = norms[p.end_tok : q.start_tok]
             if between and len(between) <= 4 and all(w in lx.COPULAS | lx.FILLERS | lx.DETERMINERS | lx.PRONOUNS for w in between) \
-                    and any(ex.tokens.clause_start[i] for i in range(p.end_tok, q.start_tok + 1)):
-                i = ex.places.index(p)
+                    and any(ex.tokens.clause_start[k] for k in range(p.end_tok, q.start_tok + 1)):
                 ex.places[i] = replace(p, status="retracted", reason="restarted: the speaker repeats the place")
-                ex.places[ex.places.index(q)] = replace(q, replaces=p.start_tok)
+                ex.places[j] = replace(q, replaces=p.start_tok)
 
     def _after_clause(self, ex: Extraction, k: int) -> tuple[int, int]:
         """Tokens of the first clause after marker ``k`` (up to a clause break, coordinator or marker)."""
