@@ -204,6 +204,9 @@ class ReportAnalyzer:
         for rel in self.kb.relations:
             for form, inverse in _relation_forms(rel.phrase):
                 forms[norm_phrase(form)] = (rel.phrase, inverse)
+        for key, val in list(forms.items()):
+            for adverb in lx.RELATION_ADVERBS:
+                forms.setdefault((adverb, *key), val)
         for key, val in forms.items():
             self._relations.add(key, val)
 
@@ -213,9 +216,10 @@ class ReportAnalyzer:
         norms = toks.norms(0, len(toks))
         places: list[PlaceMention] = []
         cue_hits = [(a, b) for a, b, (_, src) in self._cues.find_all(norms) if b - a > 1]
+        cue_hits += [(a, b) for a, b, _ in self._relations.find_all(norms) if b - a > 2]
         for a, b, landmark in self._places.find_all(norms):
             if any(ca <= a and b <= cb and cb - ca > b - a for ca, cb in cue_hits):
-                continue  # "first aid post" is a cue, not the post office
+                continue  # "first aid post" is a cue, "across the square from" a relation
             places.append(self._mention(toks, a, b, landmark))
         places.extend(self._partial_names(toks, norms, {i for p in places for i in range(p.start_tok, p.end_tok)}))
         for idx, p in enumerate(places):
@@ -230,6 +234,7 @@ class ReportAnalyzer:
         places.extend(starts)
         markers = self._find_markers(toks, {i for p in places for i in range(p.start_tok, p.end_tok)})
         ex = Extraction(toks, places, markers)
+        self._resolve_possessives(ex)
         self._resolve_relations(ex)
         self._apply_place_negation(ex)
         self._apply_restarts(ex)
@@ -470,14 +475,17 @@ class ReportAnalyzer:
                 if found is None:
                     return
                 anchor_p, hs, named = found
-                inv = anchor_p if named else None
-                if isinstance(inv, PlaceMention):
-                    ex.places[ex.places.index(inv)] = replace(inv, status="reference", reason="reference point of a named place")
+                if named is True:
+                    ex.places[ex.places.index(anchor_p)] = replace(anchor_p, status="reference",
+                                                                   reason="reference point of a named place")
                     return
-                target, via = self._follow(anchor_p.landmark, phrase, " ".join(toks.tokens[j].text for j in range(hs, anchor_p.start_tok)), inverse=not flipped)
+                head_words = " ".join(toks.tokens[j].text for j in range(hs, min(anchor_p.start_tok, a)))
+                target, via = self._follow(anchor_p.landmark, phrase, head_words, inverse=not flipped)
                 if target is None:
                     return
-                ex.places[ex.places.index(anchor_p)] = replace(anchor_p, status="reference", reason=f"reference point: {via}")
+                if named != "pronoun":
+                    ex.places[ex.places.index(anchor_p)] = replace(anchor_p, status="reference",
+                                                                   reason=f"reference point: {via}")
                 new = self._mention(toks, hs, b, target, via=via)
                 ex.places.append(new)
                 place_tokens.update(range(hs, b))
@@ -505,6 +513,23 @@ class ReportAnalyzer:
             ex.places.append(new)
             place_tokens.update(range(det_start, anchor_end))
 
+    def _resolve_possessives(self, ex: Extraction) -> None:
+        """"the church's opposite number", "the health centre's neighbour"."""
+        toks = ex.tokens
+        norms = toks.norms(0, len(toks))
+        for idx, p in enumerate(list(ex.places)):
+            last = toks.tokens[p.end_tok - 1].text.lower()
+            if p.status != "active" or not last.endswith(("'s", "’s")):
+                continue
+            for key, phrase in sorted(lx.POSSESSIVE_RELATIONS.items(), key=lambda kv: -len(kv[0])):
+                if norms[p.end_tok : p.end_tok + len(key)] == key:
+                    target, via = self._follow(p.landmark, phrase, "")
+                    if target is None:
+                        break
+                    ex.places[idx] = replace(p, status="reference", reason=f"reference point: {via}")
+                    ex.places.append(self._mention(toks, p.start_tok, p.end_tok + len(key), target, via=via))
+                    break
+
     def _is_cue_end(self, norms: tuple[str, ...], end: int) -> bool:
         """Does a cue phrase end right before token ``end`` (allowing prepositions in between)?"""
         j = end
@@ -525,6 +550,12 @@ class ReportAnalyzer:
         if place is not None and place.status in ("active", "retracted", "negated"):
             if place.status == "active" or place.start_tok == j:
                 return place, place.end_tok, False
+        if j > b and norms[j - 1] in ("its", "their") and j < len(norms) and norms[j] in (
+                "side", "back", "wall", "rear", "front", "end", "corner", "left", "right", "north", "south", "east", "west"):
+            # "the shop attached to its side": the possessive points back to the last place
+            before = [p for p in ex.places if p.end_tok <= b]
+            if before:
+                return max(before, key=lambda p: p.end_tok), j + 1, True
         if j < len(norms) and norms[j] in ("it", "them", "that", "there", "us") and not ex.tokens.clause_start[j]:
             if norms[j] in ("that", "there") and j + 1 < len(norms) and not ex.tokens.clause_start[j + 1] \
                     and norms[j + 1] not in lx.COPULAS:
@@ -561,6 +592,19 @@ class ReportAnalyzer:
         while j > 0 and norms[j - 1] in lx.INVERSE_VERBS and a - j < 3:
             j -= 1
         anchor = next((p for p in ex.places if p.end_tok == j and p.status == "active"), None)
+        if anchor is None and j > 0 and norms[j - 1] in ("it", "its") and j - 1 > 0 \
+                and norms[j - 2] in lx.GENERIC_HEADS | {"that", "which"}:
+            # "the building it sits next to": the pronoun is the anchor
+            before = [p for p in ex.places if p.end_tok <= j - 1 and p.status != "reference"]
+            if before:
+                ante = max(before, key=lambda p: p.end_tok)
+                hs = j - 2
+                while hs > 0 and norms[hs] in ("that", "which"):
+                    hs -= 1
+                while hs > 0 and norms[hs - 1] in lx.DETERMINERS:
+                    hs -= 1
+                if norms[hs] in lx.GENERIC_HEADS or (hs + 1 < len(norms) and norms[hs + 1] in lx.GENERIC_HEADS):
+                    return ante, hs, "pronoun"  # type: ignore[return-value]
         if anchor is None:
             return None
         k = anchor.start_tok

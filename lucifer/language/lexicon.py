@@ -40,7 +40,9 @@ compromised|unstable structure|partially collapsed|caving|smouldering|smoldering
 alight|well alight|fully involved|going up in flames|gone up in flames|bowing|buckling|wall's bowing|could go any second|
 about to collapse|coming down|falling in|roof has come in|roof's come in|roof came in|ceiling's down|ceiling down|
 ceiling has come in|ceiling's come in|ceiling collapsed|keep clear|stay clear|red for entry|sparks everywhere|
-stinks of gas|reeks of gas|fuel leak|oil spill|overtopping|burst its banks|breached|landslip|slipping|
+stinks of gas|reeks of gas|reeking of gas|reeking of|fuel leak|oil spill|overtopping|burst its banks|breached|
+landslip|slipping|given way|gave way|has given way|come away|came away|taking on water|taking water|
+fuel pouring|pouring fuel|roof's going|roof is going|everyone out|get everyone out|evacuate|evacuating|
 smell of gas|strong smell of gas|gas smell|water damage|waist deep|chest deep|electrical hazard|exposed wiring
 """.replace("\n", ""))
 
@@ -104,7 +106,9 @@ NEUTRAL_PHRASES = ["smoke alarm", "smoke alarms", "fire alarm", "fire alarms", "
                    "all units", "flood light", "floodlight", "floodlights", "rescue team", "rescue teams"]
 
 # Whole-report "nothing to see" markers that cancel every claim in their sentence.
-FALSE_ALARM = ["false alarm", "never mind", "nevermind", "disregard my last", "disregard the last report"]
+FALSE_ALARM = ["false alarm", "never mind", "nevermind", "disregard my last", "disregard the last report",
+               "nothing in it", "nothing to it", "just steam", "only steam", "extractor fan", "was just a", "was only a",
+               "was just their", "was just the", "nothing to worry about"]
 
 # Self-repair markers. Strong ones reach back into the previous sentence.
 STRONG_REPAIR = [
@@ -112,7 +116,9 @@ STRONG_REPAIR = [
     "i mean", "i meant", "i misspoke", "my mistake", "my bad", "let me correct", "let me rephrase",
     "negative", "check that", "cancel that", "wrong", "that's wrong", "thats wrong", "not right",
     "make that", "sorry i mean", "sorry i meant", "belay that", "correcting", "i said wrong",
-    "wrong one", "not that one",
+    "wrong one", "not that one", "hold that", "hold on that", "let me correct that", "let me correct myself",
+    "let me correct my last", "that should be", "that should have been", "should be", "scrub that", "i misspoke",
+    "ah i misspoke", "or is it", "take that back", "strike that last", "correction on my last", "correct that",
 ]
 WEAK_REPAIR = ["sorry", "actually", "or rather", "rather", "wait", "no", "nope", "er no", "uh no", "well no",
                "oops", "whoops", "hang on", "hold on"]
@@ -233,6 +239,8 @@ TRANSIT = ["heading to", "heading for", "heading towards", "heading toward", "he
            "returning from", "parked at", "parked by", "parked near", "parked the truck at", "parked the truck by",
            "staged at", "regrouping at", "relocating to", "diverting to", "rerouting to", "going round",
            "we're at", "we are at", "currently at", "positioned at", "standing by at", "checking", "will check",
+           "we're outside", "we are outside", "we're by", "we are by", "we're in front of", "we're opposite",
+           "we're standing at", "we're parked at", "outside of",
            "about to check", "searching", "sweeping", "en route"]
 
 PRONOUNS = {"it", "its", "there", "that", "they", "them", "this", "place", "building", "same"}
@@ -278,3 +286,20 @@ NEGATABLE_STATES = {"safe", "clear", "secure", "secured", "stable", "sound", "pa
                     "safe to enter", "safe to shelter", "all clear", "structurally sound", "green"}
 # Words after a correction that dismiss the claim before it ("correction, that's just steam").
 DISMISSALS = {"just", "only", "nothing", "false", "mistake", "steam", "mist", "dust", "fog", "nobody", "fine"}
+
+# Adverbs that may precede any relation phrase ("directly opposite", "immediately behind").
+RELATION_ADVERBS = ["directly", "immediately", "right", "just", "straight", "literally", "practically"]
+
+# Nouns that name a relation after a possessive ("the church's opposite number").
+POSSESSIVE_RELATIONS = {("neighbour",): "next to", ("neighbor",): "next to", ("next", "door", "neighbour"): "next to",
+                        ("next", "door", "neighbor"): "next to", ("opposite", "number"): "across from",
+                        ("neighbouring", "building"): "next to", ("neighboring", "building"): "next to"}
+
+# Words for people: "<person> collapsed" is a casualty, not a structural collapse.
+PERSON_NOUNS = ["man", "woman", "person", "someone", "somebody", "firefighter", "child", "kid", "he", "she",
+                "patient", "resident", "worker", "officer", "lady", "guy", "bloke", "fella", "casualty", "boy", "girl",
+                "customer", "driver", "student", "teacher", "nurse", "someone's", "somebody's"]
+for _p in PERSON_NOUNS:
+    ROLE_CUES[f"{_p} collapsed"] = CRITICAL
+    ROLE_CUES[f"{_p} has collapsed"] = CRITICAL
+    ROLE_CUES[f"{_p} s collapsed"] = CRITICAL
