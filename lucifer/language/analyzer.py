@@ -723,6 +723,9 @@ class ReportAnalyzer:
                 j > 0 and norms[j - 1 : j + 1] in (("rather", "than"), ("instead", "of"))
             ) or norms[j] == "instead"
             # "not the school" but not "not on fire at the school" (that negates a cue)
+            after = norms[p.end_tok : p.end_tok + 2]
+            if norms[j] in ("take", "taking", "took") and after[:1] and after[0] in ("off", "out", "back", "away"):
+                neg = True  # "take the garage off that list"
             if neg and not self._cue_between(norms, j + 1, p.start_tok):
                 ex.places[idx] = replace(p, status="negated", reason=f"negated by '{toks.tokens[j].text}'")
                 # "the clinic ... no, not the clinic, the police station": the earlier mention is retracted
@@ -842,21 +845,33 @@ class ReportAnalyzer:
                 restarted = [p for p in ex.places if b <= p.start_tok < end and p.reason.startswith("restarted")]
                 if not restarted:
                     continue
-                after = [q for q in ex.places if q.status == "active" and q.replaces in {r.start_tok for r in restarted}]
+                link_to = min(restarted, key=lambda p: p.start_tok)
+                by_replaced = {q.replaces: q for q in ex.places if q.replaces is not None}
+                after = []
+                for r in restarted:
+                    q = by_replaced.get(r.start_tok)
+                    while q is not None and q.status != "active":
+                        q = by_replaced.get(q.start_tok)
+                    if q is not None:
+                        after.append(q)
                 if not after:
                     continue
+            else:
+                link_to = None
             start = self._repair_window_start(ex, k)
             before = [p for p in ex.places if start <= p.start_tok < a and p.status == "active"]
             if not before:
                 continue
             last = max(before, key=lambda p: p.end_tok)
+            if min(after, key=lambda p: p.start_tok).status == "negated":
+                continue  # "hold that, not the school": the negation already retracted it
             first_after = min((p for p in after if p.status == "active"), key=lambda p: p.start_tok, default=None)
             if first_after is not None and first_after.landmark == last.landmark:
                 continue  # "I mean the chapel, st mary's, same place": a restatement, not a repair
             i = ex.places.index(last)
             ex.places[i] = replace(last, status="retracted",
                                    reason=f"self-repair: '{toks.span_text(a, b)}' then '{after[0].text}'")
-            successor = next((p for p in sorted(after, key=lambda p: p.start_tok) if p.status == "active"), None)
+            successor = link_to or next((p for p in sorted(after, key=lambda p: p.start_tok) if p.status == "active"), None)
             if successor is not None and successor.replaces is None:
                 ex.places[ex.places.index(successor)] = replace(successor, replaces=last.start_tok)
             # every earlier mention of the retracted place in the window goes too ("I said the bank")
@@ -896,6 +911,7 @@ class ReportAnalyzer:
         marker_tokens = {i for a, b, _ in ex.markers for i in range(a, b)}
         blocked |= marker_tokens
         self._place_tokens = {i for p in ex.places for i in range(p.start_tok, p.end_tok)}
+        self._places_now = ex.places
         self._marker_tokens = marker_tokens
         cues: list[CueMention] = []
         for a, b, (cat, source) in self._cues.find_all(norms, blocked):
@@ -911,6 +927,7 @@ class ReportAnalyzer:
         cues.sort(key=lambda c: c.start_tok)
         cues = self._apply_cue_repairs(ex, cues)
         cues = self._apply_false_alarms(toks, norms, cues)
+        self._markers_now = ex.markers
         cues = self._apply_non_reports(toks, norms, cues)
         claims, denied = self._associate(ex, cues)
         if self.embedder is not None and self.semantic_fallback:
@@ -1026,15 +1043,22 @@ class ReportAnalyzer:
             else:
                 sentences[-1] = (sentences[-1][0], i + 1)
         dropped: dict[int, str] = {}
+        asked: set[int] = set()
+        marker_starts = {ma for ma, _, _ in getattr(self, "_markers_now", [])}
         for n, (a, b) in enumerate(sentences):
             tail = toks.gaps[b] if b < len(toks) else toks.text[toks.tokens[b - 1].end :]
             if "?" in tail:
-                dropped[n] = "a question, not a report"
+                # only the clause that asks: "Control, is the church still open?"; "or is it the flats?" repairs
+                start = max((i for i in range(a, b) if toks.clause_start[i]), default=a)
+                first = next((i for i in range(start, b) if norms[i] not in lx.FILLERS), start)
+                if norms[first] in lx.QUESTION_OPENERS and first not in marker_starts:
+                    asked.update(range(start, b))
                 continue
             first = next((norms[i] for i in range(a, b) if norms[i] not in lx.FILLERS), "")
             if first in lx.INSTRUCTION_VERBS and set(norms[a:b]) & lx.INSTRUCTION_WORDS:
                 dropped[n] = "an instruction to the system, not a report"
-        self._non_report_tokens = {i for n, (a, b) in enumerate(sentences) if n in dropped for i in range(a, b)}
+        self._non_report_tokens = {i for n, (a, b) in enumerate(sentences) if n in dropped for i in range(a, b)} | asked
+        cues = [replace(c, status="retracted", reason="a question, not a report") if c.start_tok in asked else c for c in cues]
         if not dropped:
             return cues
         sent_of = {}
@@ -1043,6 +1067,22 @@ class ReportAnalyzer:
                 sent_of[i] = n
         return [replace(c, status="retracted", reason=dropped[sent_of[c.start_tok]]) if sent_of.get(c.start_tok) in dropped
                 else c for c in cues]
+
+    def _restated_category(self, ex: Extraction, k: int, out: list[CueMention], b: int, end: int, a: int) -> None:
+        """"the hotel's sound — hold that — hotel's got a cracked stairwell": same place, new category;
+        the cues said about the earlier mention are retracted."""
+        first = min((p for p in ex.places if b <= p.start_tok < end and p.status != "reference"),
+                    key=lambda p: p.start_tok, default=None)
+        if first is None or not any(b <= c.start_tok < end and c.status == "active" for c in out):
+            return
+        lo = self._repair_window_start(ex, k)
+        same = [p for p in ex.places if lo <= p.start_tok < a and p.landmark == first.landmark]
+        if not same:
+            return
+        since = max(p.start_tok for p in same)
+        for i, c in enumerate(out):
+            if since < c.start_tok < a and c.status == "active":
+                out[i] = replace(c, status="retracted", reason=f"category restated after '{ex.tokens.span_text(a, ex.markers[k][1])}'")
 
     def _apply_false_alarms(self, toks: Tokens, norms: tuple[str, ...], cues: list[CueMention]) -> list[CueMention]:
         """"... the smoke was a false alarm": every claim of that sentence is denied."""
@@ -1095,7 +1135,12 @@ class ReportAnalyzer:
         # cancellation after: "the fire is out", "gas leak fixed", "fire under control"
         k = cue.end_tok
         steps = 0
+        ends = {p.start_tok: p.end_tok for p in getattr(self, "_places_now", [])}
         while k < len(norms) and steps < 5 and not toks.clause_start[k]:
+            if k in ends and ends[k] > k:
+                k = ends[k]  # a place (or a whole relational description) counts as one word
+                steps += 1
+                continue
             h = self._cancel.match_at(norms, k)
             if h is not None:
                 cancelled_by = h[1]
@@ -1131,6 +1176,9 @@ class ReportAnalyzer:
         for k, (a, _b, strong) in enumerate(ex.markers):
             kind = self._repair_kind(ex, k, cue_spans)
             b_after, e_after = self._after_clause(ex, k)
+            if kind == "place":
+                self._restated_category(ex, k, out, b_after, e_after, a)
+                continue
             if kind is None and strong and set(norms_all[b_after:e_after]) & lx.DISMISSALS:
                 # "smoke at the cafe, correction, that's just steam": the claim is withdrawn
                 lo = self._repair_window_start(ex, k)
@@ -1315,6 +1363,9 @@ class ReportAnalyzer:
                     q.status != "active" for q in seg_usable.get(k, [])):
                 pairs.extend(Claim(p, c) for c in seg_cues[k])
                 continue
+            if any(q.landmark == p.landmark and q.status == "retracted" and q.start_tok < p.start_tok
+                   and not q.reason.startswith(("restarted", "false start")) for q in ex.places) and p.replaces is None:
+                continue  # "that should be the town hall, the library's shut": no claim revives the library
             donor = self._donor_for_places(k, segs, seg_places, seg_cues, sentence_of, hollow,
                                            [norms[a] for a, _ in segs])
             if donor is not None:

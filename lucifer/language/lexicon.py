@@ -303,3 +303,8 @@ for _p in PERSON_NOUNS:
     ROLE_CUES[f"{_p} collapsed"] = CRITICAL
     ROLE_CUES[f"{_p} has collapsed"] = CRITICAL
     ROLE_CUES[f"{_p} s collapsed"] = CRITICAL
+
+# A clause opening with one of these and ending in "?" asks rather than reports.
+QUESTION_OPENERS = {"is", "are", "was", "were", "do", "does", "did", "can", "could", "has", "have", "what", "where", "who",
+                    "which", "how", "why", "any", "anyone", "anybody", "should", "will", "would", "shall", "may", "isnt",
+                    "arent", "whats", "wheres", "whos", "hows"}

@@ -11,6 +11,7 @@ T = TypeVar("T")
 
 _TOKEN = re.compile(r"[a-z0-9]+(?:['’][a-z]+)*", re.IGNORECASE)
 _SENTENCE_END = re.compile(r"[.!?]")
+_PAUSE_AFTER_END = re.compile(r"[.!?]\s*[—–,]|[.!?]\s+-\s")
 _CLAUSE = re.compile(r"[,;:()\[\]—–/]|\s-\s|--|^-|-$|\.\.\.|…")
 
 
@@ -70,7 +71,8 @@ def tokenize(text: str) -> Tokens:
     clause: list[bool] = []
     for i, gap in enumerate(gaps):
         g = gap.replace("...", " , ").replace("…", " , ")
-        is_sent = i == 0 or bool(_SENTENCE_END.search(g)) or "\n" in gap
+        # "— or is it the school? — the post office": a terminator followed by a dash or comma is a pause
+        is_sent = i == 0 or (bool(_SENTENCE_END.search(g)) and not _PAUSE_AFTER_END.search(gap)) or "\n" in gap
         sent.append(is_sent)
         clause.append(is_sent or bool(_CLAUSE.search(gap.strip())) or bool(_CLAUSE.search(g)))
     return Tokens(text, tuple(toks), tuple(gaps), tuple(sent), tuple(clause))
