@@ -938,8 +938,8 @@ class ReportAnalyzer:
 
     # ------------------------------------------------------------------ semantic fallback
     semantic_fallback: bool = True
-    FALLBACK_MIN_SIM = 0.38
-    FALLBACK_MARGIN = 0.08
+    FALLBACK_MIN_SIM = 0.35
+    FALLBACK_MARGIN = 0.07
 
     def _exemplars(self) -> tuple[np.ndarray, list[str]]:
         if getattr(self, "_ex_cache", None) is None:
