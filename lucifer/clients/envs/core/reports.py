@@ -1,7 +1,7 @@
 """Spoken-style radio reports of a layout, in three styles of increasing mess.
 
 ``standard`` reports are plain; ``messy`` ones stutter, use filler words and self-repair
-("fire at the cafe, no wait, at the bakery"); ``advanced_messy`` ones refer to places
+("fire at the cafe, no wait, correction, at the bakery"); ``advanced_messy`` ones refer to places
 through aliases and KB relations ("the shop attached to the bakery"). Reports are a pure
 function of (layout, style), so a client sees a finite set of distinct reports and the
 middleware can cache its answers.
@@ -45,11 +45,11 @@ def briefing_reports(kb: KnowledgeBase, layout: Layout, style: str) -> list[str]
     out: list[str] = []
     for i, (place, kind) in enumerate(layout.hazards.items()):
         if style == "standard":
-            out.append(f"{kind.capitalize()} reported at the {place}, stay out.")
+            out.append(f"{kind.capitalize()} reported at the {place}, keep clear.")
         elif style == "messy":
             if i % 2 == 0:
                 out.append(f"uh, dispatch, we've got, we've got {kind} at the {_decoy(kb, layout, place)}, "
-                           f"no wait, at the {place}, over")
+                           f"no wait, correction, at the {place}, over")
             else:
                 out.append(f"um, {kind} at the, uh, {_the(_alias(kb, place))}, it's bad, stay out of there, over")
         else:
