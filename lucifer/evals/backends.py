@@ -42,7 +42,9 @@ PAPER: dict[str, dict[str, float]] = {
     "FLAIR NER+keywords": {"standard": 91.7, "messy": 72.0, "advanced_messy": 36.7},
 }
 
-LLM_FAILURES = ("llm_timeout", "llm_unavailable", "llm_error")
+#: This many first reports ending in nothing but model failures mark the backend unavailable.
+FAIL_FAST_N = 3
+MODEL_FAILURES = ("llm_unavailable", "llm_error", "llm_timeout")
 #: Seconds one LLM backend may spend over all splits: no report is started after that (the row
 #: is then ``partial`` and says how many reports each cell scored). On 2 shared CPU cores a
 #: 270M-parameter model needs 10-40 s per report, so --llm-limit 30 over three splits would
@@ -121,7 +123,7 @@ async def _preflight(grounder: Any, chat: Any = None) -> str | None:
         res = await grounder.ground(WARMUP_REPORT, report_id="warmup")
     except Exception as exc:  # recorded as the row's reason
         return f"{type(exc).__name__}: {exc}"
-    if res.status.value in LLM_FAILURES:
+    if res.status.value in MODEL_FAILURES:
         return (res.errors[0] if res.errors else res.status.value)[:300]
     return None
 
@@ -153,11 +155,6 @@ class _ErrorRecorder:
         res = await self.grounder.ground(text, report_id=report_id)
         self.errors += [f"{report_id}: {e}"[:300] for e in res.errors]
         return res
-
-
-#: This many first reports ending in nothing but model failures mark the backend unavailable.
-FAIL_FAST_N = 3
-MODEL_FAILURES = ("llm_unavailable", "llm_error", "llm_timeout")
 
 
 def _split_result(results: list[Any], planned: list[DatasetRow], wall_s: float) -> dict[str, Any]:
@@ -417,7 +414,8 @@ def render_markdown(table: dict[str, Any]) -> str:
         f"Adjusted accuracy (SPEC §3, percent) per regime; held-out ({sizes.get('heldout', '?')}) is the "
         f"headline, dev ({sizes.get('dev', '?')}) is what the rules were developed against, Riverbend "
         f"({sizes.get('riverbend', '?')}) is a second KB (all regimes pooled). "
-        f"LLM backends see only the first {limit} reports of every regime. "
+        f"LLM backends see only the first {limit} reports of every regime (regimes interleaved) and "
+        f"start no report after {table.get('llm_budget_s') or 0:.0f} s; a cell cut short shows n=scored/planned. "
         "s / report: mean grounding latency, one report at a time, on a shared 2-core CPU "
         f"(load average {table['machine']['load_avg_1m']} when the table was made).",
         "",
@@ -450,7 +448,7 @@ def render_chart(table: dict[str, Any], path: str | os.PathLike[str]) -> None:
     panels = [s["name"] for s in table["splits"] if s["name"] in ("heldout", "dev")] or ["heldout"]
     ran = [r for r in table["backends"] if r["status"] != "unavailable"]
     missing = [r["backend"] for r in table["backends"] if r["status"] == "unavailable"]
-    series = [(r["backend"] + (f" (first {r['limit']}/regime)" if r.get("limit") else ""), r) for r in ran]
+    series = [(r["backend"] + _limit_note(r), r) for r in ran]
     n_series = len(series) + len(table["paper"])
     width = 0.8 / max(1, n_series)
     fig, axes = plt.subplots(1, len(panels), figsize=(6.5 * len(panels), 4.6), sharey=True, squeeze=False)
@@ -482,6 +480,15 @@ def render_chart(table: dict[str, Any], path: str | os.PathLike[str]) -> None:
     fig.tight_layout(rect=(0, 0.16, 1, 1))
     fig.savefig(path, dpi=130)
     plt.close(fig)
+
+
+def _limit_note(row: dict[str, Any]) -> str:
+    if not row.get("limit"):
+        return ""
+    if row["status"] == "partial":
+        done = ", ".join(f"{k} {v['n']}/{v['planned']}" for k, v in row["splits"].items())
+        return f" (time budget: {done or 'nothing'} scored)"
+    return f" (first {row['limit']}/regime)"
 
 
 def write_outputs(table: dict[str, Any], out_dir: str | os.PathLike[str]) -> dict[str, Path]:
