@@ -5,15 +5,14 @@ from __future__ import annotations
 import asyncio
 
 import pytest
+from conftest import KB
 from fakes import ScriptedChatModel, tool_answer
-from langchain_core.messages import AIMessage, ToolMessage
+from langchain_core.messages import AIMessage, HumanMessage
 
 from lucifer.graphs.grounding import build_graph
 from lucifer.grounding import Grounder
 from lucifer.models import set_chat_model_factory
 from lucifer.types import Status
-
-from conftest import KB
 
 
 @pytest.fixture
@@ -71,9 +70,10 @@ async def test_invalid_answer_is_retried_with_the_errors_then_accepted(fake_mode
         res = await g.ground("fire at the bakery")
     assert res.status is Status.RETRIED
     assert [(o.location, o.category) for o in res.objects] == [("bakery", "hazard")]
-    # the second call saw the rejection reason
-    retry_msgs = [m for m in model.calls[1] if isinstance(m, ToolMessage)]
-    assert retry_msgs and "moon base" in retry_msgs[0].content and "not a landmark" in retry_msgs[0].content
+    # the second call saw its previous answer and the rejection reason, as plain text
+    retry = model.calls[1][-1]
+    assert isinstance(retry, HumanMessage) and "moon base" in retry.content and "not a landmark" in retry.content
+    assert isinstance(model.calls[1][-2], AIMessage) and "moon base" in model.calls[1][-2].content
 
 
 async def test_retry_cap_then_builtin_fallback_with_status(fake_model):

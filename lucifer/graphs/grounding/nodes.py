@@ -9,7 +9,7 @@ import json
 import time
 from typing import Any, Literal
 
-from langchain_core.messages import AIMessage, HumanMessage, SystemMessage, ToolMessage
+from langchain_core.messages import AIMessage, HumanMessage, SystemMessage
 from langgraph.runtime import Runtime
 from pydantic import ValidationError
 
@@ -115,12 +115,13 @@ async def _llm_extract(state: GroundingState, runtime: Runtime[GroundingContext]
         SystemMessage(SYSTEM_PROMPT.format(categories=cats, context=_context_text(state, res), tool=TOOL_NAME)),
         HumanMessage(USER_PROMPT.format(report=state.report)),
     ]
-    if state.validation_errors and state.candidates:
-        call_id = "previous"
+    if state.validation_errors:
+        # the previous answer goes back as plain text: small models' chat templates cannot render
+        # an assistant turn that holds only a tool call
         prev = {"objects": [{k: c.get(k) for k in ("entity", "location", "category")} for c in state.candidates]}
-        messages.append(AIMessage("", tool_calls=[{"name": TOOL_NAME, "args": prev, "id": call_id}]))
-        messages.append(ToolMessage(RETRY_PROMPT.format(errors="\n".join(f"- {e}" for e in state.validation_errors),
-                                                        tool=TOOL_NAME), tool_call_id=call_id))
+        messages.append(AIMessage(json.dumps(prev)))
+        messages.append(HumanMessage(RETRY_PROMPT.format(errors="\n".join(f"- {e}" for e in state.validation_errors),
+                                                         tool=TOOL_NAME)))
     try:
         model = res.chat_model()
         # the OpenAI dict form forces the tool on llama.cpp (a grammar) and OpenAI-compatible servers
