@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import os
 import shutil
+import socket
 from pathlib import Path
 
 import pytest
@@ -36,3 +37,10 @@ def kb_copy(tmp_path: Path) -> Path:
     dst = tmp_path / "kb"
     shutil.copytree(KB, dst)
     return dst
+
+
+def free_port() -> int:
+    """A TCP port on loopback that nothing listens on right now."""
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]

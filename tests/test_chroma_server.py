@@ -4,13 +4,12 @@ from __future__ import annotations
 
 import os
 import shutil
-import socket
 import subprocess
 import time
 from pathlib import Path
 
 import pytest
-from conftest import KB
+from conftest import KB, free_port
 
 from lucifer.grounding import Grounder
 from lucifer.retrieval import ChromaUnavailable
@@ -19,17 +18,11 @@ pytestmark = pytest.mark.integration
 CHROMA = shutil.which("chroma") or str(Path(os.sys.executable).parent / "chroma")
 
 
-def _free_port() -> int:
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
-
-
 @pytest.fixture(scope="module")
 def chroma_server(tmp_path_factory):
     if not Path(CHROMA).exists():
         pytest.skip("the chroma CLI is not installed")
-    port = _free_port()
+    port = free_port()
     data = tmp_path_factory.mktemp("chroma-data")
     proc = subprocess.Popen([CHROMA, "run", "--path", str(data), "--host", "127.0.0.1", "--port", str(port)],
                             stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
@@ -72,4 +65,4 @@ async def test_grounding_through_a_chroma_server(chroma_server):
 
 def test_unreachable_chroma_server_is_a_clear_error():
     with pytest.raises(ChromaUnavailable, match="cannot reach the Chroma server"):
-        Grounder(KB, chroma_url=f"http://127.0.0.1:{_free_port()}")
+        Grounder(KB, chroma_url=f"http://127.0.0.1:{free_port()}")

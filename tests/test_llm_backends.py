@@ -8,14 +8,13 @@ from __future__ import annotations
 
 import importlib.util
 import os
-import socket
 import subprocess
 import sys
 import time
 import urllib.request
 
 import pytest
-from conftest import KB
+from conftest import KB, free_port
 
 from lucifer.grounding import Grounder
 from lucifer.kb import load_kb
@@ -29,12 +28,6 @@ pytestmark = [
     pytest.mark.skipif(not HAVE_LLAMACPP, reason="needs the llamacpp extra: pip install 'lucifer[llamacpp]'"),
 ]
 RAN = {Status.OK, Status.RETRIED, Status.LLM_INVALID}  # the model answered; validation judged it
-
-
-def _free_port() -> int:
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
 
 
 def _assert_valid(result) -> None:
@@ -59,7 +52,7 @@ async def test_gemma_in_process_runs_end_to_end():
 def openai_server():
     from lucifer.models import embedded_gguf_path
 
-    port = _free_port()
+    port = free_port()
     proc = subprocess.Popen(
         [sys.executable, "-m", "llama_cpp.server", "--model", str(embedded_gguf_path("smollm2")), "--host", "127.0.0.1",
          "--port", str(port), "--n_ctx", "2048", "--chat_format", "chatml-function-calling"],
@@ -90,7 +83,7 @@ async def test_openai_compatible_server_on_loopback(openai_server):
 
 
 async def test_unreachable_server_is_an_explicit_status():
-    url = f"http://127.0.0.1:{_free_port()}/v1"  # nothing listens there
+    url = f"http://127.0.0.1:{free_port()}/v1"  # nothing listens there
     async with Grounder(KB, "openai:any", base_url=url, timeout_s=30) as g:
         res = await g.ground("man down at the clinic")
     assert res.status is Status.LLM_UNAVAILABLE
