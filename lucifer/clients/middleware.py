@@ -134,6 +134,7 @@ class Middleware:
         self._ground_inflight: dict[str, asyncio.Future[GroundingResult]] = {}
         self._signal_cache: dict[tuple[str, ...], GridSignals] = {}
         self._advice_cache: dict[Hashable, Advice] = {}
+        self._allowed_tables: dict[tuple[tuple[int, ...], ...], tuple[tuple[int, ...], ...]] = {}
         self.calls = {"ground": 0, "discover": 0, "contract": 0}
 
     # ------------------------------------------------------------------ backends
@@ -220,8 +221,11 @@ class Middleware:
         mu = t.member_u.tolist()
         goal = (t.member_d | t.member_o).tolist()
         admissible = [[bool(adm[row_of[c]][j]) for j in col_of] for c in range(n)]
+        allowed = tuple(tuple(a for a, ok in enumerate(admissible[c]) if ok) for c in range(n))
+        # identical U' tables are one object, so clients can key their plan caches on it
+        allowed = self._allowed_tables.setdefault(allowed, allowed)
         return GridSignals(
-            allowed=[tuple(a for a, ok in enumerate(admissible[c]) if ok) for c in range(n)],
+            allowed=allowed,  # type: ignore[arg-type]
             admissible=admissible,
             prior=[[float(pri[row_of[c]][j]) for j in col_of] for c in range(n)],
             phi=[float(phi[row_of[c]]) for c in range(n)],

@@ -104,7 +104,7 @@ class HybridPlanner:
         self.fallbacks = 0
 
     def _path(self, sig: GridSignals, pos: int, goal: int, order_i: int) -> list[int]:
-        key = (id(sig), pos, goal, order_i)
+        key = (id(sig.allowed), pos, goal, order_i)
         path = self._paths.get(key)
         if path is None and key not in self._paths:
             env = self.env
@@ -151,7 +151,7 @@ class HybridPlanner:
                 action = int(Actions.QUERY_0) + self._option_index[option]
             else:
                 c = env.collected
-                key = (id(sig), pos, c[0] + 2 * c[1] + 4 * c[2], order_i, env.layout_index)
+                key = (id(sig.allowed), pos, c[0] + 2 * c[1] + 4 * c[2], order_i, env.layout_index)
                 action = self._moves.get(key, -1)
                 if action < 0:
                     targets = [cell for k, cell in enumerate(env.layout.info_cells) if not c[k]]

@@ -106,11 +106,21 @@ def _middleware(config: str) -> Any:
         for part, needed in (("advice", d), ("ground", g)):
             if needed:
                 if part not in _WORKER:
-                    with open(os.path.join(_WORKER["cache_dir"], f"{part}.pkl"), "rb") as fh:
-                        _WORKER[part] = pickle.load(fh)
+                    _WORKER[part] = _read_part(os.path.join(_WORKER["cache_dir"], f"{part}.pkl"))
                 mw.import_cache({part: _WORKER[part]})
         mws[config] = mw
     return mws[config]
+
+
+def _read_part(path: str, timeout_s: float = 900.0) -> Any:
+    """A warm-cache part, waiting for the parent to publish it (it is written atomically)."""
+    deadline = time.monotonic() + timeout_s
+    while not os.path.exists(path):
+        if time.monotonic() > deadline:
+            raise TimeoutError(f"warm-up cache {path} never appeared")
+        time.sleep(0.05)
+    with open(path, "rb") as fh:
+        return pickle.load(fh)
 
 
 def run_seeds(seed: int, run: int) -> tuple[int, np.random.Generator]:
@@ -137,6 +147,11 @@ async def _run(prepared: Prepared, mw: Any, seed: int, run: int, episodes: int, 
             outcomes.append(int(ep.success))
     r = RunResult.from_counts(n, succ, safe, queries, correct)
     return {"msr": r.msr, "csr": r.csr, "sms": r.sms, "curve": outcomes}
+
+
+def _batch(tasks: list[tuple[str, int, int, int, bool]]) -> list[tuple[str, int, dict[str, Any]]]:
+    """Several runs in one worker, in order."""
+    return [_task(*t) for t in tasks]
 
 
 def _task(config: str, seed: int, run: int, episodes: int, curve: bool) -> tuple[str, int, dict[str, Any]]:
@@ -171,8 +186,10 @@ async def _warm(mw: Any, env: Any, cache_dir: str, on_part: Callable[[str], None
     try:
         for part, texts in (("advice", ([], sigs)), ("ground", (reports, []))):
             await mw.warm(*texts, concurrency=concurrency)
-            with open(os.path.join(cache_dir, f"{part}.pkl"), "wb") as fh:
+            final = os.path.join(cache_dir, f"{part}.pkl")
+            with open(final + ".tmp", "wb") as fh:
                 pickle.dump(mw.export_cache()[part], fh)
+            os.replace(final + ".tmp", final)  # readers never see half a file
             on_part(part)
     finally:
         await mw.aclose()
@@ -216,11 +233,13 @@ def run_ablation(
         results: dict[str, list[dict[str, Any]]] = {c: [{}] * runs for c in CONFIGS}
         n_workers = workers or min(2, os.cpu_count() or 1)
         tasks = [(cfg, seed, r, episodes, curves and r == 0) for r in range(runs) for cfg in CONFIGS]
-        # which configurations can start once a cache part is written
-        after = {"start": ["baseline"], "advice": ["+D"], "ground": ["+G", "+D+G"]}
+        # Scheduling: the runs that need no grounding (baseline, +D) go to one worker as a single
+        # batch at once (+D waits there for the discovery part of the cache, which comes first),
+        # leaving the other core to the warm-up; the grounding runs go to both workers after it.
+        early = [t for t in tasks if t[0] in ("baseline", "+D")]
+        late = [t for t in tasks if t[0] not in ("baseline", "+D")]
         mw = Middleware(prepared.kb, grounding=True, discovery=True, memory=memory, model=model,
                         grounder=grounder, discoverer=discoverer)
-        futs: list[Any] = []
 
         def warm(submit: Callable[[str], None]) -> float:
             mw.record_many(prior_missions(env, np.random.default_rng(seed)), client=f"{client}-prior")
@@ -244,16 +263,18 @@ def run_ablation(
             with ProcessPoolExecutor(n_workers, mp_context=ctx, initializer=_init_worker,
                                      initargs=(client, kb, cache_dir, memory, model)) as pool:
 
-                def submit(part: str) -> None:
-                    futs.extend(pool.submit(_task, *t) for t in tasks if t[0] in after[part])
-
-                submit("start")  # the baseline needs no middleware: it overlaps the warm-up
-                warm_s = warm(submit)
+                nb = max(1, n_workers - 1)
+                batches = [pool.submit(_batch, early[i::nb]) for i in range(nb)]
+                warm_s = warm(lambda part: None)
+                futs = [pool.submit(_task, *t) for t in late]
                 for i, f in enumerate(futs, 1):
                     cfg, r, out = f.result()
                     results[cfg][r] = out
-                    if i % max(1, len(futs) // 8) == 0:
-                        say(f"  {i}/{len(futs)} runs done ({time.perf_counter() - t0:.0f}s)")
+                    if i % max(1, len(futs) // 4) == 0:
+                        say(f"  {i}/{len(futs)} grounding runs done ({time.perf_counter() - t0:.0f}s)")
+                for b in batches:
+                    for cfg, r, out in b.result():
+                        results[cfg][r] = out
     finally:
         if tmp is not None:
             tmp.cleanup()
