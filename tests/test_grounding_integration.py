@@ -10,14 +10,13 @@ import sys
 import numpy as np
 import pytest
 import yaml
+from conftest import KB, RIVERBEND, ROOT
 
 from lucifer.embeddings import get_embedder
 from lucifer.errors import BadReport
 from lucifer.grounding import Grounder
 from lucifer.kb import KBError, load_kb
 from lucifer.retrieval import Retriever, make_client, open_collection, sync_index
-
-from conftest import KB, RIVERBEND, ROOT
 
 pytestmark = pytest.mark.integration
 

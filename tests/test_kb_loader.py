@@ -7,11 +7,10 @@ from pathlib import Path
 
 import pytest
 import yaml
+from conftest import KB, RIVERBEND
 
 from lucifer.kb import KBError, load_kb, resolve_kb_dir
 from lucifer.kb.models import Role
-
-from conftest import KB, RIVERBEND
 
 
 def test_shipped_kb_meets_the_issue_minimums():
