@@ -20,6 +20,7 @@ relation phrase).
 from __future__ import annotations
 
 import re
+import threading
 from dataclasses import dataclass, field, replace
 from typing import Literal
 
@@ -117,6 +118,8 @@ class ReportAnalyzer:
     def __init__(self, kb: KnowledgeBase, embedder: Embedder | None = None):
         self.kb = kb
         self.embedder = embedder
+        # one call at a time: the stages keep per-call scratch state on the instance
+        self._call_lock = threading.RLock()
         self._places: PhraseMatcher[str] = PhraseMatcher()
         for lm in kb.landmarks:
             for form in lm.surface_forms:
@@ -212,6 +215,11 @@ class ReportAnalyzer:
 
     # ------------------------------------------------------------------ extract
     def extract(self, text: str) -> Extraction:
+        """Place mentions with their status, and the repair markers (thread-safe)."""
+        with self._call_lock:
+            return self._extract(text)
+
+    def _extract(self, text: str) -> Extraction:
         toks = tokenize(text)
         norms = toks.norms(0, len(toks))
         places: list[PlaceMention] = []
@@ -898,6 +906,11 @@ class ReportAnalyzer:
 
     # ------------------------------------------------------------------ classify
     def classify(self, ex: Extraction) -> Classification:
+        """Cues, their attachment to places, claims and denials (thread-safe)."""
+        with self._call_lock:
+            return self._classify(ex)
+
+    def _classify(self, ex: Extraction) -> Classification:
         toks = ex.tokens
         norms = toks.norms(0, len(toks))
         all_place_tokens = {i for p in ex.places for i in range(p.start_tok, p.end_tok)
