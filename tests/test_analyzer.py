@@ -5,14 +5,13 @@ from __future__ import annotations
 import json
 
 import pytest
+from conftest import KB, RIVERBEND, ROOT
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from lucifer.embeddings import get_embedder
 from lucifer.kb import load_kb
 from lucifer.language.analyzer import ReportAnalyzer, analyze
-
-from conftest import KB, RIVERBEND, ROOT
 
 
 @pytest.fixture(scope="module")
