@@ -1,0 +1,100 @@
+"""The hand-written dev4 grounding sets (Market Square and Riverbend) are well-formed and their labels exist in the right KB."""
+
+from __future__ import annotations
+
+import json
+from collections import Counter
+from pathlib import Path
+
+import pytest
+import yaml
+
+ROOT = Path(__file__).resolve().parents[1]
+DEV4 = ROOT / "datasets" / "grounding" / "dev4"
+
+SETS = {
+    "market_square": {
+        "file": DEV4 / "market_square.jsonl",
+        "kb": ROOT / "knowledge_base",
+        "prefixes": {"standard": "d4-s-", "messy": "d4-m-", "advanced_messy": "d4-a-"},
+        "counts": {"standard": 40, "messy": 40, "advanced_messy": 30},
+    },
+    "riverbend": {
+        "file": DEV4 / "riverbend.jsonl",
+        "kb": ROOT / "knowledge_bases" / "riverbend",
+        "prefixes": {"standard": "d4-rb-s-", "messy": "d4-rb-m-", "advanced_messy": "d4-rb-a-"},
+        "counts": {"standard": 15, "messy": 15, "advanced_messy": 15},
+    },
+}
+
+
+def _rows(name: str) -> list[dict]:
+    rows = []
+    text = SETS[name]["file"].read_text(encoding="utf-8")
+    for i, line in enumerate(text.splitlines(), 1):
+        assert line.strip(), f"{name} line {i}: blank line"
+        rows.append(json.loads(line))
+    return rows
+
+
+def _kb(name: str) -> tuple[set[str], set[str]]:
+    kb = SETS[name]["kb"]
+    space = yaml.safe_load((kb / "information_space.yaml").read_text(encoding="utf-8"))
+    world = yaml.safe_load((kb / "map.yaml").read_text(encoding="utf-8"))
+    return {lm["name"] for lm in world["landmarks"]}, {c["name"] for c in space["categories"]}
+
+
+@pytest.mark.parametrize("name", sorted(SETS))
+def test_rows_are_well_formed(name: str) -> None:
+    for row in _rows(name):
+        assert set(row) >= {"id", "regime", "report", "expected"}, row
+        assert row["regime"] in SETS[name]["prefixes"], row["id"]
+        assert row.get("source", "hand") == "hand", row["id"]
+        assert isinstance(row["report"], str) and row["report"].strip(), row["id"]
+        assert isinstance(row["expected"], list), row["id"]
+        for item in row["expected"]:
+            assert set(item) == {"location", "category"}, row["id"]
+        pairs = [(e["location"], e["category"]) for e in row["expected"]]
+        assert len(pairs) == len(set(pairs)), f"{row['id']}: duplicate expected pair"
+
+
+@pytest.mark.parametrize("name", sorted(SETS))
+def test_ids_unique_and_prefixed(name: str) -> None:
+    rows = _rows(name)
+    ids = [r["id"] for r in rows]
+    assert len(ids) == len(set(ids)), [i for i, n in Counter(ids).items() if n > 1]
+    for row in rows:
+        prefix = SETS[name]["prefixes"][row["regime"]]
+        assert row["id"].startswith(prefix), row["id"]
+        assert row["id"][len(prefix) :].isdigit(), row["id"]
+
+
+def test_ids_unique_across_files() -> None:
+    ids = [r["id"] for name in SETS for r in _rows(name)]
+    assert len(ids) == len(set(ids))
+
+
+@pytest.mark.parametrize("name", sorted(SETS))
+def test_labels_exist_in_kb(name: str) -> None:
+    landmarks, categories = _kb(name)
+    for row in _rows(name):
+        for item in row["expected"]:
+            assert item["location"] in landmarks, f"{row['id']}: {item['location']!r}"
+            assert item["category"] in categories, f"{row['id']}: {item['category']!r}"
+
+
+@pytest.mark.parametrize("name", sorted(SETS))
+def test_counts_and_no_claim_share(name: str) -> None:
+    rows = _rows(name)
+    counts = SETS[name]["counts"]
+    assert Counter(r["regime"] for r in rows) == counts
+    for regime, n in counts.items():
+        empty = sum(1 for r in rows if r["regime"] == regime and not r["expected"])
+        # about 12% of every regime makes no groundable claim
+        assert 0.05 * n <= empty <= 0.2 * n, (regime, empty)
+
+
+@pytest.mark.parametrize("name", sorted(SETS))
+def test_reports_are_distinct(name: str) -> None:
+    reports = [r["report"].strip().lower() for r in _rows(name)]
+    assert len(reports) == len(set(reports))
