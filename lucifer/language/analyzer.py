@@ -121,12 +121,17 @@ class ReportAnalyzer:
         # one call at a time: the stages keep per-call scratch state on the instance
         self._call_lock = threading.RLock()
         self._places: PhraseMatcher[str] = PhraseMatcher()
+        self._needs_article: set[tuple[str, ...]] = set()  # "the tower": an alias written with its article
+        plain: set[tuple[str, ...]] = set()
         for lm in kb.landmarks:
             for form in lm.surface_forms:
                 key = norm_phrase(form)
+                had_article = bool(key) and key[0] in ("the", "a", "an")
                 while key and key[0] in ("the", "a", "an"):
                     key = key[1:]
+                (self._needs_article if had_article else plain).add(key)
                 self._places.add(key, lm.name)
+        self._needs_article -= plain
         self._role_category = self._map_roles()
         self._cues: PhraseMatcher[tuple[str, str]] = PhraseMatcher()
         self._build_cues()
@@ -228,6 +233,12 @@ class ReportAnalyzer:
         for a, b, landmark in self._places.find_all(norms):
             if any(ca <= a and b <= cb and cb - ca > b - a for ca, cb in cue_hits):
                 continue  # "first aid post" is a cue, "across the square from" a relation
+            prev = norms[a - 1] if a > 0 else ""
+            if norms[a:b] in self._needs_article and prev not in lx.DETERMINERS | {"our", "your"}:
+                continue  # the KB wrote "the tower": "bell tower" is not it
+            if b - a == 1 and prev in lx.COMPOUND_MODIFIERS and not (a > 0 and toks.clause_start[a]) \
+                    and not any(p.end_tok == a for p in places):
+                continue  # "car park", "bell tower"
             places.append(self._mention(toks, a, b, landmark))
         places.extend(self._partial_names(toks, norms, {i for p in places for i in range(p.start_tok, p.end_tok)}))
         for idx, p in enumerate(places):
@@ -500,7 +511,8 @@ class ReportAnalyzer:
                 return
             if not generic:
                 # a cue (or nothing) before the relation: "man down across the street from the fire station"
-                if norms[a:b] in lx.AMBIGUOUS_HEADLESS or (words and not self._is_cue_end(norms, head_end)):
+                if norms[a:b] in lx.AMBIGUOUS_HEADLESS or (words and not self._is_cue_end(norms, head_end)
+                                                           and not set(words) <= lx.HEADLESS_OK):
                     return
                 head_start, head_text = a, ""
             target, via = self._follow(anchor.landmark, phrase, head_text, inverse=flipped)
@@ -640,7 +652,8 @@ class ReportAnalyzer:
                 return True
         return False
 
-    def _follow(self, anchor: str, phrase: str, head: str, inverse: bool = False) -> tuple[str | None, str | None]:
+    def _follow(self, anchor: str, phrase: str, head: str, inverse: bool = False,
+                _loose: bool = False) -> tuple[str | None, str | None]:
         """Landmarks standing in relation ``phrase`` to ``anchor``; ties broken by the head noun.
 
         ``X phrase anchor`` normally; with ``inverse`` the description reads ``anchor phrase X``.
@@ -666,6 +679,11 @@ class ReportAnalyzer:
                     hit = rel.subject if rel.object == anchor else None
                 if hit:
                     cands.append((hit, desc))
+        if not cands and phrase in lx.LOOSE_EQUIVALENTS and not inverse:
+            loose, _ = self._follow(anchor, lx.LOOSE_EQUIVALENTS[phrase], head, inverse=False, _loose=True) \
+                if not _loose else (None, None)
+            if loose is not None:
+                return self._follow(anchor, lx.LOOSE_EQUIVALENTS[phrase], head, inverse=False, _loose=True)
         if not cands:
             cands = self._grid_relation(anchor, phrase)
         uniq = {c[0]: c for c in cands}
@@ -841,11 +859,14 @@ class ReportAnalyzer:
         toks = ex.tokens
         cue_spans = self._cue_starts(ex)
         self._repair_kinds = {}
+        norms = toks.norms(0, len(toks))
         for k, (a, b, _strong) in enumerate(ex.markers):
             kind = self._repair_kind(ex, k, cue_spans)
             self._repair_kinds[k] = kind
             if kind not in ("place", "full"):
                 continue
+            if b < len(norms) and norms[b] in lx.COORDINATORS and any(p.end_tok == a for p in ex.places):
+                continue  # "in the coffee shop I mean, and the church ...": the marker closed its own repair
             b, end = self._after_clause(ex, k)
             after = [p for p in ex.places if b <= p.start_tok < end and p.status in ("active", "negated")]
             if not after:
@@ -944,6 +965,7 @@ class ReportAnalyzer:
         cues = self._apply_non_reports(toks, norms, cues)
         claims, denied = self._associate(ex, cues)
         if self.embedder is not None and self.semantic_fallback:
+            self._all_cues_now = cues
             extra = self._semantic_claims(ex, claims, denied)
             claims.extend(extra)
             cues.extend(c.cue for c in extra)
@@ -997,6 +1019,16 @@ class ReportAnalyzer:
             return []
         toks = ex.tokens
         texts, regions = [], []
+        all_cues = getattr(self, "_all_cues_now", [])
+        kept = []
+        for p in todo:
+            a, b = self._predicate_region(ex, p)
+            if any(a <= c.start_tok < b for c in all_cues) or any(a <= ma < b for ma, _, _ in ex.markers):
+                continue  # the vocabulary (or a repair) already spoke here; the fallback stays silent
+            kept.append(p)
+        todo = kept
+        if not todo:
+            return []
         for p in todo:
             a, b = self._predicate_region(ex, p)
             words = [t.text for t in toks.tokens[a : p.start_tok] if t.norm not in lx.FILLERS and t.norm not in lx.DETERMINERS]
@@ -1192,7 +1224,9 @@ class ReportAnalyzer:
             if kind == "place":
                 self._restated_category(ex, k, out, b_after, e_after, a)
                 continue
-            if kind is None and strong and set(norms_all[b_after:e_after]) & lx.DISMISSALS:
+            marker_words = " ".join(norms_all[a:_b])
+            if kind is None and strong and (set(norms_all[b_after:e_after]) & lx.DISMISSALS
+                                            or marker_words in {" ".join(norm_phrase(m)) for m in lx.WITHDRAW_MARKERS}):
                 # "smoke at the cafe, correction, that's just steam": the claim is withdrawn
                 lo = self._repair_window_start(ex, k)
                 before = [c for c in out if lo <= c.start_tok < a and c.status == "active"]

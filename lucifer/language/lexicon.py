@@ -42,6 +42,9 @@ about to collapse|coming down|falling in|roof has come in|roof's come in|roof ca
 ceiling has come in|ceiling's come in|ceiling collapsed|keep clear|stay clear|red for entry|sparks everywhere|
 stinks of gas|reeks of gas|reeking of gas|reeking of|fuel leak|oil spill|overtopping|burst its banks|breached|
 landslip|slipping|given way|gave way|has given way|come away|came away|taking on water|taking water|
+flashover|flashover risk|backdraft|backdraft risk|spongy|floor's spongy|leaning|buckled|buckling|ruptured|
+gas main|water's up|water up to|up to the windowsills|smoke logged|smoke logging|heavy fire|fire showing|
+fully developed fire|ammonia|ammonia leak|asbestos|unstable chimney|hazmat incident|arcing|
 fuel pouring|pouring fuel|roof's going|roof is going|everyone out|get everyone out|evacuate|evacuating|
 smell of gas|strong smell of gas|gas smell|water damage|waist deep|chest deep|electrical hazard|exposed wiring
 """.replace("\n", ""))
@@ -53,6 +56,7 @@ evacuation point|evacuation centre|evacuation center|rally point|rendezvous poin
 staging point|triage|triage area|first aid post|first aid station|aid station|relief centre|relief center|
 passable|good to go|accessible|open route|route open|checked and safe|stable|casualty clearing station|
 clearing station|welfare centre|welfare center|rest centre|rest center|green for entry|safe for entry|first aid point|
+rvp|designated rvp|searched and signed off|use|use it|use it for shelter|signed off|cleared and marked|safe haven|casualty collection point|
 structurally sound|intact|usable|refuge|sanctuary|holding area|collection point|gathering point
 """.replace("\n", ""))
 
@@ -76,6 +80,9 @@ needs oxygen|need oxygen|having a heart attack|heart attack|seizure|having a sei
 stuck on the roof|stranded on the roof|on the roof waiting|waving from|trapped upstairs|trapped on|
 can't get up|cannot get up|can't get out|can't free|cannot free|waving for help|yelling for help|for help|
 head wound|head injury|hurt bad|badly hurt|walking wounded|screaming inside|kids screaming|someone in the water|
+smoke inhalation|persons reported|person reported|p1|p2|p3|p1s|p2s|p1 patient|p2 patient|priority one|cpr|
+cpr in progress|a body|body|bodies|non ambulatory|non-ambulatory|overcome|officer down|firefighter down|
+occupants unaccounted for|entrapment|trapped occupant|casualty pinned|
 person in the water|in the water|unaccounted for|still inside|not responding|no pulse|crush injury|burns
 """.replace("\n", ""))
 
@@ -116,7 +123,7 @@ STRONG_REPAIR = [
     "i mean", "i meant", "i misspoke", "my mistake", "my bad", "let me correct", "let me rephrase",
     "negative", "check that", "cancel that", "wrong", "that's wrong", "thats wrong", "not right",
     "make that", "sorry i mean", "sorry i meant", "belay that", "correcting", "i said wrong",
-    "wrong one", "not that one", "hold that", "hold on that", "let me correct that", "let me correct myself",
+    "wrong one", "not that one", "wrong building", "wrong place", "as you were", "amend that", "hold that", "hold on that", "let me correct that", "let me correct myself",
     "let me correct my last", "that should be", "that should have been", "should be", "scrub that", "i misspoke",
     "ah i misspoke", "or is it", "take that back", "strike that last", "correction on my last", "correct that",
 ]
@@ -131,7 +138,8 @@ RELATION_SYNONYMS: dict[str, list[str]] = {
                     "sharing a wall with", "shares a wall with", "that shares a wall with", "built against",
                     "abutting", "abuts", "butting onto", "bolted onto", "tacked onto", "stuck on to",
                     "built up against", "fixed onto", "part of the same building as", "joined up with"],
-    "next to": ["next to", "next door to", "next door", "beside", "besides", "alongside", "adjacent to", "right by",
+    "next to": ["next to", "next door to", "next door", "beside", "next building over from", "next one over from",
+                "next along from", "next one along from", "the next building over from", "next door along from", "besides", "alongside", "adjacent to", "right by",
                 "right next to", "just next to", "by", "neighbouring", "neighboring", "next door from",
                 "immediately next to", "directly next to", "to the side of"],
     "across from": ["across from", "opposite", "opposite to", "across the street from", "across the road from",
@@ -179,7 +187,8 @@ INVERSE_PHRASES = {"in front of": "behind", "behind": "in front of", "above": "b
 INVERSE_VERBS = {"sits", "sit", "is", "s", "stands", "stand", "lies", "lie", "located", "situated", "are", "was",
                  "right", "directly", "just"}
 # Relation words too common to resolve without a head noun ("blocked by the bank").
-AMBIGUOUS_HEADLESS = {("by",), ("inside",), ("within",), ("near",), ("above",), ("below",), ("before",)}
+AMBIGUOUS_HEADLESS = {("by",), ("inside",), ("within",), ("near",), ("above",), ("below",), ("before",), ("under",),
+                      ("over",), ("underneath",), ("beneath",), ("on", "top", "of")}
 
 # Nouns that describe a place generically; "the shop attached to X" is a relational reference.
 GENERIC_HEADS = {
@@ -308,3 +317,15 @@ for _p in PERSON_NOUNS:
 QUESTION_OPENERS = {"is", "are", "was", "were", "do", "does", "did", "can", "could", "has", "have", "what", "where", "who",
                     "which", "how", "why", "any", "anyone", "anybody", "should", "will", "would", "shall", "may", "isnt",
                     "arent", "whats", "wheres", "whos", "hows"}
+
+# Corrections that withdraw the claim before them even with nothing after ("cancel that, they've moved it").
+WITHDRAW_MARKERS = {"cancel that", "scratch that", "disregard that", "strike that", "belay that", "as you were",
+                    "amend that", "scrub that", "strike that last"}
+# Single-word landmark names that a preceding word turns into another thing ("car park", "bell tower").
+COMPOUND_MODIFIERS = {"car", "ball", "theme", "trailer", "business", "retail", "industrial", "skate", "amusement",
+                      "safari", "bell", "clock", "cell", "radio", "signal", "phone"}
+# Words that may stand between a correction or report verb and a headless relation ("she says across from ...").
+HEADLESS_OK = {"she", "he", "they", "says", "said", "reports", "reported", "say", "thinks", "think", "its", "it",
+               "is", "was", "actually", "rather", "now", "maybe", "probably", "definitely"}
+# Relation groups close enough to stand in for each other when the exact one finds nothing.
+LOOSE_EQUIVALENTS = {"attached to": "next to", "next to": "attached to"}
