@@ -137,7 +137,9 @@ RELATION_SYNONYMS: dict[str, list[str]] = {
                     "connected to", "adjoining", "adjoins", "adjoin", "attached onto", "stuck onto",
                     "sharing a wall with", "shares a wall with", "that shares a wall with", "built against",
                     "abutting", "abuts", "butting onto", "bolted onto", "tacked onto", "stuck on to",
-                    "built up against", "fixed onto", "part of the same building as", "joined up with"],
+                    "built up against", "fixed onto", "part of the same building as", "joined up with",
+                    "sharing a party wall with", "shares a party wall with", "that shares a party wall with",
+                    "party wall with", "built hard against", "built against", "backing on to"],
     "next to": ["next to", "next door to", "next door", "beside", "next building over from", "next one over from",
                 "next along from", "next one along from", "the next building over from", "next door along from", "besides", "alongside", "adjacent to", "right by",
                 "right next to", "just next to", "by", "neighbouring", "neighboring", "next door from",
@@ -147,7 +149,9 @@ RELATION_SYNONYMS: dict[str, list[str]] = {
                     "over the street from", "directly across from", "straight across from", "that faces",
                     "faces", "opposite of", "over the way from", "across the way", "on the other side of the road from",
                     "on the opposite side of the street from", "that looks across at", "across the road", "across the street",
-                    "over the road", "over the way"],
+                    "over the road", "over the way", "across the lane from", "over the lane from", "across the lane",
+                    "over the lane", "across the alley from", "across the track from", "over the track from",
+                    "across the green from"],
     "behind": ["behind", "round the back of", "around the back of", "at the back of", "in back of",
                "back of", "to the rear of", "at the rear of", "out back of", "directly behind", "right behind",
                "just behind", "backs onto", "backing onto", "that backs onto", "round behind", "out the back of",
@@ -156,7 +160,8 @@ RELATION_SYNONYMS: dict[str, list[str]] = {
     "inside": ["inside", "within"],
     "above": ["above", "on top of", "upstairs from", "overlooks", "overlooking", "overlook", "looks over",
               "looking over", "looks down on", "looking down on", "looking down over", "up above", "up from",
-              "higher than", "uphill from", "up the hill from"],
+              "higher than", "uphill from", "up the hill from", "looms over", "looming over", "looks out over",
+              "looking out over", "towers over", "towering over", "stands over", "sits above", "stands above"],
     "below": ["below", "under", "underneath", "beneath", "downstairs from", "down below", "overlooked by",
               "looked over by", "down from", "downhill from", "down the hill from", "at the foot of"],
     "upstream of": ["upstream of", "upstream from", "up the river from", "upriver of", "upriver from",
@@ -306,6 +311,8 @@ POSSESSIVE_RELATIONS = {("neighbour",): "next to", ("neighbor",): "next to", ("n
 
 # Words for people: "<person> collapsed" is a casualty, not a structural collapse.
 PERSON_NOUNS = ["man", "woman", "person", "someone", "somebody", "firefighter", "child", "kid", "he", "she",
+                "receptionist", "owner", "manager", "caller", "mother", "father", "dad", "mum", "wife", "husband",
+                "son", "daughter", "baby", "pensioner", "visitor", "cleaner", "guard", "volunteer", "medic",
                 "patient", "resident", "worker", "officer", "lady", "guy", "bloke", "fella", "casualty", "boy", "girl",
                 "customer", "driver", "student", "teacher", "nurse", "someone's", "somebody's"]
 for _p in PERSON_NOUNS:
