@@ -148,3 +148,21 @@ def test_a_model_that_only_falls_back_is_unavailable(tiny_split: Split) -> None:
     assert row["status"] == "unavailable"
     assert "connection refused" in row["reason"] and "fell back to builtin" in row["reason"]
     assert row["splits"] == {}
+
+
+def test_a_subset_refreshes_its_rows_and_keeps_the_others(table: dict, tiny_split: Split, tmp_path: Path,
+                                                           monkeypatch: pytest.MonkeyPatch) -> None:
+    import argparse
+
+    from lucifer.evals import backends as mod
+
+    old = dict(table)
+    old["backends"] = [{"backend": "llamacpp:slow", "status": "partial", "reason": "kept", "splits": {}},
+                       *[dict(r, reason="stale") for r in table["backends"] if r["backend"] == "rule"]]
+    (tmp_path / "backends.json").write_text(json.dumps(old))
+    monkeypatch.setattr(mod, "default_splits", lambda kb: [tiny_split])
+    args = argparse.Namespace(backends="rule", kb=None, llm_limit=2, out=str(tmp_path))
+    assert mod.cmd_eval_backends(args) == 0
+    rows = json.loads((tmp_path / "backends.json").read_text())["backends"]
+    assert [r["backend"] for r in rows] == ["llamacpp:slow", "rule"]
+    assert rows[0]["reason"] == "kept" and rows[1].get("reason") != "stale"

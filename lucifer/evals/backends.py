@@ -506,6 +506,15 @@ def cmd_eval_backends(args: argparse.Namespace) -> int:
     splits = default_splits(args.kb)
     table = build_table(backends, splits, args.llm_limit or None,
                         log=lambda m: print(m, file=sys.stderr, flush=True))
+    previous = Path(args.out) / "backends.json"
+    if args.backends and previous.is_file():
+        # a subset refreshes its rows and keeps the others (an LLM row can take an hour to redo)
+        old = json.loads(previous.read_text())
+        fresh = {r["backend"]: r for r in table["backends"]}
+        order = [r["backend"] for r in old.get("backends", [])] + [b for b in fresh if b not in
+                                                                    {r["backend"] for r in old.get("backends", [])}]
+        kept = {r["backend"]: r for r in old.get("backends", [])}
+        table["backends"] = [fresh.get(b) or kept[b] for b in order]
     paths = write_outputs(table, args.out)
     print(paths["md"].read_text())
     print("wrote " + ", ".join(str(p) for p in paths.values()))
