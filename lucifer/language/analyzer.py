@@ -462,76 +462,75 @@ class ReportAnalyzer:
 
     def _resolve_one(self, ex: Extraction, toks: Tokens, norms: tuple[str, ...], a: int, b: int, phrase: str,
                      flipped: bool, place_tokens: set[int], marker_tokens: set[int], inverse_pass: bool) -> None:
-        if True:
-            if any(i in place_tokens for i in range(a, b)):
-                return  # already inside a resolved description
-            anchor, anchor_end, pronoun = self._anchor_after(ex, norms, b)
-            if anchor is None and norms[a:b] in lx.IMPLICIT_ANCHOR and (b >= len(norms) or ex.tokens.clause_start[b]
-                                                                        or not any(p.start_tok == b for p in ex.places)):
-                # "the building next door": the anchor is the place last spoken of
-                before = [p for p in ex.places if p.end_tok <= a and p.status != "retracted"]
-                if before and not self._inverse_anchor(ex, norms, a):
-                    anchor, anchor_end, pronoun = max(before, key=lambda p: p.end_tok), b, True
-            if (anchor is None) != inverse_pass:
-                return
-            head_end = a
-            head_place = next((p for p in ex.places if p.end_tok == head_end and p.status == "active"), None)
-            if anchor is not None and head_place is not None:
-                # "the pharmacy next to the bakery": the place is named; the anchor is only a reference
-                if not pronoun:
-                    idx = ex.places.index(anchor)
-                    ex.places[idx] = replace(anchor, status="reference", reason=f"reference point for '{head_place.text}'")
-                return
-            head_start, words = self._head_before(toks, norms, head_end, place_tokens, marker_tokens)
-            head_text = " ".join(toks.tokens[j].text for j in range(head_start, head_end))
-            generic = bool(words) and any(w in lx.GENERIC_HEADS for w in words[-2:]) \
-                and self._cues.match_at(norms, head_end - 1) is None
-            if anchor is None:
-                # inverse: "the one (that) the garage sits behind"
-                if generic:
-                    return
-                found = self._inverse_anchor(ex, norms, a)
-                if found is None:
-                    return
-                anchor_p, hs, named = found
-                if named is True:
-                    ex.places[ex.places.index(anchor_p)] = replace(anchor_p, status="reference",
-                                                                   reason="reference point of a named place")
-                    return
-                head_words = " ".join(toks.tokens[j].text for j in range(hs, min(anchor_p.start_tok, a)))
-                target, via = self._follow(anchor_p.landmark, phrase, head_words, inverse=not flipped)
-                if target is None:
-                    return
-                if named != "pronoun":
-                    ex.places[ex.places.index(anchor_p)] = replace(anchor_p, status="reference",
-                                                                   reason=f"reference point: {via}")
-                new = self._mention(toks, hs, b, target, via=via)
-                ex.places.append(new)
-                place_tokens.update(range(hs, b))
-                return
-            if not generic:
-                # a cue (or nothing) before the relation: "man down across the street from the fire station"
-                if norms[a:b] in lx.AMBIGUOUS_HEADLESS or (words and not self._is_cue_end(norms, head_end)
-                                                           and not set(words) <= lx.HEADLESS_OK):
-                    return
-                head_start, head_text = a, ""
-            target, via = self._follow(anchor.landmark, phrase, head_text, inverse=flipped)
+        if any(i in place_tokens for i in range(a, b)):
+            return  # already inside a resolved description
+        anchor, anchor_end, pronoun = self._anchor_after(ex, norms, b)
+        if anchor is None and norms[a:b] in lx.IMPLICIT_ANCHOR and (b >= len(norms) or ex.tokens.clause_start[b]
+                                                                    or not any(p.start_tok == b for p in ex.places)):
+            # "the building next door": the anchor is the place last spoken of
+            before = [p for p in ex.places if p.end_tok <= a and p.status != "retracted"]
+            if before and not self._inverse_anchor(ex, norms, a):
+                anchor, anchor_end, pronoun = max(before, key=lambda p: p.end_tok), b, True
+        if (anchor is None) != inverse_pass:
+            return
+        head_end = a
+        head_place = next((p for p in ex.places if p.end_tok == head_end and p.status == "active"), None)
+        if anchor is not None and head_place is not None:
+            # "the pharmacy next to the bakery": the place is named; the anchor is only a reference
             if not pronoun:
                 idx = ex.places.index(anchor)
-                if target is None:
-                    ex.places[idx] = replace(anchor, status="reference",
-                                             reason=f"reference point of an unresolved '{phrase}' description")
-                    return
-                ex.places[idx] = replace(anchor, status="reference", reason=f"reference point: {via}")
-            elif target is None:
+                ex.places[idx] = replace(anchor, status="reference", reason=f"reference point for '{head_place.text}'")
+            return
+        head_start, words = self._head_before(toks, norms, head_end, place_tokens, marker_tokens)
+        head_text = " ".join(toks.tokens[j].text for j in range(head_start, head_end))
+        generic = bool(words) and any(w in lx.GENERIC_HEADS for w in words[-2:]) \
+            and self._cues.match_at(norms, head_end - 1) is None
+        if anchor is None:
+            # inverse: "the one (that) the garage sits behind"
+            if generic:
                 return
-            det_start = head_start
-            while det_start > 0 and norms[det_start - 1] in lx.DETERMINERS and not toks.clause_start[det_start] \
-                    and head_text and (det_start - 1) not in marker_tokens:
-                det_start -= 1
-            new = self._mention(toks, det_start, anchor_end, target, via=via)
+            found = self._inverse_anchor(ex, norms, a)
+            if found is None:
+                return
+            anchor_p, hs, named = found
+            if named is True:
+                ex.places[ex.places.index(anchor_p)] = replace(anchor_p, status="reference",
+                                                               reason="reference point of a named place")
+                return
+            head_words = " ".join(toks.tokens[j].text for j in range(hs, min(anchor_p.start_tok, a)))
+            target, via = self._follow(anchor_p.landmark, phrase, head_words, inverse=not flipped)
+            if target is None:
+                return
+            if named != "pronoun":
+                ex.places[ex.places.index(anchor_p)] = replace(anchor_p, status="reference",
+                                                               reason=f"reference point: {via}")
+            new = self._mention(toks, hs, b, target, via=via)
             ex.places.append(new)
-            place_tokens.update(range(det_start, anchor_end))
+            place_tokens.update(range(hs, b))
+            return
+        if not generic:
+            # a cue (or nothing) before the relation: "man down across the street from the fire station"
+            if norms[a:b] in lx.AMBIGUOUS_HEADLESS or (words and not self._is_cue_end(norms, head_end)
+                                                       and not set(words) <= lx.HEADLESS_OK):
+                return
+            head_start, head_text = a, ""
+        target, via = self._follow(anchor.landmark, phrase, head_text, inverse=flipped)
+        if not pronoun:
+            idx = ex.places.index(anchor)
+            if target is None:
+                ex.places[idx] = replace(anchor, status="reference",
+                                         reason=f"reference point of an unresolved '{phrase}' description")
+                return
+            ex.places[idx] = replace(anchor, status="reference", reason=f"reference point: {via}")
+        elif target is None:
+            return
+        det_start = head_start
+        while det_start > 0 and norms[det_start - 1] in lx.DETERMINERS and not toks.clause_start[det_start] \
+                and head_text and (det_start - 1) not in marker_tokens:
+            det_start -= 1
+        new = self._mention(toks, det_start, anchor_end, target, via=via)
+        ex.places.append(new)
+        place_tokens.update(range(det_start, anchor_end))
 
     def _resolve_possessives(self, ex: Extraction) -> None:
         """"the church's opposite number", "the health centre's neighbour"."""
@@ -858,11 +857,9 @@ class ReportAnalyzer:
         """A marker followed by a place retracts the last place before the marker."""
         toks = ex.tokens
         cue_spans = self._cue_starts(ex)
-        self._repair_kinds = {}
         norms = toks.norms(0, len(toks))
         for k, (a, b, _strong) in enumerate(ex.markers):
             kind = self._repair_kind(ex, k, cue_spans)
-            self._repair_kinds[k] = kind
             if kind not in ("place", "full"):
                 continue
             if b < len(norms) and norms[b] in lx.COORDINATORS and any(p.end_tok == a for p in ex.places):
