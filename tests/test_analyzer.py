@@ -50,6 +50,8 @@ def claims(an: ReportAnalyzer, text: str) -> list[tuple[str, str]]:
     ("fire at the place that the bus station sits behind", [("market square", "hazard")]),
     ("the area in front of the bus station is the assembly point", [("market square", "safe_zone")]),
     ("the building across from whatever's behind the warehouse is safe to shelter in", [("apartment block", "safe_zone")]),
+    # a position report names the place a following pronoun claims
+    ("Survey team standing by at the garage, it is safe.", [("garage", "safe_zone")]),
     # vocabulary the word lists miss, classified with MiniLM
     ("the wall of the garage is bowing badly", [("garage", "hazard")]),
     ("there's an old fella at the church who can't get up", [("church", "victim")]),

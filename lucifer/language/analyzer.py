@@ -1390,6 +1390,14 @@ class ReportAnalyzer:
                     pairs.extend(Claim(p, c) for p in seg_places[nxt] for c in cs)
                     claimed_places.update(p.start_tok for p in seg_places[nxt])
                     continue
+            first = next((norms[i] for i in range(a, b) if norms[i] not in lx.FILLERS), "")
+            if first in ("it", "its", "there", "thats", "theres") and k > 0:
+                # "standing by at the garage, it is safe": a position names the place the pronoun claims
+                here = [p for p in ex.places if p.reason.startswith("in transit") and segs[k - 1][0] <= p.start_tok < a
+                        and sentence_of[p.start_tok] == sentence_of[a]]
+                if here and not seg_usable.get(k - 1):
+                    pairs.extend(Claim(here[-1], c) for c in cs)
+                    continue
             target = self._target_for_cues(k, segs, seg_usable, seg_cues, sentence_of)
             if target is not None:
                 for q in seg_usable[target]:
