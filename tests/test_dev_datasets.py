@@ -1,4 +1,4 @@
-"""The hand-written dev4 grounding sets (Market Square and Riverbend) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2, dev3, dev4) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -10,21 +10,26 @@ import pytest
 import yaml
 
 ROOT = Path(__file__).resolve().parents[1]
-DEV4 = ROOT / "datasets" / "grounding" / "dev4"
+GROUNDING = ROOT / "datasets" / "grounding"
+MARKET_SQUARE = ROOT / "knowledge_base"
+RIVERBEND = ROOT / "knowledge_bases" / "riverbend"
+
+
+def _set(path: str, kb: Path, tag: str, counts: dict[str, int]) -> dict:
+    short = {"standard": "s", "messy": "m", "advanced_messy": "a"}
+    return {"file": GROUNDING / path, "kb": kb, "counts": counts,
+            "prefixes": {regime: f"{tag}-{short[regime]}-" for regime in counts}}
+
 
 SETS = {
-    "market_square": {
-        "file": DEV4 / "market_square.jsonl",
-        "kb": ROOT / "knowledge_base",
-        "prefixes": {"standard": "d4-s-", "messy": "d4-m-", "advanced_messy": "d4-a-"},
-        "counts": {"standard": 40, "messy": 40, "advanced_messy": 30},
-    },
-    "riverbend": {
-        "file": DEV4 / "riverbend.jsonl",
-        "kb": ROOT / "knowledge_bases" / "riverbend",
-        "prefixes": {"standard": "d4-rb-s-", "messy": "d4-rb-m-", "advanced_messy": "d4-rb-a-"},
-        "counts": {"standard": 15, "messy": 15, "advanced_messy": 15},
-    },
+    "dev2/market_square": _set("dev2/market_square.jsonl", MARKET_SQUARE, "d2",
+                               {"standard": 40, "messy": 40, "advanced_messy": 40}),
+    "dev2/riverbend": _set("dev2/riverbend.jsonl", RIVERBEND, "d2-rb",
+                           {"standard": 20, "messy": 20, "advanced_messy": 20}),
+    "dev3/market_square": _set("dev3/market_square.jsonl", MARKET_SQUARE, "d3", {"messy": 40, "advanced_messy": 60}),
+    "dev4/market_square": _set("dev4/market_square.jsonl", MARKET_SQUARE, "d4",
+                               {"standard": 40, "messy": 40, "advanced_messy": 30}),
+    "dev4/riverbend": _set("dev4/riverbend.jsonl", RIVERBEND, "d4-rb", {"standard": 15, "messy": 15, "advanced_messy": 15}),
 }
 
 
@@ -90,7 +95,7 @@ def test_counts_and_no_claim_share(name: str) -> None:
     assert Counter(r["regime"] for r in rows) == counts
     for regime, n in counts.items():
         empty = sum(1 for r in rows if r["regime"] == regime and not r["expected"])
-        # about 12% of every regime makes no groundable claim
+        # about 10% of every regime makes no groundable claim
         assert 0.05 * n <= empty <= 0.2 * n, (regime, empty)
 
 
