@@ -1128,11 +1128,7 @@ class ReportAnalyzer:
 
     def _apply_false_alarms(self, toks: Tokens, norms: tuple[str, ...], cues: list[CueMention]) -> list[CueMention]:
         """"... the smoke was a false alarm": every claim of that sentence is denied."""
-        sentence_of = []
-        sn = -1
-        for i in range(len(toks)):
-            sn += toks.sentence_start[i]
-            sentence_of.append(sn)
+        sentence_of = toks.sentence_of
         alarms = set()
         for phrase in lx.FALSE_ALARM:
             key = norm_phrase(phrase)
@@ -1359,12 +1355,7 @@ class ReportAnalyzer:
         for c in cues:
             if c.status == "active":
                 seg_cues.setdefault(seg_index[c.start_tok], []).append(c)
-        sentence_of = []
-        sn = -1
-        for i in range(len(toks)):
-            if toks.sentence_start[i]:
-                sn += 1
-            sentence_of.append(sn)
+        sentence_of = toks.sentence_of
         marker_tokens = {i for a, b, _ in ex.markers for i in range(a, b)}
         inactive_tokens = {i for p in ex.places if p.status != "active" for i in range(p.start_tok, p.end_tok)}
         cue_tokens = {i for c in cues for i in range(c.start_tok, c.end_tok)}

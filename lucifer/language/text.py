@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import itertools
 import re
 from collections.abc import Iterable
 from dataclasses import dataclass
@@ -48,6 +49,7 @@ class Tokens:
     gaps: tuple[str, ...]  # gaps[i] = raw text between token i-1 and token i (gaps[0]: before the first)
     sentence_start: tuple[bool, ...]  # token i starts a new sentence
     clause_start: tuple[bool, ...]  # token i starts a new clause (sentence starts included)
+    sentence_of: tuple[int, ...] = ()  # index of the sentence token i belongs to
 
     def __len__(self) -> int:
         return len(self.tokens)
@@ -75,7 +77,8 @@ def tokenize(text: str) -> Tokens:
         is_sent = i == 0 or (bool(_SENTENCE_END.search(g)) and not _PAUSE_AFTER_END.search(gap)) or "\n" in gap
         sent.append(is_sent)
         clause.append(is_sent or bool(_CLAUSE.search(gap.strip())) or bool(_CLAUSE.search(g)))
-    return Tokens(text, tuple(toks), tuple(gaps), tuple(sent), tuple(clause))
+    sentence_of = tuple(itertools.accumulate(int(x) for x in sent)) if sent else ()
+    return Tokens(text, tuple(toks), tuple(gaps), tuple(sent), tuple(clause), tuple(n - 1 for n in sentence_of))
 
 
 class PhraseMatcher(Generic[T]):
