@@ -289,8 +289,7 @@ async def fallback_builtin(state: GroundingState, runtime: Runtime[GroundingCont
     """The chat model failed or stayed invalid: return the builtin analysis, with a status."""
     t0 = time.perf_counter()
     res = _res(runtime)
-    ex = res.analyzer.extract(state.report)
-    cl = res.analyzer.classify(ex)
+    cl = res.analyzer.classify(_extraction(state))  # extract_places already ran the builtin analysis
     objects: dict[tuple[str, str], dict[str, Any]] = {}
     for c in cl.claims:
         objects.setdefault(c.key, _claim_dict(c.place, c.cue, "builtin-fallback") | {"cells": res.kb.cells_of(c.place.landmark)})
