@@ -88,10 +88,9 @@ class Grounder:
             return
         async with self._reload_lock:
             if kb_fingerprint(self.kb_dir) != self.resources.kb.fingerprint:
-                chat, baseline = self.resources._chat_model, None
+                chat = self.resources._chat_model  # the chat model does not depend on the KB; baselines do
                 await asyncio.to_thread(self._load)  # a broken edit raises KBError; the old KB stays
                 self.resources._chat_model = chat
-                self.resources._baseline = baseline
 
     async def _graph_for_run(self) -> Any:
         if self._store is None:
