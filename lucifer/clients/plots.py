@@ -21,6 +21,16 @@ def _plt() -> Any:
     return plt
 
 
+def _save(fig: Any, path_png: str | Path) -> Path:
+    """Lay out, write (creating the folder) and close a figure."""
+    fig.tight_layout()
+    out = Path(path_png)
+    out.parent.mkdir(parents=True, exist_ok=True)
+    fig.savefig(out)
+    _plt().close(fig)
+    return out
+
+
 def plot_episode(
     path_png: str | Path,
     *,
@@ -94,12 +104,7 @@ def plot_episode(
         plt.Line2D([], [], marker="*", color="#fdb863", mec="black", ls="", markersize=12, label="start"),
     ]
     ax.legend(handles=handles, loc="upper center", bbox_to_anchor=(0.5, -0.06), ncol=2, fontsize=7, frameon=False)
-    fig.tight_layout()
-    out = Path(path_png)
-    out.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(out)
-    plt.close(fig)
-    return out
+    return _save(fig, path_png)
 
 
 def plot_ablation(path_png: str | Path, result: Mapping[str, Any], title: str | None = None) -> Path:
@@ -125,12 +130,7 @@ def plot_ablation(path_png: str | Path, result: Mapping[str, Any], title: str | 
     ax.set_ylabel("percent (mean ± std over runs)")
     ax.set_title(title or f"{result['client']}: {result['runs']} runs × {result['episodes']} episodes", fontsize=10)
     ax.legend(ncol=4, fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.08), frameon=False)
-    fig.tight_layout()
-    out = Path(path_png)
-    out.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(out)
-    plt.close(fig)
-    return out
+    return _save(fig, path_png)
 
 
 def plot_curves(path_png: str | Path, curves: Mapping[str, Sequence[float]], title: str, window: int = 50) -> Path:
@@ -150,9 +150,4 @@ def plot_curves(path_png: str | Path, curves: Mapping[str, Sequence[float]], tit
     ax.set_ylim(0, 102)
     ax.set_title(title, fontsize=10)
     ax.legend(fontsize=8)
-    fig.tight_layout()
-    out = Path(path_png)
-    out.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(out)
-    plt.close(fig)
-    return out
+    return _save(fig, path_png)
