@@ -242,7 +242,8 @@ class ReportAnalyzer:
             places.append(self._mention(toks, a, b, landmark))
         places.extend(self._partial_names(toks, norms, {i for p in places for i in range(p.start_tok, p.end_tok)}))
         for idx, p in enumerate(places):
-            if p.end_tok < len(norms) and norms[p.end_tok] in lx.MODIFIED_BY and not toks.clause_start[p.end_tok]:
+            if p.end_tok < len(norms) and norms[p.end_tok] in lx.MODIFIED_BY and not toks.clause_start[p.end_tok] \
+                    and norms[p.end_tok : p.end_tok + 2] not in lx.PART_OF_PLACE:
                 places[idx] = replace(p, status="reference", reason=f"modifier of '{toks.tokens[p.end_tok].text}'")
         starts = self._false_starts(toks, {i for p in places for i in range(p.start_tok, p.end_tok)})
         for fs in starts:
@@ -389,6 +390,12 @@ class ReportAnalyzer:
                                   inverse_pass=pass_no == 2)
         if self.embedder is not None and self.kb.relations:
             self._resolve_open(ex, toks, norms, place_tokens, marker_tokens)
+            self._resolve_open_inverse(ex, toks, norms, place_tokens, marker_tokens)
+        for d in [p for p in ex.places if p.via is not None and p.status == "active"]:
+            for idx, p in enumerate(ex.places):
+                if p.via is None and p.status == "active" and d.start_tok <= p.start_tok and p.end_tok <= d.end_tok:
+                    # "the landing it faces": the head word named the place the description reaches
+                    ex.places[idx] = replace(p, status="reference", reason=f"part of the description '{d.text}'")
 
     OPEN_RELATION_MIN_SIM = 0.55
     OPEN_RELATION_HINT_SIM = 0.35
@@ -460,6 +467,58 @@ class ReportAnalyzer:
             ex.places.append(self._mention(toks, head_start, anchor.end_tok, target, via=f"{via} ~ '{link}'"))
             place_tokens.update(range(head_start, anchor.end_tok))
 
+    def _resolve_open_inverse(self, ex: Extraction, toks: Tokens, norms: tuple[str, ...], place_tokens: set[int],
+                              marker_tokens: set[int]) -> None:
+        """"the shop the pharmacy is fixed to": a generic head, the anchor, then an unknown linking
+        phrase ending the clause, matched to the KB's relation forms with MiniLM and read backwards."""
+        cue_tokens = {i for a, b, (_, src) in self._cues.find_all(norms, place_tokens | marker_tokens)
+                      if src != "neutral" for i in range(a, b)}
+        for anchor in [p for p in ex.places if p.status == "active" and p.via is None]:
+            k = anchor.start_tok
+            while k > 0 and norms[k - 1] in lx.DETERMINERS | {"that", "which"} and anchor.start_tok - k < 2:
+                k -= 1
+            if k == 0 or k == anchor.start_tok or norms[k - 1] not in lx.GENERIC_HEADS or (k - 1) in place_tokens \
+                    or toks.clause_start[k]:
+                continue
+            hs = k - 1
+            while hs > 0 and norms[hs - 1] in lx.DETERMINERS and (hs - 1) not in marker_tokens:
+                hs -= 1
+            if hs == k - 1:
+                continue  # "the shop the pharmacy ...", not "shop the pharmacy"
+            e = anchor.end_tok
+            m = None
+            for end in range(e + 2, min(e + 6, len(norms)) + 1):
+                if any(i in place_tokens or i in marker_tokens or i in cue_tokens or (i > e and toks.clause_start[i])
+                       for i in range(e, end)):
+                    break
+                if norms[end - 1] in lx.RELATION_ENDINGS and (
+                        end == len(norms) or toks.clause_start[end] or norms[end] in lx.COPULAS | {"as", "now"}
+                        or end in cue_tokens):
+                    m = end
+                    break
+            if m is None:
+                continue
+            link = " ".join(toks.tokens[i].text.lower() for i in range(e, m) if norms[i] not in lx.INVERSE_VERBS) \
+                or " ".join(toks.tokens[i].text.lower() for i in range(e, m))
+            if self._relations.match_at(norms, m - 1) is not None and m - e <= 2:
+                continue  # a known phrase: the table-driven passes own it
+            mat, meta = self._relation_texts()
+            sims = mat @ self.embedder.embed_one(link)  # type: ignore[union-attr]
+            best = int(np.argmax(sims))
+            if sims[best] < self.OPEN_RELATION_MIN_SIM:
+                continue
+            phrase, inverse = meta[best]
+            if any(lx.ANTONYMS.get(w) in phrase.split() for w in link.split()):
+                inverse = not inverse
+            head = toks.tokens[k - 1].text
+            target, via = self._follow(anchor.landmark, phrase, head, inverse=not inverse)
+            if target is None:
+                continue
+            idx = ex.places.index(anchor)
+            ex.places[idx] = replace(anchor, status="reference", reason=f"reference point: {via} (matched '{link}')")
+            ex.places.append(self._mention(toks, hs, m, target, via=f"{via} ~ '{link}'"))
+            place_tokens.update(range(hs, m))
+
     def _resolve_one(self, ex: Extraction, toks: Tokens, norms: tuple[str, ...], a: int, b: int, phrase: str,
                      flipped: bool, place_tokens: set[int], marker_tokens: set[int], inverse_pass: bool) -> None:
         if any(i in place_tokens for i in range(a, b)):
@@ -486,8 +545,8 @@ class ReportAnalyzer:
         generic = bool(words) and any(w in lx.GENERIC_HEADS for w in words[-2:]) \
             and self._cues.match_at(norms, head_end - 1) is None
         if anchor is None:
-            # inverse: "the one (that) the garage sits behind"
-            if generic:
+            # inverse: "the one (that) the garage sits behind", "the row it shares a wall with"
+            if generic and not (words and words[-1] in ("it", "they")):
                 return
             found = self._inverse_anchor(ex, norms, a)
             if found is None:
@@ -548,6 +607,17 @@ class ReportAnalyzer:
                     ex.places[idx] = replace(p, status="reference", reason=f"reference point: {via}")
                     ex.places.append(self._mention(toks, p.start_tok, p.end_tok + len(key), target, via=via))
                     break
+            else:
+                # "the church's across-the-road neighbour": a relation phrase used as a modifier
+                hit = self._relations.match_at(norms, p.end_tok) if p.end_tok < len(norms) else None
+                if hit is None or hit[0] >= len(norms) or norms[hit[0]] not in lx.GENERIC_HEADS:
+                    continue
+                phrase, flipped = hit[1]
+                target, via = self._follow(p.landmark, phrase, toks.tokens[hit[0]].text, inverse=flipped)
+                if target is None:
+                    continue
+                ex.places[idx] = replace(p, status="reference", reason=f"reference point: {via}")
+                ex.places.append(self._mention(toks, p.start_tok, hit[0] + 1, target, via=via))
 
     def _is_cue_end(self, norms: tuple[str, ...], end: int) -> bool:
         """Does a cue phrase end right before token ``end`` (allowing prepositions in between)?"""
@@ -614,14 +684,15 @@ class ReportAnalyzer:
         if anchor is None and j > 0 and norms[j - 1] in ("it", "its") and j - 1 > 0 \
                 and norms[j - 2] in lx.GENERIC_HEADS | {"that", "which"}:
             # "the building it sits next to": the pronoun is the anchor
-            before = [p for p in ex.places if p.end_tok <= j - 1 and p.status != "reference"]
+            hs = j - 2
+            while hs > 0 and norms[hs] in ("that", "which"):
+                hs -= 1
+            while hs > 0 and norms[hs - 1] in lx.DETERMINERS:
+                hs -= 1
+            # the antecedent is spoken before the head ("the landing it faces": not the landing)
+            before = [p for p in ex.places if p.end_tok <= hs and p.status != "reference"]
             if before:
                 ante = max(before, key=lambda p: p.end_tok)
-                hs = j - 2
-                while hs > 0 and norms[hs] in ("that", "which"):
-                    hs -= 1
-                while hs > 0 and norms[hs - 1] in lx.DETERMINERS:
-                    hs -= 1
                 if norms[hs] in lx.GENERIC_HEADS or (hs + 1 < len(norms) and norms[hs + 1] in lx.GENERIC_HEADS):
                     return ante, hs, "pronoun"  # type: ignore[return-value]
         if anchor is None:
@@ -1018,10 +1089,15 @@ class ReportAnalyzer:
         texts, regions = [], []
         all_cues = getattr(self, "_all_cues_now", [])
         kept = []
+        negated = {i for i, w in enumerate(toks.norms(0, len(toks))) if w in lx.NEGATORS}
+        for a, b, _ in self._negators.find_all(toks.norms(0, len(toks))):
+            negated.update(range(a, b))
         for p in todo:
             a, b = self._predicate_region(ex, p)
             if any(a <= c.start_tok < b for c in all_cues) or any(a <= ma < b for ma, _, _ in ex.markers):
                 continue  # the vocabulary (or a repair) already spoke here; the fallback stays silent
+            if any(a <= i < b for i in negated):
+                continue  # "nobody home at the flats": a negated predicate is no claim to guess at
             kept.append(p)
         todo = kept
         if not todo:
@@ -1194,6 +1270,14 @@ class ReportAnalyzer:
                 break
             k += 1
             steps += 1
+        if cancelled_by is None and k < len(norms) and toks.clause_start[k] and k > cue.end_tok:
+            # "the flooding at the cafe, it's, it's drained now": the next clause says it of the same thing
+            j = k
+            while j < len(norms) and j - k < 6 and norms[j] in lx.BACK_REFERENCE_WORDS | lx.FILLERS:
+                j += 1
+            h = self._cancel.match_at(norms, j) if j > k and j < len(norms) else None
+            if h is not None and (h[0] >= len(norms) or toks.clause_start[h[0]] or norms[h[0]] in ("now", "completely")):
+                cancelled_by = h[1]
         if negated_by is None and cancelled_by is None:
             return cue
         why = negated_by or cancelled_by

@@ -46,7 +46,8 @@ flashover|flashover risk|backdraft|backdraft risk|spongy|floor's spongy|leaning|
 gas main|water's up|water up to|up to the windowsills|smoke logged|smoke logging|heavy fire|fire showing|
 fully developed fire|ammonia|ammonia leak|asbestos|unstable chimney|hazmat incident|arcing|
 fuel pouring|pouring fuel|roof's going|roof is going|everyone out|get everyone out|evacuate|evacuating|
-smell of gas|strong smell of gas|gas smell|water damage|waist deep|chest deep|electrical hazard|exposed wiring
+smell of gas|strong smell of gas|gas smell|water damage|waist deep|chest deep|electrical hazard|exposed wiring|
+hot zone|exclusion zone|inner cordon
 """.replace("\n", ""))
 
 _add(DESIRABLE, """
@@ -57,7 +58,7 @@ staging point|triage|triage area|first aid post|first aid station|aid station|re
 passable|good to go|accessible|open route|route open|checked and safe|stable|casualty clearing station|
 clearing station|welfare centre|welfare center|rest centre|rest center|green for entry|safe for entry|first aid point|
 rvp|designated rvp|searched and signed off|use|use it|use it for shelter|signed off|cleared and marked|safe haven|casualty collection point|
-structurally sound|intact|usable|refuge|sanctuary|holding area|collection point|gathering point
+structurally sound|intact|usable|refuge|sanctuary|holding area|collection point|gathering point|cold zone
 """.replace("\n", ""))
 
 _add(CRITICAL, """
@@ -105,12 +106,18 @@ CANCEL_AFTER = ["is out", "s out", "are out", "was out", "put out", "out now", "
                 "all rescued", "rescued", "evacuated", "got out", "out safely", "accounted for",
                 "no longer"]
 
+# Words that open a clause speaking again of the thing just named ("..., it's drained now").
+BACK_REFERENCE_WORDS = {"it", "its", "s", "is", "has", "been", "thats", "that", "was", "they", "theyre", "are", "re",
+                        "have", "ve", "now", "all", "been", "finally", "fully"}
+
 # Phrases that contain cue words but claim nothing ("the smoke alarm went off", "fire crew on site").
 NEUTRAL_PHRASES = ["smoke alarm", "smoke alarms", "fire alarm", "fire alarms", "fire exit", "fire escape",
                    "fire brigade", "fire crew", "fire engine", "fire truck", "fire service", "fire department",
                    "fire team", "firefighter", "firefighters", "fire fighter", "fire fighters", "fire hydrant",
                    "fire door", "gas mask", "gas masks", "safe word", "safety officer", "clear the area",
-                   "all units", "flood light", "floodlight", "floodlights", "rescue team", "rescue teams"]
+                   "all units", "flood light", "floodlight", "floodlights", "rescue team", "rescue teams",
+                   "took everyone out", "got everyone out", "brought everyone out", "had everyone out",
+                   "nobody home", "no one home", "nobody at home", "no one at home"]
 
 # Whole-report "nothing to see" markers that cancel every claim in their sentence.
 FALSE_ALARM = ["false alarm", "never mind", "nevermind", "disregard my last", "disregard the last report",
@@ -206,7 +213,8 @@ GENERIC_HEADS = {
     "park", "field", "ground", "grounds", "point", "thing", "bit", "side", "corner", "room",
     "space", "green", "lawn", "garden", "gardens", "road", "street", "alley", "terrace", "plot", "land", "apartments",
     "flats", "bay", "wing", "hotel", "inn", "library", "hospital", "quarter", "section", "zone", "ones",
-    "neighbour", "neighbor", "door", "location", "address", "greenspace", "premise", "whatever",
+    "neighbour", "neighbor", "door", "location", "address", "greenspace", "premise", "whatever", "works", "work",
+    "row", "terrace", "parade", "arcade", "kiosk", "stall", "lodge", "chapel", "depot",
 }
 
 FILLERS = {"uh", "um", "er", "erm", "ah", "eh", "hmm", "like", "so", "okay", "ok", "well", "yeah", "right",
@@ -233,6 +241,9 @@ INSTRUCTION_WORDS = {"instruction", "instructions", "previous", "every", "everyt
 # Nouns after a place name that make the name a modifier ("pharmacy team reports ...").
 MODIFIED_BY = {"team", "crew", "unit", "squad", "staff", "manager", "owner", "workers", "worker", "group",
                "side", "entrance", "exit", "car", "truck", "van", "bus", "sign", "road", "street", "lane"}
+
+# Words after a place that name a part of it, not another thing ("the surgery car park").
+PART_OF_PLACE = {("car", "park"), ("car", "parks")}
 
 # Relation phrases that may leave their anchor implicit ("the building next door").
 IMPLICIT_ANCHOR = {("next", "door"), ("next", "door", "to"), ("opposite",), ("across", "the", "road"),
