@@ -544,6 +544,12 @@ class ReportAnalyzer:
         head_text = " ".join(toks.tokens[j].text for j in range(head_start, head_end))
         generic = bool(words) and any(w in lx.GENERIC_HEADS for w in words[-2:]) \
             and self._cues.match_at(norms, head_end - 1) is None
+        if not generic and words and len(words) <= 3 and head_start > 0 and norms[head_start - 1] in lx.ARTICLES \
+                and norms[a:b] not in lx.AMBIGUOUS_HEADLESS:
+            # "the stretch seaward of the fish market": any plain noun after an article heads a description
+            closed = lx.PREPOSITIONS | lx.COPULAS | lx.FILLERS | lx.PRONOUNS | lx.INVERSE_VERBS
+            generic = all(w.isalpha() and w not in closed for w in words) and len(words[-1]) >= 3 \
+                and not any(self._cues.match_at(norms, j) is not None for j in range(head_start, head_end))
         if anchor is None:
             # inverse: "the one (that) the garage sits behind", "the row it shares a wall with"
             if generic and not (words and words[-1] in ("it", "they")):
@@ -1580,6 +1586,16 @@ def _relation_forms(phrase: str) -> list[tuple[str, bool]]:
     """
     words = phrase.split()
     out: list[tuple[str, bool]] = [(phrase, False)]
+    # direction words: "seaward of" is also "on the sea side of"; "landward of" reads it backwards
+    for i, w in enumerate(words):
+        if w not in lx.DIRECTION_FAMILIES:
+            continue
+        tail = words[i + 1 :]
+        tails = [tail] if not tail or tail[0] not in ("of", "from") else [["of"], ["from"]]
+        for family, inverse in ((w, False), (lx.OPPOSITE_DIRECTION[w], True)):
+            for member in lx.DIRECTION_FAMILIES[family]:
+                for t in ([[]] if member in lx.BARE_DIRECTIONS else tails):
+                    out.append((" ".join(words[:i] + [member] + t), inverse))
     # antonym swap reads the relation backwards: "upstream of" -> "downstream of"
     swapped = [lx.ANTONYMS.get(w, w) for w in words]
     if swapped != words:

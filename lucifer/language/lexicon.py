@@ -187,7 +187,26 @@ ANTONYMS = {"upstream": "downstream", "downstream": "upstream", "upriver": "down
             "south": "north", "east": "west", "west": "east", "uphill": "downhill", "downhill": "uphill",
             "before": "after", "after": "before", "upstairs": "downstairs", "downstairs": "upstairs",
             "front": "back", "back": "front", "inside": "outside", "outside": "inside", "higher": "lower",
-            "lower": "higher", "feeds": "fed", "supplies": "supplied"}
+            "lower": "higher", "feeds": "fed", "supplies": "supplied", "seaward": "landward",
+            "landward": "seaward", "inland": "seaward", "uphill": "downhill", "downhill": "uphill"}
+# Direction words of relation names, each with the ways a report says it; a relation named with
+# one ("seaward_of", "uphill_from") is also matched by the others, and backwards by the opposite family.
+DIRECTION_FAMILIES: dict[str, list[str]] = {
+    "seaward": ["seaward", "seawards", "on the seaward side", "on the sea side", "out to sea", "nearer the sea",
+                "further out", "on the water side"],
+    "landward": ["landward", "landwards", "inland", "on the landward side", "on the land side", "shoreward",
+                 "on the inland side", "further inland", "on the shore side"],
+    "uphill": ["uphill", "up the hill", "above", "higher up", "further up the hill", "up the slope", "upslope"],
+    "downhill": ["downhill", "down the hill", "below", "beneath", "lower down", "further down the hill",
+                 "down the slope", "downslope"],
+    "upstream": ["upstream", "upriver", "up the river", "further up the river", "up the stream"],
+    "downstream": ["downstream", "downriver", "down the river", "further down the river", "down the stream"],
+}
+OPPOSITE_DIRECTION = {"seaward": "landward", "landward": "seaward", "uphill": "downhill", "downhill": "uphill",
+                      "upstream": "downstream", "downstream": "upstream"}
+# Direction words that stand alone, without "of" / "from" ("the houses above the net loft").
+BARE_DIRECTIONS = {"above", "below", "beneath"}
+
 SYMMETRIC_HINTS = ("next", "adjacent", "beside", "across", "opposite", "adjoin", "near", "attached", "connected",
                    "joined", "facing", "neighbo", "abut", "border", "touch", "share", "bord")
 
@@ -219,6 +238,7 @@ GENERIC_HEADS = {
 
 FILLERS = {"uh", "um", "er", "erm", "ah", "eh", "hmm", "like", "so", "okay", "ok", "well", "yeah", "right",
            "just", "basically", "kinda", "sorta", "literally", "over", "copy", "roger", "base", "team"}
+ARTICLES = {"the", "a", "an", "that", "this", "those", "these"}
 DETERMINERS = {"the", "a", "an", "that", "this", "those", "these", "its", "their", "our", "some", "old", "little"}
 PREPOSITIONS = {"at", "in", "on", "inside", "near", "from", "by", "outside", "behind", "around", "into",
                 "within", "of", "to", "towards", "toward", "under", "over", "across", "through", "beside",
