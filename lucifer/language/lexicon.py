@@ -47,7 +47,18 @@ gas main|water's up|water up to|up to the windowsills|smoke logged|smoke logging
 fully developed fire|ammonia|ammonia leak|asbestos|unstable chimney|hazmat incident|arcing|
 fuel pouring|pouring fuel|roof's going|roof is going|everyone out|get everyone out|evacuate|evacuating|
 smell of gas|strong smell of gas|gas smell|water damage|waist deep|chest deep|electrical hazard|exposed wiring|
-hot zone|exclusion zone|inner cordon
+hot zone|exclusion zone|inner cordon|wall down|walls down|roof's in|roof is in|roof's gone|roof has gone|
+roof's off|shedding bricks|shedding slates|unstable masonry|masonry falling|falling masonry|flooded out|mud slide|
+slumping|waterlogged|water logged|halfway up|burst main|burst pipe|pipe burst|pipe's burst|water everywhere|
+bowing out|bowing|water coming over|coming over the|ripping through|smoke-logged|fully alight|jammed open|
+floor's gone|floor has gone|floor's gone through|gone through the floor|sinking|subsiding|subsidence|cracked right across|
+a crack|crack right across|cracks|venting|hissing|gas bottles|leaking fuel|diesel slick|slick|fuel slick|
+jammed shut|jammed|locked|padlocked|chained|chained shut|can't get in|cannot get in|can't get into|cannot get into|
+can't get through|cannot get through|can't get along|cannot get along|can't get at|can't be got at|
+no access|no vehicle access|no way in|no way through|no way onto|no way out|inaccessible|not passable|
+no through route|piled across|right across it|lying across|come down across|came down across|
+blocking|blocks the|blocked off|cordoned off|shed its load|gridlocked|choked with|full of parked cars|
+can't reach|cannot reach|unable to reach|unable to get in|can't access|cannot access|washed away|
 """.replace("\n", ""))
 
 _add(DESIRABLE, """
@@ -58,7 +69,10 @@ staging point|triage|triage area|first aid post|first aid station|aid station|re
 passable|good to go|accessible|open route|route open|checked and safe|stable|casualty clearing station|
 clearing station|welfare centre|welfare center|rest centre|rest center|green for entry|safe for entry|first aid point|
 rvp|designated rvp|searched and signed off|use|use it|use it for shelter|signed off|cleared and marked|safe haven|casualty collection point|
-structurally sound|intact|usable|refuge|sanctuary|holding area|collection point|gathering point|cold zone
+structurally sound|intact|usable|refuge|sanctuary|holding area|collection point|gathering point|cold zone|
+welfare point|holding point|muster point|muster station|assembly point|assembly area|evacuee assembly area|
+reception centre|reception center|rest center|high ground|taking evacuees|taking in evacuees|open as a rest centre|
+opened as a rest centre|safe ground|dry and safe|bone dry|warming centre|warm and dry|sheltering there|
 """.replace("\n", ""))
 
 _add(CRITICAL, """
@@ -84,7 +98,12 @@ head wound|head injury|hurt bad|badly hurt|walking wounded|screaming inside|kids
 smoke inhalation|persons reported|person reported|p1|p2|p3|p1s|p2s|p1 patient|p2 patient|priority one|cpr|
 cpr in progress|a body|body|bodies|non ambulatory|non-ambulatory|overcome|officer down|firefighter down|
 occupants unaccounted for|entrapment|trapped occupant|casualty pinned|
-person in the water|in the water|unaccounted for|still inside|not responding|no pulse|crush injury|burns
+person in the water|in the water|unaccounted for|still inside|not responding|no pulse|crush injury|burns|
+piw|chest pain|chest pains|in difficulty|in difficulties|not accounted for|clinging to|clinging on|broken hip|
+broken ankle|broken wrist|head injury|fractured|fracture|crushed|crushed foot|crushed leg|concussion|
+can hear someone|can hear her|can hear him|can hear them|can hear voices|hear someone|hear her|hear him|
+hear voices|waving at us|waving to us|calling from|shouting from|trapped under|under the timbers|overdue|
+gone under|went under|swept away by|in the river|in the sea|hypothermia|casualty recovered|recovered from the water|swept away
 """.replace("\n", ""))
 
 # "collapsed" alone is structural (hazard); "collapsed inside" / "passed out" is a person.
