@@ -1172,8 +1172,11 @@ class ReportAnalyzer:
         for n, (a, b) in enumerate(sentences):
             tail = toks.gaps[b] if b < len(toks) else toks.text[toks.tokens[b - 1].end :]
             if "?" in tail:
-                # only the clause that asks: "Control, is the church still open?"; "or is it the flats?" repairs
-                start = max((i for i in range(a, b) if toks.clause_start[i]), default=a)
+                # only the clause that asks: "Control, is the church still open?"; "or is it the flats?" repairs;
+                # a sentence that opens with the question word asks all through ("Which is the rest centre, ...?")
+                opener = next((i for i in range(a, b) if norms[i] not in lx.FILLERS), a)
+                start = a if norms[opener] in lx.WH_OPENERS and not any(a <= m < b for m in marker_starts) \
+                    else max((i for i in range(a, b) if toks.clause_start[i]), default=a)
                 first = next((i for i in range(start, b) if norms[i] not in lx.FILLERS), start)
                 if norms[first] in lx.QUESTION_OPENERS and first not in marker_starts:
                     asked.update(range(start, b))
@@ -1282,8 +1285,22 @@ class ReportAnalyzer:
             while j < len(norms) and j - k < 6 and norms[j] in lx.BACK_REFERENCE_WORDS | lx.FILLERS:
                 j += 1
             h = self._cancel.match_at(norms, j) if j > k and j < len(norms) else None
+            if h is None and j > k and j < len(norms) and norms[j] == "out":
+                h = (j + 1, "out")
             if h is not None and (h[0] >= len(norms) or toks.clause_start[h[0]] or norms[h[0]] in ("now", "completely")):
                 cancelled_by = h[1]
+        if negated_by is None:
+            j = cue.start_tok - 1
+            while j >= 0 and norms[j] in lx.DETERMINERS | lx.FILLERS:
+                j -= 1
+            if j >= 1 and norms[j] == "on" and norms[j - 1] == "negative":
+                negated_by = "negative on"  # "negative on the fire at the ice house"
+        if negated_by is None and cancelled_by is None and self.kb.category_by_name[cue.category].role == Role.DESIRABLE:
+            j = cue.start_tok - 1
+            while j >= 0 and norms[j] in lx.FILLERS | {"be", "been", "all"}:
+                j -= 1
+            if j >= 0 and (norms[j] in lx.INTENT_WORDS or norms[j] == "to" and j > 0 and norms[j - 1] in lx.INTENT_TO):
+                negated_by = norms[j]  # "crews will clear shortly": not yet a fact
         if negated_by is None and cancelled_by is None:
             return cue
         why = negated_by or cancelled_by

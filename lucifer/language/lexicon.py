@@ -375,6 +375,15 @@ QUESTION_OPENERS = {"is", "are", "was", "were", "do", "does", "did", "can", "cou
                     "which", "how", "why", "any", "anyone", "anybody", "should", "will", "would", "shall", "may", "isnt",
                     "arent", "whats", "wheres", "whos", "hows"}
 
+# Question words that make a whole "...?" sentence a question when they open it.
+WH_OPENERS = {"which", "what", "where", "who", "whats", "wheres", "whos", "how", "hows", "why", "is", "are", "was",
+              "were", "do", "does", "did", "can", "could", "should", "will", "would", "has", "have", "any", "anyone",
+              "anybody", "isnt", "arent"}
+# Words before a desirable cue that make it a plan, not a fact ("will clear shortly", "going to secure").
+INTENT_WORDS = {"will", "gonna", "should", "shall", "might", "may", "could", "would", "hoping", "hope",
+                "planning", "plan", "trying", "try", "ll"}
+INTENT_TO = {"going", "need", "needs", "want", "wants", "trying", "plan", "planning", "have", "has", "hope", "hoping"}
+
 # Corrections that withdraw the claim before them even with nothing after ("cancel that, they've moved it").
 WITHDRAW_MARKERS = {"cancel that", "scratch that", "disregard that", "strike that", "belay that", "as you were",
                     "amend that", "scrub that", "strike that last"}
