@@ -13,6 +13,8 @@ from lucifer.embeddings import get_embedder
 from lucifer.kb import load_kb
 from lucifer.language.analyzer import ReportAnalyzer, analyze
 
+HARBOURSIDE = ROOT / "knowledge_bases" / "harbourside"
+
 
 @pytest.fixture(scope="module")
 def analyzer() -> ReportAnalyzer:
@@ -55,6 +57,15 @@ def claims(an: ReportAnalyzer, text: str) -> list[tuple[str, str]]:
     # vocabulary the word lists miss, classified with MiniLM
     ("the wall of the garage is bowing badly", [("garage", "hazard")]),
     ("there's an old fella at the church who can't get up", [("church", "victim")]),
+    # inverse descriptions with a linking phrase no table lists, matched with MiniLM
+    ("we're using the shop the pharmacy is fixed to as the casualty collection point", [("bakery", "safe_zone")]),
+    # a relation phrase used as a modifier after a possessive
+    ("heavy fire showing from the church's across-the-road neighbour", [("cafe", "hazard")]),
+    # a pronoun anchor is spoken before the head, not inside it
+    ("smoke at the church, and the cafe it faces is the assembly point", [("cafe", "safe_zone"), ("church", "hazard")]),
+    # a member of the public placed at the scene
+    ("smoke showing at the bakery, and there's an elderly man at the upstairs window",
+     [("bakery", "hazard"), ("bakery", "victim")]),
 ])
 def test_phenomena(analyzer, text, expected):
     assert claims(analyzer, text) == expected
@@ -69,6 +80,11 @@ def test_phenomena(analyzer, text, expected):
     "the fire at the bakery is out",
     "no one is trapped at the school",
     "fire at the casino",
+    "the flooding at the cafe, it's, it's drained now",
+    "negative on the smoke at the clinic, it was steam from a vent",
+    "Which is the rest centre now, the church or the school?",
+    "crews will clear the school shortly",
+    "nobody home at the flats, they're all out",
 ])
 def test_no_claim(analyzer, text):
     assert claims(analyzer, text) == []
@@ -88,13 +104,23 @@ def test_relation_names_of_an_unseen_kb_are_understood():
     assert claims(an, "the structure the lock keeper's cottage overlooks has a bank breach") == [("weir", "threat")]
 
 
+def test_kb_with_direction_relations_and_two_undesirable_categories():
+    """Harbourside names its relations seaward_of / uphill_from and splits danger into peril and no_access."""
+    an = ReportAnalyzer(load_kb(HARBOURSIDE), get_embedder())
+    assert claims(an, "casualty on the stretch seaward of the fish market") == [("quay", "casualty")]
+    assert claims(an, "gas leak in the building landward of the ferry terminal") == [("harbour master's office", "peril")]
+    assert claims(an, "the school gates are chained shut, no way in") == [("primary school", "no_access")]
+    assert claims(an, "smoke pouring from the chapel") == [("chapel", "peril")]
+
+
 def test_every_shipped_report_is_analyzed_without_error(analyzer):
     riverbend = ReportAnalyzer(load_kb(RIVERBEND), get_embedder())
+    harbourside = ReportAnalyzer(load_kb(HARBOURSIDE), get_embedder())
     files = sorted((ROOT / "datasets" / "grounding").rglob("*.jsonl"))
     assert files
     n = 0
     for path in files:
-        an = riverbend if "riverbend" in path.name else analyzer
+        an = riverbend if "riverbend" in path.name else harbourside if "harbourside" in path.name else analyzer
         for line in path.read_text().splitlines():
             ex, cl = analyze(an, json.loads(line)["report"])
             for c in cl.claims:

@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2, dev3, dev4) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev5) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -13,12 +13,16 @@ ROOT = Path(__file__).resolve().parents[1]
 GROUNDING = ROOT / "datasets" / "grounding"
 MARKET_SQUARE = ROOT / "knowledge_base"
 RIVERBEND = ROOT / "knowledge_bases" / "riverbend"
+HARBOURSIDE = ROOT / "knowledge_bases" / "harbourside"
 
 
-def _set(path: str, kb: Path, tag: str, counts: dict[str, int]) -> dict:
+def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
     short = {"standard": "s", "messy": "m", "advanced_messy": "a"}
     return {"file": GROUNDING / path, "kb": kb, "counts": counts,
-            "prefixes": {regime: f"{tag}-{short[regime]}-" for regime in counts}}
+            "prefixes": {regime: f"{tag}{sep}{short[regime]}-" for regime in counts}}
+
+
+EVEN = {"standard": 40, "messy": 40, "advanced_messy": 40}
 
 
 SETS = {
@@ -30,6 +34,10 @@ SETS = {
     "dev4/market_square": _set("dev4/market_square.jsonl", MARKET_SQUARE, "d4",
                                {"standard": 40, "messy": 40, "advanced_messy": 30}),
     "dev4/riverbend": _set("dev4/riverbend.jsonl", RIVERBEND, "d4-rb", {"standard": 15, "messy": 15, "advanced_messy": 15}),
+    "dev5/market_square": _set("dev5/market_square.jsonl", MARKET_SQUARE, "d5", EVEN, sep=""),
+    "dev5/riverbend": _set("dev5/riverbend.jsonl", RIVERBEND, "d5r", {"standard": 30, "messy": 30, "advanced_messy": 30},
+                           sep=""),
+    "dev5/harbourside": _set("dev5/harbourside.jsonl", HARBOURSIDE, "hb", EVEN, sep=""),
 }
 
 

@@ -1032,6 +1032,7 @@ class ReportAnalyzer:
             if checked.category != cue.category:  # "no longer safe": unsafe now, and no longer safe
                 cues.append(replace(cue, polarity="denied", reason=checked.reason))
         cues.extend(self._predicative_cues(ex, norms, blocked | {i for c in cues for i in range(c.start_tok, c.end_tok)}))
+        cues.extend(self._person_cues(ex, norms, blocked | {i for c in cues for i in range(c.start_tok, c.end_tok)}))
         cues.sort(key=lambda c: c.start_tok)
         cues = self._apply_cue_repairs(ex, cues)
         cues = self._apply_false_alarms(toks, norms, cues)
@@ -1135,6 +1136,35 @@ class ReportAnalyzer:
             cue = CueMention(a, b, start, end, toks.text[start:end], label, "embedding",
                              reason=f"MiniLM predicate match {score:.2f} (runner-up {runner:.2f})")
             out.append(Claim(p, cue))
+        return out
+
+    def _person_cues(self, ex: Extraction, norms: tuple[str, ...], blocked: set[int]) -> list[CueMention]:
+        """"a person at the window", "there's someone under it", "a woman clinging to a fence post":
+        a member of the public placed somewhere in a report is someone to rescue."""
+        cat = self._category_for_role("critical", "person needs rescue")
+        if cat is None:
+            return []
+        toks = ex.tokens
+        out = []
+        for i, w in enumerate(norms):
+            if w not in lx.LAY_PERSONS or i in blocked:
+                continue
+            j = i - 1
+            while j >= 0 and norms[j] in lx.PERSON_MODIFIERS:
+                j -= 1
+            introduced = j >= 0 and (norms[j] in lx.PERSON_INTRODUCERS or norms[j].isdigit() or norms[j] in lx.NUMBER_WORDS)
+            if not introduced and w not in ("someone", "somebody"):
+                continue
+            k = i + 1
+            while k < len(norms) and norms[k] in lx.FILLERS | {"still"}:
+                k += 1
+            if k >= len(norms) or norms[k] not in lx.PERSON_SITUATIONS or toks.clause_start[k]:
+                continue
+            if any(norms[m] in lx.NEGATORS for m in range(max(0, j - 2), i)):
+                continue  # "no one at the window" is handled as a negation elsewhere
+            t0, t1 = toks.tokens[i], toks.tokens[k]
+            out.append(CueMention(i, k + 1, t0.start, t1.end, toks.text[t0.start:t1.end], cat, "lexicon",
+                                  reason="a person placed at the scene"))
         return out
 
     def _predicative_cues(self, ex: Extraction, norms: tuple[str, ...], blocked: set[int]) -> list[CueMention]:
@@ -1300,7 +1330,8 @@ class ReportAnalyzer:
             while j >= 0 and norms[j] in lx.FILLERS | {"be", "been", "all"}:
                 j -= 1
             if j >= 0 and (norms[j] in lx.INTENT_WORDS or norms[j] == "to" and j > 0 and norms[j - 1] in lx.INTENT_TO):
-                negated_by = norms[j]  # "crews will clear shortly": not yet a fact
+                # "crews will clear shortly": a plan, not yet a fact (and not "unsafe" either)
+                return replace(cue, polarity="denied", reason=f"a plan ('{norms[j]}'), not a report")
         if negated_by is None and cancelled_by is None:
             return cue
         why = negated_by or cancelled_by

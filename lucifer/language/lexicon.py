@@ -370,6 +370,20 @@ for _p in PERSON_NOUNS:
     ROLE_CUES[f"{_p} has collapsed"] = CRITICAL
     ROLE_CUES[f"{_p} s collapsed"] = CRITICAL
 
+# Members of the public: "<a|two|there's> <person> <at|in|under|clinging...>" is a casualty claim.
+LAY_PERSONS = {"man", "woman", "person", "people", "someone", "somebody", "child", "children", "kid", "baby",
+               "resident", "fella", "guy", "bloke", "lady", "girl", "boy", "family", "occupant", "pensioner",
+               "teenager", "toddler", "infant", "couple", "mother", "father", "gentleman", "walker", "diver",
+               "swimmer", "guest", "customer", "elderly", "youngster", "male", "female", "casualty"}
+PERSON_MODIFIERS = {"elderly", "old", "young", "little", "small", "older", "adult", "injured", "disabled", "more",
+                    "other", "another", "second", "third"}
+PERSON_INTRODUCERS = {"a", "an", "one", "some", "there", "theres", "got", "have", "with", "and", "several", "few",
+                      "her", "his", "their", "our"}
+NUMBER_WORDS = {"two", "three", "four", "five", "six", "seven", "eight", "nine", "ten", "couple", "dozen"}
+PERSON_SITUATIONS = {"at", "in", "on", "under", "underneath", "beneath", "inside", "upstairs", "up", "clinging",
+                     "waving", "sat", "sitting", "lying", "hanging", "holding", "calling", "shouting", "screaming",
+                     "crying", "stranded", "left", "behind", "stuck", "still", "down", "floating", "caught"}
+
 # A clause opening with one of these and ending in "?" asks rather than reports.
 QUESTION_OPENERS = {"is", "are", "was", "were", "do", "does", "did", "can", "could", "has", "have", "what", "where", "who",
                     "which", "how", "why", "any", "anyone", "anybody", "should", "will", "would", "shall", "may", "isnt",
