@@ -389,8 +389,10 @@ class ReportAnalyzer:
                 self._resolve_one(ex, toks, norms, a, b, phrase, flipped, place_tokens, marker_tokens,
                                   inverse_pass=pass_no == 2)
         if self.embedder is not None and self.kb.relations:
-            self._resolve_open(ex, toks, norms, place_tokens, marker_tokens)
-            self._resolve_open_inverse(ex, toks, norms, place_tokens, marker_tokens)
+            cue_tokens = {i for a, b, (_, src) in self._cues.find_all(norms, place_tokens | marker_tokens)
+                          if src != "neutral" for i in range(a, b)}
+            self._resolve_open(ex, toks, norms, place_tokens, marker_tokens, cue_tokens)
+            self._resolve_open_inverse(ex, toks, norms, place_tokens, marker_tokens, cue_tokens)
         for d in [p for p in ex.places if p.via is not None and p.status == "active"]:
             for idx, p in enumerate(ex.places):
                 if p.via is None and p.status == "active" and d.start_tok <= p.start_tok and p.end_tok <= d.end_tok:
@@ -416,12 +418,21 @@ class ReportAnalyzer:
             self._rel_cache = (self.embedder.embed_fixed(texts), [forms[t] for t in texts])
         return self._rel_cache
 
+    def _match_link(self, link: str) -> tuple[float, str, bool]:
+        """The KB relation form closest to an unlisted linking phrase: (similarity, relation, inverse);
+        an antonym in the phrase ("downhill" against "uphill") flips the direction."""
+        mat, meta = self._relation_texts()
+        sims = mat @ self.embedder.embed_one(link)  # type: ignore[union-attr]
+        best = int(np.argmax(sims))
+        phrase, inverse = meta[best]
+        if any(lx.ANTONYMS.get(w) in phrase.split() for w in link.split()):
+            inverse = not inverse
+        return float(sims[best]), phrase, inverse
+
     def _resolve_open(self, ex: Extraction, toks: Tokens, norms: tuple[str, ...], place_tokens: set[int],
-                      marker_tokens: set[int]) -> None:
+                      marker_tokens: set[int], cue_tokens: set[int]) -> None:
         """"the place sharing a wall with the mill": an unknown linking phrase between a generic
         head and a place, matched to the KB's relation forms with MiniLM (antonyms flip direction)."""
-        cue_tokens = {i for a, b, (_, src) in self._cues.find_all(norms, place_tokens | marker_tokens)
-                      if src != "neutral" for i in range(a, b)}
         for anchor in sorted([p for p in ex.places if p.status == "active" and p.via is None], key=lambda p: -p.start_tok):
             j = anchor.start_tok
             while j > 0 and norms[j - 1] in lx.DETERMINERS and anchor.start_tok - j < 2:
@@ -443,22 +454,16 @@ class ReportAnalyzer:
             link = " ".join(toks.tokens[i].text.lower() for i in range(k, j))
             if self._relations.match_at(norms, k) is not None:
                 continue  # a known phrase: the table-driven pass owns it
-            mat, meta = self._relation_texts()
-            sims = mat @ self.embedder.embed_one(link)  # type: ignore[union-attr]
-            best = int(np.argmax(sims))
+            sim, phrase, inverse = self._match_link(link)
             head_start = k - 1
             while head_start > 0 and norms[head_start - 1] in lx.DETERMINERS and (head_start - 1) not in marker_tokens:
                 head_start -= 1
             idx = ex.places.index(anchor)
-            if sims[best] < self.OPEN_RELATION_MIN_SIM:
-                if sims[best] >= self.OPEN_RELATION_HINT_SIM:
+            if sim < self.OPEN_RELATION_MIN_SIM:
+                if sim >= self.OPEN_RELATION_HINT_SIM:
                     ex.places[idx] = replace(anchor, status="reference",
                                              reason=f"reference point of an unresolved description ('{link}')")
                 continue
-            phrase, inverse = meta[best]
-            words = set(link.split())
-            if any(lx.ANTONYMS.get(w) in phrase.split() for w in words):
-                inverse = not inverse
             target, via = self._follow(anchor.landmark, phrase, toks.tokens[k - 1].text, inverse=inverse)
             if target is None:
                 ex.places[idx] = replace(anchor, status="reference", reason=f"reference point of an unresolved '{link}'")
@@ -468,11 +473,9 @@ class ReportAnalyzer:
             place_tokens.update(range(head_start, anchor.end_tok))
 
     def _resolve_open_inverse(self, ex: Extraction, toks: Tokens, norms: tuple[str, ...], place_tokens: set[int],
-                              marker_tokens: set[int]) -> None:
+                              marker_tokens: set[int], cue_tokens: set[int]) -> None:
         """"the shop the pharmacy is fixed to": a generic head, the anchor, then an unknown linking
         phrase ending the clause, matched to the KB's relation forms with MiniLM and read backwards."""
-        cue_tokens = {i for a, b, (_, src) in self._cues.find_all(norms, place_tokens | marker_tokens)
-                      if src != "neutral" for i in range(a, b)}
         for anchor in [p for p in ex.places if p.status == "active" and p.via is None]:
             k = anchor.start_tok
             while k > 0 and norms[k - 1] in lx.DETERMINERS | {"that", "which"} and anchor.start_tok - k < 2:
@@ -502,14 +505,9 @@ class ReportAnalyzer:
                 or " ".join(toks.tokens[i].text.lower() for i in range(e, m))
             if self._relations.match_at(norms, m - 1) is not None and m - e <= 2:
                 continue  # a known phrase: the table-driven passes own it
-            mat, meta = self._relation_texts()
-            sims = mat @ self.embedder.embed_one(link)  # type: ignore[union-attr]
-            best = int(np.argmax(sims))
-            if sims[best] < self.OPEN_RELATION_MIN_SIM:
+            sim, phrase, inverse = self._match_link(link)
+            if sim < self.OPEN_RELATION_MIN_SIM:
                 continue
-            phrase, inverse = meta[best]
-            if any(lx.ANTONYMS.get(w) in phrase.split() for w in link.split()):
-                inverse = not inverse
             head = toks.tokens[k - 1].text
             target, via = self._follow(anchor.landmark, phrase, head, inverse=not inverse)
             if target is None:
@@ -1096,8 +1094,9 @@ class ReportAnalyzer:
         texts, regions = [], []
         all_cues = getattr(self, "_all_cues_now", [])
         kept = []
-        negated = {i for i, w in enumerate(toks.norms(0, len(toks))) if w in lx.NEGATORS}
-        for a, b, _ in self._negators.find_all(toks.norms(0, len(toks))):
+        norms = toks.norms(0, len(toks))
+        negated = {i for i, w in enumerate(norms) if w in lx.NEGATORS}
+        for a, b, _ in self._negators.find_all(norms):
             negated.update(range(a, b))
         for p in todo:
             a, b = self._predicate_region(ex, p)
