@@ -135,6 +135,8 @@ class ReportAnalyzer:
         self._role_category = self._map_roles()
         self._cues: PhraseMatcher[tuple[str, str]] = PhraseMatcher()
         self._build_cues()
+        # the category a person placed at the scene claims (fixed per KB; an embedding when several are critical)
+        self._person_category = self._category_for_role("critical", "person needs rescue")
         self._markers: PhraseMatcher[bool] = PhraseMatcher()
         for m in lx.WEAK_REPAIR:
             self._markers.add(norm_phrase(m), False)
@@ -1140,7 +1142,7 @@ class ReportAnalyzer:
     def _person_cues(self, ex: Extraction, norms: tuple[str, ...], blocked: set[int]) -> list[CueMention]:
         """"a person at the window", "there's someone under it", "a woman clinging to a fence post":
         a member of the public placed somewhere in a report is someone to rescue."""
-        cat = self._category_for_role("critical", "person needs rescue")
+        cat = self._person_category
         if cat is None:
             return []
         toks = ex.tokens
