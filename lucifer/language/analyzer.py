@@ -132,8 +132,10 @@ class ReportAnalyzer:
                 (self._needs_article if had_article else plain).add(key)
                 self._places.add(key, lm.name)
         self._needs_article -= plain
+        for key, name in self._compound_forms():
+            self._places.add(key, name)
         self._role_category = self._map_roles()
-        self._cues: PhraseMatcher[tuple[str, str]] = PhraseMatcher()
+        self._cues: PhraseMatcher[tuple[str, str]] = PhraseMatcher(lx.CUE_SKIPPABLE)
         self._build_cues()
         # the category a person placed at the scene claims (fixed per KB; an embedding when several are critical)
         self._person_category = self._category_for_role("critical", "person needs rescue")
@@ -155,6 +157,29 @@ class ReportAnalyzer:
         self._build_relations()
 
     # ------------------------------------------------------------------ vocabulary
+    def _compound_forms(self) -> list[tuple[tuple[str, ...], str]]:
+        """Names recombined from a landmark's own forms: "bus terminal" from "bus station" and "the terminal".
+
+        The modifier of one multi-word form joins the head word of another form of the same
+        landmark. A combination that another landmark could also produce, or that is already a
+        form of some landmark, is left out.
+        """
+        def words(form: str) -> tuple[str, ...]:
+            return tuple(w for w in norm_phrase(form) if w not in ("the", "a", "an"))
+
+        existing = {words(f) for lm in self.kb.landmarks for f in lm.surface_forms}
+        made: dict[tuple[str, ...], set[str]] = {}
+        for lm in self.kb.landmarks:
+            forms = [w for w in (words(f) for f in lm.surface_forms) if w]
+            mods = {w[:-1] for w in forms if len(w) > 1}
+            heads = {w[-1] for w in forms}
+            for mod in mods:
+                for head in heads:
+                    key = (*mod, head)
+                    if key not in existing and head not in mod:
+                        made.setdefault(key, set()).add(lm.name)
+        return [(key, next(iter(names))) for key, names in sorted(made.items()) if len(names) == 1]
+
     def _map_roles(self) -> dict[str, str | None]:
         out: dict[str, str | None] = {}
         for role in Role:
@@ -236,7 +261,8 @@ class ReportAnalyzer:
             if any(ca <= a and b <= cb and cb - ca > b - a for ca, cb in cue_hits):
                 continue  # "first aid post" is a cue, "across the square from" a relation
             prev = norms[a - 1] if a > 0 else ""
-            if norms[a:b] in self._needs_article and prev not in lx.DETERMINERS | {"our", "your"}:
+            if norms[a:b] in self._needs_article and prev not in lx.DETERMINERS | {"our", "your"} \
+                    and not self._telegraphic_subject(toks, norms, a, b):
                 continue  # the KB wrote "the tower": "bell tower" is not it
             if b - a == 1 and prev in lx.COMPOUND_MODIFIERS and not (a > 0 and toks.clause_start[a]) \
                     and not any(p.end_tok == a for p in places):
@@ -264,6 +290,13 @@ class ReportAnalyzer:
         self._apply_transit(ex)
         ex.places.sort(key=lambda p: p.start_tok)
         return ex
+
+    def _telegraphic_subject(self, toks: Tokens, norms: tuple[str, ...], a: int, b: int) -> bool:
+        """"Precinct secure, holding evacuees there": radio speech drops the article of a sentence's subject."""
+        if not toks.sentence_start[a] or b >= len(norms) or norms[a] in lx.DESCRIPTIVE_WORDS:
+            return False
+        return toks.clause_start[b] or norms[b] in lx.COPULAS \
+            or self._cues.match_at(norms, b) is not None
 
     def _partial_names(self, toks: Tokens, norms: tuple[str, ...], taken: set[int]) -> list[PlaceMention]:
         """"the hardware —": the first words of a multi-word name, cut off by a pause."""
@@ -855,11 +888,26 @@ class ReportAnalyzer:
             while j > 0 and norms[j - 1] in lx.DETERMINERS | lx.FILLERS | {"at", "to", "by", "the", "from"} \
                     and p.start_tok - j < 3 and not toks.clause_start[j]:
                 j -= 1
+            if self._crew_position(norms, p.start_tok):
+                ex.places[idx] = replace(p, status="reference", reason="in transit (a crew's position): no claim")
+                continue
             for k in range(max(0, j - 5), j):
                 hit = self._transit.match_at(norms, k)
                 if hit is not None and j <= hit[0] <= p.start_tok and not any(toks.clause_start[i] for i in range(k + 1, min(hit[0], p.start_tok) + 1) if i < p.start_tok):
                     ex.places[idx] = replace(p, status="reference", reason=f"in transit ('{hit[1]}'): no claim")
                     break
+
+    @staticmethod
+    def _crew_position(norms: tuple[str, ...], j: int) -> bool:
+        """"team two is at the park", "engine 4's outside the bank": where a crew stands claims nothing."""
+        while j > 0 and norms[j - 1] in lx.DETERMINERS | lx.FILLERS:
+            j -= 1
+        if j < 3 or norms[j - 1] not in lx.POSITION_PREPS or norms[j - 2] not in ("is", "s", "are", "re"):
+            return False
+        k = j - 3
+        if k > 0 and (norms[k].isdigit() or norms[k] in lx.NUMBER_WORDS or norms[k] == "one"):
+            k -= 1
+        return norms[k] in lx.CREW_NOUNS
 
     def _apply_restarts(self, ex: Extraction) -> None:
         """"the church is — the church is being used": the first mention is a false start."""
@@ -1582,8 +1630,9 @@ class ReportAnalyzer:
             j += 1
         if j < len(segs) and sentence_of[segs[j][0]] == sent and seg_cues.get(j) and seg_places.get(j) \
                 and first_norm[j] in ("and", "or", "plus") \
-                and min(p.start_tok for p in seg_places[j]) < min(c.start_tok for c in seg_cues[j]):
-            return j
+                and min(p.start_tok for p in seg_places[j]) < min(c.start_tok for c in seg_cues[j]) \
+                and not min(seg_places[j], key=lambda p: p.start_tok).text.lower().endswith(("'s", "’s")):
+            return j  # ("..., and the fire hall's secure": a singular predicate is that place's own)
         # backward: "fire at the bakery and the school", "people trapped in the, um, school, no, the library"
         j = k - 1
         while j >= 0 and sentence_of[segs[j][0]] == sent:

@@ -99,7 +99,8 @@ smoke inhalation|persons reported|person reported|p1|p2|p3|p1s|p2s|p1 patient|p2
 cpr in progress|a body|body|bodies|non ambulatory|non-ambulatory|overcome|officer down|firefighter down|
 occupants unaccounted for|entrapment|trapped occupant|casualty pinned|
 person in the water|in the water|unaccounted for|still inside|not responding|no pulse|crush injury|burns|
-piw|chest pain|chest pains|in difficulty|in difficulties|not accounted for|clinging to|clinging on|broken hip|
+piw|medic needed|medics needed|medic required|need a medic|need medics|paramedic needed|paramedics needed|
+ambulance needed|ambulance required|need an ambulance|send an ambulance|needs medical attention|medical attention|chest pain|chest pains|in difficulty|in difficulties|not accounted for|clinging to|clinging on|broken hip|
 broken ankle|broken wrist|head injury|fractured|fracture|crushed|crushed foot|crushed leg|concussion|
 can hear someone|can hear her|can hear him|can hear them|can hear voices|hear someone|hear her|hear him|
 hear voices|waving at us|waving to us|calling from|shouting from|trapped under|under the timbers|overdue|
@@ -257,6 +258,13 @@ GENERIC_HEADS = {
 
 FILLERS = {"uh", "um", "er", "erm", "ah", "eh", "hmm", "like", "so", "okay", "ok", "well", "yeah", "right",
            "just", "basically", "kinda", "sorta", "literally", "over", "copy", "roger", "base", "team"}
+# Words a speaker may drop inside a cue phrase without changing it ("roof's partly down", "on, uh, fire").
+CUE_SKIPPABLE = {"uh", "um", "er", "erm", "ah", "eh", "hmm", "like", "partly", "partially", "completely", "totally",
+                 "fully", "badly", "really", "very", "now", "still", "already", "entirely", "half", "kinda", "sorta",
+                 "properly", "seriously", "pretty", "right", "just"}
+# Words that open a sentence as a description, not as a name without its article ("Light smoke at ...").
+DESCRIPTIVE_WORDS = {"light", "heavy", "thick", "black", "white", "grey", "gray", "dense", "small", "big", "large",
+                     "minor", "major", "main", "little", "old", "new", "green", "red", "amber", "tower"}
 ARTICLES = {"the", "a", "an", "that", "this", "those", "these"}
 DETERMINERS = {"the", "a", "an", "that", "this", "those", "these", "its", "their", "our", "some", "old", "little"}
 PREPOSITIONS = {"at", "in", "on", "inside", "near", "from", "by", "outside", "behind", "around", "into",
@@ -307,6 +315,10 @@ TRANSIT = ["heading to", "heading for", "heading towards", "heading toward", "he
            "we're standing at", "we're parked at", "outside of",
            "about to check", "searching", "sweeping", "en route"]
 
+# Who a report's position phrase is about ("team two is at", "engine 4's outside").
+CREW_NOUNS = {"team", "crew", "unit", "engine", "ladder", "squad", "truck", "ambulance", "medic", "medics", "rescue",
+              "we", "i", "tender", "appliance", "patrol", "sector", "command", "search", "group", "boat"}
+POSITION_PREPS = {"at", "outside", "by", "near", "in", "on"}
 PRONOUNS = {"it", "its", "there", "that", "they", "them", "this", "place", "building", "same"}
 COORDINATORS = {"and", "but", "while", "whereas", "plus", "also", "then", "meanwhile", "however",
                 "though", "although", "yet", "additionally"}

@@ -84,8 +84,10 @@ def tokenize(text: str) -> Tokens:
 class PhraseMatcher(Generic[T]):
     """Longest-match lookup of token-key phrases, each carrying a payload."""
 
-    def __init__(self) -> None:
+    def __init__(self, skippable: Iterable[str] = ()) -> None:
         self._by_first: dict[str, list[tuple[tuple[str, ...], T]]] = {}
+        # words the text may insert inside a phrase ("roof's partly down" matches "roof down")
+        self.skippable = frozenset(skippable)
 
     def add(self, key: tuple[str, ...], payload: T) -> None:
         if not key:
@@ -101,7 +103,24 @@ class PhraseMatcher(Generic[T]):
             end = i + len(key)
             if end <= len(norms) and norms[i:end] == key and not blocked_set.intersection(range(i, end)):
                 return end, payload
+        if self.skippable:
+            for key, payload in self._by_first.get(norms[i], ()):
+                end = self._loose_end(norms, i, key)
+                if end is not None and not blocked_set.intersection(range(i, end)):
+                    return end, payload
         return None
+
+    def _loose_end(self, norms: tuple[str, ...], i: int, key: tuple[str, ...]) -> int | None:
+        """End of ``key`` matched from ``i`` with skippable words allowed between its words."""
+        j = i
+        for n, word in enumerate(key):
+            if n:
+                while j < len(norms) and norms[j] != word and norms[j] in self.skippable:
+                    j += 1
+            if j >= len(norms) or norms[j] != word:
+                return None
+            j += 1
+        return j
 
     def find_all(self, norms: tuple[str, ...], blocked: set[int] | None = None) -> list[tuple[int, int, T]]:
         """Non-overlapping longest matches, left to right, skipping ``blocked`` tokens."""
