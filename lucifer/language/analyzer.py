@@ -155,6 +155,7 @@ class ReportAnalyzer:
             self._transit.add(norm_phrase(t), t)
         self._relations: PhraseMatcher[tuple[str, bool]] = PhraseMatcher()  # phrase -> (relation, inverse)
         self._build_relations()
+        self._rel_keywords = self._relation_keywords()
 
     # ------------------------------------------------------------------ vocabulary
     def _compound_forms(self) -> list[tuple[tuple[str, ...], str]]:
@@ -244,6 +245,77 @@ class ReportAnalyzer:
                 forms.setdefault((adverb, *key), val)
         for key, val in forms.items():
             self._relations.add(key, val)
+
+    def _relation_keywords(self) -> dict[str, tuple[str, str]]:
+        """Stems of the distinctive words of the KB's relation names -> (relation phrase, voice).
+
+        ``voice`` is "passive" for names such as ``supplied_by`` (said backwards as "the plant
+        that supplies X"), "active" for verbs such as ``tunnels_into``, else "other". A stem that
+        two relation names share is left out: it would not tell them apart.
+        """
+        owners: dict[str, set[str]] = {}
+        voice: dict[str, str] = {}
+        for rel in self.kb.relations:
+            words = rel.phrase.split()
+            if words and words[-1] == "by" and len(words) >= 2:
+                voice[rel.phrase] = "passive"
+            elif words and words[0].endswith("s") and not words[0].endswith("ss") and words[0] not in lx.ANTONYMS:
+                voice[rel.phrase] = "active"
+            else:
+                voice.setdefault(rel.phrase, "other")
+            for w in words:
+                if w in lx.RELATION_NAME_STOPWORDS or w in lx.ANTONYMS or w in lx.DIRECTION_FAMILIES or len(w) < 3:
+                    continue
+                for stem in _link_stems(w):
+                    owners.setdefault(stem, set()).add(rel.phrase)
+        return {stem: (next(iter(rels)), voice[next(iter(rels))]) for stem, rels in owners.items() if len(rels) == 1}
+
+    def _keyword_relation(self, word: str) -> tuple[str, str] | None:
+        for stem in _link_stems(word):
+            for key, hit in self._rel_keywords.items():
+                if stem == key or (min(len(stem), len(key)) >= 5 and (stem.endswith(key) or key.endswith(stem))):
+                    return hit
+        return None
+
+    def _keyword_hits(self, toks: Tokens, norms: tuple[str, ...], covered: set[int],
+                      cue_tokens: set[int], known: set[int]) -> list[tuple[int, int, tuple[str, bool]]]:
+        """Relation phrases the tables do not list, found by a distinctive word of a KB relation name:
+        "the block at the other end of the service tunnel from X" (``connected_by_tunnel_to``),
+        "the tower bridged to it" (``linked_by_skybridge_to``), "the tunnel that feeds X" (``fed_by``)."""
+        out: list[tuple[int, int, tuple[str, bool]]] = []
+        if not self._rel_keywords:
+            return out
+        taken = set(covered)
+        for t in range(len(norms)):
+            if t in taken or t in cue_tokens or t in known:
+                continue
+            hit = self._keyword_relation(toks.tokens[t].text.lower())
+            if hit is None:
+                continue
+            phrase, voice = hit
+            b = t + 1
+            for j in range(t + 1, min(t + 4, len(norms))):
+                if j in taken or toks.clause_start[j]:
+                    break
+                if norms[j] in lx.RELATION_ENDINGS | {"into", "by"}:
+                    b = j + 1
+                    break
+            a = t
+            while a > 0 and t - a < 8 and not toks.clause_start[a] and (a - 1) not in taken | known | cue_tokens:
+                w = norms[a - 1]
+                if w in lx.GENERIC_HEADS and a - 1 > 0 and norms[a - 2] in lx.DETERMINERS:
+                    break
+                if w in lx.COORDINATORS or w in lx.PRONOUNS - {"that"}:
+                    break
+                a -= 1
+            word = toks.tokens[t].text.lower()
+            passive_here = "by" in norms[t + 1 : b] or word.endswith(("ed", "en")) or word in lx.IRREGULAR_PARTICIPLES
+            flipped = (voice == "passive" and not passive_here) or (voice == "active" and "by" in norms[t + 1 : b])
+            if any(lx.ANTONYMS.get(w) in phrase.split() for w in norms[a:b]):
+                flipped = not flipped
+            out.append((a, b, (phrase, flipped)))
+            taken.update(range(a, b))
+        return out
 
     # ------------------------------------------------------------------ extract
     def extract(self, text: str) -> Extraction:
@@ -416,6 +488,14 @@ class ReportAnalyzer:
         marker_tokens = {i for ma, mb, _ in ex.markers for i in range(ma, mb)}
         self._marker_cache = marker_tokens
         rel_hits = self._relations.find_all(norms, place_tokens)
+        if self.kb.relations:
+            cue_tokens = {i for a, b, (_, src) in self._cues.find_all(norms, place_tokens | marker_tokens)
+                          if src != "neutral" for i in range(a, b)}
+            covered = place_tokens | marker_tokens | {i for a, b, _ in rel_hits if b - a > 1 for i in range(a, b)}
+            known = {i for a, b, _ in rel_hits for i in range(a, b)}
+            extra = self._keyword_hits(toks, norms, covered, cue_tokens, known)
+            extra_tokens = {i for a, b, _ in extra for i in range(a, b)}
+            rel_hits = [h for h in rel_hits if not extra_tokens.intersection(range(h[0], h[1]))] + extra
         ordered = sorted(rel_hits, key=lambda h: -h[0])
         self._rel_tokens = {i for a, b, _ in rel_hits for i in range(a, b)}
         # forward descriptions, then inverse ones, then forward ones that anchor on an inverse one
@@ -717,7 +797,7 @@ class ReportAnalyzer:
     def _inverse_anchor(self, ex: Extraction, norms: tuple[str, ...], a: int) -> tuple[PlaceMention, int, bool] | None:
         """"the one (that) the garage sits behind": (anchor, start of the description, head is a named place)."""
         j = a
-        while j > 0 and norms[j - 1] in lx.INVERSE_VERBS and a - j < 3:
+        while j > 0 and norms[j - 1] in lx.INVERSE_VERBS | {"a", "an"} and a - j < 3:
             j -= 1
         anchor = next((p for p in ex.places if p.end_tok == j and p.status == "active"), None)
         if anchor is None and j > 0 and norms[j - 1] in ("it", "its") and j - 1 > 0 \
@@ -793,6 +873,13 @@ class ReportAnalyzer:
                 if not _loose else (None, None)
             if loose is not None:
                 return self._follow(anchor, lx.LOOSE_EQUIVALENTS[phrase], head, inverse=False, _loose=True)
+        if not cands and not _loose and phrase not in lx.INVERSE_PHRASES and phrase not in lx.RELATION_SYNONYMS:
+            # a description must lead somewhere: a relation the KB states only the other way round
+            # ("the building across the skybridge from A&E" for "radiology linked_by_skybridge_to A&E")
+            # is read that way round
+            back, via = self._follow(anchor, phrase, head, inverse=not inverse, _loose=True)
+            if back is not None:
+                return back, via
         if not cands:
             cands = self._grid_relation(anchor, phrase)
         uniq = {c[0]: c for c in cands}
@@ -1672,6 +1759,31 @@ class ReportAnalyzer:
                 return None
             j += 1
         return None
+
+
+def _link_stems(word: str) -> set[str]:
+    """Stems of a word of a relation phrase, with its link synonyms.
+
+    >>> sorted(_link_stems("tunnelled")) == sorted(_link_stems("tunnels"))
+    True
+    >>> "feed" in _link_stems("supplied") and "feed" in _link_stems("fed")
+    True
+    """
+    w = word.lower().replace("'", "").replace("’", "")
+    w = lx.IRREGULAR_PARTICIPLES.get(w, w)
+    for suffix, repl in (("ies", "y"), ("ied", "y"), ("ing", ""), ("ed", ""), ("es", ""), ("s", "")):
+        if w.endswith(suffix) and len(w) - len(suffix) >= 3 and not (suffix == "s" and w.endswith("ss")):
+            w = w[: -len(suffix)] + repl
+            break
+    if len(w) > 4 and w[-1] == w[-2] and w[-1] not in "aeiou":
+        w = w[:-1]  # tunnell -> tunnel
+    if len(w) > 3 and w[-1] in "ey":
+        w = w[:-1]
+    stems = {w}
+    for group in lx.LINK_SYNONYMS:
+        if w in group:
+            stems |= group
+    return stems
 
 
 def _relation_forms(phrase: str) -> list[tuple[str, bool]]:

@@ -208,7 +208,8 @@ ANTONYMS = {"upstream": "downstream", "downstream": "upstream", "upriver": "down
             "before": "after", "after": "before", "upstairs": "downstairs", "downstairs": "upstairs",
             "front": "back", "back": "front", "inside": "outside", "outside": "inside", "higher": "lower",
             "lower": "higher", "feeds": "fed", "supplies": "supplied", "seaward": "landward",
-            "landward": "seaward", "inland": "seaward", "uphill": "downhill", "downhill": "uphill"}
+            "landward": "seaward", "inland": "seaward", "uphill": "downhill", "downhill": "uphill",
+            "up": "down", "down": "up"}
 # Direction words of relation names, each with the ways a report says it; a relation named with
 # one ("seaward_of", "uphill_from") is also matched by the others, and backwards by the opposite family.
 DIRECTION_FAMILIES: dict[str, list[str]] = {
@@ -226,6 +227,20 @@ OPPOSITE_DIRECTION = {"seaward": "landward", "landward": "seaward", "uphill": "d
                       "upstream": "downstream", "downstream": "upstream"}
 # Direction words that stand alone, without "of" / "from" ("the houses above the net loft").
 BARE_DIRECTIONS = {"above", "below", "beneath"}
+
+# Irregular past participles of verbs that name relations ("fed_by" is said "the mill that feeds ...").
+IRREGULAR_PARTICIPLES = {"fed": "feed", "built": "build", "held": "hold", "led": "lead", "lit": "light", "ran": "run",
+                         "dug": "dig", "hung": "hang", "laid": "lay", "kept": "keep", "fitted": "fit", "shaded": "shade",
+                         "overshadowed": "overshadow", "drawn": "draw", "sunk": "sink", "bound": "bind"}
+# Word stems that name the same link between two places ("supplied by" / "fed by" / "powered by").
+LINK_SYNONYMS = [{"suppl", "feed", "power", "serv"}, {"link", "connect", "join"}, {"annex", "extension", "outbuild"},
+                 {"tunnel", "underpas", "subway", "passag"}, {"bridg", "walkway", "footbridg"}]
+# Words of a relation name that are too common to identify it on their own in a report.
+RELATION_NAME_STOPWORDS = {"by", "to", "of", "with", "onto", "on", "into", "from", "the", "a", "an", "is", "and", "in",
+                           "at", "that", "its", "it", "side", "end", "other", "way", "same", "far", "near", "up",
+                           "down", "over", "across", "back", "out", "off", "through", "under", "above", "below",
+                           "next", "behind", "front", "beside", "along", "round", "around", "opposite", "facing",
+                           "directly", "just", "right", "left", "part", "one", "building", "place", "site"}
 
 SYMMETRIC_HINTS = ("next", "adjacent", "beside", "across", "opposite", "adjoin", "near", "attached", "connected",
                    "joined", "facing", "neighbo", "abut", "border", "touch", "share", "bord")
