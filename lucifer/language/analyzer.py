@@ -1789,8 +1789,8 @@ def _link_stems(word: str) -> set[str]:
 def _relation_forms(phrase: str) -> list[tuple[str, bool]]:
     """Forward and inverse surface forms of a KB relation name.
 
-    >>> sorted(f for f, inv in _relation_forms("overlooks") if inv)[:3]
-    ['looked over by', 'overlooked by']
+    >>> ("overlooked by", True) in _relation_forms("overlooks")
+    True
     >>> ("downstream of", True) in _relation_forms("upstream of")
     True
     """
