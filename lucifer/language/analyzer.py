@@ -271,6 +271,8 @@ class ReportAnalyzer:
         return {stem: (next(iter(rels)), voice[next(iter(rels))]) for stem, rels in owners.items() if len(rels) == 1}
 
     def _keyword_relation(self, word: str) -> tuple[str, str] | None:
+        if word in lx.RELATION_NAME_STOPWORDS or len(word) < 3:
+            return None
         for stem in _link_stems(word):
             for key, hit in self._rel_keywords.items():
                 if stem == key or (min(len(stem), len(key)) >= 5 and (stem.endswith(key) or key.endswith(stem))):

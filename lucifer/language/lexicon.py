@@ -233,7 +233,7 @@ IRREGULAR_PARTICIPLES = {"fed": "feed", "built": "build", "held": "hold", "led":
                          "dug": "dig", "hung": "hang", "laid": "lay", "kept": "keep", "fitted": "fit", "shaded": "shade",
                          "overshadowed": "overshadow", "drawn": "draw", "sunk": "sink", "bound": "bind"}
 # Word stems that name the same link between two places ("supplied by" / "fed by" / "powered by").
-LINK_SYNONYMS = [{"suppl", "feed", "power", "serv"}, {"link", "connect", "join"}, {"annex", "extension", "outbuild"},
+LINK_SYNONYMS = [{"suppl", "feed", "power", "serv"}, {"link", "connect", "join"}, {"annex", "extension"},
                  {"tunnel", "underpas", "subway", "passag"}, {"bridg", "walkway", "footbridg"}]
 # Words of a relation name that are too common to identify it on their own in a report.
 RELATION_NAME_STOPWORDS = {"by", "to", "of", "with", "onto", "on", "into", "from", "the", "a", "an", "is", "and", "in",
