@@ -279,6 +279,38 @@ class ReportAnalyzer:
                     return hit
         return None
 
+    def _remap_absent_group(self, norms: tuple[str, ...],
+                            hit: tuple[int, int, tuple[str, bool]]) -> tuple[int, int, tuple[str, bool]]:
+        """A listed phrase whose relation group the KB lacks ("backing onto" is ``behind``) is read as
+        the KB relation that shares one of its words ("back_to_back_with"), or else the one the head
+        noun names ("the annexe tacked onto X": ``annexe_of``)."""
+        a, b, (phrase, flipped) = hit
+        if any(self._relation_matches(rel, phrase) for rel in self.kb.relations) or phrase in lx.INVERSE_PHRASES \
+                and any(self._relation_matches(rel, lx.INVERSE_PHRASES[phrase]) for rel in self.kb.relations):
+            return hit
+        weak = self._weak_keywords()
+        for w in norms[a:b]:
+            for stem in _link_stems(w):
+                if stem in weak:
+                    return a, b, (weak[stem], False)
+        if a > 0:
+            head = self._keyword_relation(norms[a - 1])
+            if head is not None:
+                return a, b, (head[0], False)
+        return hit
+
+    def _weak_keywords(self) -> dict[str, str]:
+        """Stems of every word of the KB's relation names but function words, each naming one relation."""
+        if getattr(self, "_weak_cache", None) is None:
+            owners: dict[str, set[str]] = {}
+            for rel in self.kb.relations:
+                for w in rel.phrase.split():
+                    if w not in lx.RELATION_ENDINGS | {"the", "a", "an", "is", "and", "into", "at", "in"} and len(w) >= 3:
+                        for stem in _link_stems(w):
+                            owners.setdefault(stem, set()).add(rel.phrase)
+            self._weak_cache = {k: next(iter(v)) for k, v in owners.items() if len(v) == 1}
+        return self._weak_cache
+
     def _keyword_hits(self, toks: Tokens, norms: tuple[str, ...], covered: set[int],
                       cue_tokens: set[int], known: set[int]) -> list[tuple[int, int, tuple[str, bool]]]:
         """Relation phrases the tables do not list, found by a distinctive word of a KB relation name:
@@ -289,8 +321,8 @@ class ReportAnalyzer:
             return out
         taken = set(covered)
         for t in range(len(norms)):
-            if t in taken or t in cue_tokens or t in known:
-                continue
+            if t in taken or t in cue_tokens or t in known or t + 1 in known:
+                continue  # (a word right before a listed phrase heads it: "the annexe tacked onto X")
             hit = self._keyword_relation(toks.tokens[t].text.lower())
             if hit is None:
                 continue
@@ -309,6 +341,9 @@ class ReportAnalyzer:
                     break
                 if w in lx.COORDINATORS or w in lx.PRONOUNS - {"that"}:
                     break
+                if a - 1 > 0 and norms[a - 2] in lx.ARTICLES and w.isalpha() and len(w) >= 3 and w not in lx.PREPOSITIONS \
+                        and w not in lx.COPULAS and w not in lx.FILLERS and w not in lx.DETERMINERS:
+                    break  # "the compound that supplies it": any noun after an article heads the description
                 a -= 1
             word = toks.tokens[t].text.lower()
             passive_here = "by" in norms[t + 1 : b] or word.endswith(("ed", "en")) or word in lx.IRREGULAR_PARTICIPLES
@@ -358,6 +393,7 @@ class ReportAnalyzer:
         ex = Extraction(toks, places, markers)
         self._resolve_possessives(ex)
         self._resolve_relations(ex)
+        self._resolve_itself(ex)
         self._apply_place_negation(ex)
         self._apply_restarts(ex)
         self._apply_place_repairs(ex)
@@ -497,7 +533,8 @@ class ReportAnalyzer:
             known = {i for a, b, _ in rel_hits for i in range(a, b)}
             extra = self._keyword_hits(toks, norms, covered, cue_tokens, known)
             extra_tokens = {i for a, b, _ in extra for i in range(a, b)}
-            rel_hits = [h for h in rel_hits if not extra_tokens.intersection(range(h[0], h[1]))] + extra
+            rel_hits = [self._remap_absent_group(norms, h) for h in rel_hits
+                        if not extra_tokens.intersection(range(h[0], h[1]))] + extra
         ordered = sorted(rel_hits, key=lambda h: -h[0])
         self._rel_tokens = {i for a, b, _ in rel_hits for i in range(a, b)}
         # forward descriptions, then inverse ones, then forward ones that anchor on an inverse one
@@ -711,6 +748,23 @@ class ReportAnalyzer:
         new = self._mention(toks, det_start, anchor_end, target, via=via)
         ex.places.append(new)
         place_tokens.update(range(det_start, anchor_end))
+
+    def _resolve_itself(self, ex: Extraction) -> None:
+        """"the shop itself has a guy with burns": a head noun with "itself" names the landmark an
+        earlier description used as its reference point."""
+        toks = ex.tokens
+        norms = toks.norms(0, len(toks))
+        for i in range(2, len(norms)):
+            if norms[i] not in ("itself", "themselves") or any(p.end_tok == i for p in ex.places):
+                continue
+            if norms[i - 1] not in lx.GENERIC_HEADS or norms[i - 2] not in lx.DETERMINERS:
+                continue
+            anchors = [p for p in ex.places if p.end_tok <= i - 2 and p.status == "reference"
+                       and p.reason.startswith("reference point")]
+            if not anchors:
+                continue
+            anchor = max(anchors, key=lambda p: p.end_tok)
+            ex.places.append(self._mention(toks, i - 2, i + 1, anchor.landmark))
 
     def _resolve_possessives(self, ex: Extraction) -> None:
         """"the church's opposite number", "the health centre's neighbour"."""

@@ -153,6 +153,7 @@ STRONG_REPAIR = [
     "wrong one", "not that one", "wrong building", "wrong place", "as you were", "amend that", "hold that", "hold on that", "let me correct that", "let me correct myself",
     "let me correct my last", "that should be", "that should have been", "should be", "scrub that", "i misspoke",
     "ah i misspoke", "or is it", "take that back", "strike that last", "correction on my last", "correct that",
+    "scrap that", "bin that", "ignore that", "delete that", "rewind", "back up", "start again", "let me start again",
 ]
 WEAK_REPAIR = ["sorry", "actually", "or rather", "rather", "wait", "no", "nope", "er no", "uh no", "well no",
                "oops", "whoops", "hang on", "hold on"]
@@ -427,7 +428,7 @@ INTENT_TO = {"going", "need", "needs", "want", "wants", "trying", "plan", "plann
 
 # Corrections that withdraw the claim before them even with nothing after ("cancel that, they've moved it").
 WITHDRAW_MARKERS = {"cancel that", "scratch that", "disregard that", "strike that", "belay that", "as you were",
-                    "amend that", "scrub that", "strike that last"}
+                    "amend that", "scrub that", "strike that last", "scrap that", "bin that", "ignore that", "delete that"}
 # Single-word landmark names that a preceding word turns into another thing ("car park", "bell tower").
 COMPOUND_MODIFIERS = {"car", "ball", "theme", "trailer", "business", "retail", "industrial", "skate", "amusement",
                       "safari", "bell", "clock", "cell", "radio", "signal", "phone"}
