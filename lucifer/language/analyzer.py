@@ -391,6 +391,7 @@ class ReportAnalyzer:
         places.extend(starts)
         markers = self._find_markers(toks, {i for p in places for i in range(p.start_tok, p.end_tok)})
         ex = Extraction(toks, places, markers)
+        self._resolve_descriptions(ex)
         self._resolve_possessives(ex)
         self._resolve_relations(ex)
         self._resolve_itself(ex)
@@ -748,6 +749,59 @@ class ReportAnalyzer:
         new = self._mention(toks, det_start, anchor_end, target, via=via)
         ex.places.append(new)
         place_tokens.update(range(det_start, anchor_end))
+
+    def _description_words(self) -> dict[str, set[str]]:
+        """Per landmark, the content words of its description, name and aliases."""
+        if getattr(self, "_desc_cache", None) is None:
+            self._desc_cache = {
+                lm.name: {w for w in norm_phrase(" ".join([lm.description, *lm.surface_forms]))
+                          if w not in lx.DESCRIPTION_STOPWORDS and not w.isdigit()}
+                for lm in self.kb.landmarks}
+        return self._desc_cache
+
+    def _resolve_descriptions(self, ex: Extraction) -> None:
+        """"the building with the two engine bays", "the five-storey building on the south road":
+        a noun phrase that names no landmark but shares two or more content words with exactly one
+        landmark's description (more than with any other) refers to that landmark."""
+        toks = ex.tokens
+        norms = toks.norms(0, len(toks))
+        place_tokens = {i for p in ex.places for i in range(p.start_tok, p.end_tok)}
+        marker_tokens = {i for a, b, _ in ex.markers for i in range(a, b)}
+        relation_starts = {a for a, _, _ in self._relations.find_all(norms, place_tokens)}
+        cue_tokens = {i for a, b, (_, src) in self._cues.find_all(norms, place_tokens) if src != "neutral"
+                      for i in range(a, b)}
+        stop = place_tokens | marker_tokens | cue_tokens
+        desc = self._description_words()
+        closed = lx.PREPOSITIONS | lx.COPULAS | lx.FILLERS | lx.PRONOUNS | lx.COORDINATORS | lx.NEGATORS
+        i = 0
+        while i < len(norms):
+            if norms[i] not in lx.DESCRIPTION_HEADS or i in stop:
+                i += 1
+                continue
+            s_ = i
+            while s_ > 0 and i - s_ < 4 and not toks.clause_start[s_] and (s_ - 1) not in stop \
+                    and norms[s_ - 1] not in closed and norms[s_ - 1] not in lx.DETERMINERS:
+                s_ -= 1
+            has_det = s_ > 0 and norms[s_ - 1] in lx.DETERMINERS and not toks.clause_start[s_]
+            if not (has_det or toks.clause_start[s_]):
+                i += 1
+                continue
+            e = i + 1
+            if e < len(norms) and e not in relation_starts and norms[e] in lx.DESCRIPTION_LINKS \
+                    and not toks.clause_start[e]:
+                e += 1
+                while e < len(norms) and e - i < 9 and not toks.clause_start[e] and e not in stop \
+                        and e not in relation_starts and norms[e] not in lx.COPULAS - {"s"} and norms[e] not in lx.COORDINATORS:
+                    e += 1
+            words = {w for w in norms[s_:e] if w not in lx.DESCRIPTION_STOPWORDS and w not in closed}
+            scores = sorted(((len(words & ws), name) for name, ws in desc.items()), reverse=True)
+            if scores and scores[0][0] >= 2 and (len(scores) == 1 or scores[0][0] > scores[1][0]):
+                a = s_ - 1 if has_det else s_
+                ex.places.append(self._mention(toks, a, e, scores[0][1], via=f"description of {scores[0][1]}"))
+                stop.update(range(a, e))
+                i = e
+                continue
+            i += 1
 
     def _resolve_itself(self, ex: Extraction) -> None:
         """"the shop itself has a guy with burns": a head noun with "itself" names the landmark an

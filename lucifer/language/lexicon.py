@@ -331,6 +331,20 @@ TRANSIT = ["heading to", "heading for", "heading towards", "heading toward", "he
            "we're standing at", "we're parked at", "outside of",
            "about to check", "searching", "sweeping", "en route"]
 
+# Head nouns of a description of a landmark ("the building with the two engine bays").
+DESCRIPTION_HEADS = {"building", "place", "shop", "store", "tower", "block", "house", "hall", "premises", "structure",
+                     "unit", "warehouse", "one", "office", "shed", "hut", "works", "centre", "center", "station", "yard",
+                     "plant", "cottage", "cottages", "terrace", "row", "church", "chapel", "inn", "pub", "site",
+                     "complex", "facility", "depot", "mill", "factory", "workshop", "barn", "lodge"}
+# Words that open the tail of such a description ("with the fuel pump", "on the west road", "that sells tools").
+DESCRIPTION_LINKS = {"with", "on", "at", "in", "along", "that", "which", "selling", "sells", "where", "by", "near",
+                     "off", "beside", "having"}
+# Words of a landmark description that say nothing distinctive about it.
+DESCRIPTION_STOPWORDS = {"building", "place", "one", "with", "and", "the", "a", "an", "of", "on", "at", "in", "to",
+                         "that", "which", "its", "it", "is", "are", "has", "have", "from", "by", "for", "where", "there",
+                         "this", "small", "big", "large", "little", "town", "side", "road", "street", "corner",
+                         "edge", "end", "middle", "near", "next", "our", "their", "some", "up", "down", "s"}
+
 # Who a report's position phrase is about ("team two is at", "engine 4's outside").
 CREW_NOUNS = {"team", "crew", "unit", "engine", "ladder", "squad", "truck", "ambulance", "medic", "medics", "rescue",
               "we", "i", "tender", "appliance", "patrol", "sector", "command", "search", "group", "boat"}
