@@ -78,7 +78,8 @@ def confirm(c: float, c_obj: float, trust: float = 0.7) -> float:
     >>> confirm(0.5, 0.0)
     0.5
     """
-    return 1.0 - (1.0 - c) * (1.0 - trust * c_obj)
+    # max(): in floating point 1 - (1 - c) can fall a hair below c; a confirmation never lowers confidence
+    return max(c, 1.0 - (1.0 - c) * (1.0 - trust * c_obj))
 
 
 ChangeKind = Literal[
