@@ -14,6 +14,7 @@ from lucifer.kb import load_kb
 from lucifer.language.analyzer import ReportAnalyzer, analyze
 
 HARBOURSIDE = ROOT / "knowledge_bases" / "harbourside"
+NORTHGATE = ROOT / "knowledge_bases" / "northgate"
 
 
 @pytest.fixture(scope="module")
@@ -66,6 +67,24 @@ def claims(an: ReportAnalyzer, text: str) -> list[tuple[str, str]]:
     # a member of the public placed at the scene
     ("smoke showing at the bakery, and there's an elderly man at the upstairs window",
      [("bakery", "hazard"), ("bakery", "victim")]),
+    # fillers and adverbs inside a cue phrase; a crew's position is not a claim
+    ("team two is at the park, and, uh, the sports hall, I mean the gym, roof's partly down",
+     [("sports hall", "hazard")]),
+    ("the team is at the bank, it's on fire", [("bank", "hazard")]),
+    # a name recombined from the landmark's own forms ("bus station" + "the terminal")
+    ("bus terminal's got a guy unconscious on platform two", [("bus station", "victim")]),
+    # radio speech drops the article of a sentence's subject
+    ("Precinct secure, holding evacuees there.", [("police station", "safe_zone")]),
+    # a singular predicate belongs to its own place, not to a list before it
+    ("medic needed at the fire hall, no, the police station, and the fire hall's secure",
+     [("fire station", "safe_zone"), ("police station", "victim")]),
+    # descriptions of landmarks instead of their names
+    ("The building with the two engine bays is our staging area; people are trapped in the brick place across from it.",
+     [("bank", "victim"), ("fire station", "safe_zone")]),
+    ("Three-storey place on the west road — guests trapped in the lift.", [("hotel", "victim")]),
+    # "itself" names the landmark an earlier description used as its reference point
+    ("Out back of the tool shop there's a fuel fire; the shop itself has a guy with burns to both hands.",
+     [("garage", "hazard"), ("hardware store", "victim")]),
 ])
 def test_phenomena(analyzer, text, expected):
     assert claims(analyzer, text) == expected
@@ -85,6 +104,8 @@ def test_phenomena(analyzer, text, expected):
     "Which is the rest centre now, the church or the school?",
     "crews will clear the school shortly",
     "nobody home at the flats, they're all out",
+    "the building on the north road",
+    "heavy smoke on the west side, no idea which building yet",
 ])
 def test_no_claim(analyzer, text):
     assert claims(analyzer, text) == []
@@ -111,6 +132,26 @@ def test_kb_with_direction_relations_and_two_undesirable_categories():
     assert claims(an, "gas leak in the building landward of the ferry terminal") == [("harbour master's office", "peril")]
     assert claims(an, "the school gates are chained shut, no way in") == [("primary school", "no_access")]
     assert claims(an, "smoke pouring from the chapel") == [("chapel", "peril")]
+
+
+def test_relations_named_by_a_distinctive_word():
+    """Northgate's relation names (linked_by_skybridge_to, connected_by_tunnel_to, supplied_by, annexe_of)
+    are said in words no table lists; a distinctive word of the name, its stem and its voice carry them."""
+    an = ReportAnalyzer(load_kb(NORTHGATE), get_embedder())
+    # symmetric in the world, stated one way in the KB
+    assert claims(an, "Smoke coming from the building across the skybridge from A and E.") == \
+        [("radiology block", "no_go_zone")]
+    assert claims(an, "Someone trapped in the block at the other end of the service tunnel from the boiler house.") == \
+        [("ward tower", "needs_rescue")]
+    # passive name said actively reads backwards; a synonym verb ("fed") counts
+    assert claims(an, "the plant that supplies the halls is arcing") == [("substation", "no_go_zone")]
+    assert claims(an, "The unit fed by the oxygen compound has ventilated patients who need moving now.") == \
+        [("intensive care unit", "needs_rescue")]
+    # a noun relation, inverse ("the building X is an annexe of") and headed by the relation word
+    assert claims(an, "The main building that the path lab is an annexe of has been red tagged.") == \
+        [("ward tower", "no_go_zone")]
+    assert claims(an, "The annexe tacked onto the multi-storey is where the guard is, he's got a crush injury.") == \
+        [("security lodge", "needs_rescue")]
 
 
 def test_every_shipped_report_is_analyzed_without_error(analyzer):

@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev5) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev6) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -14,6 +14,8 @@ GROUNDING = ROOT / "datasets" / "grounding"
 MARKET_SQUARE = ROOT / "knowledge_base"
 RIVERBEND = ROOT / "knowledge_bases" / "riverbend"
 HARBOURSIDE = ROOT / "knowledge_bases" / "harbourside"
+NORTHGATE = ROOT / "knowledge_bases" / "northgate"
+QUARRYTOWN = ROOT / "knowledge_bases" / "quarrytown"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -38,6 +40,11 @@ SETS = {
     "dev5/riverbend": _set("dev5/riverbend.jsonl", RIVERBEND, "d5r", {"standard": 30, "messy": 30, "advanced_messy": 30},
                            sep=""),
     "dev5/harbourside": _set("dev5/harbourside.jsonl", HARBOURSIDE, "hb", EVEN, sep=""),
+    "dev6/market_square": _set("dev6/market_square.jsonl", MARKET_SQUARE, "d6",
+                               {"standard": 30, "messy": 50, "advanced_messy": 40}, sep=""),
+    "dev6/northgate": _set("dev6/northgate.jsonl", NORTHGATE, "ng", {"standard": 30, "messy": 30, "advanced_messy": 30},
+                           sep=""),
+    "dev6/quarrytown": _set("dev6/quarrytown.jsonl", QUARRYTOWN, "qt", EVEN, sep=""),
 }
 
 
