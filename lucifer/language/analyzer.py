@@ -195,11 +195,27 @@ class ReportAnalyzer:
         cats = self.kb.categories_with_role(role)
         if not cats:
             return None
+        # words the descriptions themselves use decide first ("flooding" -> "... floodwater pouring over ...")
+        words = [w for w in norm_phrase(phrase) if len(w) >= 4]
+        overlap = [sum(any(_same_stem(w, d) for d in self._affirmed_words(c.description)) for w in words) for c in cats]
+        if overlap and max(overlap) > 0 and overlap.count(max(overlap)) == 1:
+            return cats[overlap.index(max(overlap))].name
         if self.embedder is None:
             return cats[0].name
         vecs = self.embedder.embed([phrase] + [f"{c.name.replace('_', ' ')}: {c.description}" for c in cats])
         sims = vecs[1:] @ vecs[0]
         return cats[int(np.argmax(sims))].name
+
+    @staticmethod
+    def _affirmed_words(description: str) -> set[str]:
+        """Content words of a category description, leaving out its negated clauses ("Nothing is burning")."""
+        out: set[str] = set()
+        for clause in re.split(r"[.;:()\u2014\u2013]|\s-\s", description):
+            ws = norm_phrase(clause)
+            if set(ws) & lx.NEGATORS:
+                continue
+            out.update(w for w in ws if len(w) >= 4)
+        return out
 
     def _build_cues(self) -> None:
         entries: dict[tuple[str, ...], tuple[str, str]] = {}
@@ -1869,6 +1885,15 @@ class ReportAnalyzer:
                 return None
             j += 1
         return None
+
+
+def _same_stem(a: str, b: str) -> bool:
+    """Loose stem match of two word keys: "flooding"/"floodwater", "leak"/"leaking", "subsided"/"subsidence"."""
+    n = min(len(a), len(b))
+    if n < 4:
+        return a == b
+    k = max(4, n - 3)
+    return a[:k] == b[:k] and (a.startswith(b[: len(b) - 3]) or b.startswith(a[: len(a) - 3]) or a[:5] == b[:5])
 
 
 def _link_stems(word: str) -> set[str]:
