@@ -19,8 +19,10 @@ relation phrase).
 
 from __future__ import annotations
 
+import functools
 import re
 import threading
+from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 from typing import Literal
 
@@ -197,7 +199,8 @@ class ReportAnalyzer:
             return None
         # words the descriptions themselves use decide first ("flooding" -> "... floodwater pouring over ...")
         words = [w for w in norm_phrase(phrase) if len(w) >= 4]
-        overlap = [sum(any(_same_stem(w, d) for d in self._affirmed_words(c.description)) for w in words) for c in cats]
+        described = [self._affirmed_words(c.description) for c in cats]
+        overlap = [sum(any(_same_stem(w, d) for d in ds) for w in words) for ds in described]
         if overlap and max(overlap) > 0 and overlap.count(max(overlap)) == 1:
             return cats[overlap.index(max(overlap))].name
         if self.embedder is None:
@@ -207,7 +210,8 @@ class ReportAnalyzer:
         return cats[int(np.argmax(sims))].name
 
     @staticmethod
-    def _affirmed_words(description: str) -> set[str]:
+    @functools.lru_cache(maxsize=256)
+    def _affirmed_words(description: str) -> frozenset[str]:
         """Content words of a category description, leaving out its negated clauses ("Nothing is burning")."""
         out: set[str] = set()
         for clause in re.split(r"[.;:()\u2014\u2013]|\s-\s", description):
@@ -215,7 +219,7 @@ class ReportAnalyzer:
             if set(ws) & lx.NEGATORS:
                 continue
             out.update(w for w in ws if len(w) >= 4)
-        return out
+        return frozenset(out)
 
     def _build_cues(self) -> None:
         entries: dict[tuple[str, ...], tuple[str, str]] = {}
@@ -262,14 +266,24 @@ class ReportAnalyzer:
         for key, val in forms.items():
             self._relations.add(key, val)
 
+    def _unique_stems(self, usable: Callable[[str], bool]) -> dict[str, str]:
+        """Stems of the usable words of the KB's relation names -> the one relation name that has them.
+
+        A stem that two relation names share is left out: it would not tell them apart."""
+        owners: dict[str, set[str]] = {}
+        for rel in self.kb.relations:
+            for w in rel.phrase.split():
+                if len(w) >= 3 and usable(w):
+                    for stem in _link_stems(w):
+                        owners.setdefault(stem, set()).add(rel.phrase)
+        return {stem: next(iter(rels)) for stem, rels in owners.items() if len(rels) == 1}
+
     def _relation_keywords(self) -> dict[str, tuple[str, str]]:
         """Stems of the distinctive words of the KB's relation names -> (relation phrase, voice).
 
         ``voice`` is "passive" for names such as ``supplied_by`` (said backwards as "the plant
-        that supplies X"), "active" for verbs such as ``tunnels_into``, else "other". A stem that
-        two relation names share is left out: it would not tell them apart.
+        that supplies X"), "active" for verbs such as ``tunnels_into``, else "other".
         """
-        owners: dict[str, set[str]] = {}
         voice: dict[str, str] = {}
         for rel in self.kb.relations:
             words = rel.phrase.split()
@@ -279,12 +293,9 @@ class ReportAnalyzer:
                 voice[rel.phrase] = "active"
             else:
                 voice.setdefault(rel.phrase, "other")
-            for w in words:
-                if w in lx.RELATION_NAME_STOPWORDS or w in lx.ANTONYMS or w in lx.DIRECTION_FAMILIES or len(w) < 3:
-                    continue
-                for stem in _link_stems(w):
-                    owners.setdefault(stem, set()).add(rel.phrase)
-        return {stem: (next(iter(rels)), voice[next(iter(rels))]) for stem, rels in owners.items() if len(rels) == 1}
+        stems = self._unique_stems(lambda w: w not in lx.RELATION_NAME_STOPWORDS and w not in lx.ANTONYMS
+                                   and w not in lx.DIRECTION_FAMILIES)
+        return {stem: (phrase, voice[phrase]) for stem, phrase in stems.items()}
 
     def _keyword_relation(self, word: str) -> tuple[str, str] | None:
         if word in lx.RELATION_NAME_STOPWORDS or len(word) < 3:
@@ -318,13 +329,8 @@ class ReportAnalyzer:
     def _weak_keywords(self) -> dict[str, str]:
         """Stems of every word of the KB's relation names but function words, each naming one relation."""
         if getattr(self, "_weak_cache", None) is None:
-            owners: dict[str, set[str]] = {}
-            for rel in self.kb.relations:
-                for w in rel.phrase.split():
-                    if w not in lx.RELATION_ENDINGS | {"the", "a", "an", "is", "and", "into", "at", "in"} and len(w) >= 3:
-                        for stem in _link_stems(w):
-                            owners.setdefault(stem, set()).add(rel.phrase)
-            self._weak_cache = {k: next(iter(v)) for k, v in owners.items() if len(v) == 1}
+            function_words = lx.RELATION_ENDINGS | {"the", "a", "an", "is", "and", "into", "at", "in"}
+            self._weak_cache = self._unique_stems(lambda w: w not in function_words)
         return self._weak_cache
 
     def _keyword_hits(self, toks: Tokens, norms: tuple[str, ...], covered: set[int],
@@ -544,8 +550,7 @@ class ReportAnalyzer:
         self._marker_cache = marker_tokens
         rel_hits = self._relations.find_all(norms, place_tokens)
         if self.kb.relations:
-            cue_tokens = {i for a, b, (_, src) in self._cues.find_all(norms, place_tokens | marker_tokens)
-                          if src != "neutral" for i in range(a, b)}
+            cue_tokens = self._claim_cue_tokens(norms, place_tokens | marker_tokens)
             covered = place_tokens | marker_tokens | {i for a, b, _ in rel_hits if b - a > 1 for i in range(a, b)}
             known = {i for a, b, _ in rel_hits for i in range(a, b)}
             extra = self._keyword_hits(toks, norms, covered, cue_tokens, known)
@@ -560,8 +565,7 @@ class ReportAnalyzer:
                 self._resolve_one(ex, toks, norms, a, b, phrase, flipped, place_tokens, marker_tokens,
                                   inverse_pass=pass_no == 2)
         if self.embedder is not None and self.kb.relations:
-            cue_tokens = {i for a, b, (_, src) in self._cues.find_all(norms, place_tokens | marker_tokens)
-                          if src != "neutral" for i in range(a, b)}
+            cue_tokens = self._claim_cue_tokens(norms, place_tokens | marker_tokens)
             self._resolve_open(ex, toks, norms, place_tokens, marker_tokens, cue_tokens)
             self._resolve_open_inverse(ex, toks, norms, place_tokens, marker_tokens, cue_tokens)
         for d in [p for p in ex.places if p.via is not None and p.status == "active"]:
@@ -784,8 +788,7 @@ class ReportAnalyzer:
         place_tokens = {i for p in ex.places for i in range(p.start_tok, p.end_tok)}
         marker_tokens = {i for a, b, _ in ex.markers for i in range(a, b)}
         relation_starts = {a for a, _, _ in self._relations.find_all(norms, place_tokens)}
-        cue_tokens = {i for a, b, (_, src) in self._cues.find_all(norms, place_tokens) if src != "neutral"
-                      for i in range(a, b)}
+        cue_tokens = self._claim_cue_tokens(norms, place_tokens)
         stop = place_tokens | marker_tokens | cue_tokens
         desc = self._description_words()
         closed = lx.PREPOSITIONS | lx.COPULAS | lx.FILLERS | lx.PRONOUNS | lx.COORDINATORS | lx.NEGATORS
@@ -1160,7 +1163,14 @@ class ReportAnalyzer:
         norms = ex.tokens.norms(0, len(ex.tokens))
         blocked = {i for p in ex.places for i in range(p.start_tok, p.end_tok)}
         blocked |= {i for a, b, _ in ex.markers for i in range(a, b)}
+        return self._claim_cue_spans(norms, blocked)
+
+    def _claim_cue_spans(self, norms: tuple[str, ...], blocked: set[int]) -> list[tuple[int, int]]:
+        """Spans of the cue phrases that claim something (neutral phrases such as "fire crew" left out)."""
         return [(a, b) for a, b, (_, src) in self._cues.find_all(norms, blocked) if src != "neutral"]
+
+    def _claim_cue_tokens(self, norms: tuple[str, ...], blocked: set[int]) -> set[int]:
+        return {i for a, b in self._claim_cue_spans(norms, blocked) for i in range(a, b)}
 
     def _repair_kind(self, ex: Extraction, k: int, cue_spans: list[tuple[int, int]]) -> str | None:
         """What marker ``k`` repairs: ``place``, ``cue``, ``full`` (cue + place restated) or ``None``.
