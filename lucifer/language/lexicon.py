@@ -128,7 +128,7 @@ CANCEL_AFTER = ["is out", "s out", "are out", "was out", "put out", "out now", "
 
 # Words that open a clause speaking again of the thing just named ("..., it's drained now").
 BACK_REFERENCE_WORDS = {"it", "its", "s", "is", "has", "been", "thats", "that", "was", "they", "theyre", "are", "re",
-                        "have", "ve", "now", "all", "been", "finally", "fully"}
+                        "have", "ve", "now", "all", "finally", "fully"}
 
 # Phrases that contain cue words but claim nothing ("the smoke alarm went off", "fire crew on site").
 NEUTRAL_PHRASES = ["smoke alarm", "smoke alarms", "fire alarm", "fire alarms", "fire exit", "fire escape",
@@ -209,8 +209,7 @@ ANTONYMS = {"upstream": "downstream", "downstream": "upstream", "upriver": "down
             "before": "after", "after": "before", "upstairs": "downstairs", "downstairs": "upstairs",
             "front": "back", "back": "front", "inside": "outside", "outside": "inside", "higher": "lower",
             "lower": "higher", "feeds": "fed", "supplies": "supplied", "seaward": "landward",
-            "landward": "seaward", "inland": "seaward", "uphill": "downhill", "downhill": "uphill",
-            "up": "down", "down": "up"}
+            "landward": "seaward", "inland": "seaward", "up": "down", "down": "up"}
 # Direction words of relation names, each with the ways a report says it; a relation named with
 # one ("seaward_of", "uphill_from") is also matched by the others, and backwards by the opposite family.
 DIRECTION_FAMILIES: dict[str, list[str]] = {
@@ -269,7 +268,7 @@ GENERIC_HEADS = {
     "space", "green", "lawn", "garden", "gardens", "road", "street", "alley", "terrace", "plot", "land", "apartments",
     "flats", "bay", "wing", "hotel", "inn", "library", "hospital", "quarter", "section", "zone", "ones",
     "neighbour", "neighbor", "door", "location", "address", "greenspace", "premise", "whatever", "works", "work",
-    "row", "terrace", "parade", "arcade", "kiosk", "stall", "lodge", "chapel", "depot",
+    "row", "parade", "arcade", "kiosk", "stall", "lodge", "chapel",
 }
 
 FILLERS = {"uh", "um", "er", "erm", "ah", "eh", "hmm", "like", "so", "okay", "ok", "well", "yeah", "right",
