@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev6) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev7) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -16,6 +16,7 @@ RIVERBEND = ROOT / "knowledge_bases" / "riverbend"
 HARBOURSIDE = ROOT / "knowledge_bases" / "harbourside"
 NORTHGATE = ROOT / "knowledge_bases" / "northgate"
 QUARRYTOWN = ROOT / "knowledge_bases" / "quarrytown"
+SALTMARSH = ROOT / "knowledge_bases" / "saltmarsh_airfield"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -45,6 +46,10 @@ SETS = {
     "dev6/northgate": _set("dev6/northgate.jsonl", NORTHGATE, "ng", {"standard": 30, "messy": 30, "advanced_messy": 30},
                            sep=""),
     "dev6/quarrytown": _set("dev6/quarrytown.jsonl", QUARRYTOWN, "qt", EVEN, sep=""),
+    "dev7/market_square": _set("dev7/market_square.jsonl", MARKET_SQUARE, "d7",
+                               {"standard": 30, "messy": 50, "advanced_messy": 40}, sep=""),
+    "dev7/saltmarsh_airfield": _set("dev7/saltmarsh_airfield.jsonl", SALTMARSH, "sa",
+                                    {"standard": 30, "messy": 50, "advanced_messy": 40}, sep=""),
 }
 
 
