@@ -270,13 +270,23 @@ class ReportAnalyzer:
         """Stems of the usable words of the KB's relation names -> the one relation name that has them.
 
         A stem that two relation names share is left out: it would not tell them apart."""
-        owners: dict[str, set[str]] = {}
+        own: dict[str, set[str]] = {}  # the word's own stem
+        synonym: dict[str, set[str]] = {}  # stems of its link synonyms
         for rel in self.kb.relations:
             for w in rel.phrase.split():
                 if len(w) >= 3 and usable(w):
-                    for stem in _link_stems(w):
-                        owners.setdefault(stem, set()).add(rel.phrase)
-        return {stem: next(iter(rels)) for stem, rels in owners.items() if len(rels) == 1}
+                    stems = _link_stems(w)
+                    mine = _link_stems(w, synonyms=False)
+                    for stem in stems:
+                        (own if stem in mine else synonym).setdefault(stem, set()).add(rel.phrase)
+        out = {stem: next(iter(rels)) for stem, rels in synonym.items() if len(rels) == 1}
+        # a relation whose name has the word itself wins over one that has only a synonym of it
+        # ("feeds_fuel_to" owns "feed" next to "serves")
+        out.update({stem: next(iter(rels)) for stem, rels in own.items() if len(rels) == 1})
+        for stem, rels in own.items():
+            if len(rels) > 1:
+                out.pop(stem, None)
+        return out
 
     def _relation_keywords(self) -> dict[str, tuple[str, str]]:
         """Stems of the distinctive words of the KB's relation names -> (relation phrase, voice).
@@ -289,20 +299,26 @@ class ReportAnalyzer:
             words = rel.phrase.split()
             if words and words[-1] == "by" and len(words) >= 2:
                 voice[rel.phrase] = "passive"
-            elif words and words[0].endswith("s") and not words[0].endswith("ss") and words[0] not in lx.ANTONYMS:
+            elif words and words[0].endswith("s") and not words[0].endswith("ss") and not _direction_word(words[0]):
                 voice[rel.phrase] = "active"
             else:
                 voice.setdefault(rel.phrase, "other")
-        stems = self._unique_stems(lambda w: w not in lx.RELATION_NAME_STOPWORDS and w not in lx.ANTONYMS
+        stems = self._unique_stems(lambda w: w not in lx.RELATION_NAME_STOPWORDS and not _direction_word(w)
                                    and w not in lx.DIRECTION_FAMILIES)
         return {stem: (phrase, voice[phrase]) for stem, phrase in stems.items()}
 
     def _keyword_relation(self, word: str) -> tuple[str, str] | None:
         if word in lx.RELATION_NAME_STOPWORDS or len(word) < 3:
             return None
-        for stem in _link_stems(word):
-            for key, hit in self._rel_keywords.items():
-                if stem == key or (min(len(stem), len(key)) >= 5 and (stem.endswith(key) or key.endswith(stem))):
+        own = _link_stems(word, synonyms=False)
+        # the word's own stem before its synonyms, an exact stem before a compound; fixed order
+        stems = sorted(own) + sorted(_link_stems(word) - own)
+        for stem in stems:
+            if stem in self._rel_keywords:
+                return self._rel_keywords[stem]
+        for stem in stems:
+            for key, hit in sorted(self._rel_keywords.items()):
+                if min(len(stem), len(key)) >= 5 and (stem.endswith(key) or key.endswith(stem)):
                     return hit
         return None
 
@@ -1906,7 +1922,17 @@ def _same_stem(a: str, b: str) -> bool:
     return a[:k] == b[:k] and (a.startswith(b[: len(b) - 3]) or b.startswith(a[: len(a) - 3]) or a[:5] == b[:5])
 
 
-def _link_stems(word: str) -> set[str]:
+def _direction_word(word: str) -> bool:
+    """Does the word set a direction ("upstream", "north") rather than a voice ("feeds" / "fed")?
+
+    >>> _direction_word("upstream"), _direction_word("feeds"), _direction_word("paired")
+    (True, False, False)
+    """
+    other = lx.ANTONYMS.get(word)
+    return other is not None and not (_link_stems(word, synonyms=False) & _link_stems(other, synonyms=False))
+
+
+def _link_stems(word: str, synonyms: bool = True) -> set[str]:
     """Stems of a word of a relation phrase, with its link synonyms.
 
     >>> sorted(_link_stems("tunnelled")) == sorted(_link_stems("tunnels"))
@@ -1925,6 +1951,8 @@ def _link_stems(word: str) -> set[str]:
     if len(w) > 3 and w[-1] in "ey":
         w = w[:-1]
     stems = {w}
+    if not synonyms:
+        return stems
     for group in lx.LINK_SYNONYMS:
         if w in group:
             stems |= group
@@ -1957,7 +1985,7 @@ def _relation_forms(phrase: str) -> list[tuple[str, bool]]:
         out.append((" ".join(swapped), True))
     verb = words[0]
     rest = " ".join(words[1:])
-    if not (len(words) == 1 or verb.endswith("s")) or verb in lx.ANTONYMS or verb.endswith("ss"):
+    if not (len(words) == 1 or verb.endswith("s")) or _direction_word(verb) or verb.endswith("ss"):
         return _with_group_inverses(phrase, out)
     stems = {verb[:-1]} if verb.endswith("s") and len(verb) > 4 else {verb}
     for stem in list(stems):
