@@ -15,6 +15,7 @@ from lucifer.language.analyzer import ReportAnalyzer, analyze
 
 HARBOURSIDE = ROOT / "knowledge_bases" / "harbourside"
 NORTHGATE = ROOT / "knowledge_bases" / "northgate"
+SALTMARSH = ROOT / "knowledge_bases" / "saltmarsh_airfield"
 
 
 @pytest.fixture(scope="module")
@@ -152,6 +153,28 @@ def test_relations_named_by_a_distinctive_word():
         [("ward tower", "no_go_zone")]
     assert claims(an, "The annexe tacked onto the multi-storey is where the guard is, he's got a crush injury.") == \
         [("security lodge", "needs_rescue")]
+
+
+def test_relational_nouns_possessives_and_plain_heads():
+    an = ReportAnalyzer(load_kb(SALTMARSH), get_embedder())
+    # a relation whose name has the word ("feeds_fuel_to") owns it over one with a synonym ("serves")
+    assert claims(an, "smoke over the area the fuel farm feeds") == [("main apron", "fire_risk")]
+    # a relational noun after a possessive, named or pronoun; the relation's verb is no such noun
+    assert claims(an, "a fuel leak in hangar two's sister hangar") == [("hangar one", "fire_risk")]
+    assert claims(an, "not hangar two, its twin, has a mechanic hurt") == [("hangar one", "person_in_need")]
+    assert claims(an, "hangar two's open now, and it's on fire") == [("hangar two", "fire_risk")]
+    # a plain noun after an article heads an inverse description, with a pronoun or a named anchor
+    assert claims(an, "hangar two is burning and the taxiway it opens onto is blocked") == \
+        [("hangar two", "fire_risk"), ("taxiway alpha", "blocked_access")]
+    assert claims(an, "the hangar the workshop backs onto has a mechanic trapped") == [("hangar one", "person_in_need")]
+    # an unlisted link goes by the closest relation the anchor takes part in, in the direction read
+    assert claims(an, "debris all over whatever taxiway alpha comes out onto") == [("main runway", "blocked_access")]
+    # "upwind" reads "downwind_of" backwards; a radio subject without its article ("tower's clear")
+    assert claims(an, "the building upwind of the beacon is on fire") == [("village hall", "fire_risk")]
+    assert claims(an, "tower's clear") == [("control tower", "clear_ground")]
+    # a place that ends a landmark description is part of it, not a claim
+    assert claims(an, "the station with the crash road out to the two seven end is clear") == \
+        [("fire and rescue station", "clear_ground")]
 
 
 def test_every_shipped_report_is_analyzed_without_error(analyzer):

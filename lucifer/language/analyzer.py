@@ -442,7 +442,8 @@ class ReportAnalyzer:
 
     def _telegraphic_subject(self, toks: Tokens, norms: tuple[str, ...], a: int, b: int) -> bool:
         """"Precinct secure, holding evacuees there": radio speech drops the article of a sentence's subject."""
-        if not toks.sentence_start[a] or b >= len(norms) or norms[a] in lx.DESCRIPTIVE_WORDS:
+        contracted = toks.tokens[b - 1].text.lower().endswith(("'s", "’s"))  # "tower's clear"
+        if not toks.sentence_start[a] or b >= len(norms) or (norms[a] in lx.DESCRIPTIVE_WORDS and not contracted):
             return False
         return toks.clause_start[b] or norms[b] in lx.COPULAS \
             or self._cues.match_at(norms, b) is not None
@@ -620,6 +621,32 @@ class ReportAnalyzer:
             inverse = not inverse
         return float(sims[best]), phrase, inverse
 
+    OPEN_RELATION_MARGIN = 0.1
+
+    def _follow_link(self, anchor: str, link: str, head: str, inverse: bool) -> tuple[str | None, str | None]:
+        """Follow an unlisted linking phrase from ``anchor``: of the KB relation forms close to it
+        (within ``OPEN_RELATION_MARGIN`` of the best), the closest one the anchor takes part in,
+        in the direction the phrase reads, wins ("whatever taxiway alpha comes out onto":
+        ``leads_onto``, which taxiway alpha is the subject of, not ``opens_onto``); if none does,
+        the best form is followed as before."""
+        mat, meta = self._relation_texts()
+        sims = mat @ self.embedder.embed_one(link)  # type: ignore[union-attr]
+        order = np.argsort(-sims, kind="stable")
+        best = float(sims[order[0]])
+        if best < self.OPEN_RELATION_MIN_SIM:
+            return None, None
+        flip = lambda phrase, inv: (not inv if any(lx.ANTONYMS.get(w) in phrase.split() for w in link.split()) else inv)
+        for i in order:
+            if sims[i] < max(self.OPEN_RELATION_MIN_SIM, best - self.OPEN_RELATION_MARGIN):
+                break
+            phrase, inv = meta[int(i)]
+            inv = flip(phrase, inv)
+            target, via = self._follow(anchor, phrase, head, inverse=inv != inverse, _loose=True)
+            if target is not None:
+                return target, via
+        phrase, inv = meta[int(order[0])]
+        return self._follow(anchor, phrase, head, inverse=flip(phrase, inv) != inverse)
+
     def _resolve_open(self, ex: Extraction, toks: Tokens, norms: tuple[str, ...], place_tokens: set[int],
                       marker_tokens: set[int], cue_tokens: set[int]) -> None:
         """"the place sharing a wall with the mill": an unknown linking phrase between a generic
@@ -655,7 +682,7 @@ class ReportAnalyzer:
                     ex.places[idx] = replace(anchor, status="reference",
                                              reason=f"reference point of an unresolved description ('{link}')")
                 continue
-            target, via = self._follow(anchor.landmark, phrase, toks.tokens[k - 1].text, inverse=inverse)
+            target, via = self._follow_link(anchor.landmark, link, toks.tokens[k - 1].text, inverse=False)
             if target is None:
                 ex.places[idx] = replace(anchor, status="reference", reason=f"reference point of an unresolved '{link}'")
                 continue
@@ -671,13 +698,14 @@ class ReportAnalyzer:
             k = anchor.start_tok
             while k > 0 and norms[k - 1] in lx.DETERMINERS | {"that", "which"} and anchor.start_tok - k < 2:
                 k -= 1
-            if k == 0 or k == anchor.start_tok or norms[k - 1] not in lx.GENERIC_HEADS or (k - 1) in place_tokens \
-                    or toks.clause_start[k]:
+            if k == 0 or (k == anchor.start_tok and norms[k - 1] != "whatever" and not (k >= 2 and norms[k - 2] in lx.ARTICLES)) \
+                    or (k - 1) in place_tokens \
+                    or toks.clause_start[k] or not (norms[k - 1] in lx.GENERIC_HEADS or self._plain_head(norms, k - 1)):
                 continue
             hs = k - 1
             while hs > 0 and norms[hs - 1] in lx.DETERMINERS and (hs - 1) not in marker_tokens:
                 hs -= 1
-            if hs == k - 1:
+            if hs == k - 1 and norms[hs] != "whatever":
                 continue  # "the shop the pharmacy ...", not "shop the pharmacy"
             e = anchor.end_tok
             m = None
@@ -696,11 +724,8 @@ class ReportAnalyzer:
                 or " ".join(toks.tokens[i].text.lower() for i in range(e, m))
             if self._relations.match_at(norms, m - 1) is not None and m - e <= 2:
                 continue  # a known phrase: the table-driven passes own it
-            sim, phrase, inverse = self._match_link(link)
-            if sim < self.OPEN_RELATION_MIN_SIM:
-                continue
             head = toks.tokens[k - 1].text
-            target, via = self._follow(anchor.landmark, phrase, head, inverse=not inverse)
+            target, via = self._follow_link(anchor.landmark, link, head, inverse=True)
             if target is None:
                 continue
             idx = ex.places.index(anchor)
@@ -832,8 +857,15 @@ class ReportAnalyzer:
             scores = sorted(((len(words & ws), name) for name, ws in desc.items()), reverse=True)
             if scores and scores[0][0] >= 2 and (len(scores) == 1 or scores[0][0] > scores[1][0]):
                 a = s_ - 1 if has_det else s_
+                while e - 1 > i and norms[e - 1] in lx.DETERMINERS:
+                    e -= 1
                 ex.places.append(self._mention(toks, a, e, scores[0][1], via=f"description of {scores[0][1]}"))
                 stop.update(range(a, e))
+                for idx, p in enumerate(ex.places):
+                    if p.status == "active" and p.via is None and e <= p.start_tok <= e + 1 \
+                            and all(norms[t] in lx.DETERMINERS for t in range(e, p.start_tok)):
+                        # "the station with the crash road out to the two seven end": the place ends the description
+                        ex.places[idx] = replace(p, status="reference", reason=f"part of the description of {scores[0][1]}")
                 i = e
                 continue
             i += 1
@@ -856,9 +888,17 @@ class ReportAnalyzer:
             ex.places.append(self._mention(toks, i - 2, i + 1, anchor.landmark))
 
     def _resolve_possessives(self, ex: Extraction) -> None:
-        """"the church's opposite number", "the health centre's neighbour"."""
+        """"the church's opposite number", "the health centre's neighbour", "its twin"."""
         toks = ex.tokens
         norms = toks.norms(0, len(toks))
+        for k in range(1, len(norms)):
+            if toks.tokens[k - 1].text.lower() not in ("its", "their") or any(p.start_tok <= k < p.end_tok for p in ex.places):
+                continue
+            # a noun phrase of its own ("..., its twin, ...", "in their sister hangar"), not an object ("sharing its wall")
+            if toks.clause_start[k - 1] or (k >= 2 and norms[k - 2] in lx.PREPOSITIONS):
+                before = [p for p in ex.places if p.end_tok < k]
+                if before:
+                    self._possessive_keyword(ex, -1, max(before, key=lambda p: p.end_tok), k)
         for idx, p in enumerate(list(ex.places)):
             last = toks.tokens[p.end_tok - 1].text.lower()
             if p.status != "active" or not last.endswith(("'s", "’s")):
@@ -872,6 +912,8 @@ class ReportAnalyzer:
                     ex.places.append(self._mention(toks, p.start_tok, p.end_tok + len(key), target, via=via))
                     break
             else:
+                if self._possessive_keyword(ex, idx, p, p.end_tok):
+                    continue
                 # "the church's across-the-road neighbour": a relation phrase used as a modifier
                 hit = self._relations.match_at(norms, p.end_tok) if p.end_tok < len(norms) else None
                 if hit is None or hit[0] >= len(norms) or norms[hit[0]] not in lx.GENERIC_HEADS:
@@ -882,6 +924,31 @@ class ReportAnalyzer:
                     continue
                 ex.places[idx] = replace(p, status="reference", reason=f"reference point: {via}")
                 ex.places.append(self._mention(toks, p.start_tok, hit[0] + 1, target, via=via))
+
+    def _possessive_keyword(self, ex: Extraction, idx: int, p: PlaceMention, k: int) -> bool:
+        """"hangar two's sister hangar", "its twin": a possessive, then a noun that names a KB relation."""
+        toks = ex.tokens
+        norms = toks.norms(0, len(toks))
+        for j in range(k, min(k + 1, len(norms))):
+            word = toks.tokens[j].text.lower()
+            hit = self._keyword_relation(word) if norms[j].isalpha() and not word.endswith(("ed", "ing")) else None
+            if hit is None:
+                continue
+            verb = hit[0].split()[0]
+            if hit[1] == "active" and _link_stems(word, synonyms=False) & _link_stems(verb, synonyms=False):
+                return False  # "hangar two's open": the relation's verb, not a noun for the other place
+            end = j + 1
+            if end < len(norms) and (norms[end] in lx.GENERIC_HEADS or norms[end] == p.text.split()[0].lower()) \
+                    and not toks.clause_start[end]:
+                end += 1  # "sister hangar"
+            target, via = self._follow(p.landmark, hit[0], " ".join(norms[k:end]), inverse=hit[1] == "passive")
+            if target is None or target == p.landmark:
+                return False
+            if idx >= 0:
+                ex.places[idx] = replace(p, status="reference", reason=f"reference point: {via}")
+            ex.places.append(self._mention(toks, p.start_tok if idx >= 0 else k - 1, end, target, via=via))
+            return True
+        return False
 
     def _is_cue_end(self, norms: tuple[str, ...], end: int) -> bool:
         """Does a cue phrase end right before token ``end`` (allowing prepositions in between)?"""
@@ -946,7 +1013,7 @@ class ReportAnalyzer:
             j -= 1
         anchor = next((p for p in ex.places if p.end_tok == j and p.status == "active"), None)
         if anchor is None and j > 0 and norms[j - 1] in ("it", "its") and j - 1 > 0 \
-                and norms[j - 2] in lx.GENERIC_HEADS | {"that", "which"}:
+                and (norms[j - 2] in lx.GENERIC_HEADS | {"that", "which"} or self._plain_head(norms, j - 2)):
             # "the building it sits next to": the pronoun is the anchor
             hs = j - 2
             while hs > 0 and norms[hs] in ("that", "which"):
@@ -957,7 +1024,8 @@ class ReportAnalyzer:
             before = [p for p in ex.places if p.end_tok <= hs and p.status != "reference"]
             if before:
                 ante = max(before, key=lambda p: p.end_tok)
-                if norms[hs] in lx.GENERIC_HEADS or (hs + 1 < len(norms) and norms[hs + 1] in lx.GENERIC_HEADS):
+                if norms[hs] in lx.GENERIC_HEADS or (hs + 1 < len(norms) and norms[hs + 1] in lx.GENERIC_HEADS) \
+                        or (hs + 1 < len(norms) and self._plain_head(norms, hs + 1)):
                     return ante, hs, "pronoun"  # type: ignore[return-value]
         if anchor is None:
             return None
@@ -971,11 +1039,18 @@ class ReportAnalyzer:
         hs = k
         while hs > 0 and k - hs < 3 and norms[hs - 1] not in lx.PREPOSITIONS | lx.COPULAS and not ex.tokens.clause_start[hs]:
             hs -= 1
-            if norms[hs] in lx.GENERIC_HEADS:
+            if norms[hs] in lx.GENERIC_HEADS or (hs == k - 1 and self._plain_head(norms, hs)):
                 while hs > 0 and norms[hs - 1] in lx.DETERMINERS and (hs - 1) not in self._marker_cache:
                     hs -= 1
                 return anchor, hs, False
         return None
+
+    def _plain_head(self, norms: tuple[str, ...], i: int) -> bool:
+        """A plain noun right after an article ("the taxiway it opens onto"), which may head a description."""
+        w = norms[i]
+        closed = lx.PREPOSITIONS | lx.COPULAS | lx.FILLERS | lx.PRONOUNS | lx.INVERSE_VERBS | lx.DETERMINERS
+        return i > 0 and norms[i - 1] in lx.ARTICLES and w.isalpha() and len(w) >= 3 and w not in closed \
+            and self._cues.match_at(norms, i) is None
 
     def _relation_matches(self, rel: Relation, phrase: str) -> bool:
         rp = rel.phrase

@@ -209,7 +209,8 @@ ANTONYMS = {"upstream": "downstream", "downstream": "upstream", "upriver": "down
             "before": "after", "after": "before", "upstairs": "downstairs", "downstairs": "upstairs",
             "front": "back", "back": "front", "inside": "outside", "outside": "inside", "higher": "lower",
             "lower": "higher", "feeds": "fed", "supplies": "supplied", "seaward": "landward",
-            "landward": "seaward", "inland": "seaward", "up": "down", "down": "up"}
+            "landward": "seaward", "inland": "seaward", "up": "down", "down": "up", "upwind": "downwind",
+            "downwind": "upwind", "windward": "leeward", "leeward": "windward"}
 # Direction words of relation names, each with the ways a report says it; a relation named with
 # one ("seaward_of", "uphill_from") is also matched by the others, and backwards by the opposite family.
 DIRECTION_FAMILIES: dict[str, list[str]] = {
@@ -233,7 +234,7 @@ IRREGULAR_PARTICIPLES = {"fed": "feed", "built": "build", "held": "hold", "led":
                          "dug": "dig", "hung": "hang", "laid": "lay", "kept": "keep", "fitted": "fit", "shaded": "shade",
                          "overshadowed": "overshadow", "drawn": "draw", "sunk": "sink", "bound": "bind"}
 # Word stems that name the same link between two places ("supplied by" / "fed by" / "powered by").
-LINK_SYNONYMS = [{"suppl", "feed", "power", "serv"}, {"link", "connect", "join"}, {"annex", "extension"},
+LINK_SYNONYMS = [{"suppl", "feed", "power", "serv"}, {"pair", "twin", "sister", "partner"}, {"link", "connect", "join"}, {"annex", "extension"},
                  {"tunnel", "underpas", "subway", "passag"}, {"bridg", "walkway", "footbridg"}]
 # Words of a relation name that are too common to identify it on their own in a report.
 RELATION_NAME_STOPWORDS = {"by", "to", "of", "with", "onto", "on", "into", "from", "the", "a", "an", "is", "and", "in",
