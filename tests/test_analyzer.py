@@ -40,6 +40,13 @@ def claims(an: ReportAnalyzer, text: str) -> list[tuple[str, str]]:
     ("Fire at the school. Correction: fire at the library.", [("library", "hazard")]),
     ("fire at the bank, sorry, the bakery", [("bakery", "hazard")]),
     ("man down at the fire st-- at the police station", [("police station", "victim")]),
+    # a marker that is a sentence of its own reaches into the previous sentence; an aside or a stutter
+    # after a marker runs on; a cue phrase never spans two sentences ("hang on. Fire")
+    ("Smoke at the bank. No. Hang on. Smoke at the school.", [("school", "hazard")]),
+    ("gas leak at the cafe, no, sorry, I misread that, gas leak at the hotel", [("hotel", "hazard")]),
+    ("someone hurt in the bank, no, in the, the church", [("church", "victim")]),
+    # "it's flat": a predicate, not the landmark the KB calls "flats"
+    ("the park is usable, it's flat and it's dry", [("park", "safe_zone")]),
     # self-repairs of category
     ("the school is safe, sorry, it's on fire", [("school", "hazard")]),
     ("the reading room is safe... no, actually someone's hurt in there", [("library", "victim")]),

@@ -414,6 +414,13 @@ class ReportAnalyzer:
             if b - a == 1 and prev in lx.COMPOUND_MODIFIERS and not (a > 0 and toks.clause_start[a]) \
                     and not any(p.end_tok == a for p in places):
                 continue  # "car park", "bell tower"
+            if b - a == 1 and a > 0 and not toks.clause_start[a] and (prev in ("is", "was", "looks", "seems") or
+                                                                 toks.tokens[a - 1].text.lower().endswith(("'s", "’s"))) \
+                    and (b == len(norms) or toks.clause_start[b] or norms[b] in lx.COORDINATORS) \
+                    and toks.tokens[a].text.lower() != toks.tokens[a].text.lower().rstrip("s") + "s" \
+                    and any(norm_phrase(f)[-1:] == norms[a:b] and f.lower().endswith("s") for f in
+                            self.kb.landmark_by_name[landmark].surface_forms):
+                continue  # "it's flat and it's clear": a predicate, not the landmark the KB calls "flats"
             places.append(self._mention(toks, a, b, landmark))
         places.extend(self._partial_names(toks, norms, {i for p in places for i in range(p.start_tok, p.end_tok)}))
         for idx, p in enumerate(places):
@@ -535,8 +542,8 @@ class ReportAnalyzer:
                     if not any(i in blocked for i in range(max(0, a - 8), a)):
                         continue
             elif words in (("wait",), ("actually",), ("rather",), ("hang", "on"), ("hold", "on")):
-                # only a repair mid-sentence, set off as a pause, or "actually the X"
-                if toks.sentence_start[a] and words != ("wait",):
+                # only a repair mid-sentence, set off as a pause, or "actually the X"; or a sentence of its own ("Hang on.")
+                if toks.sentence_start[a] and words != ("wait",) and not (b >= len(norms) or toks.sentence_start[b]):
                     continue
                 if not (toks.clause_start[a] or pause_after or nxt in ("the", "its", "it", "make")):
                     continue
@@ -544,7 +551,11 @@ class ReportAnalyzer:
         # adjacent markers ("no, actually", "sorry, I mean", "no, sorry") act as one
         merged: list[tuple[int, int, bool]] = []
         for a, b, strong in out:
-            if merged and all(norms[i] in lx.FILLERS for i in range(merged[-1][1], a)):
+            gap = range(merged[-1][1], a) if merged else range(0)
+            aside = merged and 0 < len(gap) <= 5 and not any(toks.sentence_start[i] for i in range(gap.start, a + 1)) \
+                and not any(i in blocked or self._cues.match_at(norms, i) is not None for i in gap)
+            if merged and (all(norms[i] in lx.FILLERS for i in gap) or aside):
+                # "no, sorry, I'm reading this wrong": markers with only an aside between act as one
                 pa, _, ps = merged[-1]
                 merged[-1] = (pa, b, ps or strong)
             else:
@@ -1237,8 +1248,18 @@ class ReportAnalyzer:
         _, b, _ = ex.markers[k]
         nxt_marker = ex.markers[k + 1][0] if k + 1 < len(ex.markers) else len(toks)
         end = b
+        ran_on = False
         while end < nxt_marker:
             if end > b and (toks.clause_start[end] or norms[end] in lx.COORDINATORS):
+                if not toks.sentence_start[end] and toks.clause_start[end] and end - b <= 6 and not ran_on \
+                        and norms[end] not in lx.COORDINATORS \
+                        and not any(b <= p.start_tok < end for p in ex.places) \
+                        and not any(self._cues.match_at(norms, i) is not None for i in range(b, end)):
+                    # an aside or a stutter runs on: "no, sorry, I'm reading this wrong, the fire's at the garage",
+                    # "no, in the, the med school"
+                    end += 1
+                    ran_on = True
+                    continue
                 # a clause that is only a place ("no wait, the bakery — is on fire") runs on
                 if not any(p.start_tok >= b and p.end_tok <= end for p in ex.places) or toks.sentence_start[end]:
                     break
@@ -1353,11 +1374,14 @@ class ReportAnalyzer:
         """First token a repair marker can reach back to: its sentence (a strong marker that opens
         a sentence reaches into the previous one), never past the previous marker."""
         toks = ex.tokens
-        a, _, strong = ex.markers[k]
+        a, b, strong = ex.markers[k]
         prev_marker_end = ex.markers[k - 1][1] if k > 0 else 0
         sent_starts = [t for t in range(0, a + 1) if toks.sentence_start[t]]
         start = sent_starts[-1] if sent_starts else 0
-        if strong and start == a and len(sent_starts) >= 2:
+        # "Fire at the hotel. No. Fire at the warehouse.": a marker set off by a pause at the start of
+        # a sentence reaches into the previous one, as a strong marker always does
+        alone = b >= len(toks) or toks.clause_start[b]
+        if (strong or alone) and start == a and len(sent_starts) >= 2:
             start = sent_starts[-2]
         return max(start, prev_marker_end)
 

@@ -58,7 +58,27 @@ class Tokens:
         return self.text[self.tokens[a].start : self.tokens[b - 1].end]
 
     def norms(self, a: int, b: int) -> tuple[str, ...]:
+        """Token keys of ``a:b``; the whole report's keys carry its sentence starts, which no phrase spans."""
+        if a == 0 and b == len(self.tokens):
+            return Norms(t.norm for t in self.tokens).with_breaks(
+                i for i, s in enumerate(self.sentence_start) if s and i > 0)
         return tuple(t.norm for t in self.tokens[a:b])
+
+
+class Norms(tuple):  # type: ignore[type-arg]
+    """Token keys of a whole report, with the indices where a new sentence starts ("Hang on. Fire ..."
+    is not "on fire")."""
+
+    breaks: frozenset[int] = frozenset()
+
+    def with_breaks(self, breaks: Iterable[int]) -> Norms:
+        self.breaks = frozenset(breaks)
+        return self
+
+
+def _spans_break(norms: tuple[str, ...], i: int, end: int) -> bool:
+    breaks = getattr(norms, "breaks", None)
+    return bool(breaks) and any(i < k < end for k in breaks)
 
 
 def tokenize(text: str) -> Tokens:
@@ -101,12 +121,13 @@ class PhraseMatcher(Generic[T]):
         blocked_set = set(blocked)
         for key, payload in self._by_first.get(norms[i], ()):
             end = i + len(key)
-            if end <= len(norms) and norms[i:end] == key and not blocked_set.intersection(range(i, end)):
+            if end <= len(norms) and norms[i:end] == key and not blocked_set.intersection(range(i, end)) \
+                    and not _spans_break(norms, i, end):
                 return end, payload
         if self.skippable:
             for key, payload in self._by_first.get(norms[i], ()):
                 end = self._loose_end(norms, i, key)
-                if end is not None and not blocked_set.intersection(range(i, end)):
+                if end is not None and not blocked_set.intersection(range(i, end)) and not _spans_break(norms, i, end):
                     return end, payload
         return None
 
