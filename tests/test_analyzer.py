@@ -45,6 +45,13 @@ def claims(an: ReportAnalyzer, text: str) -> list[tuple[str, str]]:
     ("Smoke at the bank. No. Hang on. Smoke at the school.", [("school", "hazard")]),
     ("gas leak at the cafe, no, sorry, I misread that, gas leak at the hotel", [("hotel", "hazard")]),
     ("someone hurt in the bank, no, in the, the church", [("church", "victim")]),
+    # a part of the anchor between the relation and the anchor
+    ("Smoke coming from the little shop built onto the side of the bakery.", [("pharmacy", "hazard")]),
+    # a pronoun takes up the place spoken of, not the reference point of its description
+    ("Muster point is the park behind the warehouse. Across the street from it, a man is trapped.",
+     [("apartment block", "victim"), ("park", "safe_zone")]),
+    ("The building with the bell tower, west of the square, is our shelter, and a kid is hurt in the place facing it.",
+     [("cafe", "victim"), ("church", "safe_zone")]),
     # "it's flat": a predicate, not the landmark the KB calls "flats"
     ("the park is usable, it's flat and it's dry", [("park", "safe_zone")]),
     # self-repairs of category
@@ -179,6 +186,9 @@ def test_relational_nouns_possessives_and_plain_heads():
     # "upwind" reads "downwind_of" backwards; a radio subject without its article ("tower's clear")
     assert claims(an, "the building upwind of the beacon is on fire") == [("village hall", "fire_risk")]
     assert claims(an, "tower's clear") == [("control tower", "clear_ground")]
+    # the head word of a multi-word name no other landmark shares ("VOR mast"); generic heads are left out
+    assert claims(an, "someone hurt at the mast") == [("navigation beacon", "person_in_need")]
+    assert claims(an, "someone hurt at the building") == []
     # a place that ends a landmark description is part of it, not a claim
     assert claims(an, "the station with the crash road out to the two seven end is clear") == \
         [("fire and rescue station", "clear_ground")]

@@ -423,6 +423,7 @@ class ReportAnalyzer:
                 continue  # "it's flat and it's clear": a predicate, not the landmark the KB calls "flats"
             places.append(self._mention(toks, a, b, landmark))
         places.extend(self._partial_names(toks, norms, {i for p in places for i in range(p.start_tok, p.end_tok)}))
+        places.extend(self._head_names(toks, norms, {i for p in places for i in range(p.start_tok, p.end_tok)}))
         for idx, p in enumerate(places):
             if p.end_tok < len(norms) and norms[p.end_tok] in lx.MODIFIED_BY and not toks.clause_start[p.end_tok] \
                     and norms[p.end_tok : p.end_tok + 2] not in lx.PART_OF_PLACE:
@@ -484,6 +485,36 @@ class ReportAnalyzer:
                 out.append(self._mention(toks, i, end, self._prefixes[key]))
                 taken.update(range(i, end))
                 break
+        return out
+
+    def _head_names(self, toks: Tokens, norms: tuple[str, ...], taken: set[int]) -> list[PlaceMention]:
+        """"the lodge" for "security lodge", "the chandler's" for "ship chandler's": after "the", the head
+        word of a multi-word name that no other landmark's name shares (generic heads such as "shop" left out)."""
+        if not hasattr(self, "_heads"):
+            owners: dict[str, set[str]] = {}
+            words_elsewhere: dict[str, set[str]] = {}
+            for lm in self.kb.landmarks:
+                for form in lm.surface_forms:
+                    words = [w for w in norm_phrase(form) if w not in ("the", "a", "an")]
+                    for w in words:
+                        words_elsewhere.setdefault(w, set()).add(lm.name)
+                    if len(words) >= 2:
+                        owners.setdefault(words[-1], set()).add(lm.name)
+            cue_words = {w for key in self._cue_keys() for w in key}
+            rel_words = {w for rel in self.kb.relations for w in rel.phrase.split()}
+            self._heads = {w: next(iter(names)) for w, names in owners.items()
+                           if len(names) == 1 and words_elsewhere.get(w, set()) == names and len(w) >= 4 and w.isalpha()
+                           and w not in lx.GENERIC_HEADS and w not in lx.DESCRIPTION_HEADS and w not in cue_words
+                           and w not in rel_words and w not in lx.DESCRIPTIVE_WORDS}
+        out = []
+        for i in range(1, len(norms)):
+            w = norms[i]
+            if w not in self._heads or i in taken or norms[i - 1] != "the" or (i - 1) in taken:
+                continue
+            if i + 1 < len(norms) and not toks.clause_start[i + 1] and norms[i + 1].isalpha() \
+                    and norms[i + 1] not in lx.FUNCTION_WORDS:
+                continue  # "the lodge gate": a longer noun phrase
+            out.append(self._mention(toks, i, i + 1, self._heads[w]))
         return out
 
     def _cue_keys(self) -> list[tuple[str, ...]]:
@@ -975,6 +1006,10 @@ class ReportAnalyzer:
     def _anchor_after(self, ex: Extraction, norms: tuple[str, ...], b: int) -> tuple[PlaceMention | None, int, bool]:
         """The landmark a relation phrase points at: a place right after it, or a pronoun."""
         j = b
+        if norms[j : j + 1] in (("the",), ("its",)) and j + 2 < len(norms) and norms[j + 1] in lx.PART_NOUNS \
+                and norms[j + 2] == "of" and (norms[j] == "the" or any(p.end_tok <= b for p in ex.places)):
+            j += 3  # "built onto the side of the mill": the part of the anchor
+            b = j
         while j < len(norms) and (norms[j] in lx.DETERMINERS or norms[j] in lx.FILLERS) and j - b < 3:
             j += 1
         place = next((p for p in ex.places if p.start_tok == j or (p.start_tok >= b and p.start_tok <= j and p.status == "active")), None)
@@ -994,6 +1029,9 @@ class ReportAnalyzer:
             before = [p for p in ex.places if p.end_tok <= b]
             if norms[j] == "us":
                 before = [p for p in before if p.reason.startswith("in transit")] or before
+            # "the park behind the warehouse. Across the street from it": the pronoun takes up the place
+            # spoken of, not the reference point of its description
+            before = [p for p in before if p.status != "reference"] or before
             if before:
                 ante = max(before, key=lambda p: p.end_tok)
                 return ante, j + 1, True

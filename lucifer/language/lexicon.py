@@ -401,6 +401,9 @@ POSSESSIVE_RELATIONS = {("neighbour",): "next to", ("neighbor",): "next to", ("n
                         ("next", "door", "neighbor"): "next to", ("opposite", "number"): "across from",
                         ("neighbouring", "building"): "next to", ("neighboring", "building"): "next to"}
 
+# Parts of a building between a relation and its anchor ("built onto the side of the mill").
+PART_NOUNS = {"side", "wall", "end", "rear", "corner", "gable", "flank"}
+
 # Words for people: "<person> collapsed" is a casualty, not a structural collapse.
 PERSON_NOUNS = ["man", "woman", "person", "someone", "somebody", "firefighter", "child", "kid", "he", "she",
                 "receptionist", "owner", "manager", "caller", "mother", "father", "dad", "mum", "wife", "husband",
@@ -451,3 +454,7 @@ HEADLESS_OK = {"she", "he", "they", "says", "said", "reports", "reported", "say"
                "is", "was", "actually", "rather", "now", "maybe", "probably", "definitely"}
 # Relation groups close enough to stand in for each other when the exact one finds nothing.
 LOOSE_EQUIVALENTS = {"attached to": "next to", "next to": "attached to"}
+
+# Words that may follow a place name without making it part of a longer noun phrase ("the lodge is ...").
+FUNCTION_WORDS = PREPOSITIONS | COPULAS | COORDINATORS | FILLERS | PRONOUNS | NEGATORS | DETERMINERS | {
+    "itself", "where", "which", "that", "who", "s", "as", "now", "again", "too", "then", "there", "here", "first"}
