@@ -45,6 +45,9 @@ def claims(an: ReportAnalyzer, text: str) -> list[tuple[str, str]]:
     ("Smoke at the bank. No. Hang on. Smoke at the school.", [("school", "hazard")]),
     ("gas leak at the cafe, no, sorry, I misread that, gas leak at the hotel", [("hotel", "hazard")]),
     ("someone hurt in the bank, no, in the, the church", [("church", "victim")]),
+    # a cancellation in the clause right after the cue; people "accounted for" do not cancel a shelter
+    ("the hotel is on fire, it's out now, but the bank's still burning", [("bank", "hazard")]),
+    ("the cafe is open as a shelter, forty people sheltering there, all accounted for", [("cafe", "safe_zone")]),
     # a part of the anchor between the relation and the anchor
     ("Smoke coming from the little shop built onto the side of the bakery.", [("pharmacy", "hazard")]),
     # a pronoun takes up the place spoken of, not the reference point of its description
@@ -121,6 +124,11 @@ def test_phenomena(analyzer, text, expected):
     "nobody home at the flats, they're all out",
     "the building on the north road",
     "heavy smoke on the west side, no idea which building yet",
+    # a filler before "no" keeps it a negation; a restated place does not stop a cancellation after it
+    "uh no casualties at the bank and, um, nobody at the school either",
+    "uh the fire at the church, the chapel, it's out",
+    # speech without a question mark still asks
+    "is the is the library is the library safe can anyone confirm over",
 ])
 def test_no_claim(analyzer, text):
     assert claims(analyzer, text) == []

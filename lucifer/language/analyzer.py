@@ -561,7 +561,8 @@ class ReportAnalyzer:
             words = norms[a:b]
             nxt = norms[b] if b < len(norms) else None
             pause_after = b >= len(norms) or toks.clause_start[b]
-            if words == ("no",) or words == ("nope",):
+            if words[-1:] in (("no",), ("nope",)) and all(w in lx.FILLERS for w in words[:-1]):
+                # ("uh no casualties": a filler before it changes nothing)
                 # "no, the bakery" / "no no" is a repair; "no fire" / "no one" is negation;
                 # "the warehouse no the library" (no pause) is a repair when a place precedes
                 if not (pause_after or nxt in ("no", "wait", "sorry", "the", "its", "it", "i", "actually", "make")):
@@ -1636,7 +1637,14 @@ class ReportAnalyzer:
                 if norms[first] in lx.QUESTION_OPENERS and first not in marker_starts:
                     asked.update(range(start, b))
                 continue
-            first = next((norms[i] for i in range(a, b) if norms[i] not in lx.FILLERS), "")
+            opener = next((i for i in range(a, b) if norms[i] not in lx.FILLERS), a)
+            if norms[opener] in lx.YES_NO_OPENERS and opener + 1 < b and norms[opener + 1] in lx.YES_NO_SUBJECTS \
+                    and opener not in marker_starts:
+                # "is the is the square safe can anyone confirm": speech without a question mark still asks
+                end = next((i for i in range(opener + 1, b) if toks.clause_start[i]), b)
+                asked.update(range(a, end))
+                continue
+            first = norms[opener] if opener < b else ""
             if first in lx.INSTRUCTION_VERBS and set(norms[a:b]) & lx.INSTRUCTION_WORDS:
                 dropped[n] = "an instruction to the system, not a report"
         self._non_report_tokens = {i for n, (a, b) in enumerate(sentences) if n in dropped for i in range(a, b)} | asked
@@ -1734,8 +1742,15 @@ class ReportAnalyzer:
                 break
             k += 1
             steps += 1
-        if cancelled_by is None and k < len(norms) and toks.clause_start[k] and k > cue.end_tok:
+        if cancelled_by is None and k < len(norms) and toks.clause_start[k] and k >= cue.end_tok \
+                and self.kb.category_by_name[cue.category].role != Role.DESIRABLE:
             # "the flooding at the cafe, it's, it's drained now": the next clause says it of the same thing
+            # (past a clause that only names the place again: "the fire at the church, the chapel, it's out")
+            j = k
+            while j < len(norms) and norms[j] in lx.DETERMINERS:
+                j += 1
+            if j in ends and ends[j] < len(norms) and toks.clause_start[ends[j]]:
+                k = ends[j]
             j = k
             while j < len(norms) and j - k < 6 and norms[j] in lx.BACK_REFERENCE_WORDS | lx.FILLERS:
                 j += 1

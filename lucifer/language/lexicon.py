@@ -429,6 +429,9 @@ PERSON_SITUATIONS = {"at", "in", "on", "under", "underneath", "beneath", "inside
                      "waving", "sat", "sitting", "lying", "hanging", "holding", "calling", "shouting", "screaming",
                      "crying", "stranded", "left", "behind", "stuck", "still", "down", "floating", "caught"}
 
+# A sentence opening with one of these, then one of the subjects, asks even without a "?" ("is the square safe").
+YES_NO_OPENERS = {"is", "are", "was", "were", "has", "have", "can", "could", "does", "did", "do", "should"}
+YES_NO_SUBJECTS = {"the", "there", "anyone", "anybody", "anything", "it", "that", "this"}
 # A clause opening with one of these and ending in "?" asks rather than reports.
 QUESTION_OPENERS = {"is", "are", "was", "were", "do", "does", "did", "can", "could", "has", "have", "what", "where", "who",
                     "which", "how", "why", "any", "anyone", "anybody", "should", "will", "would", "shall", "may", "isnt",
