@@ -48,6 +48,14 @@ def claims(an: ReportAnalyzer, text: str) -> list[tuple[str, str]]:
     # a cancellation in the clause right after the cue; people "accounted for" do not cancel a shelter
     ("the hotel is on fire, it's out now, but the bank's still burning", [("bank", "hazard")]),
     ("the cafe is open as a shelter, forty people sheltering there, all accounted for", [("cafe", "safe_zone")]),
+    # "what's behind X"; "that" as a pronoun anchor; a negation of another clause stays there;
+    # "Actually no," opens a sentence that repairs the previous one
+    ("Drone has eyes on what's behind the warehouse, it's flooded", [("park", "hazard")]),
+    ("The place behind the warehouse is clear, and the building across from that has people trapped.",
+     [("apartment block", "victim"), ("park", "safe_zone")]),
+    ("The church is clear. The place across from it isn't — there's a fire in the kitchen.",
+     [("cafe", "hazard"), ("church", "safe_zone")]),
+    ("Fire at the hardware store. Actually no, not there, the place behind it.", [("garage", "hazard")]),
     # a part of the anchor between the relation and the anchor
     ("Smoke coming from the little shop built onto the side of the bakery.", [("pharmacy", "hazard")]),
     # a pronoun takes up the place spoken of, not the reference point of its description

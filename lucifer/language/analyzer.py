@@ -1012,6 +1012,9 @@ class ReportAnalyzer:
             j += 3  # "built onto the side of the mill": the part of the anchor
             b = j
         while j < len(norms) and (norms[j] in lx.DETERMINERS or norms[j] in lx.FILLERS) and j - b < 3:
+            if norms[j] in ("that", "this") and (j + 1 >= len(norms) or ex.tokens.clause_start[j + 1]
+                                                 or norms[j + 1] in lx.COPULAS):
+                break  # "the building across from that has people trapped": the pronoun is the anchor
             j += 1
         place = next((p for p in ex.places if p.start_tok == j or (p.start_tok >= b and p.start_tok <= j and p.status == "active")), None)
         if place is not None and place.status in ("active", "retracted", "negated"):
@@ -1420,8 +1423,9 @@ class ReportAnalyzer:
         # "Fire at the hotel. No. Fire at the warehouse.": a marker set off by a pause at the start of
         # a sentence reaches into the previous one, as a strong marker always does
         alone = b >= len(toks) or toks.clause_start[b]
-        if (strong or alone) and start == a and len(sent_starts) >= 2:
-            start = sent_starts[-2]
+        opens = all(toks.tokens[t].norm in lx.FILLERS | {"actually", "wait", "sorry", "oh"} for t in range(start, a))
+        if (strong or alone) and opens and len(sent_starts) >= 2:
+            start = sent_starts[-2]  # (words before the marker are only fillers: "Actually no, ...")
         return max(start, prev_marker_end)
 
     # ------------------------------------------------------------------ classify
@@ -1699,6 +1703,8 @@ class ReportAnalyzer:
         steps = 0
         place_toks = self._place_tokens | self._marker_tokens
         while j >= 0 and steps < 4 and j not in place_toks:
+            if j + 1 < cue.start_tok and toks.clause_start[j + 1]:
+                break  # "the place across from it isn't — there's a fire": another clause's negation
             if norms[j] in lx.NEGATORS or norms[j].endswith("nt") and norms[j] in ("isnt", "arent", "wasnt", "werent", "dont", "doesnt", "didnt", "hasnt", "havent", "cant"):
                 negated_by = toks.tokens[j].text
                 break

@@ -268,7 +268,7 @@ GENERIC_HEADS = {
     "park", "field", "ground", "grounds", "point", "thing", "bit", "side", "corner", "room",
     "space", "green", "lawn", "garden", "gardens", "road", "street", "alley", "terrace", "plot", "land", "apartments",
     "flats", "bay", "wing", "hotel", "inn", "library", "hospital", "quarter", "section", "zone", "ones",
-    "neighbour", "neighbor", "door", "location", "address", "greenspace", "premise", "whatever", "works", "work",
+    "neighbour", "neighbor", "door", "location", "address", "greenspace", "premise", "whatever", "what", "works", "work",
     "row", "parade", "arcade", "kiosk", "stall", "lodge", "chapel",
 }
 
