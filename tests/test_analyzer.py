@@ -210,6 +210,17 @@ def test_relational_nouns_possessives_and_plain_heads():
         [("fire and rescue station", "clear_ground")]
 
 
+def test_head_names_and_anchors_of_an_unseen_kb():
+    an = ReportAnalyzer(load_kb(ROOT / "knowledge_bases" / "quarrytown"), get_embedder())
+    # the head of a multi-word name ("upper gallery", "level entrance") names it, also before a relation
+    assert claims(an, "a walker is stuck on the gallery above the tip") == [("upper gallery", "person_at_risk")]
+    assert claims(an, "the entrance below the magazine has had a fall of ground") == [("drift mouth", "unstable_ground")]
+    # a generic head names the one landmark it heads only as a relation's anchor
+    assert claims(an, "the chapel back to back with the terrace is on fire") == [("ebenezer chapel", "danger")]
+    # "the Co-op's built against": a contraction before a participle, and a short name's possessive
+    assert claims(an, "smoke in the hall the Co-op's built against") == [("miners' institute", "danger")]
+
+
 def test_every_shipped_report_is_analyzed_without_error(analyzer):
     riverbend = ReportAnalyzer(load_kb(RIVERBEND), get_embedder())
     harbourside = ReportAnalyzer(load_kb(HARBOURSIDE), get_embedder())

@@ -504,15 +504,19 @@ class ReportAnalyzer:
             rel_words = {w for rel in self.kb.relations for w in rel.phrase.split()}
             self._heads = {w: next(iter(names)) for w, names in owners.items()
                            if len(names) == 1 and words_elsewhere.get(w, set()) == names and len(w) >= 4 and w.isalpha()
-                           and w not in lx.GENERIC_HEADS and w not in lx.DESCRIPTION_HEADS and w not in cue_words
-                           and w not in rel_words and w not in lx.DESCRIPTIVE_WORDS}
+                           and w not in cue_words and w not in rel_words and w not in lx.DESCRIPTIVE_WORDS}
         out = []
+        rel_ends = {b for _, b, _ in self._relations.find_all(norms)}
         for i in range(1, len(norms)):
             w = norms[i]
             if w not in self._heads or i in taken or norms[i - 1] != "the" or (i - 1) in taken:
                 continue
+            if w in lx.UNNAMING_HEADS or (w in lx.GENERIC_HEADS or w in lx.DESCRIPTION_HEADS) and (i - 1) not in rel_ends:
+                continue  # "the terrace" names the one terrace only as a relation's anchor ("back to back with the terrace")
+            if i + 1 < len(norms) and norms[i + 1] in ("that", "which", "where", "who") and not toks.clause_start[i + 1]:
+                continue  # "the compound that supplies it": a description for the relation passes
             if i + 1 < len(norms) and not toks.clause_start[i + 1] and norms[i + 1].isalpha() \
-                    and norms[i + 1] not in lx.FUNCTION_WORDS:
+                    and norms[i + 1] not in lx.FUNCTION_WORDS and self._relations.match_at(norms, i + 1) is None:
                 continue  # "the lodge gate": a longer noun phrase
             out.append(self._mention(toks, i, i + 1, self._heads[w]))
         return out
@@ -974,7 +978,8 @@ class ReportAnalyzer:
         norms = toks.norms(0, len(toks))
         for j in range(k, min(k + 1, len(norms))):
             word = toks.tokens[j].text.lower()
-            hit = self._keyword_relation(word) if norms[j].isalpha() and not word.endswith(("ed", "ing")) else None
+            participle = word.endswith(("ed", "ing")) or word in lx.IRREGULAR_PARTICIPLES  # "the Co-op's built against"
+            hit = self._keyword_relation(word) if norms[j].isalpha() and not participle else None
             if hit is None:
                 continue
             verb = hit[0].split()[0]

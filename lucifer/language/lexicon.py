@@ -336,6 +336,10 @@ DESCRIPTION_HEADS = {"building", "place", "shop", "store", "tower", "block", "ho
                      "unit", "warehouse", "one", "office", "shed", "hut", "works", "centre", "center", "station", "yard",
                      "plant", "cottage", "cottages", "terrace", "row", "church", "chapel", "inn", "pub", "site",
                      "complex", "facility", "depot", "mill", "factory", "workshop", "barn", "lodge"}
+# Heads too generic ever to name a landmark on their own ("the building", even with one "terminal building").
+UNNAMING_HEADS = {"building", "place", "one", "site", "unit", "premises", "structure", "spot", "area", "thing", "bit",
+                  "side", "house", "shop", "store", "block", "office", "hall", "station", "centre", "center", "room",
+                  "road", "street", "end", "front", "back", "property", "complex", "facility", "ground", "field"}
 # Words that open the tail of such a description ("with the fuel pump", "on the west road", "that sells tools").
 DESCRIPTION_LINKS = {"with", "on", "at", "in", "along", "that", "which", "selling", "sells", "where", "by", "near",
                      "off", "beside", "having"}

@@ -16,13 +16,20 @@ _PAUSE_AFTER_END = re.compile(r"[.!?]\s*[—–,]|[.!?]\s+-\s")
 _CLAUSE = re.compile(r"[,;:()\[\]—–/]|\s-\s|--|^-|-$|\.\.\.|…")
 
 
+# Short words whose "'s" is kept in their key ("it's" is "its", not "it").
+_KEEP_S = {"it", "he", "she", "who", "let", "how", "what", "where", "there", "that", "here", "one"}
+
+
 def norm(word: str) -> str:
     """Matching key of a word: lower case, no apostrophes, a plural/possessive 's' dropped.
 
-    >>> [norm(w) for w in ["Bakeries", "chemist's", "gas", "Fires", "isn't", "class"]]
-    ['bakerie', 'chemist', 'gas', 'fire', 'isnt', 'class']
+    >>> [norm(w) for w in ["Bakeries", "chemist's", "gas", "Fires", "isn't", "class", "op's", "it's"]]
+    ['bakerie', 'chemist', 'gas', 'fire', 'isnt', 'class', 'op', 'its']
     """
-    w = word.lower().replace("’", "").replace("'", "")
+    w = word.lower().replace("’", "'")
+    if w.endswith("'s") and len(w) > 3 and w[:-2] not in _KEEP_S:
+        w = w[:-2]  # "op's" -> "op" (a short word's possessive, as in "Co-op's")
+    w = w.replace("'", "")
     if len(w) > 3 and w.endswith("s") and not w.endswith("ss") and not w.endswith("us") and not w.endswith("is"):
         w = w[:-1]
     return w
