@@ -56,6 +56,11 @@ def claims(an: ReportAnalyzer, text: str) -> list[tuple[str, str]]:
     ("The church is clear. The place across from it isn't — there's a fire in the kitchen.",
      [("cafe", "hazard"), ("church", "safe_zone")]),
     ("Fire at the hardware store. Actually no, not there, the place behind it.", [("garage", "hazard")]),
+    # "negative on the X" negates the place; "no hang on." opens a repair
+    ("Negative on the bank, it's the bakery — people trapped inside.", [("bakery", "victim")]),
+    ("smoke at the hotel. no hang on. at the garage, sorry, not the hotel", [("garage", "hazard")]),
+    # a predicate after a negated aside belongs to the place it was contrasted with
+    ("the town hall, not the, not the library, has got a gas leak", [("town hall", "hazard")]),
     # a part of the anchor between the relation and the anchor
     ("Smoke coming from the little shop built onto the side of the bakery.", [("pharmacy", "hazard")]),
     # a pronoun takes up the place spoken of, not the reference point of its description

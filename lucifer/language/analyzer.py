@@ -1220,6 +1220,8 @@ class ReportAnalyzer:
             if j < 0:
                 continue
             neg = norms[j] in ("not", "nt", "isnt", "wasnt") or norms[j] in lx.RETRACT_VERBS or (
+                norms[j] == "negative" and norms[j + 1] == "on"  # "negative on the quarry, it's the campsite"
+            ) or (
                 j > 0 and norms[j - 1 : j + 1] in (("rather", "than"), ("instead", "of"))
             ) or norms[j] == "instead"
             # "not the school" but not "not on fire at the school" (that negates a cue)
@@ -1428,7 +1430,7 @@ class ReportAnalyzer:
         # "Fire at the hotel. No. Fire at the warehouse.": a marker set off by a pause at the start of
         # a sentence reaches into the previous one, as a strong marker always does
         alone = b >= len(toks) or toks.clause_start[b]
-        opens = all(toks.tokens[t].norm in lx.FILLERS | {"actually", "wait", "sorry", "oh"} for t in range(start, a))
+        opens = all(toks.tokens[t].norm in lx.FILLERS | {"actually", "wait", "sorry", "oh", "no"} for t in range(start, a))
         if (strong or alone) and opens and len(sent_starts) >= 2:
             start = sent_starts[-2]  # (words before the marker are only fillers: "Actually no, ...")
         return max(start, prev_marker_end)
@@ -1979,6 +1981,16 @@ class ReportAnalyzer:
                     pairs.extend(Claim(here[-1], c) for c in cs)
                     continue
             target = self._target_for_cues(k, segs, seg_usable, seg_cues, sentence_of)
+            if target is not None and all(q.status == "negated" for q in seg_usable[target]):
+                # "the harbour master's office, not the ice house, has got a gas leak": past the negated aside
+                # to the place it was contrasted with, in the same sentence
+                back = target - 1
+                while back >= 0 and (back in hollow or not seg_usable.get(back) and not seg_cues.get(back)) \
+                        and target - back <= 3:
+                    back -= 1
+                if back >= 0 and sentence_of[segs[back][0]] == sentence_of[segs[target][0]] \
+                        and any(q.status == "active" for q in seg_usable.get(back, [])) and not seg_cues.get(back):
+                    target = back
             if target is not None:
                 for q in seg_usable[target]:
                     fq = forward(q)
