@@ -61,6 +61,10 @@ def claims(an: ReportAnalyzer, text: str) -> list[tuple[str, str]]:
     ("smoke at the hotel. no hang on. at the garage, sorry, not the hotel", [("garage", "hazard")]),
     # a predicate after a negated aside belongs to the place it was contrasted with
     ("the town hall, not the, not the library, has got a gas leak", [("town hall", "hazard")]),
+    # a repair whose new category no listed word says is read with MiniLM; "bowing out" is no "out"
+    ("the bank is clear, strike that, there's oil all over the floor", [("bank", "hazard")]),
+    ("the school is safe to use, correction, the school's got a wall bowing out, keep everyone clear of it",
+     [("school", "hazard")]),
     # a part of the anchor between the relation and the anchor
     ("Smoke coming from the little shop built onto the side of the bakery.", [("pharmacy", "hazard")]),
     # a pronoun takes up the place spoken of, not the reference point of its description

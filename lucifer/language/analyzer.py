@@ -1555,18 +1555,10 @@ class ReportAnalyzer:
         if all(b - a <= (p.end_tok - p.start_tok) + 1 for p, (a, b) in zip(todo, regions, strict=True)):
             return []
         assert self.embedder is not None
-        mat, labels = self._exemplars()
         vecs = self.embedder.embed(texts)
         out = []
         for p, (a, b), v in zip(todo, regions, vecs, strict=True):
-            sims = mat @ v
-            best: dict[str, float] = {}
-            for lab in set(labels):
-                vals = np.sort(sims[[i for i, x in enumerate(labels) if x == lab]])[-2:]
-                best[lab] = float(vals.mean())
-            ranked = sorted(best.items(), key=lambda kv: -kv[1])
-            label, score = ranked[0]
-            runner = ranked[1][1] if len(ranked) > 1 else -1.0
+            label, score, runner = self._rank_meaning(v)
             if label == "none" or score < self.FALLBACK_MIN_SIM or score - runner < self.FALLBACK_MARGIN:
                 continue
             start, end = toks.tokens[a].start, toks.tokens[b - 1].end
@@ -1574,6 +1566,39 @@ class ReportAnalyzer:
                              reason=f"MiniLM predicate match {score:.2f} (runner-up {runner:.2f})")
             out.append(Claim(p, cue))
         return out
+
+    def _rank_meaning(self, v: np.ndarray, exclude: str | None = None) -> tuple[str, float, float]:
+        """(label, score, runner-up score) of an embedded predicate against the exemplars: a category
+        name or "none"; each label scores the mean of its two closest exemplars."""
+        mat, labels = self._exemplars()
+        sims = mat @ v
+        best: dict[str, float] = {}
+        for lab in set(labels) - {exclude}:
+            vals = np.sort(sims[[i for i, x in enumerate(labels) if x == lab]])[-2:]
+            best[lab] = float(vals.mean())
+        ranked = sorted(best.items(), key=lambda kv: (-kv[1], kv[0]))
+        if not ranked:
+            return "none", 0.0, 0.0
+        return ranked[0][0], ranked[0][1], ranked[1][1] if len(ranked) > 1 else -1.0
+
+    def _repaired_by_meaning(self, ex: Extraction, b: int, end: int, old: CueMention) -> CueMention | None:
+        """"the garage is clear— strike that— there's fuel all over the floor": a repair whose new
+        claim the vocabulary misses; MiniLM reads it, any category but the one withdrawn."""
+        if self.embedder is None:
+            return None
+        toks = ex.tokens
+        place_toks = {i for p in ex.places for i in range(p.start_tok, p.end_tok)}
+        end = next((i for i in range(b + 1, end) if toks.clause_start[i]), end)  # its first clause
+        words = [toks.tokens[i].text for i in range(b, end)
+                 if i not in place_toks and toks.tokens[i].norm not in lx.FILLERS | lx.DETERMINERS]
+        if len(words) < 3 or any(toks.tokens[i].norm in lx.NEGATORS | lx.DISMISSALS for i in range(b, end)):
+            return None
+        label, score, runner = self._rank_meaning(self.embedder.embed_one(" ".join(words)), exclude=old.category)
+        if label == "none" or score < self.FALLBACK_MIN_SIM or score - runner < self.FALLBACK_MARGIN:
+            return None
+        start, stop = toks.tokens[b].start, toks.tokens[end - 1].end
+        return CueMention(b, end, start, stop, toks.text[start:stop], label, "embedding", replaces=old.start_tok,
+                          reason=f"MiniLM reading of the repair {score:.2f} (runner-up {runner:.2f})")
 
     def _person_cues(self, ex: Extraction, norms: tuple[str, ...], blocked: set[int]) -> list[CueMention]:
         """"a person at the window", "there's someone under it", "a woman clinging to a fence post":
@@ -1674,13 +1699,23 @@ class ReportAnalyzer:
         the cues said about the earlier mention are retracted."""
         first = min((p for p in ex.places if b <= p.start_tok < end and p.status != "reference"),
                     key=lambda p: p.start_tok, default=None)
-        if first is None or not any(b <= c.start_tok < end and c.status == "active" for c in out):
+        if first is None:
             return
         lo = self._repair_window_start(ex, k)
         same = [p for p in ex.places if lo <= p.start_tok < a and p.landmark == first.landmark]
         if not same:
             return
         since = max(p.start_tok for p in same)
+        if not any(b <= c.start_tok < end and c.status == "active" for c in out):
+            # "the apron is clear, correction, the apron's got fuel all over it": no listed word says the
+            # new category; MiniLM reads the restated predicate
+            earlier = [c for c in out if since < c.start_tok < a and c.status == "active"]
+            if not earlier:
+                return
+            new = self._repaired_by_meaning(ex, first.end_tok, end, earlier[-1])
+            if new is None:
+                return
+            out.append(new)
         for i, c in enumerate(out):
             if since < c.start_tok < a and c.status == "active":
                 out[i] = replace(c, status="retracted", reason=f"category restated after '{ex.tokens.span_text(a, ex.markers[k][1])}'")
@@ -1746,7 +1781,8 @@ class ReportAnalyzer:
                 break
             undesirable = self.kb.category_by_name[cue.category].role == Role.UNDESIRABLE
             contracted = toks.tokens[cue.end_tok - 1].text.lower().endswith(("'s", "’s"))
-            right_after = k == cue.end_tok and undesirable and (contracted or k + 1 < len(norms))
+            right_after = k == cue.end_tok and undesirable and (contracted or k + 1 < len(norms)) \
+                and not toks.tokens[cue.end_tok - 1].text.lower().endswith("ing")  # "wall bowing out" goes on
             if norms[k] == "out" and undesirable and (right_after or norms[k - 1] in ("is", "s", "are", "was", "been", "now", "all")) \
                     and (k + 1 >= len(norms) or toks.clause_start[k + 1] or norms[k + 1] in ("now", "completely", "over")):
                 cancelled_by = "out"
@@ -1817,6 +1853,10 @@ class ReportAnalyzer:
                 if before:
                     last = max(before, key=lambda c: c.start_tok)
                     out[out.index(last)] = replace(last, status="retracted", reason="withdrawn by a correction")
+                    if not set(norms_all[b_after:e_after]) & lx.DISMISSALS:
+                        new = self._repaired_by_meaning(ex, b_after, e_after, last)
+                        if new is not None:
+                            out.append(new)
                 continue
             if kind not in ("cue", "full"):
                 continue

@@ -131,7 +131,8 @@ BACK_REFERENCE_WORDS = {"it", "its", "s", "is", "has", "been", "thats", "that", 
                         "have", "ve", "now", "all", "finally", "fully"}
 
 # Phrases that contain cue words but claim nothing ("the smoke alarm went off", "fire crew on site").
-NEUTRAL_PHRASES = ["smoke alarm", "smoke alarms", "fire alarm", "fire alarms", "fire exit", "fire escape",
+NEUTRAL_PHRASES = ["keep clear", "stay clear", "keep everyone clear", "keep everybody clear", "keep people clear",
+                   "keep them clear", "keep the public clear", "keep well clear", "smoke alarm", "smoke alarms", "fire alarm", "fire alarms", "fire exit", "fire escape",
                    "fire brigade", "fire crew", "fire engine", "fire truck", "fire service", "fire department",
                    "fire team", "firefighter", "firefighters", "fire fighter", "fire fighters", "fire hydrant",
                    "fire door", "gas mask", "gas masks", "safe word", "safety officer", "clear the area",
