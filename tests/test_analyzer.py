@@ -65,6 +65,10 @@ def claims(an: ReportAnalyzer, text: str) -> list[tuple[str, str]]:
     ("the bank is clear, strike that, there's oil all over the floor", [("bank", "hazard")]),
     ("the school is safe to use, correction, the school's got a wall bowing out, keep everyone clear of it",
      [("school", "hazard")]),
+    # the place people were evacuated from claims nothing; where they went may
+    ("The hotel has been evacuated to the church. The church is our muster point.", [("church", "safe_zone")]),
+    ("The school is open as a rest centre, blankets for anyone evacuated from the flats.", [("school", "safe_zone")]),
+    ("Hotel guests have been moved to the library, which is safe.", [("library", "safe_zone")]),
     # a part of the anchor between the relation and the anchor
     ("Smoke coming from the little shop built onto the side of the bakery.", [("pharmacy", "hazard")]),
     # a pronoun takes up the place spoken of, not the reference point of its description

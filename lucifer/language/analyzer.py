@@ -1258,11 +1258,27 @@ class ReportAnalyzer:
             if self._crew_position(norms, p.start_tok):
                 ex.places[idx] = replace(p, status="reference", reason="in transit (a crew's position): no claim")
                 continue
+            if self._evacuated_to(toks, norms, p.end_tok):
+                ex.places[idx] = replace(p, status="reference", reason="evacuated to another place: no claim")
+                continue
             for k in range(max(0, j - 5), j):
                 hit = self._transit.match_at(norms, k)
                 if hit is not None and j <= hit[0] <= p.start_tok and not any(toks.clause_start[i] for i in range(k + 1, min(hit[0], p.start_tok) + 1) if i < p.start_tok):
                     ex.places[idx] = replace(p, status="reference", reason=f"in transit ('{hit[1]}'): no claim")
                     break
+
+    @staticmethod
+    def _evacuated_to(toks: Tokens, norms: tuple[str, ...], e: int) -> bool:
+        """"Anchor Inn has been evacuated to the car park", "Marlowe Court residents have been moved to ...":
+        the place people left is no claim; the place they went to may be."""
+        k = e
+        if k < len(norms) and norms[k] in lx.EVACUEES:
+            k += 1
+        while k < len(norms) and norms[k] in {"has", "have", "s", "ve", "been", "is", "are", "were", "was", "all", "now",
+                                               "just", "already"} | lx.FILLERS and k - e < 5:
+            k += 1
+        return k + 1 < len(norms) and norms[k] in lx.EVACUATED_FROM and norms[k + 1] in ("to", "into", "over") \
+            and not any(toks.clause_start[i] for i in range(e, k + 1))
 
     @staticmethod
     def _crew_position(norms: tuple[str, ...], j: int) -> bool:

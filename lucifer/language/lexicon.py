@@ -320,7 +320,7 @@ COORDINATOR_PHRASES = ["as well as", "along with", "together with", "and also", 
 RETRACT_VERBS = {"scratch", "strike", "forget", "cancel", "remove", "minus", "drop", "lose"}
 
 # Places in these phrases are being passed or travelled to: the report claims nothing about them.
-TRANSIT = ["heading to", "heading for", "heading towards", "heading toward", "headed to", "headed for", "head to",
+TRANSIT = ["evacuated from", "moved out of", "moved from", "relocated from", "decanted from", "brought out of", "heading to", "heading for", "heading towards", "heading toward", "headed to", "headed for", "head to",
            "passing", "passed", "moving past", "going past", "driving past", "walking past", "past",
            "on our way to", "on the way to", "our way to", "en route to", "enroute to", "going to", "driving to",
            "walking to", "moving to", "moving towards", "proceeding to", "approaching", "leaving",
@@ -466,3 +466,8 @@ LOOSE_EQUIVALENTS = {"attached to": "next to", "next to": "attached to"}
 # Words that may follow a place name without making it part of a longer noun phrase ("the lodge is ...").
 FUNCTION_WORDS = PREPOSITIONS | COPULAS | COORDINATORS | FILLERS | PRONOUNS | NEGATORS | DETERMINERS | {
     "itself", "where", "which", "that", "who", "s", "as", "now", "again", "too", "then", "there", "here", "first"}
+
+# "<place> (residents|staff) have been evacuated to ...": the place people were moved out of claims nothing.
+EVACUATED_FROM = {"evacuated", "moved", "relocated", "decanted", "cleared", "emptied"}
+EVACUEES = {"resident", "staff", "pupil", "patient", "guest", "tenant", "occupant", "student", "familie", "family",
+            "children", "kid", "worker", "everyone", "people"}  # token keys (a plural's "s" dropped)
