@@ -65,6 +65,9 @@ def claims(an: ReportAnalyzer, text: str) -> list[tuple[str, str]]:
     ("the bank is clear, strike that, there's oil all over the floor", [("bank", "hazard")]),
     ("the school is safe to use, correction, the school's got a wall bowing out, keep everyone clear of it",
      [("school", "hazard")]),
+    # "not X, ..., it's Y": Y, later in the sentence, replaces X and takes its claim
+    ("so the bank, we're using it as the rest centre — no, not the bank, they changed it, it's the hotel now",
+     [("hotel", "safe_zone")]),
     # the place people were evacuated from claims nothing; where they went may
     ("The hotel has been evacuated to the church. The church is our muster point.", [("church", "safe_zone")]),
     ("The school is open as a rest centre, blankets for anyone evacuated from the flats.", [("school", "safe_zone")]),

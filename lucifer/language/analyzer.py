@@ -1237,7 +1237,10 @@ class ReportAnalyzer:
                 for q in earlier:
                     ex.places[ex.places.index(q)] = replace(q, status="retracted", reason=f"then '{toks.tokens[j].text} {p.text}'")
                 nxt = min((q for q in ex.places if q.status == "active" and q.start_tok >= p.end_tok
-                           and q.start_tok - p.end_tok <= 3), key=lambda q: q.start_tok, default=None)
+                           and (q.start_tok - p.end_tok <= 3 or q.start_tok - p.end_tok <= 8 and not any(
+                               toks.sentence_start[i] for i in range(p.end_tok, q.start_tok + 1)))),
+                          key=lambda q: q.start_tok, default=None)
+                # ("not the school, they moved it, it's the library now": the next place in the sentence)
                 if earlier and nxt is not None and nxt.replaces is None:
                     ex.places[ex.places.index(nxt)] = replace(nxt, replaces=earlier[-1].start_tok)
 
