@@ -221,6 +221,9 @@ def test_relational_nouns_possessives_and_plain_heads():
     # the head word of a multi-word name no other landmark shares ("VOR mast"); generic heads are left out
     assert claims(an, "someone hurt at the mast") == [("navigation beacon", "person_in_need")]
     assert claims(an, "someone hurt at the building") == []
+    # a speech-to-text slip of a name ("hanger two"); two real words are no slip ("fuel from" is not "fuel farm")
+    assert claims(an, "hanger two has a mechanic trapped under a wing") == [("hangar two", "person_in_need")]
+    assert claims(an, "smoke where the stands get their fuel from") == [("main apron", "fire_risk")]
     # a place that ends a landmark description is part of it, not a claim
     assert claims(an, "the station with the crash road out to the two seven end is clear") == \
         [("fire and rescue station", "clear_ground")]

@@ -19,6 +19,7 @@ relation phrase).
 
 from __future__ import annotations
 
+import difflib
 import functools
 import re
 import threading
@@ -424,6 +425,7 @@ class ReportAnalyzer:
             places.append(self._mention(toks, a, b, landmark))
         places.extend(self._partial_names(toks, norms, {i for p in places for i in range(p.start_tok, p.end_tok)}))
         places.extend(self._head_names(toks, norms, {i for p in places for i in range(p.start_tok, p.end_tok)}))
+        places.extend(self._misheard_names(toks, norms, {i for p in places for i in range(p.start_tok, p.end_tok)}))
         for idx, p in enumerate(places):
             if p.end_tok < len(norms) and norms[p.end_tok] in lx.MODIFIED_BY and not toks.clause_start[p.end_tok] \
                     and norms[p.end_tok : p.end_tok + 2] not in lx.PART_OF_PLACE:
@@ -519,6 +521,56 @@ class ReportAnalyzer:
                     and norms[i + 1] not in lx.FUNCTION_WORDS and self._relations.match_at(norms, i + 1) is None:
                 continue  # "the lodge gate": a longer noun phrase
             out.append(self._mention(toks, i, i + 1, self._heads[w]))
+        return out
+
+    MISHEARD_MIN_RATIO = 0.85
+    MISHEARD_MIN_CHARS = 8
+
+    def _misheard_names(self, toks: Tokens, norms: tuple[str, ...], taken: set[int]) -> list[PlaceMention]:
+        """Speech-to-text slips: "hanger two", "taxi way alfa", "the lie brary". One to three words whose
+        letters, run together, are close to one landmark name's (difflib ratio >= ``MISHEARD_MIN_RATIO``,
+        at least ``MISHEARD_MIN_CHARS`` letters, same first letter) and clearly closer than to any other."""
+        if not hasattr(self, "_spellings"):
+            spell: dict[str, str] = {}
+            for lm in self.kb.landmarks:
+                for form in lm.surface_forms:
+                    key = "".join(w for w in norm_phrase(form) if w not in ("the", "a", "an"))
+                    if len(key) >= self.MISHEARD_MIN_CHARS and key.isalnum():
+                        spell.setdefault(key, lm.name)
+            self._spellings = spell
+        if not self._spellings:
+            return []
+        cue_tokens = {i for a, b, _ in self._cues.find_all(norms) for i in range(a, b)}
+        out: list[PlaceMention] = []
+        i = 0
+        while i < len(norms):
+            best: tuple[float, int, str] | None = None
+            for n in (3, 2, 1):
+                span = range(i, i + n)
+                closed = lx.DETERMINERS | lx.FILLERS | lx.PREPOSITIONS | lx.COPULAS | lx.PRONOUNS | lx.COORDINATORS
+                if i + n > len(norms) or any(j in taken or j in cue_tokens or norms[j] in closed for j in span) \
+                        or any(toks.clause_start[j] for j in range(i + 1, i + n)):
+                    continue  # ("fuel from" is not "fuel farm")
+                word = "".join(toks.tokens[j].text.lower() for j in span)
+                if not word.isalnum() or len(word) < self.MISHEARD_MIN_CHARS - 1:
+                    continue
+                scores = sorted(((difflib.SequenceMatcher(None, word, key).ratio(), name)
+                                 for key, name in self._spellings.items()
+                                 if key[0] == word[0] and abs(len(key) - len(word)) <= 1
+                                 and word not in key and key not in word), reverse=True)  # a slip, not part of a name
+                if not scores or scores[0][0] < self.MISHEARD_MIN_RATIO or scores[0][0] >= 1.0:
+                    continue
+                if any(sc > scores[0][0] - 0.05 and nm != scores[0][1] for sc, nm in scores[1:]):
+                    continue
+                if best is None or scores[0][0] > best[0]:
+                    best = (scores[0][0], n, scores[0][1])
+            if best is not None:
+                _, n, name = best
+                out.append(self._mention(toks, i, i + n, name, reason=f"misheard name ({best[0]:.2f})"))
+                taken.update(range(i, i + n))
+                i += n
+                continue
+            i += 1
         return out
 
     def _cue_keys(self) -> list[tuple[str, ...]]:
