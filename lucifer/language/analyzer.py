@@ -541,13 +541,13 @@ class ReportAnalyzer:
         if not self._spellings:
             return []
         cue_tokens = {i for a, b, _ in self._cues.find_all(norms) for i in range(a, b)}
+        closed = lx.DETERMINERS | lx.FILLERS | lx.PREPOSITIONS | lx.COPULAS | lx.PRONOUNS | lx.COORDINATORS
         out: list[PlaceMention] = []
         i = 0
         while i < len(norms):
             best: tuple[float, int, str] | None = None
             for n in (3, 2, 1):
                 span = range(i, i + n)
-                closed = lx.DETERMINERS | lx.FILLERS | lx.PREPOSITIONS | lx.COPULAS | lx.PRONOUNS | lx.COORDINATORS
                 if i + n > len(norms) or any(j in taken or j in cue_tokens or norms[j] in closed for j in span) \
                         or any(toks.clause_start[j] for j in range(i + 1, i + n)):
                     continue  # ("fuel from" is not "fuel farm")
@@ -734,7 +734,9 @@ class ReportAnalyzer:
         best = float(sims[order[0]])
         if best < self.OPEN_RELATION_MIN_SIM:
             return None, None
-        flip = lambda phrase, inv: (not inv if any(lx.ANTONYMS.get(w) in phrase.split() for w in link.split()) else inv)
+        def flip(phrase: str, inv: bool) -> bool:
+            return not inv if any(lx.ANTONYMS.get(w) in phrase.split() for w in link.split()) else inv
+
         for i in order:
             if sims[i] < max(self.OPEN_RELATION_MIN_SIM, best - self.OPEN_RELATION_MARGIN):
                 break
