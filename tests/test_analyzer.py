@@ -223,6 +223,7 @@ def test_relational_nouns_possessives_and_plain_heads():
     assert claims(an, "someone hurt at the building") == []
     # a speech-to-text slip of a name ("hanger two"); two real words are no slip ("fuel from" is not "fuel farm")
     assert claims(an, "hanger two has a mechanic trapped under a wing") == [("hangar two", "person_in_need")]
+    assert claims(an, "hanger two's on fire") == [("hangar two", "fire_risk")]
     assert claims(an, "smoke where the stands get their fuel from") == [("main apron", "fire_risk")]
     # a place that ends a landmark description is part of it, not a claim
     assert claims(an, "the station with the crash road out to the two seven end is clear") == \

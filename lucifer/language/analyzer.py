@@ -551,7 +551,7 @@ class ReportAnalyzer:
                 if i + n > len(norms) or any(j in taken or j in cue_tokens or norms[j] in closed for j in span) \
                         or any(toks.clause_start[j] for j in range(i + 1, i + n)):
                     continue  # ("fuel from" is not "fuel farm")
-                word = "".join(toks.tokens[j].text.lower() for j in span)
+                word = "".join(norms[j] for j in span)  # ("hanger two's": the keys drop the "'s")
                 if not word.isalnum() or len(word) < self.MISHEARD_MIN_CHARS - 1:
                     continue
                 scores = sorted(((difflib.SequenceMatcher(None, word, key).ratio(), name)
