@@ -159,6 +159,7 @@ class ReportAnalyzer:
         self._relations: PhraseMatcher[tuple[str, bool]] = PhraseMatcher()  # phrase -> (relation, inverse)
         self._build_relations()
         self._rel_keywords = self._relation_keywords()
+        self._rel_keyword_items = sorted(self._rel_keywords.items())  # fixed order for compound matches
 
     # ------------------------------------------------------------------ vocabulary
     def _compound_forms(self) -> list[tuple[tuple[str, ...], str]]:
@@ -318,7 +319,7 @@ class ReportAnalyzer:
             if stem in self._rel_keywords:
                 return self._rel_keywords[stem]
         for stem in stems:
-            for key, hit in sorted(self._rel_keywords.items()):
+            for key, hit in self._rel_keyword_items:
                 if min(len(stem), len(key)) >= 5 and (stem.endswith(key) or key.endswith(stem)):
                     return hit
         return None
@@ -403,8 +404,10 @@ class ReportAnalyzer:
         toks = tokenize(text)
         norms = toks.norms(0, len(toks))
         places: list[PlaceMention] = []
-        cue_hits = [(a, b) for a, b, (_, src) in self._cues.find_all(norms) if b - a > 1]
-        cue_hits += [(a, b) for a, b, _ in self._relations.find_all(norms) if b - a > 2]
+        all_cues = self._cues.find_all(norms)
+        all_relations = self._relations.find_all(norms)
+        cue_hits = [(a, b) for a, b, (_, src) in all_cues if b - a > 1]
+        cue_hits += [(a, b) for a, b, _ in all_relations if b - a > 2]
         for a, b, landmark in self._places.find_all(norms):
             if any(ca <= a and b <= cb and cb - ca > b - a for ca, cb in cue_hits):
                 continue  # "first aid post" is a cue, "across the square from" a relation
@@ -424,8 +427,10 @@ class ReportAnalyzer:
                 continue  # "it's flat and it's clear": a predicate, not the landmark the KB calls "flats"
             places.append(self._mention(toks, a, b, landmark))
         places.extend(self._partial_names(toks, norms, {i for p in places for i in range(p.start_tok, p.end_tok)}))
-        places.extend(self._head_names(toks, norms, {i for p in places for i in range(p.start_tok, p.end_tok)}))
-        places.extend(self._misheard_names(toks, norms, {i for p in places for i in range(p.start_tok, p.end_tok)}))
+        places.extend(self._head_names(toks, norms, {i for p in places for i in range(p.start_tok, p.end_tok)},
+                                       {b for _, b, _ in all_relations}))
+        places.extend(self._misheard_names(toks, norms, {i for p in places for i in range(p.start_tok, p.end_tok)},
+                                           {i for a, b, _ in all_cues for i in range(a, b)}))
         for idx, p in enumerate(places):
             if p.end_tok < len(norms) and norms[p.end_tok] in lx.MODIFIED_BY and not toks.clause_start[p.end_tok] \
                     and norms[p.end_tok : p.end_tok + 2] not in lx.PART_OF_PLACE:
@@ -489,9 +494,11 @@ class ReportAnalyzer:
                 break
         return out
 
-    def _head_names(self, toks: Tokens, norms: tuple[str, ...], taken: set[int]) -> list[PlaceMention]:
+    def _head_names(self, toks: Tokens, norms: tuple[str, ...], taken: set[int],
+                    rel_ends: set[int]) -> list[PlaceMention]:
         """"the lodge" for "security lodge", "the chandler's" for "ship chandler's": after "the", the head
-        word of a multi-word name that no other landmark's name shares (generic heads such as "shop" left out)."""
+        word of a multi-word name that no other landmark's name shares (generic heads such as "shop" left out).
+        ``rel_ends``: where the report's relation phrases end."""
         if not hasattr(self, "_heads"):
             owners: dict[str, set[str]] = {}
             words_elsewhere: dict[str, set[str]] = {}
@@ -508,7 +515,6 @@ class ReportAnalyzer:
                            if len(names) == 1 and words_elsewhere.get(w, set()) == names and len(w) >= 4 and w.isalpha()
                            and w not in cue_words and w not in rel_words and w not in lx.DESCRIPTIVE_WORDS}
         out = []
-        rel_ends = {b for _, b, _ in self._relations.find_all(norms)}
         for i in range(1, len(norms)):
             w = norms[i]
             if w not in self._heads or i in taken or norms[i - 1] != "the" or (i - 1) in taken:
@@ -526,7 +532,8 @@ class ReportAnalyzer:
     MISHEARD_MIN_RATIO = 0.85
     MISHEARD_MIN_CHARS = 8
 
-    def _misheard_names(self, toks: Tokens, norms: tuple[str, ...], taken: set[int]) -> list[PlaceMention]:
+    def _misheard_names(self, toks: Tokens, norms: tuple[str, ...], taken: set[int],
+                        cue_tokens: set[int]) -> list[PlaceMention]:
         """Speech-to-text slips: "hanger two", "taxi way alfa", "the lie brary". One to three words whose
         letters, run together, are close to one landmark name's (difflib ratio >= ``MISHEARD_MIN_RATIO``,
         at least ``MISHEARD_MIN_CHARS`` letters, same first letter) and clearly closer than to any other."""
@@ -540,7 +547,6 @@ class ReportAnalyzer:
             self._spellings = spell
         if not self._spellings:
             return []
-        cue_tokens = {i for a, b, _ in self._cues.find_all(norms) for i in range(a, b)}
         closed = lx.DETERMINERS | lx.FILLERS | lx.PREPOSITIONS | lx.COPULAS | lx.PRONOUNS | lx.COORDINATORS
         out: list[PlaceMention] = []
         i = 0
@@ -709,44 +715,37 @@ class ReportAnalyzer:
             self._rel_cache = (self.embedder.embed_fixed(texts), [forms[t] for t in texts])
         return self._rel_cache
 
-    def _match_link(self, link: str) -> tuple[float, str, bool]:
-        """The KB relation form closest to an unlisted linking phrase: (similarity, relation, inverse);
-        an antonym in the phrase ("downhill" against "uphill") flips the direction."""
-        mat, meta = self._relation_texts()
-        sims = mat @ self.embedder.embed_one(link)  # type: ignore[union-attr]
-        best = int(np.argmax(sims))
-        phrase, inverse = meta[best]
-        if any(lx.ANTONYMS.get(w) in phrase.split() for w in link.split()):
-            inverse = not inverse
-        return float(sims[best]), phrase, inverse
+    def _link_similarities(self, link: str) -> np.ndarray:
+        """MiniLM similarity of an unlisted linking phrase to each KB relation form (``_relation_texts``)."""
+        mat, _ = self._relation_texts()
+        return mat @ self.embedder.embed_one(link)  # type: ignore[union-attr]
 
     OPEN_RELATION_MARGIN = 0.1
 
-    def _follow_link(self, anchor: str, link: str, head: str, inverse: bool) -> tuple[str | None, str | None]:
+    def _follow_link(self, anchor: str, link: str, head: str, inverse: bool,
+                     sims: np.ndarray | None = None) -> tuple[str | None, str | None]:
         """Follow an unlisted linking phrase from ``anchor``: of the KB relation forms close to it
         (within ``OPEN_RELATION_MARGIN`` of the best), the closest one the anchor takes part in,
         in the direction the phrase reads, wins ("whatever taxiway alpha comes out onto":
         ``leads_onto``, which taxiway alpha is the subject of, not ``opens_onto``); if none does,
-        the best form is followed as before."""
-        mat, meta = self._relation_texts()
-        sims = mat @ self.embedder.embed_one(link)  # type: ignore[union-attr]
+        the best form is followed as before. ``sims``: the phrase's ``_link_similarities``, if known."""
+        _, meta = self._relation_texts()
+        if sims is None:
+            sims = self._link_similarities(link)
         order = np.argsort(-sims, kind="stable")
         best = float(sims[order[0]])
         if best < self.OPEN_RELATION_MIN_SIM:
             return None, None
-        def flip(phrase: str, inv: bool) -> bool:
-            return not inv if any(lx.ANTONYMS.get(w) in phrase.split() for w in link.split()) else inv
-
         for i in order:
             if sims[i] < max(self.OPEN_RELATION_MIN_SIM, best - self.OPEN_RELATION_MARGIN):
                 break
             phrase, inv = meta[int(i)]
-            inv = flip(phrase, inv)
-            target, via = self._follow(anchor, phrase, head, inverse=inv != inverse, _loose=True)
+            target, via = self._follow(anchor, phrase, head, inverse=_reads_backwards(link, phrase, inv) != inverse,
+                                       _loose=True)
             if target is not None:
                 return target, via
         phrase, inv = meta[int(order[0])]
-        return self._follow(anchor, phrase, head, inverse=flip(phrase, inv) != inverse)
+        return self._follow(anchor, phrase, head, inverse=_reads_backwards(link, phrase, inv) != inverse)
 
     def _resolve_open(self, ex: Extraction, toks: Tokens, norms: tuple[str, ...], place_tokens: set[int],
                       marker_tokens: set[int], cue_tokens: set[int]) -> None:
@@ -773,7 +772,8 @@ class ReportAnalyzer:
             link = " ".join(toks.tokens[i].text.lower() for i in range(k, j))
             if self._relations.match_at(norms, k) is not None:
                 continue  # a known phrase: the table-driven pass owns it
-            sim, phrase, inverse = self._match_link(link)
+            sims = self._link_similarities(link)
+            sim = float(sims.max())
             head_start = k - 1
             while head_start > 0 and norms[head_start - 1] in lx.DETERMINERS and (head_start - 1) not in marker_tokens:
                 head_start -= 1
@@ -783,7 +783,7 @@ class ReportAnalyzer:
                     ex.places[idx] = replace(anchor, status="reference",
                                              reason=f"reference point of an unresolved description ('{link}')")
                 continue
-            target, via = self._follow_link(anchor.landmark, link, toks.tokens[k - 1].text, inverse=False)
+            target, via = self._follow_link(anchor.landmark, link, toks.tokens[k - 1].text, inverse=False, sims=sims)
             if target is None:
                 ex.places[idx] = replace(anchor, status="reference", reason=f"reference point of an unresolved '{link}'")
                 continue
@@ -1030,27 +1030,27 @@ class ReportAnalyzer:
         """"hangar two's sister hangar", "its twin": a possessive, then a noun that names a KB relation."""
         toks = ex.tokens
         norms = toks.norms(0, len(toks))
-        for j in range(k, min(k + 1, len(norms))):
-            word = toks.tokens[j].text.lower()
-            participle = word.endswith(("ed", "ing")) or word in lx.IRREGULAR_PARTICIPLES  # "the Co-op's built against"
-            hit = self._keyword_relation(word) if norms[j].isalpha() and not participle else None
-            if hit is None:
-                continue
-            verb = hit[0].split()[0]
-            if hit[1] == "active" and _link_stems(word, synonyms=False) & _link_stems(verb, synonyms=False):
-                return False  # "hangar two's open": the relation's verb, not a noun for the other place
-            end = j + 1
-            if end < len(norms) and (norms[end] in lx.GENERIC_HEADS or norms[end] == p.text.split()[0].lower()) \
-                    and not toks.clause_start[end]:
-                end += 1  # "sister hangar"
-            target, via = self._follow(p.landmark, hit[0], " ".join(norms[k:end]), inverse=hit[1] == "passive")
-            if target is None or target == p.landmark:
-                return False
-            if idx >= 0:
-                ex.places[idx] = replace(p, status="reference", reason=f"reference point: {via}")
-            ex.places.append(self._mention(toks, p.start_tok if idx >= 0 else k - 1, end, target, via=via))
-            return True
-        return False
+        if k >= len(norms):
+            return False
+        word = toks.tokens[k].text.lower()
+        participle = word.endswith(("ed", "ing")) or word in lx.IRREGULAR_PARTICIPLES  # "the Co-op's built against"
+        hit = self._keyword_relation(word) if norms[k].isalpha() and not participle else None
+        if hit is None:
+            return False
+        verb = hit[0].split()[0]
+        if hit[1] == "active" and _link_stems(word, synonyms=False) & _link_stems(verb, synonyms=False):
+            return False  # "hangar two's open": the relation's verb, not a noun for the other place
+        end = k + 1
+        if end < len(norms) and (norms[end] in lx.GENERIC_HEADS or norms[end] == p.text.split()[0].lower()) \
+                and not toks.clause_start[end]:
+            end += 1  # "sister hangar"
+        target, via = self._follow(p.landmark, hit[0], " ".join(norms[k:end]), inverse=hit[1] == "passive")
+        if target is None or target == p.landmark:
+            return False
+        if idx >= 0:
+            ex.places[idx] = replace(p, status="reference", reason=f"reference point: {via}")
+        ex.places.append(self._mention(toks, p.start_tok if idx >= 0 else k - 1, end, target, via=via))
+        return True
 
     def _is_cue_end(self, norms: tuple[str, ...], end: int) -> bool:
         """Does a cue phrase end right before token ``end`` (allowing prepositions in between)?"""
@@ -1160,8 +1160,7 @@ class ReportAnalyzer:
     def _plain_head(self, norms: tuple[str, ...], i: int) -> bool:
         """A plain noun right after an article ("the taxiway it opens onto"), which may head a description."""
         w = norms[i]
-        closed = lx.PREPOSITIONS | lx.COPULAS | lx.FILLERS | lx.PRONOUNS | lx.INVERSE_VERBS | lx.DETERMINERS
-        return i > 0 and norms[i - 1] in lx.ARTICLES and w.isalpha() and len(w) >= 3 and w not in closed \
+        return i > 0 and norms[i - 1] in lx.ARTICLES and w.isalpha() and len(w) >= 3 and w not in _NOT_HEADS \
             and self._cues.match_at(norms, i) is None
 
     def _relation_matches(self, rel: Relation, phrase: str) -> bool:
@@ -2208,6 +2207,16 @@ def _same_stem(a: str, b: str) -> bool:
         return a == b
     k = max(4, n - 3)
     return a[:k] == b[:k] and (a.startswith(b[: len(b) - 3]) or b.startswith(a[: len(a) - 3]) or a[:5] == b[:5])
+
+
+# Closed-class words that never head a description.
+_NOT_HEADS = lx.PREPOSITIONS | lx.COPULAS | lx.FILLERS | lx.PRONOUNS | lx.INVERSE_VERBS | lx.DETERMINERS
+
+
+def _reads_backwards(link: str, phrase: str, inverse: bool) -> bool:
+    """The direction of a relation form as a linking phrase says it: an antonym in the phrase
+    ("downhill" against "uphill") reads it the other way."""
+    return not inverse if any(lx.ANTONYMS.get(w) in phrase.split() for w in link.split()) else inverse
 
 
 def _direction_word(word: str) -> bool:

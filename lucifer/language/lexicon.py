@@ -132,7 +132,8 @@ BACK_REFERENCE_WORDS = {"it", "its", "s", "is", "has", "been", "thats", "that", 
 
 # Phrases that contain cue words but claim nothing ("the smoke alarm went off", "fire crew on site").
 NEUTRAL_PHRASES = ["keep clear", "stay clear", "keep everyone clear", "keep everybody clear", "keep people clear",
-                   "keep them clear", "keep the public clear", "keep well clear", "smoke alarm", "smoke alarms", "fire alarm", "fire alarms", "fire exit", "fire escape",
+                   "keep them clear", "keep the public clear", "keep well clear",
+                   "smoke alarm", "smoke alarms", "fire alarm", "fire alarms", "fire exit", "fire escape",
                    "fire brigade", "fire crew", "fire engine", "fire truck", "fire service", "fire department",
                    "fire team", "firefighter", "firefighters", "fire fighter", "fire fighters", "fire hydrant",
                    "fire door", "gas mask", "gas masks", "safe word", "safety officer", "clear the area",
@@ -235,7 +236,8 @@ IRREGULAR_PARTICIPLES = {"fed": "feed", "built": "build", "held": "hold", "led":
                          "dug": "dig", "hung": "hang", "laid": "lay", "kept": "keep", "fitted": "fit", "shaded": "shade",
                          "overshadowed": "overshadow", "drawn": "draw", "sunk": "sink", "bound": "bind"}
 # Word stems that name the same link between two places ("supplied by" / "fed by" / "powered by").
-LINK_SYNONYMS = [{"suppl", "feed", "power", "serv"}, {"pair", "twin", "sister", "partner"}, {"link", "connect", "join"}, {"annex", "extension"},
+LINK_SYNONYMS = [{"suppl", "feed", "power", "serv"}, {"pair", "twin", "sister", "partner"}, {"link", "connect", "join"},
+                 {"annex", "extension"},
                  {"tunnel", "underpas", "subway", "passag"}, {"bridg", "walkway", "footbridg"}]
 # Words of a relation name that are too common to identify it on their own in a report.
 RELATION_NAME_STOPWORDS = {"by", "to", "of", "with", "onto", "on", "into", "from", "the", "a", "an", "is", "and", "in",
@@ -320,7 +322,8 @@ COORDINATOR_PHRASES = ["as well as", "along with", "together with", "and also", 
 RETRACT_VERBS = {"scratch", "strike", "forget", "cancel", "remove", "minus", "drop", "lose"}
 
 # Places in these phrases are being passed or travelled to: the report claims nothing about them.
-TRANSIT = ["evacuated from", "moved out of", "moved from", "relocated from", "decanted from", "brought out of", "heading to", "heading for", "heading towards", "heading toward", "headed to", "headed for", "head to",
+TRANSIT = ["evacuated from", "moved out of", "moved from", "relocated from", "decanted from", "brought out of",
+           "heading to", "heading for", "heading towards", "heading toward", "headed to", "headed for", "head to",
            "passing", "passed", "moving past", "going past", "driving past", "walking past", "past",
            "on our way to", "on the way to", "our way to", "en route to", "enroute to", "going to", "driving to",
            "walking to", "moving to", "moving towards", "proceeding to", "approaching", "leaving",

@@ -67,8 +67,7 @@ class Tokens:
     def norms(self, a: int, b: int) -> tuple[str, ...]:
         """Token keys of ``a:b``; the whole report's keys carry its sentence starts, which no phrase spans."""
         if a == 0 and b == len(self.tokens):
-            return Norms(t.norm for t in self.tokens).with_breaks(
-                i for i, s in enumerate(self.sentence_start) if s and i > 0)
+            return Norms((t.norm for t in self.tokens), (i for i, s in enumerate(self.sentence_start) if s and i > 0))
         return tuple(t.norm for t in self.tokens[a:b])
 
 
@@ -76,9 +75,10 @@ class Norms(tuple):  # type: ignore[type-arg]
     """Token keys of a whole report, with the indices where a new sentence starts ("Hang on. Fire ..."
     is not "on fire")."""
 
-    breaks: frozenset[int] = frozenset()
+    breaks: frozenset[int]
 
-    def with_breaks(self, breaks: Iterable[int]) -> Norms:
+    def __new__(cls, keys: Iterable[str], breaks: Iterable[int] = ()) -> Norms:
+        self = super().__new__(cls, keys)
         self.breaks = frozenset(breaks)
         return self
 
