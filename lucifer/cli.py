@@ -78,6 +78,12 @@ def _add_trace(sub: argparse._SubParsersAction) -> None:
     sh.add_argument("trace_id")
     sh.add_argument("--json", action="store_true")
     sh.set_defaults(func=_lazy("lucifer.commands", "cmd_trace_show"))
+    pr = t_sub.add_parser("prune", help="delete old traces and give the space back "
+                                        "(the store also keeps only the newest $LUCIFER_TRACE_KEEP runs, default 20000)")
+    pr.add_argument("--keep", type=int, default=None, help="keep the newest N runs")
+    pr.add_argument("--older-than", type=float, default=None, metavar="DAYS", help="delete runs older than DAYS")
+    pr.add_argument("--no-vacuum", action="store_true", help="skip compacting the file (faster, frees no disk)")
+    pr.set_defaults(func=_lazy("lucifer.commands", "cmd_trace_prune"))
 
 
 def _add_eval(sub: argparse._SubParsersAction) -> None:

@@ -156,6 +156,23 @@ def cmd_trace_list(args: argparse.Namespace) -> int:
     return 0
 
 
+def cmd_trace_prune(args: argparse.Namespace) -> int:
+    from lucifer.traces import prune_runs
+
+    if args.keep is None and args.older_than is None:
+        print("lucifer trace prune: say what to delete: --keep N and/or --older-than DAYS", file=sys.stderr)
+        return 2
+    for flag, value in (("--keep", args.keep), ("--older-than", args.older_than)):
+        if value is not None and value < 0:
+            print(f"lucifer trace prune: {flag} must not be negative, got {value}", file=sys.stderr)
+            return 2
+    r = prune_runs(args.keep, args.older_than, vacuum=not args.no_vacuum)
+    mb = 1024 * 1024
+    print(f"removed {r['removed']} runs, kept {r['kept']}; {r['path']}: "
+          f"{r['bytes_before'] / mb:.1f} MB -> {r['bytes_after'] / mb:.1f} MB")
+    return 0
+
+
 def cmd_trace_show(args: argparse.Namespace) -> int:
     from lucifer.traces import format_run, load_run
 

@@ -211,18 +211,22 @@ class Embedder:
         if not texts:
             return np.zeros((0, DIM), dtype=np.float32)
         with self._lock:
-            missing = [t for t in dict.fromkeys(texts) if t not in self._cache]
-            if missing:
-                model = self._model()
-                # batch by similar length to keep padding small
-                missing.sort(key=len)
-                for i in range(0, len(missing), 64):
-                    chunk = missing[i : i + 64]
-                    for t, v in zip(chunk, model.encode(chunk), strict=True):
-                        self._cache[t] = v
+            found = {t: self._cache[t] for t in dict.fromkeys(texts) if t in self._cache}
+            model = self._model() if len(found) < len(set(texts)) else None
+        if model is not None:
+            # encoded outside the lock: the encoders are re-entrant, so concurrent callers
+            # (retrieval threads, the analyzer) can use every core
+            missing = sorted((t for t in dict.fromkeys(texts) if t not in found), key=len)  # little padding
+            fresh: dict[str, np.ndarray] = {}
+            for i in range(0, len(missing), 64):
+                chunk = missing[i : i + 64]
+                fresh.update(zip(chunk, model.encode(chunk), strict=True))
+            with self._lock:
+                self._cache.update(fresh)
                 while len(self._cache) > self._cache_size:
                     self._cache.popitem(last=False)
-            return np.stack([self._cache[t] for t in texts])
+            found.update(fresh)
+        return np.stack([found[t] for t in texts])
 
     def embed_one(self, text: str) -> np.ndarray:
         return self.embed([text])[0]

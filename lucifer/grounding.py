@@ -124,7 +124,17 @@ class Grounder:
                                    timeout_s=self.timeout_s, resources=res)
         graph = await self._graph_for_run()
         config = {"configurable": {"thread_id": trace_id}, "recursion_limit": 10 + 4 * (self.retries + 1)}
-        out = await graph.ainvoke({"report": text, "report_id": report_id}, config=config, context=context)
+        # durability="exit": the trace is checkpointed once, when the run ends (also when it fails),
+        # instead of after every node; the final state holds every node's trace entry
+        try:
+            out = await graph.ainvoke({"report": text, "report_id": report_id}, config=config, context=context,
+                                      durability="exit")
+        except Exception as exc:  # a node failed: its trace (up to that node) stays inspectable
+            if self._store is not None:
+                await self._store.record(trace_id, text, self.model, f"error: {type(exc).__name__}", 0,
+                                         str(res.kb.root))
+                exc.add_note(f"lucifer: the run's trace is kept; inspect it with `lucifer trace show {trace_id}`")
+            raise
         result = GroundingResult(
             report=text,
             report_id=report_id,

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import asyncio
 import json
+import os
 import sqlite3
 import time
 from pathlib import Path
@@ -22,15 +23,48 @@ RUNS_DDL = """CREATE TABLE IF NOT EXISTS lucifer_runs (
     n_objects INTEGER, kb TEXT)"""
 
 
+DEFAULT_KEEP = 20_000  # runs; one builtin run's trace is about 7 KB
+CHECKPOINT_TABLES = ("checkpoints", "writes")  # langgraph-checkpoint-sqlite's tables, keyed by thread_id
+
+
 class TraceNotFound(LuciferError):
     pass
+
+
+def trace_keep() -> int | None:
+    """How many runs the store keeps: ``$LUCIFER_TRACE_KEEP`` (0 = keep everything), else 20,000."""
+    raw = os.environ.get("LUCIFER_TRACE_KEEP", "").strip()
+    if not raw:
+        return DEFAULT_KEEP
+    try:
+        keep = int(raw)
+    except ValueError:
+        raise LuciferError(f"LUCIFER_TRACE_KEEP must be a whole number of runs (0 keeps all), got {raw!r}") from None
+    if keep < 0:
+        raise LuciferError(f"LUCIFER_TRACE_KEEP must not be negative, got {keep}")
+    return keep or None
+
+
+def _prune_sql(keep: int | None, before: float | None) -> tuple[str, tuple[Any, ...]]:
+    """The trace ids to delete: older than ``before`` (epoch seconds), and all but the newest ``keep``."""
+    clauses, params = [], []
+    if before is not None:
+        clauses.append("created < ?")
+        params.append(before)
+    if keep is not None:
+        clauses.append("trace_id NOT IN (SELECT trace_id FROM lucifer_runs ORDER BY created DESC LIMIT ?)")
+        params.append(keep)
+    if not clauses:
+        raise ValueError("prune needs keep or before")
+    return f"SELECT trace_id FROM lucifer_runs WHERE {' OR '.join(clauses)}", tuple(params)
 
 
 class TraceStore:
     """Owns the async SQLite connection shared by the checkpointer and the run index."""
 
-    def __init__(self, path: Path | None = None):
+    def __init__(self, path: Path | None = None, keep: int | None = None):
         self.path = Path(path or traces_db())
+        self.keep = trace_keep() if keep is None else (keep or None)
         self._conn: Any = None
         self.saver: Any = None
         self._lock = asyncio.Lock()
@@ -49,7 +83,22 @@ class TraceStore:
                 await self._conn.commit()
                 self.saver = AsyncSqliteSaver(self._conn)
                 await self.saver.setup()
+                await self._enforce_retention()
         return self.saver
+
+    async def _enforce_retention(self) -> None:
+        """Drop the oldest runs once the store holds a tenth more than ``keep`` (freed pages are reused)."""
+        if self.keep is None:
+            return
+        async with self._conn.execute("SELECT count(*) FROM lucifer_runs") as cur:
+            (n,) = await cur.fetchone()
+        if n <= self.keep + max(100, self.keep // 10):
+            return
+        query, params = _prune_sql(self.keep, None)
+        for table in CHECKPOINT_TABLES:
+            await self._conn.execute(f"DELETE FROM {table} WHERE thread_id IN ({query})", params)
+        await self._conn.execute(f"DELETE FROM lucifer_runs WHERE trace_id IN ({query})", params)
+        await self._conn.commit()
 
     async def record(self, trace_id: str, report: str, backend: str, status: str, n_objects: int, kb: str) -> None:
         await self._conn.execute(
@@ -81,6 +130,40 @@ def list_runs(limit: int = 20, path: Path | None = None) -> list[dict[str, Any]]
     return [dict(zip(keys, r, strict=True)) for r in rows]
 
 
+def prune_runs(keep: int | None = None, older_than_days: float | None = None, path: Path | None = None,
+               vacuum: bool = True) -> dict[str, Any]:
+    """Delete the traces of all but the newest ``keep`` runs and/or of runs older than ``older_than_days``;
+    ``vacuum`` then gives the freed space back to the disk."""
+    if keep is None and older_than_days is None:
+        raise ValueError("say what to prune: keep=N and/or older_than_days=D")
+    if keep is not None and keep < 0:
+        raise ValueError(f"keep must not be negative, got {keep}")
+    if older_than_days is not None and older_than_days < 0:
+        raise ValueError(f"older_than_days must not be negative, got {older_than_days}")
+    p = Path(path or traces_db())
+    if not p.is_file():
+        return {"path": str(p), "removed": 0, "kept": 0, "bytes_before": 0, "bytes_after": 0}
+    size = p.stat().st_size
+    before = None if older_than_days is None else time.time() - older_than_days * 86400
+    query, params = _prune_sql(keep, before)
+    con = sqlite3.connect(str(p), timeout=30)
+    try:
+        con.execute(RUNS_DDL)
+        tables = {r[0] for r in con.execute("SELECT name FROM sqlite_master WHERE type='table'")}
+        (removed,) = con.execute(f"SELECT count(*) FROM ({query})", params).fetchone()
+        with con:
+            for table in CHECKPOINT_TABLES:
+                if table in tables:
+                    con.execute(f"DELETE FROM {table} WHERE thread_id IN ({query})", params)
+            con.execute(f"DELETE FROM lucifer_runs WHERE trace_id IN ({query})", params)
+        (kept,) = con.execute("SELECT count(*) FROM lucifer_runs").fetchone()
+        if vacuum and removed:
+            con.execute("VACUUM")
+    finally:
+        con.close()
+    return {"path": str(p), "removed": removed, "kept": kept, "bytes_before": size, "bytes_after": p.stat().st_size}
+
+
 async def load_run(trace_id: str, path: Path | None = None) -> dict[str, Any]:
     """The final state of a run and its node-by-node history."""
     from lucifer.graphs.grounding import compile_graph
@@ -100,7 +183,8 @@ async def load_run(trace_id: str, path: Path | None = None) -> dict[str, Any]:
         async for h in graph.aget_state_history(config):
             order.append({"step": h.metadata.get("step"), "next": list(h.next)})
         order.reverse()
-        return {"trace_id": trace_id, "values": snap.values, "checkpoints": order}
+        # a run that raised is checkpointed where it stopped: ``next`` names the node that failed
+        return {"trace_id": trace_id, "values": snap.values, "checkpoints": order, "unfinished": list(snap.next)}
     finally:
         await store.close()
 
@@ -120,6 +204,9 @@ def format_run(run: dict[str, Any]) -> str:
                     lines.append("    (none)")
             else:
                 lines.append(f"  {key}: {val}")
+    if run.get("unfinished"):
+        lines.append(f"\nrun did not finish: it failed in {', '.join(run['unfinished'])}")
+        return "\n".join(lines)
     objs = v.get("objects", [])
     lines.append("\nresult: " + (", ".join(f"{o['location']}/{o['category']}" for o in objs) or "(no objects)"))
     return "\n".join(lines)

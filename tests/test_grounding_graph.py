@@ -149,3 +149,29 @@ async def test_concurrent_runs_share_one_grounder():
     for i, r in enumerate(results):
         expect = ("bakery", "hazard") if i % 2 else ("school", "victim")
         assert [(o.location, o.category) for o in r.objects] == [expect]
+
+
+async def test_a_run_that_fails_in_a_node_keeps_its_trace(tmp_path, monkeypatch):
+    from lucifer.traces import format_run, list_runs, load_run
+
+    db = tmp_path / "traces.sqlite"
+    async with Grounder(KB, traces_path=db) as g:
+        ok = await g.ground("fire at the bakery")
+
+        def broken(extraction):
+            raise RuntimeError("classifier exploded")
+
+        monkeypatch.setattr(g.resources.analyzer, "classify", broken)
+        with pytest.raises(RuntimeError, match="classifier exploded") as info:
+            await g.ground("people trapped at the school")
+    note = " ".join(getattr(info.value, "__notes__", []))
+    failed_id = note.split("lucifer trace show ")[1].rstrip("`")
+    runs = {r["trace_id"]: r for r in list_runs(path=db)}
+    assert runs[ok.trace_id]["status"] == "ok"
+    assert runs[failed_id]["status"] == "error: RuntimeError"
+    run = await load_run(failed_id, db)
+    assert [s["node"] for s in run["values"]["trace"]] == ["retrieve_context", "extract_places"]
+    assert run["unfinished"] == ["classify_claims"]
+    assert "failed in classify_claims" in format_run(run)
+    done = await load_run(ok.trace_id, db)
+    assert done["unfinished"] == [] and [s["node"] for s in done["values"]["trace"]][-1] == "validate_objects"

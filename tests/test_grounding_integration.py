@@ -159,3 +159,19 @@ def test_numpy_engine_matches_sentence_transformers():
     a = get_embedder("numpy").embed(texts)
     b = get_embedder("sentence-transformers").embed(texts)
     assert np.all((a * b).sum(1) > 0.9999)
+
+
+def test_embedder_encodes_concurrent_callers_consistently():
+    from concurrent.futures import ThreadPoolExecutor
+
+    from lucifer.embeddings import Embedder
+
+    texts = [f"report {i}: smoke seen behind the {w}" for i, w in enumerate(["bank", "school", "mill", "cafe"] * 6)]
+    shared = Embedder("numpy")  # encodes outside its lock, so these calls overlap
+    with ThreadPoolExecutor(6) as pool:
+        parallel = list(pool.map(lambda t: shared.embed([t, texts[0]]), texts))
+    alone = Embedder("numpy").embed(texts)
+    for t, got, want in zip(texts, parallel, alone, strict=True):
+        assert np.allclose(got[0], want, atol=1e-6), t
+        assert np.allclose(got[1], alone[0], atol=1e-6)
+    assert np.allclose(shared.embed(texts), alone, atol=1e-6)  # the cache holds what was computed
