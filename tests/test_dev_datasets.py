@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev7) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev8) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -50,6 +50,10 @@ SETS = {
                                {"standard": 30, "messy": 50, "advanced_messy": 40}, sep=""),
     "dev7/saltmarsh_airfield": _set("dev7/saltmarsh_airfield.jsonl", SALTMARSH, "sa",
                                     {"standard": 30, "messy": 50, "advanced_messy": 40}, sep=""),
+    "dev8/market_square": _set("dev8/market_square.jsonl", MARKET_SQUARE, "d8",
+                               {"standard": 20, "messy": 60, "advanced_messy": 40}, sep=""),
+    "dev8/market_square_b": _set("dev8/market_square_b.jsonl", MARKET_SQUARE, "d8b",
+                                 {"standard": 20, "messy": 70, "advanced_messy": 30}, sep=""),
 }
 
 
