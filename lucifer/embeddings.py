@@ -228,6 +228,15 @@ class Embedder:
             found.update(fresh)
         return np.stack([found[t] for t in texts])
 
+    def vocabulary(self) -> frozenset[str]:
+        """The model's whole-word vocabulary (lower case): a dictionary of known English words."""
+        if getattr(self, "_vocab", None) is None:
+            from tokenizers import Tokenizer
+
+            tok = Tokenizer.from_file(str(model_dir() / "tokenizer.json"))
+            self._vocab = frozenset(w for w in tok.get_vocab() if w.isalpha())
+        return self._vocab
+
     def embed_one(self, text: str) -> np.ndarray:
         return self.embed([text])[0]
 

@@ -132,6 +132,32 @@ def test_phenomena(analyzer, text, expected):
     assert claims(analyzer, text) == expected
 
 
+@pytest.mark.parametrize(("text", "expected"), [
+    # typed slips of a name: one edit from exactly one landmark, and not an English word
+    ("heavy smoke coming off the chruch", [("church", "hazard")]),
+    ("people trapped in the libary", [("library", "victim")]),
+    ("tree down on the hostel, crews needed", []),  # a real word is no slip of "hotel"
+    # log shorthand
+    ("staging area moved to the police stn", [("police station", "safe_zone")]),
+    ("3 inj outside the bank", [("bank", "victim")]),
+    # negation by "rule out" and "nothing at"
+    ("rule out the school, the gas leak is at the library", [("library", "hazard")]),
+    ("nothing at the cafe, it's the hotel that's flooded", [("hotel", "hazard")]),
+    # withdrawing an earlier report keeps what is said after it
+    ("disregard my last, people trapped at the bank", [("bank", "victim")]),
+    ("smoke at the bank, never mind", []),
+    # a revocation after a contracted place or cue, or past an aside that only says which fire
+    ("the fire at the school's out now", []),
+    ("fire's out at the garage, but the bank has smoke pouring out", [("bank", "hazard")]),
+    ("the fire at the library, the one from this morning? it's out now", []),
+    # "here", "us", "me" as a relation's anchor: where the speaker said they are
+    ("I'm in the bank right now. The place across the street from here has smoke pouring out.", [("fire station", "hazard")]),
+    ("im at the chemist, theres a woman collapsed on the floor", [("pharmacy", "victim")]),
+])
+def test_typed_and_logged_reports(analyzer, text, expected):
+    assert claims(analyzer, text) == expected
+
+
 @pytest.mark.parametrize("text", [
     "team two heading to the bank, over",
     "we're passing the church, all units stand by",

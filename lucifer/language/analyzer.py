@@ -115,6 +115,21 @@ class Classification:
 _REL_SPLIT = re.compile(r"[_\-\s]+")
 
 
+def _one_edit(a: str, b: str) -> bool:
+    """a and b differ by exactly one insertion, deletion, substitution or adjacent transposition."""
+    if a == b:
+        return False
+    if len(a) == len(b):
+        diff = [i for i in range(len(a)) if a[i] != b[i]]
+        return len(diff) == 1 or (len(diff) == 2 and diff[1] == diff[0] + 1
+                                   and a[diff[0]] == b[diff[1]] and a[diff[1]] == b[diff[0]])
+    if abs(len(a) - len(b)) != 1:
+        return False
+    short, long_ = (a, b) if len(a) < len(b) else (b, a)
+    i = next((k for k in range(len(short)) if short[k] != long_[k]), len(short))
+    return short[i:] == long_[i + 1:]
+
+
 class ReportAnalyzer:
     """Builtin, LLM-free analysis of one report against one knowledge base."""
 
@@ -558,6 +573,11 @@ class ReportAnalyzer:
                         or any(toks.clause_start[j] for j in range(i + 1, i + n)):
                     continue  # ("fuel from" is not "fuel farm")
                 word = "".join(norms[j] for j in span)  # ("hanger two's": the keys drop the "'s")
+                typo = self._typo_of(word, [norms[j] for j in span])
+                if typo is not None:
+                    if best is None or 0.99 > best[0]:
+                        best = (0.99, n, typo)
+                    continue
                 if not word.isalnum() or len(word) < self.MISHEARD_MIN_CHARS - 1:
                     continue
                 scores = sorted(((difflib.SequenceMatcher(None, word, key).ratio(), name)
@@ -578,6 +598,26 @@ class ReportAnalyzer:
                 continue
             i += 1
         return out
+
+    TYPO_MIN_CHARS = 5
+
+    def _typo_of(self, word: str, words: list[str]) -> str | None:
+        """A typed slip: "libary", "chruch", "gargae", "twn hall". One of the words is no English word
+        (not in MiniLM's vocabulary) and the letters are one edit (a transposition counts as one) from
+        exactly one landmark name's."""
+        if self.embedder is None or len(word) < self.TYPO_MIN_CHARS or not word.isalpha():
+            return None
+        known = self.embedder.vocabulary()
+        if all(w in known for w in words):
+            return None
+        if not hasattr(self, "_typo_spellings"):
+            self._typo_spellings = {
+                key: lm.name for lm in self.kb.landmarks for form in lm.surface_forms
+                if len(key := "".join(w for w in norm_phrase(form) if w not in ("the", "a", "an"))) >= self.TYPO_MIN_CHARS
+                and key.isalpha()}
+        hits = {name for key, name in self._typo_spellings.items()
+                if key[0] == word[0] and abs(len(key) - len(word)) <= 1 and _one_edit(word, key)}
+        return next(iter(hits)) if len(hits) == 1 else None
 
     def _cue_keys(self) -> list[tuple[str, ...]]:
         return [key for bucket in self._cues._by_first.values() for key, _ in bucket]
@@ -1085,13 +1125,15 @@ class ReportAnalyzer:
             before = [p for p in ex.places if p.end_tok <= b]
             if before:
                 return max(before, key=lambda p: p.end_tok), j + 1, True
-        if j < len(norms) and norms[j] in ("it", "them", "that", "there", "us") and not ex.tokens.clause_start[j]:
+        if j < len(norms) and norms[j] in ("it", "them", "that", "there", "us", "here", "me") \
+                and not ex.tokens.clause_start[j]:
             if norms[j] in ("that", "there") and j + 1 < len(norms) and not ex.tokens.clause_start[j + 1] \
                     and norms[j + 1] not in lx.COPULAS:
                 return None, b, False
             before = [p for p in ex.places if p.end_tok <= b]
-            if norms[j] == "us":
-                before = [p for p in before if p.reason.startswith("in transit")] or before
+            if norms[j] in ("us", "here", "me"):  # the speaker's own position ("across the street from here")
+                before = [p for p in before if p.reason.startswith("in transit") or self._speaker_at(norms, p)] \
+                    or before
             # "the park behind the warehouse. Across the street from it": the pronoun takes up the place
             # spoken of, not the reference point of its description
             before = [p for p in before if p.status != "reference"] or before
@@ -1099,6 +1141,16 @@ class ReportAnalyzer:
                 ante = max(before, key=lambda p: p.end_tok)
                 return ante, j + 1, True
         return None, b, False
+
+    @staticmethod
+    def _speaker_at(norms: tuple[str, ...], p: PlaceMention) -> bool:
+        """"I'm at the chemist", "I am in the coffee shop": the place the speaker is at."""
+        j = p.start_tok - 1
+        while j >= 0 and norms[j] in lx.DETERMINERS | lx.FILLERS:
+            j -= 1
+        if j < 1 or norms[j] not in ("at", "in", "inside", "outside"):
+            return False
+        return norms[j - 1] in ("im", "were") or norms[j - 2 : j] in (("i", "am"), ("we", "are"))
 
     def _head_before(self, toks: Tokens, norms: tuple[str, ...], head_end: int, place_tokens: set[int],
                      marker_tokens: set[int]) -> tuple[int, list[str]]:
@@ -1276,7 +1328,11 @@ class ReportAnalyzer:
                 norms[j] == "negative" and norms[j + 1] == "on"  # "negative on the quarry, it's the campsite"
             ) or (
                 j > 0 and norms[j - 1 : j + 1] in (("rather", "than"), ("instead", "of"))
-            ) or norms[j] == "instead"
+            ) or norms[j] == "instead" or (
+                norms[j] in ("rule", "ruled", "ruling") and norms[j + 1] == "out"  # "rule out the park"
+            ) or (
+                norms[j] == "nothing" and any(norms[i] in ("at", "in", "inside") for i in range(j + 1, p.start_tok))
+            )  # "nothing at the bus depot, it's the supermarket"
             # "not the school" but not "not on fire at the school" (that negates a cue)
             after = norms[p.end_tok : p.end_tok + 2]
             if norms[j] in ("take", "taking", "took") and after[:1] and after[0] in ("off", "out", "back", "away"):
@@ -1795,16 +1851,19 @@ class ReportAnalyzer:
     def _apply_false_alarms(self, toks: Tokens, norms: tuple[str, ...], cues: list[CueMention]) -> list[CueMention]:
         """"... the smoke was a false alarm": every claim of that sentence is denied."""
         sentence_of = toks.sentence_of
-        alarms = set()
+        alarms: dict[int, int] = {}  # sentence -> the token before which its claims are denied
         for phrase in lx.FALSE_ALARM:
             key = norm_phrase(phrase)
             for i in range(len(norms) - len(key) + 1):
                 if norms[i : i + len(key)] == key:
-                    alarms.add(sentence_of[i])
+                    # "disregard my last, the spill is at the store": an earlier report is withdrawn and
+                    # what follows replaces it
+                    until = i if phrase in lx.PREVIOUS_REPORT_WITHDRAWN else len(norms)
+                    alarms[sentence_of[i]] = max(alarms.get(sentence_of[i], 0), until)
         if not alarms:
             return cues
-        return [replace(c, polarity="denied", reason="false alarm") if sentence_of[c.start_tok] in alarms else c
-                for c in cues]
+        return [replace(c, polarity="denied", reason="false alarm")
+                if c.start_tok < alarms.get(sentence_of[c.start_tok], -1) else c for c in cues]
 
     def _undesirable(self) -> str | None:
         return self._role_category.get("undesirable") or next(
@@ -1855,8 +1914,11 @@ class ReportAnalyzer:
             contracted = toks.tokens[cue.end_tok - 1].text.lower().endswith(("'s", "’s"))
             right_after = k == cue.end_tok and undesirable and (contracted or k + 1 < len(norms)) \
                 and not toks.tokens[cue.end_tok - 1].text.lower().endswith("ing")  # "wall bowing out" goes on
-            if norms[k] == "out" and undesirable and (right_after or norms[k - 1] in ("is", "s", "are", "was", "been", "now", "all")) \
-                    and (k + 1 >= len(norms) or toks.clause_start[k + 1] or norms[k + 1] in ("now", "completely", "over")):
+            copula = norms[k - 1] in ("is", "s", "are", "was", "been", "now", "all") \
+                or k > cue.end_tok and toks.tokens[k - 1].text.lower().endswith(("'s", "’s"))  # "the cafe's out"
+            if norms[k] == "out" and undesirable and (right_after or copula) \
+                    and (k + 1 >= len(norms) or toks.clause_start[k + 1] or norms[k + 1] in ("now", "completely", "over")
+                         or (contracted or copula) and norms[k + 1] in ("at", "in", "on")):  # "fire's out at the bakery"
                 cancelled_by = "out"
                 break
             if self._cues.match_at(norms, k) is not None:
@@ -1872,6 +1934,12 @@ class ReportAnalyzer:
                 j += 1
             if j in ends and ends[j] < len(norms) and toks.clause_start[ends[j]]:
                 k = ends[j]
+            elif norms[j:j + 2] == ("one", "from") or norms[j:j + 2] == ("one", "that"):
+                # "the fire at the store, the one from earlier? it's out now": past an aside that only
+                # says which one
+                e = next((i for i in range(j + 1, min(len(norms), j + 8)) if toks.clause_start[i]), None)
+                if e is not None and not any(self._cues.match_at(norms, i) is not None for i in range(j, e)):
+                    k = e
             j = k
             while j < len(norms) and j - k < 6 and norms[j] in lx.BACK_REFERENCE_WORDS | lx.FILLERS:
                 j += 1

@@ -144,7 +144,11 @@ NEUTRAL_PHRASES = ["keep clear", "stay clear", "keep everyone clear", "keep ever
 # Whole-report "nothing to see" markers that cancel every claim in their sentence.
 FALSE_ALARM = ["false alarm", "never mind", "nevermind", "disregard my last", "disregard the last report",
                "nothing in it", "nothing to it", "just steam", "only steam", "extractor fan", "was just a", "was only a",
-               "was just their", "was just the", "nothing to worry about"]
+               "was just their", "was just the", "nothing to worry about", "ignore my last", "cancel my last",
+               "disregard my last message", "disregard previous"]
+# ... of which these withdraw an earlier report: only what comes before them in the sentence is denied
+PREVIOUS_REPORT_WITHDRAWN = {"disregard my last", "disregard the last report", "ignore my last", "cancel my last",
+                             "disregard my last message", "disregard previous"}
 
 # Self-repair markers. Strong ones reach back into the previous sentence.
 STRONG_REPAIR = [
@@ -370,7 +374,9 @@ EXEMPLARS: dict[str, list[str]] = {
         "on fire", "burning", "flames", "smoke pouring out", "full of smoke", "gas leak", "smells of gas",
         "roof collapsed", "ceiling came down", "walls cracking", "unstable", "flooded", "water rising",
         "live wires down", "sparks", "explosion", "chemical spill", "dangerous, do not enter", "unsafe",
-        "debris falling",
+        "debris falling", "windows blown out", "glass everywhere",
+        "water pouring out", "the roof is sagging", "part of it has fallen down", "bricks coming off",
+        "thick black smoke", "the floor gave way", "cables hanging down", "a strong chemical smell",
     ],
     DESIRABLE: [
         "safe", "all clear", "secured", "use as a shelter", "safe to shelter", "safe place to gather",
@@ -381,6 +387,9 @@ EXEMPLARS: dict[str, list[str]] = {
         "people trapped", "someone injured", "person needs help", "casualties", "victim inside",
         "someone unconscious", "child stuck", "survivors need rescue", "bleeding badly", "man cannot get up",
         "screaming for help", "woman hurt", "people missing", "medic needed for the wounded", "man down",
+        "cut her hand badly", "a nasty gash", "broken bones", "he's not come back out",
+        "we can't find him", "a lad with a broken leg", "someone lying on the floor", "an old man who fell",
+        "a few of them fainted", "she is struggling to breathe", "nobody has seen her since",
     ],
     "none": [
         "heading to", "passing", "we are at", "on our way", "standing by", "checking now", "what is the status",

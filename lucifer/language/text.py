@@ -20,6 +20,12 @@ _CLAUSE = re.compile(r"[,;:()\[\]—–/]|\s-\s|--|^-|-$|\.\.\.|…")
 _KEEP_S = {"it", "he", "she", "who", "let", "how", "what", "where", "there", "that", "here", "one"}
 
 
+# Log and radio shorthand read as the word it stands for ("police stn", "bldg opp st marys", "2 inj").
+ABBREVIATIONS = {"stn": "station", "bldg": "building", "opp": "opposite", "ppl": "people", "inj": "injured",
+                 "veh": "vehicle", "hosp": "hospital", "frm": "from", "pls": "please", "plz": "please",
+                 "rprtd": "reported", "approx": "approximately"}
+
+
 def norm(word: str) -> str:
     """Matching key of a word: lower case, no apostrophes, a plural/possessive 's' dropped.
 
@@ -32,7 +38,7 @@ def norm(word: str) -> str:
     w = w.replace("'", "")
     if len(w) > 3 and w.endswith("s") and not w.endswith("ss") and not w.endswith("us") and not w.endswith("is"):
         w = w[:-1]
-    return w
+    return ABBREVIATIONS.get(w, w)
 
 
 def norm_phrase(phrase: str) -> tuple[str, ...]:
