@@ -153,6 +153,11 @@ def test_phenomena(analyzer, text, expected):
     # "here", "us", "me" as a relation's anchor: where the speaker said they are
     ("I'm in the bank right now. The place across the street from here has smoke pouring out.", [("fire station", "hazard")]),
     ("im at the chemist, theres a woman collapsed on the floor", [("pharmacy", "victim")]),
+    # the place that replaces a list's last item takes its share of the list's claim
+    ("gas leaks at the hotel and the garage — no, not the garage, the warehouse",
+     [("hotel", "hazard"), ("warehouse", "hazard")]),
+    # the MiniLM fallback does not guess at a place in a question
+    ("quick one, is the, er, is the clinic still seeing walk-in patients today?", []),
 ])
 def test_typed_and_logged_reports(analyzer, text, expected):
     assert claims(analyzer, text) == expected

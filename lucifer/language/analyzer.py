@@ -1664,7 +1664,10 @@ class ReportAnalyzer:
         negated = {i for i, w in enumerate(norms) if w in lx.NEGATORS}
         for a, b, _ in self._negators.find_all(norms):
             negated.update(range(a, b))
+        asking = self._question_sentences(toks)
         for p in todo:
+            if toks.sentence_of[p.start_tok] in asking:
+                continue  # "is the health centre still taking walk-ins?": a question is no claim to guess at
             a, b = self._predicate_region(ex, p)
             if any(a <= c.start_tok < b for c in all_cues) or any(a <= ma < b for ma, _, _ in ex.markers):
                 continue  # the vocabulary (or a repair) already spoke here; the fallback stays silent
@@ -1693,6 +1696,17 @@ class ReportAnalyzer:
             cue = CueMention(a, b, start, end, toks.text[start:end], label, "embedding",
                              reason=f"MiniLM predicate match {score:.2f} (runner-up {runner:.2f})")
             out.append(Claim(p, cue))
+        return out
+
+    @staticmethod
+    def _question_sentences(toks: Tokens) -> set[int]:
+        """Sentences that end in a question mark."""
+        out = set()
+        for i in range(len(toks)):
+            last = i + 1 >= len(toks) or toks.sentence_start[i + 1]
+            tail = toks.gaps[i + 1] if i + 1 < len(toks) else toks.text[toks.tokens[i].end:]
+            if last and "?" in tail:
+                out.add(toks.sentence_of[i])
         return out
 
     def _rank_meaning(self, v: np.ndarray, exclude: str | None = None) -> tuple[str, float, float]:
@@ -1796,7 +1810,8 @@ class ReportAnalyzer:
                 # a sentence that opens with the question word asks all through ("Which is the rest centre, ...?")
                 opener = next((i for i in range(a, b) if norms[i] not in lx.FILLERS), a)
                 start = a if norms[opener] in lx.WH_OPENERS and not any(a <= m < b for m in marker_starts) \
-                    else max((i for i in range(a, b) if toks.clause_start[i]), default=a)
+                    else max((i for i in range(a, b) if toks.clause_start[i] and toks.gaps[i] != "-"), default=a)
+                # (a hyphen inside a word, "walk-in", does not open the asking clause)
                 first = next((i for i in range(start, b) if norms[i] not in lx.FILLERS), start)
                 if norms[first] in lx.QUESTION_OPENERS and first not in marker_starts:
                     asked.update(range(start, b))
@@ -2190,6 +2205,13 @@ class ReportAnalyzer:
             if any(q.landmark == p.landmark and q.status == "retracted" and q.start_tok < p.start_tok
                    and not q.reason.startswith(("restarted", "false start")) for q in ex.places) and p.replaces is None:
                 continue  # "that should be the town hall, the library's shut": no claim revives the library
+            listed = self._list_share(ex, norms, p, pairs)
+            if listed:
+                # "casualties at the school, the church and the bank — no, not the bank, the town hall":
+                # the replacement takes the retracted list item's share of the list's claims
+                pairs.extend(Claim(p, c) for c in listed)
+                claimed_places.add(p.start_tok)
+                continue
             donor = self._donor_for_places(k, segs, seg_places, seg_cues, sentence_of, hollow,
                                            [norms[a] for a, _ in segs])
             if donor is not None:
@@ -2202,6 +2224,25 @@ class ReportAnalyzer:
         claims = [c for c in pairs if c.cue.polarity == "affirmed"]
         denied = [c for c in pairs if c.cue.polarity == "denied"]
         return claims, denied
+
+    @staticmethod
+    def _list_share(ex: Extraction, norms: tuple[str, ...], p: PlaceMention, pairs: list[Claim]) -> list[CueMention]:
+        """The cues of the list item just before the place ``p`` replaced, when that place ended a list."""
+        if p.replaces is None:
+            return []
+        q = next((x for x in ex.places if x.start_tok == p.replaces and x.status == "retracted"), None)
+        if q is None:
+            return []
+        glue = lx.DETERMINERS | lx.FILLERS | {"and", "or", "plus"}
+        prev = [c for c in pairs if c.place.end_tok <= q.start_tok and c.cue.polarity == "affirmed"
+                and ex.tokens.sentence_of[c.place.start_tok] == ex.tokens.sentence_of[q.start_tok]]
+        if not prev:
+            return []
+        last = max(c.place.end_tok for c in prev)
+        between = norms[last : q.start_tok]
+        if not between or any(w not in glue for w in between) or not any(w in ("and", "or", "plus") for w in between):
+            return []
+        return [c.cue for c in prev if c.place.end_tok == last]
 
     @staticmethod
     def _bind_cost(norms: tuple[str, ...], c: CueMention, p: PlaceMention) -> float:
