@@ -158,6 +158,21 @@ def test_phenomena(analyzer, text, expected):
      [("hotel", "hazard"), ("warehouse", "hazard")]),
     # the MiniLM fallback does not guess at a place in a question
     ("quick one, is the, er, is the clinic still seeing walk-in patients today?", []),
+    # a withdrawal said twice is still a withdrawal
+    ("send a medic to the hotel for a casualty — scratch that, scratch that, he walked out on his own", []),
+    # "X isn't the one" negates X
+    ("it's the library that's flooded, the school isn't the one", [("library", "hazard")]),
+    # a broken-off "at the" leads past an aside to its place
+    ("there's a smell of gas, quite strong actually, in the, you know, the cafe by the church", [("cafe", "hazard")]),
+    # the contrast with a shouted negation takes the claim
+    ("the school is NOT on fire, that was the bank", [("bank", "hazard")]),
+    # "no longer the X" negates the place, not the claim
+    ("the rest centre is no longer the library, it has moved to the church", [("church", "safe_zone")]),
+    # a repair that opens its sentence reaches into the list of the sentence before
+    ("We've cleared the bank, the cafe and the hotel. Sorry, not the hotel, the church.",
+     [("bank", "safe_zone"), ("cafe", "safe_zone"), ("church", "safe_zone")]),
+    # a stutter on a pronoun is no cut-off landmark name ("he-" is not "health centre")
+    ("my dad at the bakery, he- he fell off a chair and he's not answering", [("bakery", "victim")]),
 ])
 def test_typed_and_logged_reports(analyzer, text, expected):
     assert claims(analyzer, text) == expected

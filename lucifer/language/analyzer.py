@@ -630,6 +630,8 @@ class ReportAnalyzer:
             if t.i in taken or nxt_gap[:1] not in ("-", "—", "–") or len(t.text) > 6:
                 continue
             frag = t.text.lower()
+            if frag in lx.FUNCTION_WORDS or frag in ("he", "she", "we", "i", "me", "you", "him", "her", "my"):
+                continue  # "he- he fell": a stutter on a pronoun is no cut-off name
             for lm in self.kb.landmarks:
                 for form in lm.surface_forms:
                     words = [w for w in norm_phrase(form) if w not in ("the", "a", "an")]
@@ -1328,6 +1330,8 @@ class ReportAnalyzer:
                 norms[j] == "negative" and norms[j + 1] == "on"  # "negative on the quarry, it's the campsite"
             ) or (
                 j > 0 and norms[j - 1 : j + 1] in (("rather", "than"), ("instead", "of"))
+            ) or (
+                j > 0 and norms[j - 1 : j + 1] == ("no", "longer")  # "the rest centre is no longer the town hall"
             ) or norms[j] == "instead" or (
                 norms[j] in ("rule", "ruled", "ruling") and norms[j + 1] == "out"  # "rule out the park"
             ) or (
@@ -1337,10 +1341,19 @@ class ReportAnalyzer:
             after = norms[p.end_tok : p.end_tok + 2]
             if norms[j] in ("take", "taking", "took") and after[:1] and after[0] in ("off", "out", "back", "away"):
                 neg = True  # "take the garage off that list"
+            tail = norms[p.end_tok : p.end_tok + 4]
+            if tail[:3] in (("isnt", "the", "one"), ("wasnt", "the", "one"), ("aint", "the", "one")) \
+                    or tail[:4] in (("is", "not", "the", "one"), ("s", "not", "the", "one"), ("was", "not", "the", "one")):
+                neg = True  # "the school isn't the one"
             if neg and not self._cue_between(norms, j + 1, p.start_tok):
                 ex.places[idx] = replace(p, status="negated", reason=f"negated by '{toks.tokens[j].text}'")
                 # "the clinic ... no, not the clinic, the police station": the earlier mention is retracted
                 sent_start = max(t for t in range(0, p.start_tok + 1) if toks.sentence_start[t])
+                marker_toks = {i for a, b, _ in ex.markers for i in range(a, b)}
+                if sent_start > 0 and all(i in marker_toks or norms[i] in lx.FILLERS for i in range(sent_start, j)):
+                    # "... and the school. Sorry — not the school, the post office.": the repair opens
+                    # its sentence, so it reaches back into the one before
+                    sent_start = max(t for t in range(0, sent_start) if toks.sentence_start[t])
                 earlier = [q for q in ex.places if q.status == "active" and q.landmark == p.landmark
                            and sent_start <= q.start_tok < p.start_tok]
                 for q in earlier:
@@ -1923,6 +1936,11 @@ class ReportAnalyzer:
                 continue
             h = self._cancel.match_at(norms, k)
             if h is not None:
+                nxt = h[0]
+                while nxt < len(norms) and norms[nxt] in lx.DETERMINERS:
+                    nxt += 1
+                if h[1] == "no longer" and nxt in ends:
+                    break  # "the evacuation point is no longer the town hall": the place is negated, not the cue
                 cancelled_by = h[1]
                 break
             undesirable = self.kb.category_by_name[cue.category].role == Role.UNDESIRABLE
@@ -2000,8 +2018,9 @@ class ReportAnalyzer:
                 self._restated_category(ex, k, out, b_after, e_after, a)
                 continue
             marker_words = " ".join(norms_all[a:_b])
-            if kind is None and strong and (set(norms_all[b_after:e_after]) & lx.DISMISSALS
-                                            or marker_words in {" ".join(norm_phrase(m)) for m in lx.WITHDRAW_MARKERS}):
+            withdraw = any(marker_words == m or marker_words.startswith(m + " ")  # "cancel that, cancel that"
+                           for m in (" ".join(norm_phrase(w)) for w in lx.WITHDRAW_MARKERS))
+            if kind is None and strong and (set(norms_all[b_after:e_after]) & lx.DISMISSALS or withdraw):
                 # "smoke at the cafe, correction, that's just steam": the claim is withdrawn
                 lo = self._repair_window_start(ex, k)
                 before = [c for c in out if lo <= c.start_tok < a and c.status == "active"]
@@ -2167,6 +2186,19 @@ class ReportAnalyzer:
                     pairs.extend(Claim(p, c) for p in seg_places[nxt] for c in cs)
                     claimed_places.update(p.start_tok for p in seg_places[nxt])
                     continue
+            nxt, steps, opened = k + 1, 0, False
+            while nxt < len(segs) and steps < 4 and not seg_places.get(nxt) and not seg_cues.get(nxt) \
+                    and segs[nxt][1] - segs[nxt][0] <= 4 and sentence_of[segs[nxt][0]] == sentence_of[a]:
+                a2, b2 = segs[nxt]
+                opened = opened or (norms[b2 - 1] in lx.PREPOSITIONS | lx.DETERMINERS
+                                    and any(norms[i] in lx.POSITION_PREPS for i in range(a2, b2)))
+                nxt, steps = nxt + 1, steps + 1
+            if opened and seg_places.get(nxt) and sentence_of[segs[nxt][0]] == sentence_of[a]:
+                # "there's this gas smell, like really strong, at the, you know, the bread shop": past the
+                # asides, the place the broken-off "at the" was leading to
+                pairs.extend(Claim(p, c) for p in seg_places[nxt][:1] for c in cs)
+                claimed_places.add(seg_places[nxt][0].start_tok)
+                continue
             first = next((norms[i] for i in range(a, b) if norms[i] not in lx.FILLERS), "")
             if first in ("it", "its", "there", "thats", "theres") and k > 0:
                 # "standing by at the garage, it is safe": a position names the place the pronoun claims
@@ -2216,7 +2248,7 @@ class ReportAnalyzer:
                                            [norms[a] for a, _ in segs])
             if donor is not None:
                 for c in seg_cues[donor]:
-                    if c.polarity == "denied" and c.reason.startswith(("negated by 'not'", "negated by 'n't'", "negated by 'isn't'",
+                    if c.polarity == "denied" and c.reason.lower().startswith(("negated by 'not'", "negated by 'n't'", "negated by 'isn't'",
                                                                           "negated by 's not'", "negated by 'nt'")):
                         # "the station is not flooded, the clinic is": the contrast takes the claim
                         c = replace(c, polarity="affirmed", reason="contrast with a negated claim")

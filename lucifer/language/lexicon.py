@@ -59,6 +59,8 @@ no access|no vehicle access|no way in|no way through|no way onto|no way out|inac
 no through route|piled across|right across it|lying across|come down across|came down across|
 blocking|blocks the|blocked off|cordoned off|shed its load|gridlocked|choked with|full of parked cars|
 can't reach|cannot reach|unable to reach|unable to get in|can't access|cannot access|washed away|
+petrol all over|fuel all over|diesel all over|oil all over|petrol everywhere|diesel everywhere|fuel everywhere|
+petrol leak|diesel leak|fuel spill|petrol spill|diesel spill|
 """.replace("\n", ""))
 
 _add(DESIRABLE, """
@@ -104,7 +106,9 @@ ambulance needed|ambulance required|need an ambulance|send an ambulance|needs me
 broken ankle|broken wrist|head injury|fractured|fracture|crushed|crushed foot|crushed leg|concussion|
 can hear someone|can hear her|can hear him|can hear them|can hear voices|hear someone|hear her|hear him|
 hear voices|waving at us|waving to us|calling from|shouting from|trapped under|under the timbers|overdue|
-gone under|went under|swept away by|in the river|in the sea|hypothermia|casualty recovered|recovered from the water|swept away
+gone under|went under|swept away by|in the river|in the sea|hypothermia|casualty recovered|recovered from the water|swept away|
+fire fighter down|fireman down|fire fighter injured|not answering|isn't answering|he's not answering|she's not answering|
+just lying there|lying there|lying on the floor|lying on the ground|fell off|fallen off|took a fall|
 """.replace("\n", ""))
 
 # "collapsed" alone is structural (hazard); "collapsed inside" / "passed out" is a person.
