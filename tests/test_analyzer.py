@@ -171,6 +171,10 @@ def test_phenomena(analyzer, text, expected):
     # a repair that opens its sentence reaches into the list of the sentence before
     ("We've cleared the bank, the cafe and the hotel. Sorry, not the hotel, the church.",
      [("bank", "safe_zone"), ("cafe", "safe_zone"), ("church", "safe_zone")]),
+    # a relative clause between a description's head and its relation, also inside a two-hop chain
+    ("smoke from the place that is behind the warehouse", [("park", "hazard")]),
+    ("people trapped in the block facing the place that's round the back of the warehouse",
+     [("apartment block", "victim")]),
     # a stutter on a pronoun is no cut-off landmark name ("he-" is not "health centre")
     ("my dad at the bakery, he- he fell off a chair and he's not answering", [("bakery", "victim")]),
 ])

@@ -890,6 +890,10 @@ class ReportAnalyzer:
         if (anchor is None) != inverse_pass:
             return
         head_end = a
+        if norms[max(0, a - 2) : a] in lx.RELATIVE_COPULAS and a >= 3:
+            head_end = a - 2  # "the place that is behind the warehouse": the relative clause's head
+        elif a >= 2 and toks.tokens[a - 1].text.lower().replace("’", "'") in ("that's", "thats", "which's"):
+            head_end = a - 1
         head_place = next((p for p in ex.places if p.end_tok == head_end and p.status == "active"), None)
         if anchor is not None and head_place is not None:
             # "the pharmacy next to the bakery": the place is named; the anchor is only a reference

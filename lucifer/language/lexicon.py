@@ -487,3 +487,7 @@ FUNCTION_WORDS = PREPOSITIONS | COPULAS | COORDINATORS | FILLERS | PRONOUNS | NE
 EVACUATED_FROM = {"evacuated", "moved", "relocated", "decanted", "cleared", "emptied"}
 EVACUEES = {"resident", "staff", "pupil", "patient", "guest", "tenant", "occupant", "student", "familie", "family",
             "children", "kid", "worker", "everyone", "people"}  # token keys (a plural's "s" dropped)
+
+# "the place that is behind the warehouse": a relative clause between a description's head and its relation.
+RELATIVE_COPULAS = {("that", "is"), ("which", "is"), ("that", "s"), ("which", "s"), ("that", "sits"), ("which", "sits"),
+                    ("that", "stands"), ("which", "stands"), ("that", "was"), ("which", "was"), ("that", "lies")}
