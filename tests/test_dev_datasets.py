@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev8) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev9) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -54,6 +54,10 @@ SETS = {
                                {"standard": 20, "messy": 60, "advanced_messy": 40}, sep=""),
     "dev8/market_square_b": _set("dev8/market_square_b.jsonl", MARKET_SQUARE, "d8b",
                                  {"standard": 20, "messy": 70, "advanced_messy": 30}, sep=""),
+    "dev9/market_square": _set("dev9/market_square.jsonl", MARKET_SQUARE, "d9",
+                               {"standard": 10, "messy": 50, "advanced_messy": 60}, sep=""),
+    "dev9/market_square_b": _set("dev9/market_square_b.jsonl", MARKET_SQUARE, "d9b",
+                                 {"standard": 10, "messy": 60, "advanced_messy": 50}, sep=""),
 }
 
 
