@@ -175,6 +175,17 @@ def test_phenomena(analyzer, text, expected):
     ("smoke from the place that is behind the warehouse", [("park", "hazard")]),
     ("people trapped in the block facing the place that's round the back of the warehouse",
      [("apartment block", "victim")]),
+    # a revocation of people in need leaves a hazard standing, and revokes the people
+    ("chemical spill at the garage, staff evacuated", [("garage", "hazard")]),
+    ("the casualty at the hotel has been taken to hospital, nothing else there", []),
+    # withdrawing "my earlier report of" a claim withdraws that claim; "never mind" repairs what came before
+    ("disregard my earlier report of smoke at the bank, there is no smoke there", []),
+    ("flooding at the cafe, no, never mind, it's the church, water everywhere", [("church", "hazard")]),
+    # passing through, parked up, coming out of: no claim
+    ("we went via the bank to the hotel and have three people with injuries there", [("hotel", "victim")]),
+    ("we're parked up at the school; the building next to us has a man down", [("post office", "victim")]),
+    # a possessive anchor, and SAR jargon
+    ("the building next to my school has a live find", [("post office", "victim")]),
     # a stutter on a pronoun is no cut-off landmark name ("he-" is not "health centre")
     ("my dad at the bakery, he- he fell off a chair and he's not answering", [("bakery", "victim")]),
 ])

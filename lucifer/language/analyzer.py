@@ -1116,7 +1116,8 @@ class ReportAnalyzer:
                 and norms[j + 2] == "of" and (norms[j] == "the" or any(p.end_tok <= b for p in ex.places)):
             j += 3  # "built onto the side of the mill": the part of the anchor
             b = j
-        while j < len(norms) and (norms[j] in lx.DETERMINERS or norms[j] in lx.FILLERS) and j - b < 3:
+        while j < len(norms) and (norms[j] in lx.DETERMINERS or norms[j] in lx.FILLERS or norms[j] in ("my", "your"))\
+                and j - b < 3:
             if norms[j] in ("that", "this") and (j + 1 >= len(norms) or ex.tokens.clause_start[j + 1]
                                                  or norms[j + 1] in lx.COPULAS):
                 break  # "the building across from that has people trapped": the pronoun is the anchor
@@ -1777,7 +1778,8 @@ class ReportAnalyzer:
             if not introduced and w not in ("someone", "somebody"):
                 continue
             k = i + 1
-            while k < len(norms) and norms[k] in lx.FILLERS | {"still"}:
+            while k < len(norms) and norms[k] in lx.FILLERS | {"still", "definitely", "probably", "possibly", "maybe",
+                                                                "apparently", "certainly", "stuck"}:
                 k += 1
             if k >= len(norms) or norms[k] not in lx.PERSON_SITUATIONS or toks.clause_start[k]:
                 continue
@@ -1945,6 +1947,8 @@ class ReportAnalyzer:
                     nxt += 1
                 if h[1] == "no longer" and nxt in ends:
                     break  # "the evacuation point is no longer the town hall": the place is negated, not the cue
+                if h[1] in lx.CANCEL_PEOPLE_ONLY and self.kb.category_by_name[cue.category].role != Role.CRITICAL:
+                    break  # "gas leak at the police post, they evacuated": people left, the leak stays
                 cancelled_by = h[1]
                 break
             undesirable = self.kb.category_by_name[cue.category].role == Role.UNDESIRABLE
@@ -1954,7 +1958,7 @@ class ReportAnalyzer:
             copula = norms[k - 1] in ("is", "s", "are", "was", "been", "now", "all") \
                 or k > cue.end_tok and toks.tokens[k - 1].text.lower().endswith(("'s", "’s"))  # "the cafe's out"
             if norms[k] == "out" and undesirable and (right_after or copula) \
-                    and (k + 1 >= len(norms) or toks.clause_start[k + 1] or norms[k + 1] in ("now", "completely", "over")
+                    and (k + 1 >= len(norms) or toks.clause_start[k + 1] or norms[k + 1] in ("now", "completely", "over", "there")
                          or (contracted or copula) and norms[k + 1] in ("at", "in", "on")):  # "fire's out at the bakery"
                 cancelled_by = "out"
                 break

@@ -59,6 +59,7 @@ no access|no vehicle access|no way in|no way through|no way onto|no way out|inac
 no through route|piled across|right across it|lying across|come down across|came down across|
 blocking|blocks the|blocked off|cordoned off|shed its load|gridlocked|choked with|full of parked cars|
 can't reach|cannot reach|unable to reach|unable to get in|can't access|cannot access|washed away|
+ankle deep|water coming up|water coming in|water's coming in|coming in under the door|coming in under the doors|
 petrol all over|fuel all over|diesel all over|oil all over|petrol everywhere|diesel everywhere|fuel everywhere|
 petrol leak|diesel leak|fuel spill|petrol spill|diesel spill|
 """.replace("\n", ""))
@@ -75,6 +76,7 @@ structurally sound|intact|usable|refuge|sanctuary|holding area|collection point|
 welfare point|holding point|muster point|muster station|assembly point|assembly area|evacuee assembly area|
 reception centre|reception center|rest center|high ground|taking evacuees|taking in evacuees|open as a rest centre|
 opened as a rest centre|safe ground|dry and safe|bone dry|warming centre|warm and dry|sheltering there|
+empty and checked|checked and empty|evacuated and checked|searched and clear|
 """.replace("\n", ""))
 
 _add(CRITICAL, """
@@ -107,6 +109,8 @@ broken ankle|broken wrist|head injury|fractured|fracture|crushed|crushed foot|cr
 can hear someone|can hear her|can hear him|can hear them|can hear voices|hear someone|hear her|hear him|
 hear voices|waving at us|waving to us|calling from|shouting from|trapped under|under the timbers|overdue|
 gone under|went under|swept away by|in the river|in the sea|hypothermia|casualty recovered|recovered from the water|swept away|
+live find|a live find|indicating a find|can't get down|cannot get down|can't get downstairs|cut his arm|cut her arm|
+cut his hand|cut his head|cut her head|badly cut|bleeding heavily|can't get the doors open|can't get the door open|
 fire fighter down|fireman down|fire fighter injured|not answering|isn't answering|he's not answering|she's not answering|
 just lying there|lying there|lying on the floor|lying on the ground|fell off|fallen off|took a fall|
 """.replace("\n", ""))
@@ -128,7 +132,12 @@ CANCEL_AFTER = ["is out", "s out", "are out", "was out", "put out", "out now", "
                 "died down", "cleared up", "gone", "is gone", "has gone", "fixed", "repaired",
                 "turned off", "shut off", "capped", "receded", "drained", "false alarm",
                 "all rescued", "rescued", "evacuated", "got out", "out safely", "accounted for",
-                "no longer"]
+                "no longer", "taken to hospital", "been taken to hospital", "been extracted",
+                "been brought out", "is resolved", "resolved", "withdrawn", "been withdrawn",
+                "was a mix up", "a mix up"]
+# ... of which these revoke only a person in need ("gas leak at the police post, they evacuated" stands)
+CANCEL_PEOPLE_ONLY = {"all rescued", "rescued", "evacuated", "got out", "out safely", "accounted for",
+                      "taken to hospital", "been taken to hospital", "been extracted", "been brought out"}
 
 # Words that open a clause speaking again of the thing just named ("..., it's drained now").
 BACK_REFERENCE_WORDS = {"it", "its", "s", "is", "has", "been", "thats", "that", "was", "they", "theyre", "are", "re",
@@ -149,10 +158,11 @@ NEUTRAL_PHRASES = ["keep clear", "stay clear", "keep everyone clear", "keep ever
 FALSE_ALARM = ["false alarm", "never mind", "nevermind", "disregard my last", "disregard the last report",
                "nothing in it", "nothing to it", "just steam", "only steam", "extractor fan", "was just a", "was only a",
                "was just their", "was just the", "nothing to worry about", "ignore my last", "cancel my last",
-               "disregard my last message", "disregard previous"]
+               "disregard my last message", "disregard previous", "disregard my earlier report",
+               "ignore my earlier report", "disregard the earlier report"]
 # ... of which these withdraw an earlier report: only what comes before them in the sentence is denied
 PREVIOUS_REPORT_WITHDRAWN = {"disregard my last", "disregard the last report", "ignore my last", "cancel my last",
-                             "disregard my last message", "disregard previous"}
+                             "disregard my last message", "disregard previous", "never mind", "nevermind"}
 
 # Self-repair markers. Strong ones reach back into the previous sentence.
 STRONG_REPAIR = [
@@ -340,7 +350,9 @@ TRANSIT = ["evacuated from", "moved out of", "moved from", "relocated from", "de
            "staged at", "regrouping at", "relocating to", "diverting to", "rerouting to", "going round",
            "we're at", "we are at", "currently at", "positioned at", "standing by at", "checking", "will check",
            "we're outside", "we are outside", "we're by", "we are by", "we're in front of", "we're opposite",
-           "we're standing at", "we're parked at", "outside of",
+           "we're standing at", "we're parked at", "outside of", "via", "went via", "going via", "parked up at",
+           "parked up by", "parked up outside", "walking from", "driving from", "came out of", "stood down at",
+           "standing down at",
            "about to check", "searching", "sweeping", "en route"]
 
 # Head nouns of a description of a landmark ("the building with the two engine bays").
