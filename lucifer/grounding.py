@@ -127,8 +127,9 @@ class Grounder:
         # durability="exit": the trace is checkpointed once, when the run ends (also when it fails),
         # instead of after every node; the final state holds every node's trace entry
         try:
+            durability = {"durability": "exit"} if self._store is not None else {}  # (untraced: no checkpointer)
             out = await graph.ainvoke({"report": text, "report_id": report_id}, config=config, context=context,
-                                      durability="exit")
+                                      **durability)
         except Exception as exc:  # a node failed: its trace (up to that node) stays inspectable
             if self._store is not None:
                 await self._store.record(trace_id, text, self.model, f"error: {type(exc).__name__}", 0,

@@ -350,7 +350,7 @@ TRANSIT = ["evacuated from", "moved out of", "moved from", "relocated from", "de
            "staged at", "regrouping at", "relocating to", "diverting to", "rerouting to", "going round",
            "we're at", "we are at", "currently at", "positioned at", "standing by at", "checking", "will check",
            "we're outside", "we are outside", "we're by", "we are by", "we're in front of", "we're opposite",
-           "we're standing at", "we're parked at", "outside of", "via", "went via", "going via", "parked up at",
+           "we're standing at", "we're parked at", "outside of", "went via", "going via", "came via", "parked up at",
            "parked up by", "parked up outside", "walking from", "driving from", "came out of", "stood down at",
            "standing down at",
            "about to check", "searching", "sweeping", "en route"]
