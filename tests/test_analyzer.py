@@ -186,6 +186,9 @@ def test_phenomena(analyzer, text, expected):
     ("we're parked up at the school; the building next to us has a man down", [("post office", "victim")]),
     # a possessive anchor, and SAR jargon
     ("the building next to my school has a live find", [("post office", "victim")]),
+    # a headless relation on a pronoun, opening its sentence or after "but"
+    ("We're at the hardware store. Behind it there's a gas leak.", [("garage", "hazard")]),
+    ("the bakery is clear, but attached to it there's a fire", [("bakery", "safe_zone"), ("pharmacy", "hazard")]),
     # a stutter on a pronoun is no cut-off landmark name ("he-" is not "health centre")
     ("my dad at the bakery, he- he fell off a chair and he's not answering", [("bakery", "victim")]),
 ])

@@ -895,6 +895,8 @@ class ReportAnalyzer:
         elif a >= 2 and toks.tokens[a - 1].text.lower().replace("’", "'") in ("that's", "thats", "which's"):
             head_end = a - 1
         head_place = next((p for p in ex.places if p.end_tok == head_end and p.status == "active"), None)
+        if head_place is not None and toks.sentence_start[head_end]:
+            head_place = None  # "I'm at the warehouse. Behind it there's flooding": the place ends another clause
         if anchor is not None and head_place is not None:
             # "the pharmacy next to the bakery": the place is named; the anchor is only a reference
             if not pronoun:

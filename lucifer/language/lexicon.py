@@ -487,7 +487,7 @@ COMPOUND_MODIFIERS = {"car", "ball", "theme", "trailer", "business", "retail", "
                       "safari", "bell", "clock", "cell", "radio", "signal", "phone"}
 # Words that may stand between a correction or report verb and a headless relation ("she says across from ...").
 HEADLESS_OK = {"she", "he", "they", "says", "said", "reports", "reported", "say", "thinks", "think", "its", "it",
-               "is", "was", "actually", "rather", "now", "maybe", "probably", "definitely"}
+               "is", "was", "actually", "rather", "now", "maybe", "probably", "definitely", "but", "and", "while", "whereas", "plus"}
 # Relation groups close enough to stand in for each other when the exact one finds nothing.
 LOOSE_EQUIVALENTS = {"attached to": "next to", "next to": "attached to"}
 
