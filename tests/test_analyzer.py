@@ -189,6 +189,9 @@ def test_phenomena(analyzer, text, expected):
     # a headless relation on a pronoun, opening its sentence or after "but"
     ("We're at the hardware store. Behind it there's a gas leak.", [("garage", "hazard")]),
     ("the bakery is clear, but attached to it there's a fire", [("bakery", "safe_zone"), ("pharmacy", "hazard")]),
+    # "going up" said of a place burns; a tent going up somewhere is set up
+    ("the hotel's going up, get the crews round", [("hotel", "hazard")]),
+    ("first aid tent going up at the library", [("library", "safe_zone")]),
     # a stutter on a pronoun is no cut-off landmark name ("he-" is not "health centre")
     ("my dad at the bakery, he- he fell off a chair and he's not answering", [("bakery", "victim")]),
 ])

@@ -1811,6 +1811,24 @@ class ReportAnalyzer:
             if cat:
                 t = toks.tokens[i]
                 out.append(CueMention(i, i + 1, t.start, t.end, t.text, cat, "lexicon"))
+        starts = {p.start_tok for p in ex.places}
+        for i in range(1, len(norms) - 1):
+            # "the bakery's going up", "the building opposite that's going up": burning, said of a place;
+            # not "a tent going up at the school"
+            if norms[i : i + 2] != ("going", "up") or i in blocked or i + 1 in blocked:
+                continue
+            prev = toks.tokens[i - 1].text.lower().replace("’", "'")
+            if not (norms[i - 1] in ("is", "s", "are") or prev.endswith("'s") and (i - 1) in {p.end_tok - 1 for p in ex.places}
+                    or prev in ("that's", "it's", "its")):
+                continue
+            nxt = i + 2
+            if nxt < len(norms) and not toks.clause_start[nxt] and (norms[nxt] in lx.PREPOSITIONS or nxt in starts):
+                continue
+            cat = self._category_for_role(lx.UNDESIRABLE, "going up in flames")
+            if cat:
+                t0, t1 = toks.tokens[i], toks.tokens[i + 1]
+                out.append(CueMention(i, i + 2, t0.start, t1.end, toks.text[t0.start:t1.end], cat, "lexicon",
+                                      reason="'going up' said of a place"))
         return out
 
     def _apply_non_reports(self, toks: Tokens, norms: tuple[str, ...], cues: list[CueMention]) -> list[CueMention]:
