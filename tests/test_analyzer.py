@@ -192,6 +192,9 @@ def test_phenomena(analyzer, text, expected):
     # "going up" said of a place burns; a tent going up somewhere is set up
     ("the hotel's going up, get the crews round", [("hotel", "hazard")]),
     ("first aid tent going up at the library", [("library", "safe_zone")]),
+    # a four-letter slip that is no word ("caff"), and a person still inside
+    ("someone lying in the caff, not moving", [("cafe", "victim")]),
+    ("my colleague's still in there somewhere at the bank", [("bank", "victim")]),
     # a stutter on a pronoun is no cut-off landmark name ("he-" is not "health centre")
     ("my dad at the bakery, he- he fell off a chair and he's not answering", [("bakery", "victim")]),
 ])

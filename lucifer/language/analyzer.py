@@ -599,7 +599,7 @@ class ReportAnalyzer:
             i += 1
         return out
 
-    TYPO_MIN_CHARS = 5
+    TYPO_MIN_CHARS = 4
 
     def _typo_of(self, word: str, words: list[str]) -> str | None:
         """A typed slip: "libary", "chruch", "gargae", "twn hall". One of the words is no English word

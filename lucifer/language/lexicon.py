@@ -59,7 +59,7 @@ no access|no vehicle access|no way in|no way through|no way onto|no way out|inac
 no through route|piled across|right across it|lying across|come down across|came down across|
 blocking|blocks the|blocked off|cordoned off|shed its load|gridlocked|choked with|full of parked cars|
 can't reach|cannot reach|unable to reach|unable to get in|can't access|cannot access|washed away|
-ankle deep|water coming up|water coming in|water's coming in|coming in under the door|coming in under the doors|
+foot of water|feet of water|under a foot of water|ankle deep|water coming up|water coming in|water's coming in|coming in under the door|coming in under the doors|
 petrol all over|fuel all over|diesel all over|oil all over|petrol everywhere|diesel everywhere|fuel everywhere|
 petrol leak|diesel leak|fuel spill|petrol spill|diesel spill|
 """.replace("\n", ""))
@@ -109,6 +109,8 @@ broken ankle|broken wrist|head injury|fractured|fracture|crushed|crushed foot|cr
 can hear someone|can hear her|can hear him|can hear them|can hear voices|hear someone|hear her|hear him|
 hear voices|waving at us|waving to us|calling from|shouting from|trapped under|under the timbers|overdue|
 gone under|went under|swept away by|in the river|in the sea|hypothermia|casualty recovered|recovered from the water|swept away|
+still in there|still in there somewhere|can't find him|can't find her|can't find them|cannot find him|
+people coughing|few of them collapsed|some of them collapsed|collapsed on the floor|
 live find|a live find|indicating a find|can't get down|cannot get down|can't get downstairs|cut his arm|cut her arm|
 cut his hand|cut his head|cut her head|badly cut|bleeding heavily|can't get the doors open|can't get the door open|
 fire fighter down|fireman down|fire fighter injured|not answering|isn't answering|he's not answering|she's not answering|
