@@ -300,6 +300,13 @@ def test_relational_nouns_possessives_and_plain_heads():
         [("fire and rescue station", "clear_ground")]
 
 
+def test_a_relation_read_through_its_preposition_on_an_unseen_kb():
+    an = ReportAnalyzer(load_kb(HARBOURSIDE), get_embedder())
+    # harbourside: ice house accessed_through fish market
+    assert claims(an, "smoke in the building you get to through the fish market") == [("ice house", "peril")]
+    assert claims(an, "the fire in the building you reach through the fish market is out, gas been isolated") == []
+
+
 def test_head_names_and_anchors_of_an_unseen_kb():
     an = ReportAnalyzer(load_kb(ROOT / "knowledge_bases" / "quarrytown"), get_embedder())
     # the head of a multi-word name ("upper gallery", "level entrance") names it, also before a relation

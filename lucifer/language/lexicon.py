@@ -136,7 +136,7 @@ CANCEL_AFTER = ["is out", "s out", "are out", "was out", "put out", "out now", "
                 "all rescued", "rescued", "evacuated", "got out", "out safely", "accounted for",
                 "no longer", "taken to hospital", "been taken to hospital", "been extracted",
                 "been brought out", "is resolved", "resolved", "withdrawn", "been withdrawn",
-                "was a mix up", "a mix up"]
+                "was a mix up", "a mix up", "isolated", "been isolated", "made safe", "been made safe"]
 # ... of which these revoke only a person in need ("gas leak at the police post, they evacuated" stands)
 CANCEL_PEOPLE_ONLY = {"all rescued", "rescued", "evacuated", "got out", "out safely", "accounted for",
                       "taken to hospital", "been taken to hospital", "been extracted", "been brought out"}
@@ -419,7 +419,7 @@ EXEMPLARS: dict[str, list[str]] = {
 
 # Last words of an unknown relational phrase ("the place <...> the mill"): the phrase links two places.
 RELATION_ENDINGS = {"to", "from", "of", "with", "onto", "on", "by", "over", "off", "against", "beside",
-                    "behind", "opposite", "facing", "past", "beyond", "above", "below", "under", "near"}
+                    "behind", "opposite", "facing", "past", "beyond", "above", "below", "under", "near", "through"}
 
 # Desirable states whose negation means the place is unsafe ("not safe", "no longer secure");
 # a negated designation ("not the holding area") is only a denial.
