@@ -307,6 +307,13 @@ def test_a_relation_read_through_its_preposition_on_an_unseen_kb():
     assert claims(an, "the fire in the building you reach through the fish market is out, gas been isolated") == []
 
 
+def test_a_generic_noun_heading_a_relation_is_no_plural_name():
+    an = ReportAnalyzer(load_kb(NORTHGATE), get_embedder())
+    # northgate: sports hall faces_onto playing fields; "halls" is an alias of the halls of residence
+    assert claims(an, "the playing fields are clear; the hall that faces onto them has smoke pouring out") == [
+        ("playing fields", "rally_point"), ("sports hall", "no_go_zone")]
+
+
 def test_head_names_and_anchors_of_an_unseen_kb():
     an = ReportAnalyzer(load_kb(ROOT / "knowledge_bases" / "quarrytown"), get_embedder())
     # the head of a multi-word name ("upper gallery", "level entrance") names it, also before a relation

@@ -894,9 +894,20 @@ class ReportAnalyzer:
             head_end = a - 2  # "the place that is behind the warehouse": the relative clause's head
         elif a >= 2 and toks.tokens[a - 1].text.lower().replace("’", "'") in ("that's", "thats", "which's"):
             head_end = a - 1
+        elif a >= 3 and norms[a - 1] in ("that", "which") and norms[a - 2] in lx.GENERIC_HEADS:
+            head_end = a - 1  # "the hall that faces onto it"
         head_place = next((p for p in ex.places if p.end_tok == head_end and p.status == "active"), None)
         if head_place is not None and toks.sentence_start[head_end]:
             head_place = None  # "I'm at the warehouse. Behind it there's flooding": the place ends another clause
+        if head_place is not None and anchor is not None and head_place.end_tok - head_place.start_tok == 1 \
+                and norms[head_place.start_tok] in lx.GENERIC_HEADS \
+                and toks.tokens[head_place.start_tok].text.lower() not in {
+                    f.lower() for f in self.kb.landmark_by_name[head_place.landmark].surface_forms}:
+            # "the hall that faces onto it" is no mention of "halls of residence": only the plural's key
+            # matched, and a generic noun heading a relation describes the place the relation reaches
+            ex.places.remove(head_place)
+            place_tokens.difference_update(range(head_place.start_tok, head_place.end_tok))
+            head_place = None
         if anchor is not None and head_place is not None:
             # "the pharmacy next to the bakery": the place is named; the anchor is only a reference
             if not pronoun:
