@@ -59,6 +59,14 @@ def _prune_sql(keep: int | None, before: float | None) -> tuple[str, tuple[Any, 
     return f"SELECT trace_id FROM lucifer_runs WHERE {' OR '.join(clauses)}", tuple(params)
 
 
+def _prune_statements(keep: int | None, before: float | None,
+                      tables: tuple[str, ...] = CHECKPOINT_TABLES) -> list[tuple[str, tuple[Any, ...]]]:
+    """The DELETEs that remove those runs from the checkpointer's ``tables`` and then from the run index."""
+    query, params = _prune_sql(keep, before)
+    return [(f"DELETE FROM {table} WHERE thread_id IN ({query})", params) for table in tables] \
+        + [(f"DELETE FROM lucifer_runs WHERE trace_id IN ({query})", params)]
+
+
 class TraceStore:
     """Owns the async SQLite connection shared by the checkpointer and the run index."""
 
@@ -94,10 +102,8 @@ class TraceStore:
             (n,) = await cur.fetchone()
         if n <= self.keep + max(100, self.keep // 10):
             return
-        query, params = _prune_sql(self.keep, None)
-        for table in CHECKPOINT_TABLES:
-            await self._conn.execute(f"DELETE FROM {table} WHERE thread_id IN ({query})", params)
-        await self._conn.execute(f"DELETE FROM lucifer_runs WHERE trace_id IN ({query})", params)
+        for sql, params in _prune_statements(self.keep, None):
+            await self._conn.execute(sql, params)
         await self._conn.commit()
 
     async def record(self, trace_id: str, report: str, backend: str, status: str, n_objects: int, kb: str) -> None:
@@ -152,10 +158,8 @@ def prune_runs(keep: int | None = None, older_than_days: float | None = None, pa
         tables = {r[0] for r in con.execute("SELECT name FROM sqlite_master WHERE type='table'")}
         (removed,) = con.execute(f"SELECT count(*) FROM ({query})", params).fetchone()
         with con:
-            for table in CHECKPOINT_TABLES:
-                if table in tables:
-                    con.execute(f"DELETE FROM {table} WHERE thread_id IN ({query})", params)
-            con.execute(f"DELETE FROM lucifer_runs WHERE trace_id IN ({query})", params)
+            for sql, stmt_params in _prune_statements(keep, before, tuple(t for t in CHECKPOINT_TABLES if t in tables)):
+                con.execute(sql, stmt_params)
         (kept,) = con.execute("SELECT count(*) FROM lucifer_runs").fetchone()
         if vacuum and removed:
             con.execute("VACUUM")

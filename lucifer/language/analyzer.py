@@ -544,6 +544,12 @@ class ReportAnalyzer:
             out.append(self._mention(toks, i, i + 1, self._heads[w]))
         return out
 
+    def _name_keys(self) -> list[tuple[str, str]]:
+        """(letters of a name or alias run together, articles left out; landmark), for every surface form:
+        what misheard and typed slips of a name are compared with."""
+        return [("".join(w for w in norm_phrase(form) if w not in ("the", "a", "an")), lm.name)
+                for lm in self.kb.landmarks for form in lm.surface_forms]
+
     MISHEARD_MIN_RATIO = 0.85
     MISHEARD_MIN_CHARS = 8
 
@@ -554,11 +560,9 @@ class ReportAnalyzer:
         at least ``MISHEARD_MIN_CHARS`` letters, same first letter) and clearly closer than to any other."""
         if not hasattr(self, "_spellings"):
             spell: dict[str, str] = {}
-            for lm in self.kb.landmarks:
-                for form in lm.surface_forms:
-                    key = "".join(w for w in norm_phrase(form) if w not in ("the", "a", "an"))
-                    if len(key) >= self.MISHEARD_MIN_CHARS and key.isalnum():
-                        spell.setdefault(key, lm.name)
+            for key, name in self._name_keys():
+                if len(key) >= self.MISHEARD_MIN_CHARS and key.isalnum():
+                    spell.setdefault(key, name)
             self._spellings = spell
         if not self._spellings:
             return []
@@ -611,10 +615,8 @@ class ReportAnalyzer:
         if all(w in known for w in words):
             return None
         if not hasattr(self, "_typo_spellings"):
-            self._typo_spellings = {
-                key: lm.name for lm in self.kb.landmarks for form in lm.surface_forms
-                if len(key := "".join(w for w in norm_phrase(form) if w not in ("the", "a", "an"))) >= self.TYPO_MIN_CHARS
-                and key.isalpha()}
+            self._typo_spellings = {key: name for key, name in self._name_keys()
+                                    if len(key) >= self.TYPO_MIN_CHARS and key.isalpha()}
         hits = {name for key, name in self._typo_spellings.items()
                 if key[0] == word[0] and abs(len(key) - len(word)) <= 1 and _one_edit(word, key)}
         return next(iter(hits)) if len(hits) == 1 else None
@@ -1823,13 +1825,14 @@ class ReportAnalyzer:
                 t = toks.tokens[i]
                 out.append(CueMention(i, i + 1, t.start, t.end, t.text, cat, "lexicon"))
         starts = {p.start_tok for p in ex.places}
+        last_words = {p.end_tok - 1 for p in ex.places}
         for i in range(1, len(norms) - 1):
             # "the bakery's going up", "the building opposite that's going up": burning, said of a place;
             # not "a tent going up at the school"
             if norms[i : i + 2] != ("going", "up") or i in blocked or i + 1 in blocked:
                 continue
             prev = toks.tokens[i - 1].text.lower().replace("’", "'")
-            if not (norms[i - 1] in ("is", "s", "are") or prev.endswith("'s") and (i - 1) in {p.end_tok - 1 for p in ex.places}
+            if not (norms[i - 1] in ("is", "s", "are") or prev.endswith("'s") and (i - 1) in last_words
                     or prev in ("that's", "it's", "its")):
                 continue
             nxt = i + 2
@@ -1853,9 +1856,9 @@ class ReportAnalyzer:
         dropped: dict[int, str] = {}
         asked: set[int] = set()
         marker_starts = {ma for ma, _, _ in getattr(self, "_markers_now", [])}
+        questions = self._question_sentences(toks)
         for n, (a, b) in enumerate(sentences):
-            tail = toks.gaps[b] if b < len(toks) else toks.text[toks.tokens[b - 1].end :]
-            if "?" in tail:
+            if n in questions:
                 # only the clause that asks: "Control, is the church still open?"; "or is it the flats?" repairs;
                 # a sentence that opens with the question word asks all through ("Which is the rest centre, ...?")
                 opener = next((i for i in range(a, b) if norms[i] not in lx.FILLERS), a)
@@ -2058,7 +2061,7 @@ class ReportAnalyzer:
                 continue
             marker_words = " ".join(norms_all[a:_b])
             withdraw = any(marker_words == m or marker_words.startswith(m + " ")  # "cancel that, cancel that"
-                           for m in (" ".join(norm_phrase(w)) for w in lx.WITHDRAW_MARKERS))
+                           for m in _WITHDRAW_KEYS)
             if kind is None and strong and (set(norms_all[b_after:e_after]) & lx.DISMISSALS or withdraw):
                 # "smoke at the cafe, correction, that's just steam": the claim is withdrawn
                 lo = self._repair_window_start(ex, k)
@@ -2388,6 +2391,9 @@ def _same_stem(a: str, b: str) -> bool:
     k = max(4, n - 3)
     return a[:k] == b[:k] and (a.startswith(b[: len(b) - 3]) or b.startswith(a[: len(a) - 3]) or a[:5] == b[:5])
 
+
+# The withdrawal markers ("scratch that") as token keys joined by spaces.
+_WITHDRAW_KEYS = frozenset(" ".join(norm_phrase(m)) for m in lx.WITHDRAW_MARKERS)
 
 # Closed-class words that never head a description.
 _NOT_HEADS = lx.PREPOSITIONS | lx.COPULAS | lx.FILLERS | lx.PRONOUNS | lx.INVERSE_VERBS | lx.DETERMINERS
