@@ -11,6 +11,7 @@ import asyncio
 import json
 import os
 import sqlite3
+import threading
 import time
 from pathlib import Path
 from typing import Any
@@ -84,7 +85,14 @@ class TraceStore:
                 from langgraph.checkpoint.sqlite.aio import AsyncSqliteSaver
 
                 self.path.parent.mkdir(parents=True, exist_ok=True)
-                self._conn = await aiosqlite.connect(str(self.path), timeout=30)
+                conn = aiosqlite.connect(str(self.path), timeout=30)
+                # A Grounder left open at exit (no aclose) must not hang the interpreter, which joins
+                # non-daemon threads before anything could close the connection. Every write is
+                # committed when it is made, so nothing is lost when the worker thread dies with it.
+                worker = getattr(conn, "_thread", None)
+                if isinstance(worker, threading.Thread) and not worker.is_alive():
+                    worker.daemon = True
+                self._conn = await conn
                 await self._conn.execute("PRAGMA journal_mode=WAL")
                 await self._conn.execute("PRAGMA synchronous=NORMAL")
                 await self._conn.execute(RUNS_DDL)

@@ -102,3 +102,23 @@ def test_cli_trace_prune(tmp_path):
     out = cli("prune", "--keep", "2")
     assert out.returncode == 0 and out.stdout.startswith("removed 1 runs, kept 2")
     assert len(list_runs(path=db)) == 2
+
+
+def test_a_grounder_left_open_does_not_hang_the_interpreter(tmp_path):
+    """A script that never calls aclose() (a Grounder at module level, reused across asyncio.run calls)
+    exits promptly and keeps both runs."""
+    db = tmp_path / "traces.sqlite"
+    script = (
+        "import asyncio, sys\n"
+        "from lucifer.grounding import Grounder\n"
+        f"g = Grounder({str(KB)!r}, traces_path={str(db)!r})\n"
+        "for text in ('fire at the bakery', 'people trapped at the school'):\n"
+        "    r = asyncio.run(g.ground(text))\n"
+        "    print(r.objects[0].location)\n"
+    )
+    out = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, cwd=ROOT, timeout=180,
+                         env=os.environ | {"HF_HUB_OFFLINE": "1"})
+    assert out.returncode == 0, out.stderr[-2000:]
+    assert out.stdout.split() == ["bakery", "school"]
+    assert "Traceback" not in out.stderr
+    assert [r["report"] for r in list_runs(path=db)] == ["people trapped at the school", "fire at the bakery"]
