@@ -15,11 +15,11 @@ from pydantic import ValidationError
 
 from lucifer.graphs.grounding.context import GroundingContext
 from lucifer.graphs.grounding.prompts import RETRY_PROMPT, SYSTEM_PROMPT, USER_PROMPT
-from lucifer.graphs.grounding.resources import GroundingResources
+from lucifer.graphs.grounding.resources import GroundingResources, form_key
 from lucifer.graphs.grounding.state import GroundingState
 from lucifer.graphs.grounding.tools import TOOL_NAME, ReportObjects
 from lucifer.language.analyzer import CueMention, Extraction, PlaceMention
-from lucifer.language.text import norm_phrase, tokenize
+from lucifer.language.text import tokenize
 from lucifer.types import Status
 
 LLM_CONTEXT_DOCS = 8  # retrieved KB documents shown to a chat model (small local models are slow readers)
@@ -210,16 +210,12 @@ def _closest(name: str, names: set[str]) -> str | None:
 async def ground_cells(state: GroundingState, runtime: Runtime[GroundingContext]) -> dict[str, Any]:
     """Map each candidate's location (name or alias) to the KB landmark and its cells."""
     t0 = time.perf_counter()
-    kb = _res(runtime).kb
-    by_form: dict[tuple[str, ...], str] = {}
-    for lm in kb.landmarks:
-        for form in lm.surface_forms:
-            key = tuple(w for w in norm_phrase(form) if w not in ("the", "a", "an"))
-            by_form[key] = lm.name
+    res = _res(runtime)
+    kb, by_form = res.kb, res.landmark_by_form
     grounded = []
     for cand in state.candidates:
         loc = str(cand.get("location") or "")
-        name = loc if loc in kb.landmark_by_name else by_form.get(tuple(w for w in norm_phrase(loc) if w not in ("the", "a", "an")))
+        name = loc if loc in kb.landmark_by_name else by_form.get(form_key(loc))
         g = dict(cand) | {"location": name or loc, "cells": kb.cells_of(name) if name else []}
         grounded.append(g)
     out = {"grounded": [f"{g['location']} -> {g['cells']}" for g in grounded]}

@@ -3,14 +3,21 @@
 from __future__ import annotations
 
 import asyncio
+import functools
 from dataclasses import dataclass, field
 from typing import Any
 
 from lucifer.embeddings import Embedder
 from lucifer.kb import KnowledgeBase
 from lucifer.language.analyzer import ReportAnalyzer
+from lucifer.language.text import norm_phrase
 from lucifer.models import is_builtin, load_chat_model
 from lucifer.retrieval import Retriever
+
+
+def form_key(name: str) -> tuple[str, ...]:
+    """A place name as ground_cells compares it: normalised words, articles dropped."""
+    return tuple(w for w in norm_phrase(name) if w not in ("the", "a", "an"))
 
 
 @dataclass
@@ -46,6 +53,15 @@ class GroundingResources:
             else:  # pragma: no cover - guarded by the caller
                 raise ValueError(self.model)
         return self._baseline
+
+    @functools.cached_property
+    def landmark_by_form(self) -> dict[tuple[str, ...], str]:
+        """Every name and alias of a landmark, as normalised words without articles -> its canonical name."""
+        by_form: dict[tuple[str, ...], str] = {}
+        for lm in self.kb.landmarks:
+            for form in lm.surface_forms:
+                by_form[form_key(form)] = lm.name
+        return by_form
 
     @property
     def uses_llm(self) -> bool:
