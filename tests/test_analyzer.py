@@ -202,6 +202,41 @@ def test_typed_and_logged_reports(analyzer, text, expected):
     assert claims(analyzer, text) == expected
 
 
+@pytest.mark.parametrize(("text", "expected"), [
+    # a sentence that names no place goes on about the last one, past questions and one-word answers
+    ("Smoke at the hotel. The stairwell is thick with smoke. Two guests are trapped upstairs.",
+     [("hotel", "hazard"), ("hotel", "victim")]),
+    ("Caller says the bank roof fell in. [Dispatcher: Anyone inside?] Yes. Her brother is missing.",
+     [("bank", "hazard"), ("bank", "victim")]),
+    ("Checked the school. We are moving on to the next street now. All clear there.", []),
+    # a preposition ending a sentence is an adverb, not a broken-off "at the"
+    ("Gas leak at the library, and three people are unconscious inside. The cafe is the cold zone.",
+     [("cafe", "safe_zone"), ("library", "hazard"), ("library", "victim")]),
+    # "it's" as the anchor of a relation
+    ("the bakery is safe but the shop attached to it's got smoke pouring out",
+     [("bakery", "safe_zone"), ("pharmacy", "hazard")]),
+    # a negation does not reach over a new "there's" clause, nor into "isn't the one"
+    ("the school is safe, wait no its not theres a fire", [("school", "hazard")]),
+    ("the bank isn't the one with casualties, it's the hotel", [("hotel", "victim")]),
+    # "another one" takes up the category before it; a cut-off name is the place named in full later
+    ("the gas leak at the church is fixed but we found another one at the school", [("school", "hazard")]),
+    ("fire at the libr-- / say again? / the library, the library", [("library", "hazard")]),
+    # people at work there, pinned or under something; shocks and knock-outs
+    ("there's a van driver underneath it at the garage", [("garage", "victim")]),
+    ("one of the lads at the warehouse got a belt off a cable, he's out cold", [("warehouse", "victim")]),
+    # where people were evacuated to is a place of safety, not a hazard
+    ("fire at the school, we've evacuated everyone to the church", [("church", "safe_zone"), ("school", "hazard")]),
+    ("the guests were moved into the town hall", [("town hall", "safe_zone")]),
+    # a cue taken back by a strong repair with nothing in its place
+    ("the bakery has someone trapped, correction, the door's opened, over", []),
+    # "No, no fire." answers and negates; the past "were at" is no crew position
+    ("I smelled smoke at the cafe, it was just steam. [Dispatcher: Is there a fire?] No, no fire.", []),
+    ("my son and his friend were at the, the gym and the roof's fallen in", [("sports hall", "hazard")]),
+])
+def test_follow_on_sentences_and_turns(analyzer, text, expected):
+    assert claims(analyzer, text) == expected
+
+
 @pytest.mark.parametrize("text", [
     "team two heading to the bank, over",
     "we're passing the church, all units stand by",
@@ -223,6 +258,10 @@ def test_typed_and_logged_reports(analyzer, text, expected):
     "uh the fire at the church, the chapel, it's out",
     # speech without a question mark still asks
     "is the is the library is the library safe can anyone confirm over",
+    # withdrawn reports, and waiting for a clearance that has not come
+    "earlier reports of flooding at the cafe were wrong",
+    "parked up by the hotel, waiting for the all clear",
+    "we're heading to the, er, the bank now, the crane's secured, over",
 ])
 def test_no_claim(analyzer, text):
     assert claims(analyzer, text) == []

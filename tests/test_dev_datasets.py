@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev9) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev10) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -58,6 +58,10 @@ SETS = {
                                {"standard": 10, "messy": 50, "advanced_messy": 60}, sep=""),
     "dev9/market_square_b": _set("dev9/market_square_b.jsonl", MARKET_SQUARE, "d9b",
                                  {"standard": 10, "messy": 60, "advanced_messy": 50}, sep=""),
+    "dev10/market_square": _set("dev10/market_square.jsonl", MARKET_SQUARE, "d10",
+                                {"standard": 15, "messy": 60, "advanced_messy": 45}, sep=""),
+    "dev10/market_square_b": _set("dev10/market_square_b.jsonl", MARKET_SQUARE, "d10b",
+                                  {"standard": 15, "messy": 55, "advanced_messy": 50}, sep=""),
 }
 
 

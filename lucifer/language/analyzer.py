@@ -667,6 +667,9 @@ class ReportAnalyzer:
             words = norms[a:b]
             nxt = norms[b] if b < len(norms) else None
             pause_after = b >= len(norms) or toks.clause_start[b]
+            if words == ("no", "no") and b < len(norms) and not pause_after and self._cues.match_at(norms, b) is not None:
+                b -= 1  # "No, no fire.": the second "no" negates the cue; the first answers
+                words, nxt, pause_after = words[:1], norms[b], True
             if words[-1:] in (("no",), ("nope",)) and all(w in lx.FILLERS for w in words[:-1]):
                 # ("uh no casualties": a filler before it changes nothing)
                 # "no, the bakery" / "no no" is a repair; "no fire" / "no one" is negation;
@@ -901,10 +904,18 @@ class ReportAnalyzer:
         head_place = next((p for p in ex.places if p.end_tok == head_end and p.status == "active"), None)
         if head_place is not None and toks.sentence_start[head_end]:
             head_place = None  # "I'm at the warehouse. Behind it there's flooding": the place ends another clause
+        if pronoun and head_place is not None and anchor is head_place:
+            # "the hall that faces onto them": the pronoun is not the head it follows, but the place before
+            before = [p for p in ex.places if p.end_tok <= head_place.start_tok and p.status not in ("retracted", "reference")]
+            if before:
+                anchor = max(before, key=lambda p: p.end_tok)
         if head_place is not None and anchor is not None and head_place.end_tok - head_place.start_tok == 1 \
                 and norms[head_place.start_tok] in lx.GENERIC_HEADS \
                 and toks.tokens[head_place.start_tok].text.lower() not in {
-                    f.lower() for f in self.kb.landmark_by_name[head_place.landmark].surface_forms}:
+                    f.lower() for f in self.kb.landmark_by_name[head_place.landmark].surface_forms} \
+                and self._follow(anchor.landmark, phrase, toks.tokens[head_place.start_tok].text,
+                                 inverse=flipped)[0] is not None:
+            # (kept when the relation leads nowhere from its anchor: "the bridge below it's been hit")
             # "the hall that faces onto it" is no mention of "halls of residence": only the plural's key
             # matched, and a generic noun heading a relation describes the place the relation reaches
             ex.places.remove(head_place)
@@ -1136,6 +1147,8 @@ class ReportAnalyzer:
             if norms[j] in ("that", "this") and (j + 1 >= len(norms) or ex.tokens.clause_start[j + 1]
                                                  or norms[j + 1] in lx.COPULAS):
                 break  # "the building across from that has people trapped": the pronoun is the anchor
+            if j == b and norms[j] == "its" and any(q in ex.tokens.tokens[j].text for q in ("'", "’")):
+                break  # "the shop attached to it's got a live wire": "it's" is "it has", the pronoun
             j += 1
         place = next((p for p in ex.places if p.start_tok == j or (p.start_tok >= b and p.start_tok <= j and p.status == "active")), None)
         if place is not None and place.status in ("active", "retracted", "negated"):
@@ -1147,7 +1160,8 @@ class ReportAnalyzer:
             before = [p for p in ex.places if p.end_tok <= b]
             if before:
                 return max(before, key=lambda p: p.end_tok), j + 1, True
-        if j < len(norms) and norms[j] in ("it", "them", "that", "there", "us", "here", "me") \
+        its = j == b and j < len(norms) and norms[j] == "its" and any(q in ex.tokens.tokens[j].text for q in ("'", "’"))
+        if j < len(norms) and (norms[j] in ("it", "them", "that", "there", "us", "here", "me") or its) \
                 and not ex.tokens.clause_start[j]:
             if norms[j] in ("that", "there") and j + 1 < len(norms) and not ex.tokens.clause_start[j + 1] \
                     and norms[j + 1] not in lx.COPULAS:
@@ -1344,6 +1358,12 @@ class ReportAnalyzer:
             while j >= 0 and (norms[j] in lx.DETERMINERS or norms[j] in lx.PREPOSITIONS or norms[j] in lx.FILLERS) \
                     and p.start_tok - j <= 4 and not toks.clause_start[j + 1]:
                 j -= 1
+            tail = norms[p.end_tok : p.end_tok + 4]
+            not_the_one = tail[:3] in (("isnt", "the", "one"), ("wasnt", "the", "one"), ("aint", "the", "one")) \
+                or tail[:4] in (("is", "not", "the", "one"), ("s", "not", "the", "one"), ("was", "not", "the", "one"))
+            if j < 0 and not_the_one:
+                ex.places[idx] = replace(p, status="negated", reason="negated by 'not the one'")
+                continue  # "the school isn't the one with people trapped, it's the library"
             if j < 0:
                 continue
             neg = norms[j] in ("not", "nt", "isnt", "wasnt") or norms[j] in lx.RETRACT_VERBS or (
@@ -1361,9 +1381,7 @@ class ReportAnalyzer:
             after = norms[p.end_tok : p.end_tok + 2]
             if norms[j] in ("take", "taking", "took") and after[:1] and after[0] in ("off", "out", "back", "away"):
                 neg = True  # "take the garage off that list"
-            tail = norms[p.end_tok : p.end_tok + 4]
-            if tail[:3] in (("isnt", "the", "one"), ("wasnt", "the", "one"), ("aint", "the", "one")) \
-                    or tail[:4] in (("is", "not", "the", "one"), ("s", "not", "the", "one"), ("was", "not", "the", "one")):
+            if not_the_one:
                 neg = True  # "the school isn't the one"
             if neg and not self._cue_between(norms, j + 1, p.start_tok):
                 ex.places[idx] = replace(p, status="negated", reason=f"negated by '{toks.tokens[j].text}'")
@@ -1398,8 +1416,9 @@ class ReportAnalyzer:
                 continue
             j = p.start_tok
             while j > 0 and norms[j - 1] in lx.DETERMINERS | lx.FILLERS | {"at", "to", "by", "the", "from"} \
-                    and p.start_tok - j < 3 and not toks.clause_start[j]:
-                j -= 1
+                    and p.start_tok - j < 5 and (not toks.clause_start[j] or norms[j - 1] in lx.ARTICLES | lx.FILLERS
+                                                  | {"to", "at", "by"}):
+                j -= 1  # ("heading to the, er, the bus station": past a hesitation that broke the phrase)
             if self._crew_position(norms, p.start_tok):
                 ex.places[idx] = replace(p, status="reference", reason="in transit (a crew's position): no claim")
                 continue
@@ -1408,6 +1427,9 @@ class ReportAnalyzer:
                 continue
             for k in range(max(0, j - 5), j):
                 hit = self._transit.match_at(norms, k)
+                if hit is not None and norms[k] == "were" and "'" not in toks.tokens[k].text.replace("’", "'") \
+                        and not toks.sentence_start[k] and norms[k - 1] != "we":
+                    continue  # "my son and his friend were at the gym": "were", not "we're"
                 if hit is not None and j <= hit[0] <= p.start_tok and not any(toks.clause_start[i] for i in range(k + 1, min(hit[0], p.start_tok) + 1) if i < p.start_tok):
                     ex.places[idx] = replace(p, status="reference", reason=f"in transit ('{hit[1]}'): no claim")
                     break
@@ -1630,6 +1652,8 @@ class ReportAnalyzer:
                 cues.append(replace(cue, polarity="denied", reason=checked.reason))
         cues.extend(self._predicative_cues(ex, norms, blocked | {i for c in cues for i in range(c.start_tok, c.end_tok)}))
         cues.extend(self._person_cues(ex, norms, blocked | {i for c in cues for i in range(c.start_tok, c.end_tok)}))
+        cues.extend(self._another_one_cues(toks, norms, cues, blocked))
+        cues = self._evacuation_destinations(ex, norms, cues)
         cues.sort(key=lambda c: c.start_tok)
         cues = self._apply_cue_repairs(ex, cues)
         cues = self._apply_false_alarms(toks, norms, cues)
@@ -1784,11 +1808,15 @@ class ReportAnalyzer:
         toks = ex.tokens
         out = []
         for i, w in enumerate(norms):
-            if w not in lx.LAY_PERSONS or i in blocked:
+            worker = w in lx.WORKER_PERSONS
+            if not (w in lx.LAY_PERSONS or worker) or i in blocked:
                 continue
             j = i - 1
             while j >= 0 and norms[j] in lx.PERSON_MODIFIERS:
                 j -= 1
+            if worker and j >= 1 and norms[j].isalpha() and norms[j] not in lx.FUNCTION_WORDS \
+                    and norms[j - 1] in lx.PERSON_INTRODUCERS:
+                j -= 1  # "a forklift driver", "one delivery driver"
             introduced = j >= 0 and (norms[j] in lx.PERSON_INTRODUCERS or norms[j].isdigit() or norms[j] in lx.NUMBER_WORDS)
             if not introduced and w not in ("someone", "somebody"):
                 continue
@@ -1796,13 +1824,67 @@ class ReportAnalyzer:
             while k < len(norms) and norms[k] in lx.FILLERS | {"still", "definitely", "probably", "possibly", "maybe",
                                                                 "apparently", "certainly", "stuck"}:
                 k += 1
-            if k >= len(norms) or norms[k] not in lx.PERSON_SITUATIONS or toks.clause_start[k]:
+            if k >= len(norms) or norms[k] not in lx.PERSON_SITUATIONS or toks.clause_start[k] \
+                    or worker and norms[k] not in lx.PINNED_SITUATIONS:
                 continue
             if any(norms[m] in lx.NEGATORS for m in range(max(0, j - 2), i)):
                 continue  # "no one at the window" is handled as a negation elsewhere
             t0, t1 = toks.tokens[i], toks.tokens[k]
             out.append(CueMention(i, k + 1, t0.start, t1.end, toks.text[t0.start:t1.end], cat, "lexicon",
                                   reason="a person placed at the scene"))
+        return out
+
+    def _evacuation_destinations(self, ex: Extraction, norms: tuple[str, ...],
+                                 cues: list[CueMention]) -> list[CueMention]:
+        """"we've evacuated everyone to the church", "moving residents into the town hall": the place
+        people were taken to is a place of safety (the evacuation is no hazard of that place)."""
+        cat = self._role_category.get("desirable")
+        if cat is None:
+            return cues
+        toks = ex.tokens
+        starts = {p.start_tok: p for p in ex.places if p.status == "active"}
+        for i, w in enumerate(norms):
+            evac = w in lx.EVACUATE_VERBS
+            if not (evac or w in lx.MOVE_VERBS):
+                continue
+            k, people = i + 1, evac or any(norms[m] in lx.MOVED_PEOPLE for m in range(max(0, i - 3), i))
+            while k < len(norms) and k - i <= 6 and norms[k] not in ("to", "into") and not toks.clause_start[k] \
+                    and k not in starts:
+                people = people or norms[k] in lx.MOVED_PEOPLE or norms[k] == "them"
+                k += 1
+            if not people or k >= len(norms) or norms[k] not in ("to", "into") or toks.clause_start[k]:
+                continue
+            j = k + 1
+            while j < len(norms) and (norms[j] in lx.DETERMINERS or norms[j] in lx.FILLERS) and j - k <= 3:
+                j += 1
+            if j not in starts:
+                continue
+            if any(c.start_tok < i < c.end_tok or i < c.start_tok < k for c in cues if c.source != "glossary"):
+                continue  # a cue of its own inside ("moved the injured to ...") speaks for itself
+            t0, t1 = toks.tokens[i], toks.tokens[k]
+            cues = [c for c in cues if c.start_tok != i]  # "evacuating ... to": no hazard of the destination
+            cues.append(CueMention(i, k + 1, t0.start, t1.end, toks.text[t0.start:t1.end], cat, "lexicon",
+                                   reason="people were taken there"))
+        return cues
+
+    def _another_one_cues(self, toks: Tokens, norms: tuple[str, ...], cues: list[CueMention],
+                          blocked: set[int]) -> list[CueMention]:
+        """"the leak at the bakery is fixed, but we found a new one at the cafe": "a new one" or
+        "another one" takes up the category of the cue spoken just before it."""
+        out = []
+        taken = blocked | {i for c in cues for i in range(c.start_tok, c.end_tok)}
+        for i in range(len(norms)):
+            n = 3 if norms[i : i + 3] in (("a", "new", "one"), ("a", "second", "one"), ("one", "more", "one")) else \
+                2 if norms[i : i + 2] in (("another", "one"), ("new", "one")) else 0
+            if not n or taken.intersection(range(i, i + n)):
+                continue
+            before = [c for c in cues if c.end_tok <= i and i - c.end_tok <= 12]
+            if not before:
+                continue
+            src = max(before, key=lambda c: c.end_tok)
+            t0, t1 = toks.tokens[i], toks.tokens[i + n - 1]
+            out.append(CueMention(i, i + n, t0.start, t1.end, toks.text[t0.start:t1.end], src.category, src.source,
+                                  reason=f"takes up the earlier '{src.text}'"))
         return out
 
     def _predicative_cues(self, ex: Extraction, norms: tuple[str, ...], blocked: set[int]) -> list[CueMention]:
@@ -1946,8 +2028,12 @@ class ReportAnalyzer:
         while j >= 0 and steps < 4 and j not in place_toks:
             if j + 1 < cue.start_tok and toks.clause_start[j + 1]:
                 break  # "the place across from it isn't — there's a fire": another clause's negation
+            if norms[j] in ("there", "theres") and (toks.tokens[j].text.lower().replace("’", "'") in ("theres", "there's")
+                                                    or j + 1 < cue.start_tok and norms[j + 1] in ("s", "is", "are")):
+                break  # "wait no its not theres a gas smell": a new "there's" clause, past the negation
             if norms[j] in lx.NEGATORS or norms[j].endswith("nt") and norms[j] in ("isnt", "arent", "wasnt", "werent", "dont", "doesnt", "didnt", "hasnt", "havent", "cant"):
-                negated_by = toks.tokens[j].text
+                if norms[j + 1 : j + 3] != ("the", "one"):  # "the pharmacy isn't the one on fire": which place, not whether
+                    negated_by = toks.tokens[j].text
                 break
             hit = None
             for k in range(max(0, j - 3), j + 1):
@@ -2062,7 +2148,13 @@ class ReportAnalyzer:
             marker_words = " ".join(norms_all[a:_b])
             withdraw = any(marker_words == m or marker_words.startswith(m + " ")  # "cancel that, cancel that"
                            for m in _WITHDRAW_KEYS)
-            if kind is None and strong and (set(norms_all[b_after:e_after]) & lx.DISMISSALS or withdraw):
+            just_said = [c for c in out if c.status == "active" and c.end_tok <= a
+                         and all(w in lx.FILLERS for w in norms_all[c.end_tok:a])]
+            taken_back = kind is None and strong and bool(just_said) and e_after > b_after \
+                and not any(b_after <= c.start_tok < e_after for c in out) \
+                and not any(b_after <= p.start_tok < e_after for p in ex.places)
+            if kind is None and strong and (set(norms_all[b_after:e_after]) & lx.DISMISSALS or withdraw or taken_back):
+                # ("I'm trapped — no, no, sorry, the door's opened": the cue just said is taken back)
                 # "smoke at the cafe, correction, that's just steam": the claim is withdrawn
                 lo = self._repair_window_start(ex, k)
                 before = [c for c in out if lo <= c.start_tok < a and c.status == "active"]
@@ -2158,7 +2250,12 @@ class ReportAnalyzer:
         def forward(p: PlaceMention | None) -> PlaceMention | None:
             seen = 0
             while p is not None and p.status != "active" and seen < 10:
-                p = successor.get(p.start_tok)
+                nxt = successor.get(p.start_tok)
+                if nxt is None and p.reason.startswith(("false start", "restarted")):
+                    # "fire at the hot-- / ... / hotel": a name cut off or said again is the same place, named
+                    # in full later
+                    nxt = next((q for q in usable if q.landmark == p.landmark and q.start_tok > p.start_tok), None)
+                p = nxt
                 seen += 1
             return p if p is not None and p.status == "active" else None
 
@@ -2211,6 +2308,17 @@ class ReportAnalyzer:
                           or norms[i] in lx.DETERMINERS or norms[i] in lx.PREPOSITIONS or norms[i] in ("just", "only", "its", "it"))
                          and i not in cue_tokens for i in range(a, b))}
 
+        # sentences a cue-only sentence may look back across to the place it talks about: the
+        # dispatcher's questions, one-word answers ("Yes.", "Eight o'clock."), and sentences that go
+        # on about the same place ("Fire at the bakery. The roof is sagging. Two people trapped inside.")
+        questions = self._question_sentences(toks)
+        sent_words: dict[int, int] = {}
+        for i in range(len(toks)):
+            sent_words[sentence_of[i]] = sent_words.get(sentence_of[i], 0) + (norms[i] not in lx.FILLERS)
+        placed = {sentence_of[p.start_tok] for p in usable}
+        cued = {sentence_of[c.start_tok] for c in cues if c.status == "active"}
+        transparent = {n for n in sent_words if n not in placed and (n in questions or n in cued or sent_words[n] <= 2)}
+
         # 3. cue-only segments attach to the places they talk about; a segment whose place was
         #    repaired away keeps its cues for the replacement (step 2), they do not float
         for k, cs in seg_cues.items():
@@ -2218,7 +2326,11 @@ class ReportAnalyzer:
             if not cs or seg_usable.get(k):
                 continue
             a, b = segs[k]
-            if norms[b - 1] in lx.PREPOSITIONS or norms[b - 1] in lx.DETERMINERS:
+            # "two people are unconscious inside. The coffee house ...": a preposition that ends a
+            # sentence is an adverb, not a broken-off "at the" (which a dash or ellipsis marks)
+            closed = b < len(toks) and toks.sentence_start[b] and norms[b - 1] not in lx.DETERMINERS \
+                and not any(m in toks.gaps[b] for m in ("-", "—", "–", "...", "…"))
+            if (norms[b - 1] in lx.PREPOSITIONS or norms[b - 1] in lx.DETERMINERS) and not closed:
                 nxt = k + 1
                 skipped = 0
                 while nxt < len(segs) and (nxt in hollow or (not seg_places.get(nxt) and not seg_cues.get(nxt) and skipped < 2)):
@@ -2249,7 +2361,7 @@ class ReportAnalyzer:
                 if here and not seg_usable.get(k - 1):
                     pairs.extend(Claim(here[-1], c) for c in cs)
                     continue
-            target = self._target_for_cues(k, segs, seg_usable, seg_cues, sentence_of)
+            target = self._target_for_cues(k, segs, seg_usable, seg_cues, sentence_of, transparent)
             if target is not None and all(q.status == "negated" for q in seg_usable[target]):
                 # "the harbour master's office, not the ice house, has got a gas leak": past the negated aside
                 # to the place it was contrasted with, in the same sentence
@@ -2365,11 +2477,14 @@ class ReportAnalyzer:
 
     @staticmethod
     def _target_for_cues(k: int, segs: list[tuple[int, int]], seg_places: dict[int, list[PlaceMention]],
-                         seg_cues: dict[int, list[CueMention]], sentence_of: list[int]) -> int | None:
-        # the nearest earlier segment with places ("the bakery — it's on fire", "Checked the school. All clear.")
+                         seg_cues: dict[int, list[CueMention]], sentence_of: list[int],
+                         transparent: set[int]) -> int | None:
+        # the nearest earlier segment with places ("the bakery — it's on fire", "Checked the school. All clear."),
+        # over sentences that are transparent (questions, one-word answers, more about the same place)
         for j in range(k - 1, -1, -1):
             if seg_places.get(j):
-                if sentence_of[segs[j][0]] < sentence_of[segs[k][0]] - 1:
+                between = range(sentence_of[segs[j][0]] + 1, sentence_of[segs[k][0]])
+                if len(between) > 3 or any(n not in transparent for n in between):
                     return None
                 return j
         # else the next one in the same sentence ("on fire, the bakery"), over a short aside

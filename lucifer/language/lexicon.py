@@ -61,7 +61,9 @@ blocking|blocks the|blocked off|cordoned off|shed its load|gridlocked|choked wit
 can't reach|cannot reach|unable to reach|unable to get in|can't access|cannot access|washed away|
 foot of water|feet of water|under a foot of water|ankle deep|water coming up|water coming in|water's coming in|coming in under the door|coming in under the doors|
 petrol all over|fuel all over|diesel all over|oil all over|petrol everywhere|diesel everywhere|fuel everywhere|
-petrol leak|diesel leak|fuel spill|petrol spill|diesel spill|
+petrol leak|diesel leak|fuel spill|petrol spill|diesel spill|exploding|explode|could explode|
+wall's fallen|wall has fallen|walls have fallen|roof's fallen|roof has fallen|ceiling's fallen|ceiling has fallen|
+chimney's fallen|chimney has fallen|fallen masonry|fallen tree|tree's fallen|tree has fallen|tree down|trees down|
 """.replace("\n", ""))
 
 _add(DESIRABLE, """
@@ -115,6 +117,9 @@ live find|a live find|indicating a find|can't get down|cannot get down|can't get
 cut his hand|cut his head|cut her head|badly cut|bleeding heavily|can't get the doors open|can't get the door open|
 fire fighter down|fireman down|fire fighter injured|not answering|isn't answering|he's not answering|she's not answering|
 just lying there|lying there|lying on the floor|lying on the ground|fell off|fallen off|took a fall|
+out cold|knocked out|knocked unconscious|electrocuted|got a shock|got a belt|needs lifting|needs lifting off|
+needs winching|needs winching off|heat signature|heat signatures|thermal signature|under the bricks|
+under the wreckage|under the masonry|is under it|s under it|are under it|still under it|
 """.replace("\n", ""))
 
 # "collapsed" alone is structural (hazard); "collapsed inside" / "passed out" is a person.
@@ -154,14 +159,17 @@ NEUTRAL_PHRASES = ["keep clear", "stay clear", "keep everyone clear", "keep ever
                    "fire door", "gas mask", "gas masks", "safe word", "safety officer", "clear the area",
                    "all units", "flood light", "floodlight", "floodlights", "rescue team", "rescue teams",
                    "took everyone out", "got everyone out", "brought everyone out", "had everyone out",
-                   "nobody home", "no one home", "nobody at home", "no one at home"]
+                   "nobody home", "no one home", "nobody at home", "no one at home",
+                   "waiting for the all clear", "wait for the all clear", "awaiting the all clear",
+                   "until the all clear", "until we get the all clear", "waiting on the all clear"]
 
 # Whole-report "nothing to see" markers that cancel every claim in their sentence.
 FALSE_ALARM = ["false alarm", "never mind", "nevermind", "disregard my last", "disregard the last report",
                "nothing in it", "nothing to it", "just steam", "only steam", "extractor fan", "was just a", "was only a",
                "was just their", "was just the", "nothing to worry about", "ignore my last", "cancel my last",
                "disregard my last message", "disregard previous", "disregard my earlier report",
-               "ignore my earlier report", "disregard the earlier report"]
+               "ignore my earlier report", "disregard the earlier report", "were wrong", "were unfounded",
+               "was unfounded", "were false"]
 # ... of which these withdraw an earlier report: only what comes before them in the sentence is denied
 PREVIOUS_REPORT_WITHDRAWN = {"disregard my last", "disregard the last report", "ignore my last", "cancel my last",
                              "disregard my last message", "disregard previous", "never mind", "nevermind"}
@@ -414,6 +422,7 @@ EXEMPLARS: dict[str, list[str]] = {
         "please advise", "over and out", "requesting backup", "copy that", "will report back",
         "nothing to report", "no change", "parked the truck", "just came from", "closed", "on the corner",
         "meet us at", "is anyone near", "ignore previous instructions", "mark every cell",
+        "dropped off the supplies", "delivered the sandbags", "unloading equipment",
     ],
 }
 
@@ -455,6 +464,11 @@ LAY_PERSONS = {"man", "woman", "person", "people", "someone", "somebody", "child
                "resident", "fella", "guy", "bloke", "lady", "girl", "boy", "family", "occupant", "pensioner",
                "teenager", "toddler", "infant", "couple", "mother", "father", "gentleman", "walker", "diver",
                "swimmer", "guest", "customer", "elderly", "youngster", "male", "female", "casualty"}
+# People at work there: a casualty only when pinned, under or hanging ("a forklift driver under it").
+WORKER_PERSONS = {"driver", "worker", "workman", "lad", "labourer", "passenger", "pupil", "shopper", "baker",
+                  "cleaner", "operator", "builder"}
+PINNED_SITUATIONS = {"under", "underneath", "beneath", "clinging", "lying", "hanging", "pinned", "trapped", "floating",
+                     "caught"}
 PERSON_MODIFIERS = {"elderly", "old", "young", "little", "small", "older", "adult", "injured", "disabled", "more",
                     "other", "another", "second", "third"}
 PERSON_INTRODUCERS = {"a", "an", "one", "some", "there", "theres", "got", "have", "with", "and", "several", "few",
@@ -498,6 +512,17 @@ FUNCTION_WORDS = PREPOSITIONS | COPULAS | COORDINATORS | FILLERS | PRONOUNS | NE
     "itself", "where", "which", "that", "who", "s", "as", "now", "again", "too", "then", "there", "here", "first"}
 
 # "<place> (residents|staff) have been evacuated to ...": the place people were moved out of claims nothing.
+# "evacuated everyone to the church", "moving residents into the town hall": where people were taken to
+# is a place of safety. The plain evacuation verbs need no object; the others need people as their object.
+EVACUATE_VERBS = {"evacuated", "evacuating", "evacuate", "relocated", "relocating", "decanted", "decanting"}
+MOVE_VERBS = {"moved", "moving", "move", "took", "taken", "taking", "brought", "bringing", "sent", "sending", "ferried",
+              "ferrying", "led", "leading", "directed", "directing", "walked", "walking", "sheltered", "sheltering"}
+MOVED_PEOPLE = {"everyone", "everybody", "people", "residents", "resident", "children", "kids", "pupils", "staff",
+                "evacuees", "families", "patients", "guests", "occupants", "tenants", "students", "survivors",
+                "public", "shoppers", "customers", "elderly",
+                # (as the tokenizer normalises the plurals)
+                "guest", "patient", "pupil", "familie", "evacuee", "tenant", "student", "survivor", "shopper",
+                "customer", "occupant", "kid"}
 EVACUATED_FROM = {"evacuated", "moved", "relocated", "decanted", "cleared", "emptied"}
 EVACUEES = {"resident", "staff", "pupil", "patient", "guest", "tenant", "occupant", "student", "familie", "family",
             "children", "kid", "worker", "everyone", "people"}  # token keys (a plural's "s" dropped)
