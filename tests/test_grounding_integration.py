@@ -175,3 +175,47 @@ def test_embedder_encodes_concurrent_callers_consistently():
         assert np.allclose(got[0], want, atol=1e-6), t
         assert np.allclose(got[1], alone[0], atol=1e-6)
     assert np.allclose(shared.embed(texts), alone, atol=1e-6)  # the cache holds what was computed
+
+
+@pytest.mark.parametrize("cap", [1, 2])
+def test_embedder_caps_concurrent_encodes(monkeypatch, cap):
+    import threading
+    import time
+    from concurrent.futures import ThreadPoolExecutor
+
+    from lucifer.embeddings import Embedder
+
+    monkeypatch.setenv("LUCIFER_EMBED_THREADS", str(cap))
+    emb = Embedder("numpy")
+    model = emb._model()
+    busy, peak, lock = [0], [0], threading.Lock()
+    real = model.encode
+
+    def tracked(texts):
+        with lock:
+            busy[0] += 1
+            peak[0] = max(peak[0], busy[0])
+        try:
+            time.sleep(0.02)  # long enough that unbounded callers would overlap
+            return real(texts)
+        finally:
+            with lock:
+                busy[0] -= 1
+
+    monkeypatch.setattr(model, "encode", tracked)
+    with ThreadPoolExecutor(6) as pool:
+        list(pool.map(lambda i: emb.embed([f"smoke behind building {i}"]), range(12)))
+    assert peak[0] == cap
+
+
+def test_embed_threads_setting(monkeypatch):
+    import os
+
+    from lucifer.embeddings import encode_threads
+
+    monkeypatch.delenv("LUCIFER_EMBED_THREADS", raising=False)
+    assert encode_threads() == len(os.sched_getaffinity(0))
+    for bad in ("0", "two"):
+        monkeypatch.setenv("LUCIFER_EMBED_THREADS", bad)
+        with pytest.raises(ValueError, match="LUCIFER_EMBED_THREADS"):
+            encode_threads()
