@@ -232,6 +232,10 @@ def test_typed_and_logged_reports(analyzer, text, expected):
     # "No, no fire." answers and negates; the past "were at" is no crew position
     ("I smelled smoke at the cafe, it was just steam. [Dispatcher: Is there a fire?] No, no fire.", []),
     ("my son and his friend were at the, the gym and the roof's fallen in", [("sports hall", "hazard")]),
+    # a place said only to lead to the one a pronoun relation describes is its reference point,
+    # unless something was said of it or the two share a predicate
+    ("There's the bakery, and the shop attached to it, that one's got people trapped", [("pharmacy", "victim")]),
+    ("the bakery and the shop attached to it are both on fire", [("bakery", "hazard"), ("pharmacy", "hazard")]),
 ])
 def test_follow_on_sentences_and_turns(analyzer, text, expected):
     assert claims(analyzer, text) == expected

@@ -983,6 +983,21 @@ class ReportAnalyzer:
         new = self._mention(toks, det_start, anchor_end, target, via=via)
         ex.places.append(new)
         place_tokens.update(range(det_start, anchor_end))
+        if pronoun and anchor in ex.places and anchor.status == "active" and anchor.end_tok <= det_start \
+                and toks.sentence_of[anchor.start_tok] == toks.sentence_of[det_start]:
+            # "Below the chapel — the building directly downhill of it — fire": a place said only to
+            # lead to the one described (nothing said of it before the description, and no predicate
+            # shared with it: "the town hall and the building next to it are both clear") is its
+            # reference point
+            lo = max(t for t in range(0, anchor.start_tok + 1) if toks.sentence_start[t])
+            between = norms[anchor.end_tok:det_start]
+            shared = {"both", "all", "each", "either"} & set(norms[anchor_end:anchor_end + 4])
+            if not shared and all(w in lx.FILLERS or w in lx.DETERMINERS or w in ("and", "so") or i in marker_tokens
+                                  for i, w in enumerate(between, start=anchor.end_tok)) \
+                    and not any(self._cues.match_at(norms, i) is not None for i in range(lo, det_start)
+                                if not anchor.start_tok <= i < anchor.end_tok):
+                ex.places[ex.places.index(anchor)] = replace(anchor, status="reference",
+                                                             reason=f"reference point: {via}")
 
     def _description_words(self) -> dict[str, set[str]]:
         """Per landmark, the content words of its description, name and aliases."""
