@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev10) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev11) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -17,6 +17,8 @@ HARBOURSIDE = ROOT / "knowledge_bases" / "harbourside"
 NORTHGATE = ROOT / "knowledge_bases" / "northgate"
 QUARRYTOWN = ROOT / "knowledge_bases" / "quarrytown"
 SALTMARSH = ROOT / "knowledge_bases" / "saltmarsh_airfield"
+ALPINE = ROOT / "knowledge_bases" / "alpine_village"
+PORT = ROOT / "knowledge_bases" / "container_port"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -62,6 +64,10 @@ SETS = {
                                 {"standard": 15, "messy": 60, "advanced_messy": 45}, sep=""),
     "dev10/market_square_b": _set("dev10/market_square_b.jsonl", MARKET_SQUARE, "d10b",
                                   {"standard": 15, "messy": 55, "advanced_messy": 50}, sep=""),
+    "dev11/alpine_village": _set("dev11/alpine_village.jsonl", ALPINE, "av",
+                                 {"standard": 30, "messy": 30, "advanced_messy": 30}),
+    "dev11/container_port": _set("dev11/container_port.jsonl", PORT, "cp",
+                                 {"standard": 30, "messy": 30, "advanced_messy": 30}),
 }
 
 
