@@ -584,10 +584,17 @@ class ReportAnalyzer:
                     continue
                 if not word.isalnum() or len(word) < self.MISHEARD_MIN_CHARS - 1:
                     continue
+                head = norms[i]
                 scores = sorted(((difflib.SequenceMatcher(None, word, key).ratio(), name)
                                  for key, name in self._spellings.items()
                                  if key[0] == word[0] and abs(len(key) - len(word)) <= 1
-                                 and word not in key and key not in word), reverse=True)  # a slip, not part of a name
+                                 and word not in key and key not in word  # a slip, not part of a name
+                                 # "a water bowser" is no "water tower": after a first word said right,
+                                 # a slip keeps the next word's first sound (a log's vowel-less
+                                 # shorthand, "straddle wkshp", need not)
+                                 and not (n > 1 and key.startswith(head) and len(key) > len(head)
+                                          and key[len(head)] != word[len(head)]
+                                          and any(ch in "aeiouy" for ch in word[len(head):]))), reverse=True)
                 if not scores or scores[0][0] < self.MISHEARD_MIN_RATIO or scores[0][0] >= 1.0:
                     continue
                 if any(sc > scores[0][0] - 0.05 and nm != scores[0][1] for sc, nm in scores[1:]):
