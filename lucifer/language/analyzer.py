@@ -32,7 +32,7 @@ import numpy as np
 from lucifer.embeddings import Embedder
 from lucifer.kb import KnowledgeBase, Relation, Role
 from lucifer.language import lexicon as lx
-from lucifer.language.text import PhraseMatcher, Tokens, norm, norm_phrase, tokenize
+from lucifer.language.text import PhraseMatcher, Tokens, name_words, norm, norm_phrase, tokenize
 
 MentionStatus = Literal["active", "retracted", "negated", "reference"]
 
@@ -184,13 +184,10 @@ class ReportAnalyzer:
         landmark. A combination that another landmark could also produce, or that is already a
         form of some landmark, is left out.
         """
-        def words(form: str) -> tuple[str, ...]:
-            return tuple(w for w in norm_phrase(form) if w not in ("the", "a", "an"))
-
-        existing = {words(f) for lm in self.kb.landmarks for f in lm.surface_forms}
+        existing = {name_words(f) for lm in self.kb.landmarks for f in lm.surface_forms}
         made: dict[tuple[str, ...], set[str]] = {}
         for lm in self.kb.landmarks:
-            forms = [w for w in (words(f) for f in lm.surface_forms) if w]
+            forms = [w for w in (name_words(f) for f in lm.surface_forms) if w]
             mods = {w[:-1] for w in forms if len(w) > 1}
             heads = {w[-1] for w in forms}
             for mod in mods:
@@ -484,7 +481,7 @@ class ReportAnalyzer:
             counts: dict[tuple[str, ...], set[str]] = {}
             for lm in self.kb.landmarks:
                 for form in lm.surface_forms:
-                    words = tuple(w for w in norm_phrase(form) if w not in ("the", "a", "an"))
+                    words = name_words(form)
                     for n in range(1, len(words)):
                         counts.setdefault(words[:n], set()).add(lm.name)
             cue_words = {w for key in self._cue_keys() for w in key}
@@ -519,7 +516,7 @@ class ReportAnalyzer:
             words_elsewhere: dict[str, set[str]] = {}
             for lm in self.kb.landmarks:
                 for form in lm.surface_forms:
-                    words = [w for w in norm_phrase(form) if w not in ("the", "a", "an")]
+                    words = name_words(form)
                     for w in words:
                         words_elsewhere.setdefault(w, set()).add(lm.name)
                     if len(words) >= 2:
@@ -547,7 +544,7 @@ class ReportAnalyzer:
     def _name_keys(self) -> list[tuple[str, str]]:
         """(letters of a name or alias run together, articles left out; landmark), for every surface form:
         what misheard and typed slips of a name are compared with."""
-        return [("".join(w for w in norm_phrase(form) if w not in ("the", "a", "an")), lm.name)
+        return [("".join(name_words(form)), lm.name)
                 for lm in self.kb.landmarks for form in lm.surface_forms]
 
     MISHEARD_MIN_RATIO = 0.85
@@ -643,7 +640,7 @@ class ReportAnalyzer:
                 continue  # "he- he fell": a stutter on a pronoun is no cut-off name
             for lm in self.kb.landmarks:
                 for form in lm.surface_forms:
-                    words = [w for w in norm_phrase(form) if w not in ("the", "a", "an")]
+                    words = list(name_words(form))
                     for n in range(1, len(words) + 1):
                         start = t.i - (n - 1)
                         if start < 0 or any(i in taken for i in range(start, t.i + 1)):
@@ -1164,13 +1161,15 @@ class ReportAnalyzer:
                 and norms[j + 2] == "of" and (norms[j] == "the" or any(p.end_tok <= b for p in ex.places)):
             j += 3  # "built onto the side of the mill": the part of the anchor
             b = j
+        # "the shop attached to it's got a live wire": "it's" right after the relation is "it has", the pronoun
+        its = b < len(norms) and norms[b] == "its" and any(q in ex.tokens.tokens[b].text for q in ("'", "’"))
         while j < len(norms) and (norms[j] in lx.DETERMINERS or norms[j] in lx.FILLERS or norms[j] in ("my", "your"))\
                 and j - b < 3:
             if norms[j] in ("that", "this") and (j + 1 >= len(norms) or ex.tokens.clause_start[j + 1]
                                                  or norms[j + 1] in lx.COPULAS):
                 break  # "the building across from that has people trapped": the pronoun is the anchor
-            if j == b and norms[j] == "its" and any(q in ex.tokens.tokens[j].text for q in ("'", "’")):
-                break  # "the shop attached to it's got a live wire": "it's" is "it has", the pronoun
+            if j == b and its:
+                break
             j += 1
         place = next((p for p in ex.places if p.start_tok == j or (p.start_tok >= b and p.start_tok <= j and p.status == "active")), None)
         if place is not None and place.status in ("active", "retracted", "negated"):
@@ -1182,7 +1181,7 @@ class ReportAnalyzer:
             before = [p for p in ex.places if p.end_tok <= b]
             if before:
                 return max(before, key=lambda p: p.end_tok), j + 1, True
-        its = j == b and j < len(norms) and norms[j] == "its" and any(q in ex.tokens.tokens[j].text for q in ("'", "’"))
+        its = its and j == b
         if j < len(norms) and (norms[j] in ("it", "them", "that", "there", "us", "here", "me") or its) \
                 and not ex.tokens.clause_start[j]:
             if norms[j] in ("that", "there") and j + 1 < len(norms) and not ex.tokens.clause_start[j + 1] \
@@ -1864,7 +1863,7 @@ class ReportAnalyzer:
         if cat is None:
             return cues
         toks = ex.tokens
-        starts = {p.start_tok: p for p in ex.places if p.status == "active"}
+        starts = {p.start_tok for p in ex.places if p.status == "active"}
         for i, w in enumerate(norms):
             evac = w in lx.EVACUATE_VERBS
             if not (evac or w in lx.MOVE_VERBS):

@@ -511,18 +511,15 @@ LOOSE_EQUIVALENTS = {"attached to": "next to", "next to": "attached to"}
 FUNCTION_WORDS = PREPOSITIONS | COPULAS | COORDINATORS | FILLERS | PRONOUNS | NEGATORS | DETERMINERS | {
     "itself", "where", "which", "that", "who", "s", "as", "now", "again", "too", "then", "there", "here", "first"}
 
-# "<place> (residents|staff) have been evacuated to ...": the place people were moved out of claims nothing.
 # "evacuated everyone to the church", "moving residents into the town hall": where people were taken to
-# is a place of safety. The plain evacuation verbs need no object; the others need people as their object.
+# is a place of safety. The plain evacuation verbs need no object; the others need people as object or subject.
 EVACUATE_VERBS = {"evacuated", "evacuating", "evacuate", "relocated", "relocating", "decanted", "decanting"}
 MOVE_VERBS = {"moved", "moving", "move", "took", "taken", "taking", "brought", "bringing", "sent", "sending", "ferried",
               "ferrying", "led", "leading", "directed", "directing", "walked", "walking", "sheltered", "sheltering"}
-MOVED_PEOPLE = {"everyone", "everybody", "people", "residents", "resident", "children", "kids", "pupils", "staff",
-                "evacuees", "families", "patients", "guests", "occupants", "tenants", "students", "survivors",
-                "public", "shoppers", "customers", "elderly",
-                # (as the tokenizer normalises the plurals)
-                "guest", "patient", "pupil", "familie", "evacuee", "tenant", "student", "survivor", "shopper",
-                "customer", "occupant", "kid"}
+MOVED_PEOPLE = {"everyone", "everybody", "people", "resident", "children", "kid", "pupil", "staff", "evacuee",
+                "familie", "patient", "guest", "occupant", "tenant", "student", "survivor", "public", "shopper",
+                "customer", "elderly"}  # token keys, as the tokenizer normalises plurals ("families" -> "familie")
+# "<place> (residents|staff) have been evacuated to ...": the place people were moved out of claims nothing.
 EVACUATED_FROM = {"evacuated", "moved", "relocated", "decanted", "cleared", "emptied"}
 EVACUEES = {"resident", "staff", "pupil", "patient", "guest", "tenant", "occupant", "student", "familie", "family",
             "children", "kid", "worker", "everyone", "people"}  # token keys (a plural's "s" dropped)

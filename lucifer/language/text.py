@@ -46,6 +46,12 @@ def norm_phrase(phrase: str) -> tuple[str, ...]:
     return tuple(norm(m.group()) for m in _TOKEN.finditer(phrase))
 
 
+def name_words(name: str) -> tuple[str, ...]:
+    """Token keys of a place name without its articles: how names and aliases are compared.
+    ``name_words("The Baker's")`` -> ``('baker',)``."""
+    return tuple(w for w in norm_phrase(name) if w not in ("the", "a", "an"))
+
+
 @dataclass(frozen=True)
 class Token:
     i: int

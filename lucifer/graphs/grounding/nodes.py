@@ -15,11 +15,11 @@ from pydantic import ValidationError
 
 from lucifer.graphs.grounding.context import GroundingContext
 from lucifer.graphs.grounding.prompts import RETRY_PROMPT, SYSTEM_PROMPT, USER_PROMPT
-from lucifer.graphs.grounding.resources import GroundingResources, form_key
+from lucifer.graphs.grounding.resources import GroundingResources
 from lucifer.graphs.grounding.state import GroundingState
 from lucifer.graphs.grounding.tools import TOOL_NAME, ReportObjects
 from lucifer.language.analyzer import CueMention, Extraction, PlaceMention
-from lucifer.language.text import tokenize
+from lucifer.language.text import name_words, tokenize
 from lucifer.types import Status
 
 LLM_CONTEXT_DOCS = 8  # retrieved KB documents shown to a chat model (small local models are slow readers)
@@ -215,7 +215,7 @@ async def ground_cells(state: GroundingState, runtime: Runtime[GroundingContext]
     grounded = []
     for cand in state.candidates:
         loc = str(cand.get("location") or "")
-        name = loc if loc in kb.landmark_by_name else by_form.get(form_key(loc))
+        name = loc if loc in kb.landmark_by_name else by_form.get(name_words(loc))
         g = dict(cand) | {"location": name or loc, "cells": kb.cells_of(name) if name else []}
         grounded.append(g)
     out = {"grounded": [f"{g['location']} -> {g['cells']}" for g in grounded]}

@@ -10,14 +10,9 @@ from typing import Any
 from lucifer.embeddings import Embedder
 from lucifer.kb import KnowledgeBase
 from lucifer.language.analyzer import ReportAnalyzer
-from lucifer.language.text import norm_phrase
+from lucifer.language.text import name_words
 from lucifer.models import is_builtin, load_chat_model
 from lucifer.retrieval import Retriever
-
-
-def form_key(name: str) -> tuple[str, ...]:
-    """A place name as ground_cells compares it: normalised words, articles dropped."""
-    return tuple(w for w in norm_phrase(name) if w not in ("the", "a", "an"))
 
 
 @dataclass
@@ -60,7 +55,7 @@ class GroundingResources:
         by_form: dict[tuple[str, ...], str] = {}
         for lm in self.kb.landmarks:
             for form in lm.surface_forms:
-                by_form[form_key(form)] = lm.name
+                by_form[name_words(form)] = lm.name
         return by_form
 
     @property
