@@ -14,6 +14,7 @@ downloaded: ``HF_HUB_OFFLINE=1`` is forced before sentence-transformers is impor
 from __future__ import annotations
 
 import json
+import logging
 import os
 import threading
 from collections import OrderedDict
@@ -195,6 +196,93 @@ def encode_threads() -> int:
         return max(1, os.cpu_count() or 1)
 
 
+def encode_workers() -> int | None:
+    """``$LUCIFER_EMBED_WORKERS``: how many child processes encode once reports run concurrently.
+
+    ``None`` (unset or ``auto``) lets the caller choose; ``0`` keeps every encode in this process.
+    """
+    raw = os.environ.get("LUCIFER_EMBED_WORKERS", "").strip().lower()
+    if raw in ("", "auto"):
+        return None
+    try:
+        n = int(raw)
+    except ValueError:
+        n = -1
+    if n < 0:
+        raise ValueError(f"LUCIFER_EMBED_WORKERS must be auto or a whole number of at least 0, got {raw!r}")
+    return n
+
+
+def auto_encode_workers() -> int:
+    """One encoder process where there is a second core to run it on, else none."""
+    return 1 if encode_threads() >= 2 else 0
+
+
+_child_model: _NumpyMiniLM | None = None
+
+
+def _child_start(parent: int) -> None:
+    """Initialiser of an encoder process: load the model, and exit when the parent is gone."""
+    global _child_model
+    _child_model = _NumpyMiniLM(model_dir())
+
+    def watch() -> None:
+        import time
+
+        while os.getppid() == parent:
+            time.sleep(1.0)
+        os._exit(0)  # orphaned (the parent was killed): nothing here is worth keeping
+
+    threading.Thread(target=watch, daemon=True, name="lucifer-encoder-watch").start()
+
+
+def _child_encode(texts: list[str]) -> np.ndarray:
+    assert _child_model is not None
+    return _child_model.encode(texts)
+
+
+class _EncoderProcesses:
+    """The numpy MiniLM in child processes.
+
+    An encode is some 150 numpy calls, each of which must take the GIL back; beside the
+    analyzer's pure-Python work in the same process, each of those waits for a switch
+    interval, so concurrent reports got no overlap at all. In a child process the encode runs
+    on its own core and the caller only waits on a pipe. Started in the background: until
+    every child has loaded the model, :meth:`Embedder.embed` encodes in process.
+    """
+
+    def __init__(self, n: int):
+        import multiprocessing
+        from concurrent.futures import ProcessPoolExecutor
+
+        self.n = n
+        self.ready = threading.Event()
+        self.failed: BaseException | None = None
+        # spawn, never fork: the parent has threads (Chroma, aiosqlite) that a fork would copy mid-step
+        self._pool = ProcessPoolExecutor(n, mp_context=multiprocessing.get_context("spawn"),
+                                         initializer=_child_start, initargs=(os.getpid(),))
+        threading.Thread(target=self._warm_up, daemon=True, name="lucifer-encoder-start").start()
+
+    def _warm_up(self) -> None:
+        try:
+            for f in [self._pool.submit(_child_encode, ["warm up"]) for _ in range(self.n)]:
+                f.result(timeout=300)
+        except BaseException as exc:  # noqa: BLE001 - recorded; the embedder stays in process
+            self.failed = exc
+            logging.getLogger(__name__).warning("encoder processes failed to start (%s: %s); encoding in process",
+                                                type(exc).__name__, exc)
+            self.close()
+        else:
+            self.ready.set()
+
+    def encode(self, texts: list[str]) -> np.ndarray:
+        return self._pool.submit(_child_encode, texts).result()
+
+    def close(self) -> None:
+        self.ready.clear()
+        self._pool.shutdown(wait=False, cancel_futures=True)
+
+
 class Embedder:
     """Thread-safe, memoising MiniLM sentence embedder.
 
@@ -216,6 +304,52 @@ class Embedder:
         # at most one encode per core at a time: more threads only fight over the cores and the GIL
         # (a 450-report batch at --concurrency 8 runs about a tenth faster on 2 cores)
         self._encoders = threading.BoundedSemaphore(encode_threads())
+        self._processes: _EncoderProcesses | None = None
+
+    def start_processes(self, n: int | None = None) -> int:
+        """Move encoding into ``n`` child processes (default ``$LUCIFER_EMBED_WORKERS``, else one
+        where there is a second core); returns how many are running or starting.
+
+        Worth it when other Python work runs beside the encodes, as in a concurrent batch; for
+        a single report the start (about half a second, in the background) buys nothing.
+        Only the ``numpy`` engine moves; sentence-transformers stays in process.
+        """
+        if n is None:
+            n = encode_workers()
+        if n is None:
+            n = auto_encode_workers()
+        with self._lock:
+            if self._processes is not None:  # running, starting, or failed once (then never again)
+                return 0 if self._processes.failed is not None else self._processes.n
+            if n < 1 or self.engine != "numpy":
+                return 0
+            self._processes = _EncoderProcesses(n)
+            return n
+
+    @property
+    def processes_ready(self) -> bool:
+        procs = self._processes
+        return procs is not None and procs.ready.is_set()
+
+    def close(self) -> None:
+        """Stop the encoder processes, if any (the embedder goes on, in process)."""
+        with self._lock:
+            procs, self._processes = self._processes, None
+        if procs is not None:
+            procs.close()
+
+    def _encode(self, model: _NumpyMiniLM | _STMiniLM, chunk: list[str]) -> np.ndarray:
+        procs = self._processes
+        if procs is not None and procs.ready.is_set():
+            try:
+                return procs.encode(chunk)
+            except Exception as exc:  # a child died (killed, out of memory): go on in process
+                logging.getLogger(__name__).warning("encoder process failed (%s: %s); encoding in process",
+                                                    type(exc).__name__, exc)
+                procs.failed = exc
+                procs.close()
+        with self._encoders:
+            return model.encode(chunk)
 
     @property
     def name(self) -> str:
@@ -240,10 +374,9 @@ class Embedder:
             # (retrieval threads, the analyzer) can use every core
             missing = sorted((t for t in dict.fromkeys(texts) if t not in found), key=len)  # little padding
             fresh: dict[str, np.ndarray] = {}
-            with self._encoders:
-                for i in range(0, len(missing), 64):
-                    chunk = missing[i : i + 64]
-                    fresh.update(zip(chunk, model.encode(chunk), strict=True))
+            for i in range(0, len(missing), 64):
+                chunk = missing[i : i + 64]
+                fresh.update(zip(chunk, self._encode(model, chunk), strict=True))
             with self._lock:
                 self._cache.update(fresh)
                 while len(self._cache) > self._cache_size:

@@ -63,6 +63,7 @@ class Grounder:
         self._traced_graph: Any = None
         self._client: Any = None
         self._reload_lock = asyncio.Lock()
+        self._in_flight = 0
         self.last_sync: SyncReport | None = None
         self._load()
 
@@ -117,6 +118,17 @@ class Grounder:
         """Ground one report. Raises :class:`BadReport` for empty, oversized or non-text input."""
         text = self.check_report(text)
         t0 = time.perf_counter()
+        self._in_flight += 1
+        try:
+            if self._in_flight > 1:
+                # reports run concurrently: encoding moves to a child process, so that it runs beside
+                # the analysis instead of fighting it for the GIL ($LUCIFER_EMBED_WORKERS; once)
+                self.embedder.start_processes()
+            return await self._ground(text, report_id, t0)
+        finally:
+            self._in_flight -= 1
+
+    async def _ground(self, text: str, report_id: str | None, t0: float) -> GroundingResult:
         await self._reload_if_changed()
         res = self.resources
         trace_id = uuid.uuid4().hex[:16]

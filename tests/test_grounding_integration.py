@@ -208,6 +208,96 @@ def test_embedder_caps_concurrent_encodes(monkeypatch, cap):
     assert peak[0] == cap
 
 
+def _wait_ready(emb, timeout=120.0):
+    import time
+
+    deadline = time.monotonic() + timeout
+    while not emb.processes_ready and time.monotonic() < deadline:
+        time.sleep(0.05)
+    return emb.processes_ready
+
+
+def test_encoder_process_computes_what_the_process_itself_computes():
+    from lucifer.embeddings import Embedder
+
+    texts = ["smoke behind the pharmacy", "two people trapped in the shop attached to the bakery", "ok"]
+    alone = Embedder("numpy").embed(texts)
+    emb = Embedder("numpy")
+    try:
+        assert emb.start_processes(1) == 1
+        assert emb.start_processes(1) == 1  # idempotent: still one child
+        assert _wait_ready(emb)
+        got = emb.embed(texts)
+        assert np.allclose(got, alone, atol=1e-6)
+        assert emb._processes is not None and len(emb._processes._pool._processes) == 1
+    finally:
+        emb.close()
+    assert not emb.processes_ready
+
+
+def test_a_dead_encoder_process_falls_back_to_encoding_in_process(caplog):
+    from lucifer.embeddings import Embedder
+
+    emb = Embedder("numpy")
+    try:
+        emb.start_processes(1)
+        assert _wait_ready(emb)
+        for proc in list(emb._processes._pool._processes.values()):
+            proc.kill()
+            proc.join(10)
+        want = Embedder("numpy").embed(["gas leak at the school"])
+        with caplog.at_level("WARNING", logger="lucifer.embeddings"):
+            got = emb.embed(["gas leak at the school"])
+        assert np.allclose(got, want, atol=1e-6)
+        assert "encoder process failed" in caplog.text
+        assert not emb.processes_ready
+        assert emb.start_processes(1) == 0  # a failed pool is not restarted over and over
+        assert np.allclose(emb.embed(["fire at the bank"]), Embedder("numpy").embed(["fire at the bank"]), atol=1e-6)
+    finally:
+        emb.close()
+
+
+def test_sentence_transformers_engine_stays_in_process():
+    from lucifer.embeddings import Embedder
+
+    assert Embedder("sentence-transformers").start_processes(1) == 0
+
+
+@pytest.mark.parametrize(("setting", "started"), [("1", True), ("0", False)])
+async def test_concurrent_grounding_moves_encoding_to_a_child_process(monkeypatch, setting, started):
+    import asyncio
+
+    from lucifer.embeddings import Embedder
+
+    monkeypatch.setenv("LUCIFER_EMBED_WORKERS", setting)
+    emb = Embedder("numpy")
+    try:
+        async with Grounder(KB, embedder=emb, trace=False) as g:
+            await g.ground("fire at the bakery")
+            assert emb._processes is None  # one report at a time: nothing to overlap, nothing started
+            results = await asyncio.gather(*(g.ground(f"smoke at the bank, report {i}") for i in range(4)))
+            assert all(_pairs(r) == [("bank", "hazard")] for r in results)
+            assert (emb._processes is not None) is started
+            if started:
+                assert _wait_ready(emb)
+                res = await g.ground("people trapped in the shop attached to the bakery")
+                assert _pairs(res) == [("pharmacy", "victim")]
+    finally:
+        emb.close()
+
+
+def test_embed_workers_setting(monkeypatch):
+    from lucifer.embeddings import encode_workers
+
+    for raw, want in (("", None), ("auto", None), (" AUTO ", None), ("0", 0), ("2", 2)):
+        monkeypatch.setenv("LUCIFER_EMBED_WORKERS", raw)
+        assert encode_workers() == want
+    for bad in ("-1", "one"):
+        monkeypatch.setenv("LUCIFER_EMBED_WORKERS", bad)
+        with pytest.raises(ValueError, match="LUCIFER_EMBED_WORKERS"):
+            encode_workers()
+
+
 def test_embed_threads_setting(monkeypatch):
     import os
 
