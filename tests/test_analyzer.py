@@ -268,6 +268,10 @@ def test_follow_on_sentences_and_turns(analyzer, text, expected):
     "we're heading to the, er, the bank now, the crane's secured, over",
     # a real compound is no misheard name: "water bowser" is not "water tower"
     "the water bowser is parked up and secured, over",
+    # what a condition supposes is no report, nor is a place named in it
+    "check if anyone is trapped at the bakery",
+    "if the roof of the hotel goes we pull everyone out",
+    "whether the school is safe nobody knows yet",
 ])
 def test_no_claim(analyzer, text):
     assert claims(analyzer, text) == []
@@ -278,6 +282,21 @@ def test_revocations_are_reported_as_denials(analyzer):
     assert {c.key for c in cl.denied} == {("bakery", "hazard")}
     _, cl = analyze(analyzer, "the clinic is no longer safe")
     assert {c.key for c in cl.denied} == {("clinic", "safe_zone")}
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    ("if you can hear me, we're trapped in the bakery", [("bakery", "victim")]),
+    ("it looks as if the bakery is on fire", [("bakery", "hazard")]),
+])
+def test_a_condition_ends_where_the_report_goes_on(analyzer, text, expected):
+    assert claims(analyzer, text) == expected
+
+
+def test_each_exemplar_reads_as_its_own_category_where_a_role_has_two():
+    """Delta Town splits its undesirable role into peril and submerged: a predicate no listed word
+    covers is read by MiniLM against exemplars that each carry their own category."""
+    an = ReportAnalyzer(load_kb(ROOT / "knowledge_bases" / "delta_town"), get_embedder())
+    assert claims(an, "the boatyard is all under the water now") == [("boatyard", "submerged")]
 
 
 def test_relation_names_of_an_unseen_kb_are_understood():

@@ -224,6 +224,21 @@ class ReportAnalyzer:
         return cats[int(np.argmax(sims))].name
 
     @staticmethod
+    def _description_phrases(description: str) -> list[str]:
+        """The listed items of a category description, as short phrases, leaving out negated ones.
+
+        >>> ReportAnalyzer._description_phrases("A place under water - flooded, water through the doors, or overtopped.")
+        ['A place under water', 'flooded', 'water through the doors', 'overtopped']
+        """
+        out = []
+        for part in re.split(r"[.;:,()\u2014\u2013]|\s-\s", description):
+            part = re.sub(r"^\s*(?:or|and|such as|e\.?g\.?)\s+", "", part.strip())
+            ws = norm_phrase(part)
+            if ws and not set(ws) & lx.NEGATORS and len(part) >= 4:
+                out.append(part)
+        return list(dict.fromkeys(out))
+
+    @staticmethod
     @functools.lru_cache(maxsize=256)
     def _affirmed_words(description: str) -> frozenset[str]:
         """Content words of a category description, leaving out its negated clauses ("Nothing is burning")."""
@@ -1432,8 +1447,12 @@ class ReportAnalyzer:
         """"heading to the bakery", "passing the church": the team moves; nothing is claimed there."""
         toks = ex.tokens
         norms = toks.norms(0, len(toks))
+        supposed = self._conditional_tokens(toks, norms)
         for idx, p in enumerate(ex.places):
             if p.status != "active" or p.via is not None:
+                continue
+            if p.start_tok in supposed:
+                ex.places[idx] = replace(p, status="reference", reason="named in a condition ('if ...'): no claim")
                 continue
             j = p.start_tok
             while j > 0 and norms[j - 1] in lx.DETERMINERS | lx.FILLERS | {"at", "to", "by", "the", "from"} \
@@ -1698,11 +1717,13 @@ class ReportAnalyzer:
             texts: list[str] = []
             labels: list[str] = []
             for role, phrases in lx.EXEMPLARS.items():
-                label = role if role == "none" else self._category_for_role(role, phrases[0])
-                if label is None:
-                    continue
-                texts.extend(phrases)
-                labels.extend([label] * len(phrases))
+                for phrase in phrases:
+                    # each exemplar to its own category: a KB with two undesirable categories
+                    # ("peril", "submerged") gets "flooded" as the one and "on fire" as the other
+                    label = role if role == "none" else self._category_for_role(role, phrase)
+                    if label is not None:
+                        texts.append(phrase)
+                        labels.append(label)
             for term in self.kb.glossary:
                 texts.append(term.term)
                 labels.append(term.category)
@@ -1982,8 +2003,12 @@ class ReportAnalyzer:
             first = norms[opener] if opener < b else ""
             if first in lx.INSTRUCTION_VERBS and set(norms[a:b]) & lx.INSTRUCTION_WORDS:
                 dropped[n] = "an instruction to the system, not a report"
-        self._non_report_tokens = {i for n, (a, b) in enumerate(sentences) if n in dropped for i in range(a, b)} | asked
-        cues = [replace(c, status="retracted", reason="a question, not a report") if c.start_tok in asked else c for c in cues]
+        supposed = self._conditional_tokens(toks, norms)
+        self._non_report_tokens = ({i for n, (a, b) in enumerate(sentences) if n in dropped for i in range(a, b)}
+                                   | asked | supposed)
+        cues = [replace(c, status="retracted", reason="a question, not a report") if c.start_tok in asked
+                else replace(c, status="retracted", reason="a condition, not a report") if c.start_tok in supposed
+                else c for c in cues]
         if not dropped:
             return cues
         sent_of = {}
@@ -1992,6 +2017,25 @@ class ReportAnalyzer:
                 sent_of[i] = n
         return [replace(c, status="retracted", reason=dropped[sent_of[c.start_tok]]) if sent_of.get(c.start_tok) in dropped
                 else c for c in cues]
+
+    @staticmethod
+    def _conditional_tokens(toks: Tokens, norms: tuple[str, ...]) -> set[int]:
+        """Tokens of a condition ("if the tip starts moving", "in case the bridge floods", "check if anyone's
+        trapped"): what it supposes is no report. It runs to the next clause, a "then", or a new subject
+        pronoun ("if the tip starts moving we fall back"); "as if" compares, it supposes nothing."""
+        out: set[int] = set()
+        n = len(norms)
+        for i, w in enumerate(norms):
+            opens = (w in lx.CONDITIONAL_OPENERS and not (i > 0 and norms[i - 1] in ("as", "even"))) \
+                or (w == "case" and i > 0 and norms[i - 1] == "in")
+            if not opens:
+                continue
+            j = i + 1
+            while j < n and not toks.clause_start[j] and norms[j] != "then" \
+                    and not (j - i > 2 and norms[j] in lx.CONDITION_END_SUBJECTS):
+                j += 1
+            out.update(range(i, j))
+        return out
 
     def _restated_category(self, ex: Extraction, k: int, out: list[CueMention], b: int, end: int, a: int) -> None:
         """"the hotel's sound — hold that — hotel's got a cracked stairwell": same place, new category;

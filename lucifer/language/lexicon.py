@@ -387,6 +387,9 @@ DESCRIPTION_STOPWORDS = {"building", "place", "one", "with", "and", "the", "a", 
 CREW_NOUNS = {"team", "crew", "unit", "engine", "ladder", "squad", "truck", "ambulance", "medic", "medics", "rescue",
               "we", "i", "tender", "appliance", "patrol", "sector", "command", "search", "group", "boat"}
 POSITION_PREPS = {"at", "outside", "by", "near", "in", "on"}
+# Words that open a condition, and subjects that start the main clause after one without a comma.
+CONDITIONAL_OPENERS = {"if", "unless", "whether"}
+CONDITION_END_SUBJECTS = {"we", "i", "you", "they", "he", "she", "everyone", "everybody"}
 PRONOUNS = {"it", "its", "there", "that", "they", "them", "this", "place", "building", "same"}
 COORDINATORS = {"and", "but", "while", "whereas", "plus", "also", "then", "meanwhile", "however",
                 "though", "although", "yet", "additionally"}
