@@ -299,6 +299,17 @@ def test_each_exemplar_reads_as_its_own_category_where_a_role_has_two():
     assert claims(an, "the boatyard is all under the water now") == [("boatyard", "submerged")]
 
 
+def test_relation_names_with_an_adverb_and_the_speakers_own_position():
+    """The metro interchange names its relations directly_above / at_the_foot_of / across_the_tracks_from:
+    "directly_above" is an "above" relation, so "under" and "over" read it, although "at the foot of"
+    is a "below" phrase too; "mine" is where the speaker said they are."""
+    an = ReportAnalyzer(load_kb(ROOT / "knowledge_bases" / "metro_interchange"), get_embedder())
+    assert claims(an, "casualty in the hall under the plaza") == [("ticket hall", "casualty")]
+    assert claims(an, "passengers trapped on the platform that sits directly over P3") == [("platform 2", "casualty")]
+    assert claims(an, "I'm on P2, the platform across the tracks from mine is clear") == [("platform 1", "muster_zone")]
+    assert claims(an, "escalator 1's smoke logged") == [("main escalator shaft", "smoke_logged")]
+
+
 def test_relation_names_of_an_unseen_kb_are_understood():
     an = ReportAnalyzer(load_kb(RIVERBEND), get_embedder())
     assert claims(an, "people trapped in the building downstream of the weir") == [("boathouse", "casualty")]

@@ -286,9 +286,17 @@ class ReportAnalyzer:
         for canon, syns in lx.RELATION_SYNONYMS.items():
             for syn in syns:
                 forms[norm_phrase(syn)] = (canon, False)
+        # a synonym group that a KB relation is named by ("directly_above" for "above") stays that
+        # relation's, even where another relation reads it backwards ("at_the_foot_of", a "below" word)
+        owned = {canon: rel.phrase for rel in self.kb.relations for canon in lx.RELATION_SYNONYMS
+                 if _without_adverbs(rel.phrase) == canon}
         for rel in self.kb.relations:
             for form, inverse in _relation_forms(rel.phrase):
-                forms[norm_phrase(form)] = (rel.phrase, inverse)
+                key = norm_phrase(form)
+                held = forms.get(key)
+                if held is not None and owned.get(held[0], rel.phrase) != rel.phrase:
+                    continue
+                forms[key] = (rel.phrase, inverse)
         for key, val in list(forms.items()):
             for adverb in lx.RELATION_ADVERBS:
                 forms.setdefault((adverb, *key), val)
@@ -1197,13 +1205,13 @@ class ReportAnalyzer:
             if before:
                 return max(before, key=lambda p: p.end_tok), j + 1, True
         its = its and j == b
-        if j < len(norms) and (norms[j] in ("it", "them", "that", "there", "us", "here", "me") or its) \
+        if j < len(norms) and (norms[j] in ("it", "them", "that", "there") + lx.SPEAKER_ANCHORS or its) \
                 and not ex.tokens.clause_start[j]:
             if norms[j] in ("that", "there") and j + 1 < len(norms) and not ex.tokens.clause_start[j + 1] \
                     and norms[j + 1] not in lx.COPULAS:
                 return None, b, False
             before = [p for p in ex.places if p.end_tok <= b]
-            if norms[j] in ("us", "here", "me"):  # the speaker's own position ("across the street from here")
+            if norms[j] in lx.SPEAKER_ANCHORS:  # the speaker's own position ("across the street from here", "from mine")
                 before = [p for p in before if p.reason.startswith("in transit") or self._speaker_at(norms, p)] \
                     or before
             # "the park behind the warehouse. Across the street from it": the pronoun takes up the place
@@ -1220,7 +1228,9 @@ class ReportAnalyzer:
         j = p.start_tok - 1
         while j >= 0 and norms[j] in lx.DETERMINERS | lx.FILLERS:
             j -= 1
-        if j < 1 or norms[j] not in ("at", "in", "inside", "outside"):
+        if j >= 1 and norms[j] == "is" and norms[j - 1] == "this":
+            return True  # "This is the pumping station. The building right below us ..."
+        if j < 1 or norms[j] not in ("at", "in", "inside", "outside", "on"):
             return False
         return norms[j - 1] in ("im", "were") or norms[j - 2 : j] in (("i", "am"), ("we", "are"))
 
@@ -1291,8 +1301,9 @@ class ReportAnalyzer:
         rp = rel.phrase
         if rp == phrase:
             return True
+        core = _without_adverbs(rp)  # "directly_above" is an "above" relation
         for canon, syns in lx.RELATION_SYNONYMS.items():
-            if phrase == canon and (rp == canon or rp in syns):
+            if phrase == canon and (rp == canon or rp in syns or core == canon or core in syns):
                 return True
         return False
 
@@ -1347,7 +1358,7 @@ class ReportAnalyzer:
     def _fuzzy_relation(self, kb_phrase: str, phrase: str) -> bool:
         """An unknown KB relation name ("abuts") against a report phrase, via MiniLM."""
         known = {c for c in lx.RELATION_SYNONYMS} | {s for v in lx.RELATION_SYNONYMS.values() for s in v}
-        if kb_phrase in known or self.embedder is None:
+        if kb_phrase in known or _without_adverbs(kb_phrase) in known or self.embedder is None:
             return False
         v = self.embedder.embed([kb_phrase, phrase])
         return float(v[0] @ v[1]) >= 0.6
@@ -2577,6 +2588,14 @@ _WITHDRAW_KEYS = frozenset(" ".join(norm_phrase(m)) for m in lx.WITHDRAW_MARKERS
 
 # Closed-class words that never head a description.
 _NOT_HEADS = lx.PREPOSITIONS | lx.COPULAS | lx.FILLERS | lx.PRONOUNS | lx.INVERSE_VERBS | lx.DETERMINERS
+
+
+def _without_adverbs(phrase: str) -> str:
+    """A relation name without its leading adverbs: "directly above" -> "above"."""
+    words = phrase.split()
+    while len(words) > 1 and words[0] in lx.RELATION_ADVERBS:
+        words = words[1:]
+    return " ".join(words)
 
 
 def _reads_backwards(link: str, phrase: str, inverse: bool) -> bool:

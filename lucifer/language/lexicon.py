@@ -219,7 +219,9 @@ RELATION_SYNONYMS: dict[str, list[str]] = {
     "above": ["above", "on top of", "upstairs from", "overlooks", "overlooking", "overlook", "looks over",
               "looking over", "looks down on", "looking down on", "looking down over", "up above", "up from",
               "higher than", "uphill from", "up the hill from", "looms over", "looming over", "looks out over",
-              "looking out over", "towers over", "towering over", "stands over", "sits above", "stands above"],
+              "looking out over", "towers over", "towering over", "stands over", "sits above", "stands above",
+              "directly over", "right over", "immediately over", "sits over", "sitting over", "lies over",
+              "sits on top of", "sitting on top of", "sits right over", "sits directly over"],
     "below": ["below", "under", "underneath", "beneath", "downstairs from", "down below", "overlooked by",
               "looked over by", "down from", "downhill from", "down the hill from", "at the foot of"],
     "upstream of": ["upstream of", "upstream from", "up the river from", "upriver of", "upriver from",
@@ -390,6 +392,8 @@ POSITION_PREPS = {"at", "outside", "by", "near", "in", "on"}
 # Words that open a condition, and subjects that start the main clause after one without a comma.
 CONDITIONAL_OPENERS = {"if", "unless", "whether"}
 CONDITION_END_SUBJECTS = {"we", "i", "you", "they", "he", "she", "everyone", "everybody"}
+# Pronouns that anchor a relation at the speaker's own position ("the platform across the tracks from mine").
+SPEAKER_ANCHORS = ("us", "here", "me", "mine", "ours")
 PRONOUNS = {"it", "its", "there", "that", "they", "them", "this", "place", "building", "same"}
 COORDINATORS = {"and", "but", "while", "whereas", "plus", "also", "then", "meanwhile", "however",
                 "though", "although", "yet", "additionally"}

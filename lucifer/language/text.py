@@ -29,11 +29,11 @@ ABBREVIATIONS = {"stn": "station", "bldg": "building", "opp": "opposite", "ppl":
 def norm(word: str) -> str:
     """Matching key of a word: lower case, no apostrophes, a plural/possessive 's' dropped.
 
-    >>> [norm(w) for w in ["Bakeries", "chemist's", "gas", "Fires", "isn't", "class", "op's", "it's"]]
-    ['bakerie', 'chemist', 'gas', 'fire', 'isnt', 'class', 'op', 'its']
+    >>> [norm(w) for w in ["Bakeries", "chemist's", "gas", "Fires", "isn't", "class", "op's", "it's", "1's"]]
+    ['bakerie', 'chemist', 'gas', 'fire', 'isnt', 'class', 'op', 'its', '1']
     """
     w = word.lower().replace("’", "'")
-    if w.endswith("'s") and len(w) > 3 and w[:-2] not in _KEEP_S:
+    if w.endswith("'s") and (len(w) > 3 or w[:-2].isdigit()) and w[:-2] not in _KEEP_S:
         w = w[:-2]  # "op's" -> "op" (a short word's possessive, as in "Co-op's")
     w = w.replace("'", "")
     if len(w) > 3 and w.endswith("s") and not w.endswith("ss") and not w.endswith("us") and not w.endswith("is"):
