@@ -310,6 +310,16 @@ def test_relation_names_with_an_adverb_and_the_speakers_own_position():
     assert claims(an, "escalator 1's smoke logged") == [("main escalator shaft", "smoke_logged")]
 
 
+def test_a_log_drops_the_articles_of_names():
+    """A name the KB writes with its article ("the crew room") needs one, except in a timed log
+    and as a sentence's subject before its cue ("Mess room checked clear")."""
+    an = ReportAnalyzer(load_kb(ROOT / "knowledge_bases" / "metro_interchange"), get_embedder())
+    assert claims(an, "02:40 smoke logged crew room, 02:42 persons reported P3") == [
+        ("deep level platform", "casualty"), ("staff mess room", "smoke_logged")]
+    assert claims(an, "smoke logged crew room") == []
+    assert claims(an, "Mess room checked clear, holding evacuees.") == [("staff mess room", "muster_zone")]
+
+
 def test_relation_names_of_an_unseen_kb_are_understood():
     an = ReportAnalyzer(load_kb(RIVERBEND), get_embedder())
     assert claims(an, "people trapped in the building downstream of the weir") == [("boathouse", "casualty")]

@@ -443,13 +443,14 @@ class ReportAnalyzer:
         all_relations = self._relations.find_all(norms)
         cue_hits = [(a, b) for a, b, (_, src) in all_cues if b - a > 1]
         cue_hits += [(a, b) for a, b, _ in all_relations if b - a > 2]
+        log = _is_log(toks)
         for a, b, landmark in self._places.find_all(norms):
             if any(ca <= a and b <= cb and cb - ca > b - a for ca, cb in cue_hits):
                 continue  # "first aid post" is a cue, "across the square from" a relation
             prev = norms[a - 1] if a > 0 else ""
             if norms[a:b] in self._needs_article and prev not in lx.DETERMINERS | {"our", "your"} \
-                    and not self._telegraphic_subject(toks, norms, a, b):
-                continue  # the KB wrote "the tower": "bell tower" is not it
+                    and not self._telegraphic_subject(toks, norms, a, b) and not (log and b - a >= 2):
+                continue  # the KB wrote "the tower": "bell tower" is not it (a log drops articles: "fire LPG plant")
             if b - a == 1 and prev in lx.COMPOUND_MODIFIERS and not (a > 0 and toks.clause_start[a]) \
                     and not any(p.end_tok == a for p in places):
                 continue  # "car park", "bell tower"
@@ -496,7 +497,8 @@ class ReportAnalyzer:
         if not toks.sentence_start[a] or b >= len(norms) or (norms[a] in lx.DESCRIPTIVE_WORDS and not contracted):
             return False
         return toks.clause_start[b] or norms[b] in lx.COPULAS \
-            or self._cues.match_at(norms, b) is not None
+            or self._cues.match_at(norms, b) is not None \
+            or (norms[b] in lx.TELEGRAPHIC_LINKS and self._cues.match_at(norms, b + 1) is not None)
 
     def _partial_names(self, toks: Tokens, norms: tuple[str, ...], taken: set[int]) -> list[PlaceMention]:
         """"the hardware —": the first words of a multi-word name, cut off by a pause."""
@@ -2588,6 +2590,21 @@ _WITHDRAW_KEYS = frozenset(" ".join(norm_phrase(m)) for m in lx.WITHDRAW_MARKERS
 
 # Closed-class words that never head a description.
 _NOT_HEADS = lx.PREPOSITIONS | lx.COPULAS | lx.FILLERS | lx.PRONOUNS | lx.INVERSE_VERBS | lx.DETERMINERS
+
+
+_LOG_TIME = re.compile(r"^(?:\d{4}|\d{1,2}[:.]\d{2})$")
+
+
+def _is_log(toks: Tokens) -> bool:
+    """A control-room log: some sentence opens with a time ("0455 BLEVE risk LPG plant", "02:14 SER ...")."""
+    for i in range(len(toks)):
+        if not toks.sentence_start[i]:
+            continue
+        text = toks.tokens[i].text
+        if _LOG_TIME.match(text) or (text.isdigit() and len(text) <= 2 and i + 1 < len(toks)
+                                     and toks.gaps[i + 1] == ":" and toks.tokens[i + 1].text.isdigit()):
+            return True
+    return False
 
 
 def _without_adverbs(phrase: str) -> str:

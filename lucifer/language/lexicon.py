@@ -394,6 +394,9 @@ CONDITIONAL_OPENERS = {"if", "unless", "whether"}
 CONDITION_END_SUBJECTS = {"we", "i", "you", "they", "he", "she", "everyone", "everybody"}
 # Pronouns that anchor a relation at the speaker's own position ("the platform across the tracks from mine").
 SPEAKER_ANCHORS = ("us", "here", "me", "mine", "ours")
+# Words between a log's article-less subject and its cue ("Mess room checked clear").
+TELEGRAPHIC_LINKS = {"checked", "confirmed", "reported", "now", "still", "fully", "declared", "found", "well",
+                     "totally", "completely", "also", "reportedly", "partly"}
 PRONOUNS = {"it", "its", "there", "that", "they", "them", "this", "place", "building", "same"}
 COORDINATORS = {"and", "but", "while", "whereas", "plus", "also", "then", "meanwhile", "however",
                 "though", "although", "yet", "additionally"}
