@@ -320,6 +320,19 @@ def test_a_log_drops_the_articles_of_names():
     assert claims(an, "Mess room checked clear, holding evacuees.") == [("staff mess room", "muster_zone")]
 
 
+@pytest.mark.parametrize(("text", "expected"), [
+    ("we have two adults and a dog on the roof of the bakery", [("bakery", "victim")]),
+    ("there's a family of four up in the school attic", [("school", "victim")]),
+])
+def test_people_placed_at_the_scene(analyzer, text, expected):
+    assert claims(analyzer, text) == expected
+
+
+def test_adjectives_between_the_article_and_a_name():
+    an = ReportAnalyzer(load_kb(ROOT / "knowledge_bases" / "delta_town"), get_embedder())
+    assert claims(an, "there's a woman on the old rusty dredger") == [("old dredger", "stranded")]
+
+
 def test_relation_names_of_an_unseen_kb_are_understood():
     an = ReportAnalyzer(load_kb(RIVERBEND), get_embedder())
     assert claims(an, "people trapped in the building downstream of the weir") == [("boathouse", "casualty")]

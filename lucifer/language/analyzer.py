@@ -448,6 +448,11 @@ class ReportAnalyzer:
             if any(ca <= a and b <= cb and cb - ca > b - a for ca, cb in cue_hits):
                 continue  # "first aid post" is a cue, "across the square from" a relation
             prev = norms[a - 1] if a > 0 else ""
+            k = a - 1
+            while k > 0 and a - k <= 2 and norms[k] in lx.NAME_ADJECTIVES and not toks.clause_start[k + 1]:
+                k -= 1  # "the big rusty dredger": the article before the adjectives
+            if k < a - 1 and norms[k] in lx.ARTICLES:
+                prev = norms[k]
             if norms[a:b] in self._needs_article and prev not in lx.DETERMINERS | {"our", "your"} \
                     and not self._telegraphic_subject(toks, norms, a, b) and not (log and b - a >= 2):
                 continue  # the KB wrote "the tower": "bell tower" is not it (a log drops articles: "fire LPG plant")
@@ -1876,6 +1881,11 @@ class ReportAnalyzer:
             if not introduced and w not in ("someone", "somebody"):
                 continue
             k = i + 1
+            if norms[k : k + 1] == ("of",) and k + 1 < len(norms) and (norms[k + 1].isdigit() or norms[k + 1] in lx.NUMBER_WORDS):
+                k += 2  # "a family of five up on the gantry"
+            if norms[k : k + 1] == ("and",) and k + 2 < len(norms) and norms[k + 1] in lx.PERSON_INTRODUCERS | lx.NUMBER_WORDS \
+                    and norms[k + 3 : k + 4] and norms[k + 3] in lx.PERSON_SITUATIONS and not toks.clause_start[k + 3]:
+                k += 3  # "two adults and a dog on the roof"
             while k < len(norms) and norms[k] in lx.FILLERS | {"still", "definitely", "probably", "possibly", "maybe",
                                                                 "apparently", "certainly", "stuck"}:
                 k += 1

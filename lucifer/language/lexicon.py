@@ -397,6 +397,10 @@ SPEAKER_ANCHORS = ("us", "here", "me", "mine", "ours")
 # Words between a log's article-less subject and its cue ("Mess room checked clear").
 TELEGRAPHIC_LINKS = {"checked", "confirmed", "reported", "now", "still", "fully", "declared", "found", "well",
                      "totally", "completely", "also", "reportedly", "partly"}
+# Adjectives that may stand between an article and a name's head ("the big rusty dredger").
+NAME_ADJECTIVES = {"big", "large", "huge", "small", "little", "tall", "old", "new", "rusty", "burnt", "burned", "burning",
+                   "flooded", "wooden", "concrete", "brick", "white", "red", "blue", "green", "grey", "gray", "black",
+                   "yellow", "derelict", "abandoned", "empty", "whole", "entire", "same", "main", "local", "nearest"}
 PRONOUNS = {"it", "its", "there", "that", "they", "them", "this", "place", "building", "same"}
 COORDINATORS = {"and", "but", "while", "whereas", "plus", "also", "then", "meanwhile", "however",
                 "though", "although", "yet", "additionally"}
@@ -473,7 +477,8 @@ for _p in PERSON_NOUNS:
 LAY_PERSONS = {"man", "woman", "person", "people", "someone", "somebody", "child", "children", "kid", "baby",
                "resident", "fella", "guy", "bloke", "lady", "girl", "boy", "family", "occupant", "pensioner",
                "teenager", "toddler", "infant", "couple", "mother", "father", "gentleman", "walker", "diver",
-               "swimmer", "guest", "customer", "elderly", "youngster", "male", "female", "casualty"}
+               "swimmer", "guest", "customer", "elderly", "youngster", "male", "female", "casualty", "adult",
+               "survivor", "persons"}
 # People at work there: a casualty only when pinned, under or hanging ("a forklift driver under it").
 WORKER_PERSONS = {"driver", "worker", "workman", "lad", "labourer", "passenger", "pupil", "shopper", "baker",
                   "cleaner", "operator", "builder"}
