@@ -268,6 +268,9 @@ def test_follow_on_sentences_and_turns(analyzer, text, expected):
     "we're heading to the, er, the bank now, the crane's secured, over",
     # a real compound is no misheard name: "water bowser" is not "water tower"
     "the water bowser is parked up and secured, over",
+    # "keep ... clear of" is an instruction, not a safe place
+    "keep all the vans clear of the bakery",
+    "stay well clear of the school",
     # what a condition supposes is no report, nor is a place named in it
     "check if anyone is trapped at the bakery",
     "if the roof of the hotel goes we pull everyone out",
@@ -325,6 +328,14 @@ def test_a_log_drops_the_articles_of_names():
     ("there's a family of four up in the school attic", [("school", "victim")]),
 ])
 def test_people_placed_at_the_scene(analyzer, text, expected):
+    assert claims(analyzer, text) == expected
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    ("there's a fierce current running through the park now", [("park", "hazard")]),
+    ("the cafe is clear, keep going", [("cafe", "safe_zone")]),
+])
+def test_water_hazards_and_clear_places(analyzer, text, expected):
     assert claims(analyzer, text) == expected
 
 

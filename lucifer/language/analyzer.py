@@ -1702,6 +1702,9 @@ class ReportAnalyzer:
         for a, b, (cat, source) in self._cues.find_all(norms, blocked):
             if source == "neutral":
                 continue
+            if norms[a:b] == ("clear",) and any(norms[k] in ("keep", "stay") for k in range(max(0, a - 4), a)) \
+                    and not any(toks.clause_start[k] for k in range(max(1, a - 3), a + 1)):
+                continue  # "keep all boats clear of the lock", "stay well clear": an instruction, like "keep clear"
             start, end = toks.tokens[a].start, toks.tokens[b - 1].end
             cue = CueMention(a, b, start, end, toks.text[start:end], cat, source)
             checked = self._apply_cue_negation(toks, norms, cue)

@@ -31,6 +31,8 @@ gas|gas leak|leaking gas|smell of gas|smells of gas|leak|leaking|explosion|explo
 collapse|collapsed|collapsing|caved in|cave in|cave-in|caving in|fell in|falling down|come down|came down|
 rubble|debris|unstable|crumbling|cracked|cracking|sagging|structural damage|structurally unsafe|
 flood|floods|flooded|flooding|underwater|under water|water rising|rising water|submerged|knee deep|
+strong current|fierce current|fast current|swift current|rip current|undertow|current's ripping|current is ripping|
+current ripping|fast flowing water|fast-flowing water|
 live wire|live wires|power line down|power lines down|downed lines|sparking|sparks|electrified|arcing|
 chemical|chemicals|toxic|spill|spilled|spilt|hazmat|contaminated|radiation|asbestos|
 dangerous|danger|unsafe|hazard|hazardous|hazards|threat|no go|no-go|off limits|do not enter|keep out|stay away|
