@@ -344,6 +344,16 @@ def test_adjectives_between_the_article_and_a_name():
     assert claims(an, "there's a woman on the old rusty dredger") == [("old dredger", "stranded")]
 
 
+def test_relation_names_read_through_their_direction_and_verb_synonyms():
+    """Delta Town: on_the_levee_above is an "above" relation, read backwards by "below" (although
+    looks_down_on is an "above" phrase too); moored_against is said as "tied"."""
+    an = ReportAnalyzer(load_kb(ROOT / "knowledge_bases" / "delta_town"), get_embedder())
+    assert claims(an, "flooding in the hall below the lock keeper's cottage") == [("market hall", "submerged")]
+    assert claims(an, "fire in the building that looks down on the covered market from the hill") == [
+        ("hill clinic", "peril")]
+    assert claims(an, "fire in the warehouse where the red cross barge is tied") == [("jute warehouse", "peril")]
+
+
 def test_relation_names_of_an_unseen_kb_are_understood():
     an = ReportAnalyzer(load_kb(RIVERBEND), get_embedder())
     assert claims(an, "people trapped in the building downstream of the weir") == [("boathouse", "casualty")]

@@ -290,6 +290,10 @@ class ReportAnalyzer:
         # relation's, even where another relation reads it backwards ("at_the_foot_of", a "below" word)
         owned = {canon: rel.phrase for rel in self.kb.relations for canon in lx.RELATION_SYNONYMS
                  if _without_adverbs(rel.phrase) == canon}
+        for canon, phrase in list(owned.items()):  # ... and its opposite group, which reads it backwards
+            opposite = lx.INVERSE_PHRASES.get(canon)
+            if opposite:
+                owned.setdefault(opposite, phrase)
         for rel in self.kb.relations:
             for form, inverse in _relation_forms(rel.phrase):
                 key = norm_phrase(form)
@@ -2620,12 +2624,25 @@ def _is_log(toks: Tokens) -> bool:
     return False
 
 
+_ACROSS_THE = re.compile(r"^across the \w+ from$")
+_TRAILING_DIRECTIONS = {"above", "below", "beneath", "under", "underneath", "behind"}
+
+
 def _without_adverbs(phrase: str) -> str:
-    """A relation name without its leading adverbs: "directly above" -> "above"."""
+    """The synonym group a relation name belongs to, read through its extra words: without its leading
+    adverbs ("directly above" -> "above"), its final direction ("on the levee above" -> "above"), or the
+    thing it crosses ("across the channel from" -> "across from").
+
+    >>> [_without_adverbs(p) for p in ("directly above", "on the levee above", "across the tracks from", "feeds")]
+    ['above', 'above', 'across from', 'feeds']
+    """
     words = phrase.split()
     while len(words) > 1 and words[0] in lx.RELATION_ADVERBS:
         words = words[1:]
-    return " ".join(words)
+    if len(words) > 1 and words[-1] in _TRAILING_DIRECTIONS:
+        return words[-1]
+    core = " ".join(words)
+    return "across from" if _ACROSS_THE.match(core) else core
 
 
 def _reads_backwards(link: str, phrase: str, inverse: bool) -> bool:
