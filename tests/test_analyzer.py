@@ -268,6 +268,8 @@ def test_follow_on_sentences_and_turns(analyzer, text, expected):
     "we're heading to the, er, the bank now, the crane's secured, over",
     # a real compound is no misheard name: "water bowser" is not "water tower"
     "the water bowser is parked up and secured, over",
+    # a withdrawn report, also with a stutter
+    "reports of fire at the bakery are, are false, repeat, no fire at the bakery",
     # "keep ... clear of" is an instruction, not a safe place
     "keep all the vans clear of the bakery",
     "stay well clear of the school",
@@ -315,6 +317,12 @@ def test_relation_names_with_an_adverb_and_the_speakers_own_position():
     assert claims(an, "a casualty at the bottom of the long escalator") == [("cross passage", "casualty")]
     assert claims(an, "escalator 1's smoke logged and there's a man collapsed at the bottom of it") == [
         ("interchange concourse", "casualty"), ("main escalator shaft", "smoke_logged")]
+
+
+def test_the_station_called_is_no_claim():
+    an = ReportAnalyzer(load_kb(ROOT / "knowledge_bases" / "container_port"), get_embedder())
+    assert claims(an, "Port Control, uh, all stations, the fuel bunker is well alight") == [
+        ("fuel bunker", "exclusion_zone")]
 
 
 def test_a_log_drops_the_articles_of_names():

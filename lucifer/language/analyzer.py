@@ -1792,6 +1792,10 @@ class ReportAnalyzer:
         for p in todo:
             if toks.sentence_of[p.start_tok] in asking:
                 continue  # "is the health centre still taking walk-ins?": a question is no claim to guess at
+            if p.start_tok == 0 and p.via is None and p.end_tok < len(toks) and toks.gaps[p.end_tok].strip().startswith(","):
+                nxt = next((w for w in norms[p.end_tok:] if w not in lx.FILLERS), "")
+                if nxt in lx.RADIO_CALL_WORDS:
+                    continue  # "Port Control, uh, all stations, ...": the station called, no claim to guess at
             a, b = self._predicate_region(ex, p)
             if any(a <= c.start_tok < b for c in all_cues) or any(a <= ma < b for ma, _, _ in ex.markers):
                 continue  # the vocabulary (or a repair) already spoke here; the fallback stays silent
@@ -2100,7 +2104,9 @@ class ReportAnalyzer:
         for phrase in lx.FALSE_ALARM:
             key = norm_phrase(phrase)
             for i in range(len(norms) - len(key) + 1):
-                if norms[i : i + len(key)] == key:
+                stutter = i + 1 + len(key) <= len(norms) and norms[i] == key[0] \
+                    and norms[i + 1 : i + 1 + len(key)] == key  # "are, are false"
+                if norms[i : i + len(key)] == key or stutter:
                     # "disregard my last, the spill is at the store": an earlier report is withdrawn and
                     # what follows replaces it
                     until = i if phrase in lx.PREVIOUS_REPORT_WITHDRAWN else len(norms)

@@ -171,7 +171,8 @@ FALSE_ALARM = ["false alarm", "never mind", "nevermind", "disregard my last", "d
                "was just their", "was just the", "nothing to worry about", "ignore my last", "cancel my last",
                "disregard my last message", "disregard previous", "disregard my earlier report",
                "ignore my earlier report", "disregard the earlier report", "were wrong", "were unfounded",
-               "was unfounded", "were false"]
+               "was unfounded", "were false", "are false", "are wrong", "are unfounded", "was false",
+               "is false", "are untrue", "were untrue", "turned out to be false", "turned out to be wrong"]
 # ... of which these withdraw an earlier report: only what comes before them in the sentence is denied
 PREVIOUS_REPORT_WITHDRAWN = {"disregard my last", "disregard the last report", "ignore my last", "cancel my last",
                              "disregard my last message", "disregard previous", "never mind", "nevermind"}
@@ -404,6 +405,8 @@ TELEGRAPHIC_LINKS = {"checked", "confirmed", "reported", "now", "still", "fully"
 NAME_ADJECTIVES = {"big", "large", "huge", "small", "little", "tall", "old", "new", "rusty", "burnt", "burned", "burning",
                    "flooded", "wooden", "concrete", "brick", "white", "red", "blue", "green", "grey", "gray", "black",
                    "yellow", "derelict", "abandoned", "empty", "whole", "entire", "same", "main", "local", "nearest"}
+# Words after "<station>," that make the station the one called ("Port Control, all stations, ...").
+RADIO_CALL_WORDS = {"this", "all", "come", "receiving", "do", "from", "over", "radio", "calling"}
 PRONOUNS = {"it", "its", "there", "that", "they", "them", "this", "place", "building", "same"}
 COORDINATORS = {"and", "but", "while", "whereas", "plus", "also", "then", "meanwhile", "however",
                 "though", "although", "yet", "additionally"}
