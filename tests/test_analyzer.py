@@ -285,6 +285,8 @@ def test_no_claim(analyzer, text):
 def test_revocations_are_reported_as_denials(analyzer):
     _, cl = analyze(analyzer, "the fire at the bakery is out")
     assert {c.key for c in cl.denied} == {("bakery", "hazard")}
+    _, cl = analyze(analyzer, "the fire on the roof at the bakery is out")  # past a longer place phrase
+    assert {c.key for c in cl.denied} == {("bakery", "hazard")} and not cl.claims
     _, cl = analyze(analyzer, "the clinic is no longer safe")
     assert {c.key for c in cl.denied} == {("clinic", "safe_zone")}
 

@@ -2156,7 +2156,7 @@ class ReportAnalyzer:
         k = cue.end_tok
         steps = 0
         ends = {p.start_tok: p.end_tok for p in getattr(self, "_places_now", [])}
-        while k < len(norms) and steps < 5 and not toks.clause_start[k]:
+        while k < len(norms) and steps < 7 and not toks.clause_start[k]:  # "the fire on the roof at the bakery is out"
             if k in ends and ends[k] > k:
                 k = ends[k]  # a place (or a whole relational description) counts as one word
                 steps += 1
