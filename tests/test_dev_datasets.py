@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev11) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev12) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -19,6 +19,8 @@ QUARRYTOWN = ROOT / "knowledge_bases" / "quarrytown"
 SALTMARSH = ROOT / "knowledge_bases" / "saltmarsh_airfield"
 ALPINE = ROOT / "knowledge_bases" / "alpine_village"
 PORT = ROOT / "knowledge_bases" / "container_port"
+DELTA = ROOT / "knowledge_bases" / "delta_town"
+METRO = ROOT / "knowledge_bases" / "metro_interchange"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -68,6 +70,9 @@ SETS = {
                                  {"standard": 30, "messy": 30, "advanced_messy": 30}),
     "dev11/container_port": _set("dev11/container_port.jsonl", PORT, "cp",
                                  {"standard": 30, "messy": 30, "advanced_messy": 30}),
+    "dev12/delta_town": _set("dev12/delta_town.jsonl", DELTA, "dt", {"standard": 30, "messy": 30, "advanced_messy": 30}),
+    "dev12/metro_interchange": _set("dev12/metro_interchange.jsonl", METRO, "mi",
+                                    {"standard": 30, "messy": 30, "advanced_messy": 30}),
 }
 
 
