@@ -315,6 +315,9 @@ def test_relation_names_with_an_adverb_and_the_speakers_own_position():
     assert claims(an, "passengers trapped on the platform that sits directly over P3") == [("platform 2", "casualty")]
     assert claims(an, "I'm on P2, the platform across the tracks from mine is clear") == [("platform 1", "muster_zone")]
     assert claims(an, "escalator 1's smoke logged") == [("main escalator shaft", "smoke_logged")]
+    # vents_into is said "exhausts into"; "clear the public away from it" is an instruction, not a safe place
+    assert claims(an, "whatever the fan room exhausts into is full of smoke now, clear the public away from it") == [
+        ("station plaza", "smoke_logged")]
     # at_the_foot_of is said "at the bottom of", also of a pronoun
     assert claims(an, "a casualty at the bottom of the long escalator") == [("cross passage", "casualty")]
     assert claims(an, "escalator 1's smoke logged and there's a man collapsed at the bottom of it") == [

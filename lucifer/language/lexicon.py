@@ -154,7 +154,8 @@ BACK_REFERENCE_WORDS = {"it", "its", "s", "is", "has", "been", "thats", "that", 
 
 # Phrases that contain cue words but claim nothing ("the smoke alarm went off", "fire crew on site").
 NEUTRAL_PHRASES = ["keep clear", "stay clear", "keep everyone clear", "keep everybody clear", "keep people clear",
-                   "keep them clear", "keep the public clear", "keep well clear",
+                   "keep them clear", "keep the public clear", "keep well clear", "clear the public",
+                   "clear everyone away", "clear everybody away", "clear people away", "clear the crowd",
                    "smoke alarm", "smoke alarms", "fire alarm", "fire alarms", "fire exit", "fire escape",
                    "fire brigade", "fire crew", "fire engine", "fire truck", "fire service", "fire department",
                    "fire team", "firefighter", "firefighters", "fire fighter", "fire fighters", "fire hydrant",
@@ -272,7 +273,7 @@ IRREGULAR_PARTICIPLES = {"fed": "feed", "built": "build", "held": "hold", "led":
 LINK_SYNONYMS = [{"suppl", "feed", "power", "serv"}, {"pair", "twin", "sister", "partner"}, {"link", "connect", "join"},
                  {"annex", "extension"},
                  {"tunnel", "underpas", "subway", "passag"}, {"bridg", "walkway", "footbridg"},
-                 {"moor", "tied", "tie", "berth"}, {"foot", "bottom"}]
+                 {"moor", "tied", "tie", "berth"}, {"foot", "bottom"}, {"vent", "exhaust"}]
 # Words of a relation name that are too common to identify it on their own in a report.
 RELATION_NAME_STOPWORDS = {"by", "to", "of", "with", "onto", "on", "into", "from", "the", "a", "an", "is", "and", "in",
                            "at", "that", "its", "it", "side", "end", "other", "way", "same", "far", "near", "up",
