@@ -224,21 +224,6 @@ class ReportAnalyzer:
         return cats[int(np.argmax(sims))].name
 
     @staticmethod
-    def _description_phrases(description: str) -> list[str]:
-        """The listed items of a category description, as short phrases, leaving out negated ones.
-
-        >>> ReportAnalyzer._description_phrases("A place under water - flooded, water through the doors, or overtopped.")
-        ['A place under water', 'flooded', 'water through the doors', 'overtopped']
-        """
-        out = []
-        for part in re.split(r"[.;:,()\u2014\u2013]|\s-\s", description):
-            part = re.sub(r"^\s*(?:or|and|such as|e\.?g\.?)\s+", "", part.strip())
-            ws = norm_phrase(part)
-            if ws and not set(ws) & lx.NEGATORS and len(part) >= 4:
-                out.append(part)
-        return list(dict.fromkeys(out))
-
-    @staticmethod
     @functools.lru_cache(maxsize=256)
     def _affirmed_words(description: str) -> frozenset[str]:
         """Content words of a category description, leaving out its negated clauses ("Nothing is burning")."""
@@ -288,8 +273,8 @@ class ReportAnalyzer:
                 forms[norm_phrase(syn)] = (canon, False)
         # a synonym group that a KB relation is named by ("directly_above" for "above") stays that
         # relation's, even where another relation reads it backwards ("at_the_foot_of", a "below" word)
-        owned = {canon: rel.phrase for rel in self.kb.relations for canon in lx.RELATION_SYNONYMS
-                 if _without_adverbs(rel.phrase) == canon}
+        owned = {core: rel.phrase for rel in self.kb.relations
+                 if (core := _relation_core(rel.phrase)) in lx.RELATION_SYNONYMS}
         for canon, phrase in list(owned.items()):  # ... and its opposite group, which reads it backwards
             opposite = lx.INVERSE_PHRASES.get(canon)
             if opposite:
@@ -1312,7 +1297,7 @@ class ReportAnalyzer:
         rp = rel.phrase
         if rp == phrase:
             return True
-        core = _without_adverbs(rp)  # "directly_above" is an "above" relation
+        core = _relation_core(rp)  # "directly_above" is an "above" relation
         for canon, syns in lx.RELATION_SYNONYMS.items():
             if phrase == canon and (rp == canon or rp in syns or core == canon or core in syns):
                 return True
@@ -1369,7 +1354,7 @@ class ReportAnalyzer:
     def _fuzzy_relation(self, kb_phrase: str, phrase: str) -> bool:
         """An unknown KB relation name ("abuts") against a report phrase, via MiniLM."""
         known = {c for c in lx.RELATION_SYNONYMS} | {s for v in lx.RELATION_SYNONYMS.values() for s in v}
-        if kb_phrase in known or _without_adverbs(kb_phrase) in known or self.embedder is None:
+        if kb_phrase in known or _relation_core(kb_phrase) in known or self.embedder is None:
             return False
         v = self.embedder.embed([kb_phrase, phrase])
         return float(v[0] @ v[1]) >= 0.6
@@ -1894,8 +1879,8 @@ class ReportAnalyzer:
             k = i + 1
             if norms[k : k + 1] == ("of",) and k + 1 < len(norms) and (norms[k + 1].isdigit() or norms[k + 1] in lx.NUMBER_WORDS):
                 k += 2  # "a family of five up on the gantry"
-            if norms[k : k + 1] == ("and",) and k + 2 < len(norms) and norms[k + 1] in lx.PERSON_INTRODUCERS | lx.NUMBER_WORDS \
-                    and norms[k + 3 : k + 4] and norms[k + 3] in lx.PERSON_SITUATIONS and not toks.clause_start[k + 3]:
+            if norms[k : k + 1] == ("and",) and k + 3 < len(norms) and norms[k + 1] in lx.PERSON_INTRODUCERS | lx.NUMBER_WORDS \
+                    and norms[k + 3] in lx.PERSON_SITUATIONS and not toks.clause_start[k + 3]:
                 k += 3  # "two adults and a dog on the roof"
             while k < len(norms) and norms[k] in lx.FILLERS | {"still", "definitely", "probably", "possibly", "maybe",
                                                                 "apparently", "certainly", "stuck"}:
@@ -2615,7 +2600,6 @@ _WITHDRAW_KEYS = frozenset(" ".join(norm_phrase(m)) for m in lx.WITHDRAW_MARKERS
 _NOT_HEADS = lx.PREPOSITIONS | lx.COPULAS | lx.FILLERS | lx.PRONOUNS | lx.INVERSE_VERBS | lx.DETERMINERS
 
 
-_LOG_TIME = re.compile(r"^(?:\d{4}|\d{1,2}[:.]\d{2})$")
 
 
 def _is_log(toks: Tokens) -> bool:
@@ -2623,9 +2607,9 @@ def _is_log(toks: Tokens) -> bool:
     for i in range(len(toks)):
         if not toks.sentence_start[i]:
             continue
-        text = toks.tokens[i].text
-        if _LOG_TIME.match(text) or (text.isdigit() and len(text) <= 2 and i + 1 < len(toks)
-                                     and toks.gaps[i + 1] == ":" and toks.tokens[i + 1].text.isdigit()):
+        text = toks.tokens[i].text  # "0455", or "02:14", which the tokenizer splits at the colon
+        if text.isdigit() and (len(text) == 4 or len(text) <= 2 and i + 1 < len(toks)
+                               and toks.gaps[i + 1] == ":" and toks.tokens[i + 1].text.isdigit()):
             return True
     return False
 
@@ -2634,12 +2618,12 @@ _ACROSS_THE = re.compile(r"^across the \w+ from$")
 _TRAILING_DIRECTIONS = {"above", "below", "beneath", "under", "underneath", "behind"}
 
 
-def _without_adverbs(phrase: str) -> str:
+def _relation_core(phrase: str) -> str:
     """The synonym group a relation name belongs to, read through its extra words: without its leading
     adverbs ("directly above" -> "above"), its final direction ("on the levee above" -> "above"), or the
     thing it crosses ("across the channel from" -> "across from").
 
-    >>> [_without_adverbs(p) for p in ("directly above", "on the levee above", "across the tracks from", "feeds")]
+    >>> [_relation_core(p) for p in ("directly above", "on the levee above", "across the tracks from", "feeds")]
     ['above', 'above', 'across from', 'feeds']
     """
     words = phrase.split()
