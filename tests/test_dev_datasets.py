@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev12) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev13) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -21,6 +21,8 @@ ALPINE = ROOT / "knowledge_bases" / "alpine_village"
 PORT = ROOT / "knowledge_bases" / "container_port"
 DELTA = ROOT / "knowledge_bases" / "delta_town"
 METRO = ROOT / "knowledge_bases" / "metro_interchange"
+HILLSIDE = ROOT / "knowledge_bases" / "hillside_quake"
+CHEMICAL = ROOT / "knowledge_bases" / "chemical_works"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -73,6 +75,10 @@ SETS = {
     "dev12/delta_town": _set("dev12/delta_town.jsonl", DELTA, "dt", {"standard": 30, "messy": 30, "advanced_messy": 30}),
     "dev12/metro_interchange": _set("dev12/metro_interchange.jsonl", METRO, "mi",
                                     {"standard": 30, "messy": 30, "advanced_messy": 30}),
+    "dev13/hillside_quake": _set("dev13/hillside_quake.jsonl", HILLSIDE, "hq",
+                                 {"standard": 30, "messy": 30, "advanced_messy": 30}),
+    "dev13/chemical_works": _set("dev13/chemical_works.jsonl", CHEMICAL, "cw",
+                                 {"standard": 30, "messy": 30, "advanced_messy": 30}),
 }
 
 
