@@ -490,3 +490,112 @@ def test_any_word_salad_is_safe(analyzer, words):
     for c in cl.claims + cl.denied:
         assert c.place.landmark in kb.landmark_by_name
         assert c.cue.category in kb.category_by_name
+
+
+DELTA = ROOT / "knowledge_bases" / "delta_town"
+METRO = ROOT / "knowledge_bases" / "metro_interchange"
+HILLSIDE = ROOT / "knowledge_bases" / "hillside_quake"
+CHEMICAL = ROOT / "knowledge_bases" / "chemical_works"
+PORT = ROOT / "knowledge_bases" / "container_port"
+
+
+@pytest.fixture(scope="module")
+def kb_analyzers() -> dict[str, ReportAnalyzer]:
+    emb = get_embedder()
+    return {path.name: ReportAnalyzer(load_kb(path), emb) for path in (DELTA, METRO, HILLSIDE, CHEMICAL, PORT,
+                                                                        HARBOURSIDE)}
+
+
+def test_a_kind_of_danger_reads_as_one_category(kb_analyzers):
+    """Where the KB splits the undesirable role, a cue no description names takes the category of its
+    kind of danger: collapse words go with "collapsed"/"cracked", fallen things with "debris"."""
+    port = kb_analyzers["harbourside"]
+    und = port.kb.categories_with_role("undesirable")
+    assert port._kind_category("collapse", und) == "peril"  # "a building ... that has collapsed"
+    assert port._kind_category("fallen", und) == "no_access"  # "blocked by debris, fallen masonry"
+    assert claims(kb_analyzers["hillside_quake"], "the muraglione is bulging and could let go") == [
+        ("retaining wall", "crumbling")]
+    assert claims(kb_analyzers["chemical_works"], "the cooling towers are cracked, lumps coming down") == [
+        ("cooling towers", "blast_damage")]
+    # two cues said as one predicate are read together: "leaking" alone would be flood water
+    assert claims(kb_analyzers["delta_town"], "I work at fish warehouse. The ammonia is leaking.") == [
+        ("cold store", "peril")]
+
+
+@pytest.mark.parametrize(("kb", "text", "expected"), [
+    # the last word on a place and category stands
+    ("hillside_quake", "update on the gas at the lavatoio... it's off now, the gas men capped the pipe", []),
+    ("hillside_quake", "the gas at the old press? false alarm, er, it was diesel, no gas there at all", []),
+    ("hillside_quake", "The gas leak in the building that shares a wall with the Stella is sealed; "
+                       "the gas company shut it off at 14:10.", []),
+    ("delta_town", "the fire at the fuel depot is out and the fuel slick has been boomed off", []),
+    ("delta_town", "Checked the ferry landing for the missing fisherman, no sign of him, no one there at all.", []),
+    # people taken off a place revoke its casualty, with no cue said again
+    ("delta_town", "1012 STILT VLG - 3 stranded on rf. 1014 UPD STILT VLG - all 3 lifted off by Heron 2, "
+                   "now at MKT HALL, dry, sheltering.", [("market hall", "refuge")]),
+    # ... but not being able to pass the smoke is no revocation of it
+    ("metro_interchange", "smoke in the hotel, she's stuck, she can't get past the smoke on the stairs",
+     [("terminus hotel", "casualty"), ("terminus hotel", "smoke_logged")]),
+])
+def test_revocations_said_later(kb_analyzers, kb, text, expected):
+    assert claims(kb_analyzers[kb], text) == expected
+
+
+def test_a_later_claim_restores_an_earlier_denial(analyzer):
+    assert claims(analyzer, "no fire at the bank. Wait, yes, there is a fire at the bank.") == [("bank", "hazard")]
+
+
+def test_an_echo_question_answered_no_claims_nothing(kb_analyzers):
+    assert claims(kb_analyzers["delta_town"], "Caller: the school is full of water. Dispatcher: the church is "
+                                              "flooded? Caller: no, no, the school. The church is dry, people are "
+                                              "going up there to shelter.") == [
+        ("river school", "submerged"), ("st anselm's church", "refuge")]
+
+
+def test_dry_is_a_cue_only_where_the_kb_describes_it(analyzer, kb_analyzers):
+    assert claims(kb_analyzers["delta_town"], "the lock house is confirmed dry") == [
+        ("lock keeper's cottage", "refuge")]
+    assert claims(analyzer, "the garage is dry") == []
+
+
+def test_a_name_several_landmarks_share_is_the_one_related_to_the_place_named(kb_analyzers):
+    metro = kb_analyzers["metro_interchange"]
+    assert claims(metro, "the escalator shaft that comes down into the link passage is smoke logged") == [
+        ("deep escalator shaft", "smoke_logged")]
+    assert claims(metro, "someone's been crushed on the stairs that lead down into the arcade") == [
+        ("foundry lane entrance", "casualty")]
+    assert claims(metro, "I'm on P2 and the smoke's getting down to the platform underneath mine") == [
+        ("deep level platform", "smoke_logged")]
+    # the verb of vents_into said as a noun is no relation
+    assert claims(metro, "all the smoke's coming out of the vents on the forecourt") == [
+        ("station plaza", "smoke_logged")]
+
+
+@pytest.mark.parametrize(("kb", "text", "expected"), [
+    ("chemical_works", "Two residents have collapsed in the lounge at Larkfield", [("larkfield care home", "needs_rescue")]),
+    ("chemical_works", "Control, Hazmat One, we're booking on at the gatehouse and awaiting tasking.", []),
+    ("chemical_works", "a vapour cloud is still sitting over the reactor building", [("reactor hall", "chemical_release")]),
+    # log shorthand: abbreviations, relations without their articles, a symmetric "faces"
+    ("chemical_works", "15:02 HZ3: 2x cas at bldg over rd from community hall, both conscious",
+     [("gatehouse", "needs_rescue")]),
+    ("container_port", "0612 cas x1 at bldg opp customs hse.", [("port control tower", "casualty")]),
+    ("hillside_quake", "15:07 GAS: leak at bldg at mouth of galleria.", [("olive mill", "gas_escape")]),
+    ("hillside_quake", "the the wall of the camposanto has fallen into the lane", [("cemetery", "crumbling")]),
+])
+def test_persons_call_signs_and_log_shorthand(kb_analyzers, kb, text, expected):
+    assert claims(kb_analyzers[kb], text) == expected
+
+
+def test_slips_counts_and_stutters(analyzer, kb_analyzers):
+    # "sills" is no typed slip of "silo" (the stem of a plural is one letter off); "caff" is one of "cafe"
+    assert claims(kb_analyzers["delta_town"], "This is the pumping station. The building right below us is "
+                                              "flooded to the sills.") == [("river school", "submerged")]
+    assert claims(analyzer, "i think theres someone in the caff under the tables not moving") == [("cafe", "victim")]
+    # a repaired count and a stuttered negative cue are no negations
+    assert claims(analyzer, "crush injuries at the warehouse, two, no three patients") == [("warehouse", "victim")]
+    assert claims(analyzer, "theres a man collapsed in the chemist hes not hes not breathing") == [("pharmacy", "victim")]
+    # a rescue request claims the person; a repair withdraws all that was just said of the place
+    assert claims(kb_analyzers["delta_town"], "I'm on the roof of my place in fisher row. Please send a boat.") == [
+        ("stilt village", "stranded")]
+    assert claims(kb_analyzers["delta_town"], "the co-op silo, it's dry inside, safe to come- no, scratch that, "
+                                              "the floor's cracking") == [("grain silo", "peril")]

@@ -30,7 +30,7 @@ from typing import Literal
 import numpy as np
 
 from lucifer.embeddings import Embedder
-from lucifer.kb import KnowledgeBase, Relation, Role
+from lucifer.kb import Category, KnowledgeBase, Relation, Role
 from lucifer.language import lexicon as lx
 from lucifer.language.text import PhraseMatcher, Tokens, name_words, norm, norm_phrase, tokenize
 
@@ -217,11 +217,39 @@ class ReportAnalyzer:
         overlap = [sum(any(_same_stem(w, d) for d in ds) for w in words) for ds in described]
         if overlap and max(overlap) > 0 and overlap.count(max(overlap)) == 1:
             return cats[overlap.index(max(overlap))].name
+        kind = self._danger_kind_of.get(phrase) if role == lx.UNDESIRABLE else None
+        if kind is not None:
+            cat = self._kind_category(kind, cats)
+            if cat is not None:
+                return cat
         if self.embedder is None:
             return cats[0].name
         vecs = self.embedder.embed([phrase] + [f"{c.name.replace('_', ' ')}: {c.description}" for c in cats])
         sims = vecs[1:] @ vecs[0]
         return cats[int(np.argmax(sims))].name
+
+    _danger_kind_of = {p: kind for kind, phrases in lx.DANGER_KINDS.items() for p in phrases}
+
+    def _kind_category(self, kind: str, cats: list[Category]) -> str | None:
+        """The category a kind of danger (``lexicon.DANGER_KINDS``) reads as in this KB: the one whose
+        description has the most words the kind's words name (stems, words for parts left out); else the
+        closest in MiniLM space to the kind's words together."""
+        cache = self.__dict__.setdefault("_kind_cache", {})
+        if kind not in cache:
+            described = [self._affirmed_words(c.description) for c in cats]
+            words = {w for p in lx.DANGER_KINDS[kind] for w in norm_phrase(p)
+                     if len(w) >= 4 and w not in lx.DANGER_KIND_PARTS}
+            # how many of its description's words the kind's words name
+            votes = [sum(any(_same_stem(w, d) for w in words) for d in ds) for ds in described]
+            if max(votes) > 0 and votes.count(max(votes)) == 1:
+                cache[kind] = cats[votes.index(max(votes))].name
+            elif self.embedder is not None:
+                text = ", ".join(lx.DANGER_KINDS[kind][:12])
+                vecs = self.embedder.embed([text] + [f"{c.name.replace('_', ' ')}: {c.description}" for c in cats])
+                cache[kind] = cats[int(np.argmax(vecs[1:] @ vecs[0]))].name
+            else:
+                cache[kind] = None
+        return cache[kind]
 
     @staticmethod
     @functools.lru_cache(maxsize=256)
@@ -289,6 +317,9 @@ class ReportAnalyzer:
         for key, val in list(forms.items()):
             for adverb in lx.RELATION_ADVERBS:
                 forms.setdefault((adverb, *key), val)
+            bare = tuple(w for w in key if w != "the")
+            if len(bare) >= 2 and bare != key:
+                forms.setdefault(bare, val)  # a log drops articles: "bldg over rd from community hall"
         for key, val in forms.items():
             self._relations.add(key, val)
 
@@ -390,7 +421,12 @@ class ReportAnalyzer:
             hit = self._keyword_relation(toks.tokens[t].text.lower())
             if hit is None:
                 continue
+            if norms[t] in lx.PART_NOUNS and t + 1 < len(norms) and norms[t + 1] == "of":
+                continue  # "the back wall of the Stella" is part of it, not "shares_a_wall_with"
             phrase, voice = hit
+            if voice == "active" and t > 0 and norms[t - 1] in lx.ARTICLES and phrase.split()[0] in (
+                    norms[t], toks.tokens[t].text.lower()):
+                continue  # "the vents on the forecourt": the verb of ``vents_into`` said as a noun
             b = t + 1
             for j in range(t + 1, min(t + 4, len(norms))):
                 if j in taken or toks.clause_start[j]:
@@ -443,8 +479,11 @@ class ReportAnalyzer:
             if k < a - 1 and norms[k] in lx.ARTICLES:
                 prev = norms[k]
             if norms[a:b] in self._needs_article and prev not in lx.DETERMINERS | {"our", "your"} \
-                    and not self._telegraphic_subject(toks, norms, a, b) and not (log and b - a >= 2):
-                continue  # the KB wrote "the tower": "bell tower" is not it (a log drops articles: "fire LPG plant")
+                    and not self._telegraphic_subject(toks, norms, a, b) \
+                    and not (log and (b - a >= 2 or prev in lx.PREPOSITIONS and len(norms[a]) >= 5)):
+                # the KB wrote "the tower": "bell tower" is not it (a log drops articles: "fire LPG plant",
+                # "leak at bldg at mouth of galleria")
+                continue
             if b - a == 1 and prev in lx.COMPOUND_MODIFIERS and not (a > 0 and toks.clause_start[a]) \
                     and not any(p.end_tok == a for p in places):
                 continue  # "car park", "bell tower"
@@ -593,7 +632,8 @@ class ReportAnalyzer:
                         or any(toks.clause_start[j] for j in range(i + 1, i + n)):
                     continue  # ("fuel from" is not "fuel farm")
                 word = "".join(norms[j] for j in span)  # ("hanger two's": the keys drop the "'s")
-                typo = self._typo_of(word, [norms[j] for j in span])
+                typo = self._typo_of(word, [norms[j] for j in span],
+                                     raw=toks.tokens[i].text.lower() if n == 1 else None)
                 if typo is not None:
                     if best is None or 0.99 > best[0]:
                         best = (0.99, n, typo)
@@ -628,7 +668,7 @@ class ReportAnalyzer:
 
     TYPO_MIN_CHARS = 4
 
-    def _typo_of(self, word: str, words: list[str]) -> str | None:
+    def _typo_of(self, word: str, words: list[str], raw: str | None = None) -> str | None:
         """A typed slip: "libary", "chruch", "gargae", "twn hall". One of the words is no English word
         (not in MiniLM's vocabulary) and the letters are one edit (a transposition counts as one) from
         exactly one landmark name's."""
@@ -641,7 +681,9 @@ class ReportAnalyzer:
             self._typo_spellings = {key: name for key, name in self._name_keys()
                                     if len(key) >= self.TYPO_MIN_CHARS and key.isalpha()}
         hits = {name for key, name in self._typo_spellings.items()
-                if key[0] == word[0] and abs(len(key) - len(word)) <= 1 and _one_edit(word, key)}
+                if key[0] == word[0] and abs(len(key) - len(word)) <= 1 and _one_edit(word, key)
+                and (raw is None or len(key) >= 5 or raw == word or _one_edit(raw, key))}
+        # (a short name is one letter from the stem of too many plurals: "sills" is no slip of "silo")
         return next(iter(hits)) if len(hits) == 1 else None
 
     def _cue_keys(self) -> list[tuple[str, ...]]:
@@ -756,6 +798,8 @@ class ReportAnalyzer:
             for a, b, (phrase, flipped) in ordered:
                 self._resolve_one(ex, toks, norms, a, b, phrase, flipped, place_tokens, marker_tokens,
                                   inverse_pass=pass_no == 2)
+        if self.kb.relations:
+            self._resolve_shared_heads(ex, toks, norms, place_tokens, marker_tokens)
         if self.embedder is not None and self.kb.relations:
             cue_tokens = self._claim_cue_tokens(norms, place_tokens | marker_tokens)
             self._resolve_open(ex, toks, norms, place_tokens, marker_tokens, cue_tokens)
@@ -765,6 +809,62 @@ class ReportAnalyzer:
                 if p.via is None and p.status == "active" and d.start_tok <= p.start_tok and p.end_tok <= d.end_tok:
                     # "the landing it faces": the head word named the place the description reaches
                     ex.places[idx] = replace(p, status="reference", reason=f"part of the description '{d.text}'")
+
+    def _shared_tails(self) -> dict[tuple[str, ...], set[str]]:
+        """Last words of names that several landmarks share ("escalator shaft": main and deep escalator
+        shaft; "stairs": the Kingsway stairs and the Foundry Lane stairs), with the landmarks."""
+        if getattr(self, "_tails_cache", None) is None:
+            tails: dict[tuple[str, ...], set[str]] = {}
+            for lm in self.kb.landmarks:
+                for form in lm.surface_forms:
+                    words = name_words(form)
+                    for n in range(1, len(words)):
+                        tails.setdefault(words[-n:], set()).add(lm.name)
+            self._tails_cache = {k: v for k, v in tails.items() if len(v) >= 2 and k[-1].isalpha()
+                                 and len(k[-1]) >= 4 and not set(k) & lx.GENERIC_HEADS}
+        return self._tails_cache
+
+    def _resolve_shared_heads(self, ex: Extraction, toks: Tokens, norms: tuple[str, ...], place_tokens: set[int],
+                              marker_tokens: set[int]) -> None:
+        """"the escalator shaft that comes down into the link passage": a name several landmarks share,
+        then a linking phrase to a named place. Of the landmarks the name fits, the one the KB relates to
+        that place (by any relation) is meant; the named place is its reference point."""
+        tails = self._shared_tails()
+        if not tails:
+            return
+        for anchor in [p for p in ex.places if p.status == "active" and p.via is None]:
+            j = anchor.start_tok
+            while j > 0 and norms[j - 1] in lx.DETERMINERS and anchor.start_tok - j < 2:
+                j -= 1
+            if j == 0 or norms[j - 1] not in lx.RELATION_ENDINGS | {"into", "in", "at", "onto"}:
+                continue
+            for k in range(j - 1, max(0, j - 6), -1):
+                if (k - 1) in place_tokens or (k - 1) in marker_tokens or toks.clause_start[k]:
+                    break
+                found = None
+                for n in (3, 2, 1):
+                    a = k - n
+                    if a < 1 or norms[a - 1] != "the" or any(i in place_tokens for i in range(a - 1, k)):
+                        continue
+                    if norms[a:k] in tails:
+                        found = (a, norms[a:k])
+                        break
+                if found is None:
+                    continue
+                a, key = found
+                related = {c for c in tails[key] for rel in self.kb.relations
+                           if {rel.subject, rel.object} == {c, anchor.landmark}}
+                if len(related) != 1:
+                    break
+                target = next(iter(related))
+                via = next(f"{r.subject} {r.relation} {r.object}" for r in self.kb.relations
+                           if {r.subject, r.object} == {target, anchor.landmark})
+                idx = ex.places.index(anchor)
+                ex.places[idx] = replace(anchor, status="reference", reason=f"reference point: {via}")
+                ex.places.append(self._mention(toks, a - 1, anchor.end_tok, target,
+                                               via=f"{via} (the '{' '.join(key)}' related to {anchor.landmark})"))
+                place_tokens.update(range(a - 1, anchor.end_tok))
+                break
 
     OPEN_RELATION_MIN_SIM = 0.55
     OPEN_RELATION_HINT_SIM = 0.35
@@ -885,7 +985,8 @@ class ReportAnalyzer:
                        for i in range(e, end)):
                     break
                 if norms[end - 1] in lx.RELATION_ENDINGS and (
-                        end == len(norms) or toks.clause_start[end] or norms[end] in lx.COPULAS | {"as", "now"}
+                        end == len(norms) or toks.clause_start[end] or norms[end] in lx.COPULAS | {"as", "now", "theres"}
+                        or norms[end:end + 2] in (("there", "s"), ("there", "is"), ("there", "are"))
                         or end in cue_tokens):
                     m = end
                     break
@@ -955,7 +1056,9 @@ class ReportAnalyzer:
         generic = bool(words) and any(w in lx.GENERIC_HEADS for w in words[-2:]) \
             and self._cues.match_at(norms, head_end - 1) is None
         if not generic and words and len(words) <= 3 and head_start > 0 and norms[head_start - 1] in lx.ARTICLES \
-                and norms[a:b] not in lx.AMBIGUOUS_HEADLESS:
+                and (norms[a:b] not in lx.AMBIGUOUS_HEADLESS or (words[-1],) in self._shared_tails()):
+            # ("the platform underneath us": a word several names end in heads a description even before
+            # a bare "underneath")
             # "the stretch seaward of the fish market": any plain noun after an article heads a description
             closed = lx.PREPOSITIONS | lx.COPULAS | lx.FILLERS | lx.PRONOUNS | lx.INVERSE_VERBS
             generic = all(w.isalpha() and w not in closed for w in words) and len(words[-1]) >= 3 \
@@ -993,6 +1096,8 @@ class ReportAnalyzer:
         if not pronoun:
             idx = ex.places.index(anchor)
             if target is None:
+                if not generic and self._cue_before(ex.tokens, norms, a):
+                    return  # "a vapour cloud sitting over the reactor building": where the danger is, not a description
                 ex.places[idx] = replace(anchor, status="reference",
                                          reason=f"reference point of an unresolved '{phrase}' description")
                 return
@@ -1161,6 +1266,16 @@ class ReportAnalyzer:
             ex.places[idx] = replace(p, status="reference", reason=f"reference point: {via}")
         ex.places.append(self._mention(toks, p.start_tok if idx >= 0 else k - 1, end, target, via=via))
         return True
+
+    def _cue_before(self, toks: Tokens, norms: tuple[str, ...], a: int) -> bool:
+        """Does a cue end at most four words before token ``a``, in its clause ("a vapour cloud is still |sitting
+        over")?"""
+        for k in range(max(0, a - 8), a):
+            hit = self._cues.match_at(norms, k)
+            if hit is not None and a - 4 <= hit[0] <= a and hit[1][1] != "neutral" \
+                    and not any(toks.clause_start[i] for i in range(hit[0], a + 1)):
+                return True
+        return False
 
     def _is_cue_end(self, norms: tuple[str, ...], end: int) -> bool:
         """Does a cue phrase end right before token ``end`` (allowing prepositions in between)?"""
@@ -1694,12 +1809,20 @@ class ReportAnalyzer:
             if norms[a:b] == ("clear",) and any(norms[k] in ("keep", "stay") for k in range(max(0, a - 4), a)) \
                     and not any(toks.clause_start[k] for k in range(max(1, a - 3), a + 1)):
                 continue  # "keep all boats clear of the lock", "stay well clear": an instruction, like "keep clear"
+            if b == a + 1 and b < len(norms) and toks.tokens[a].text[:1].isupper() \
+                    and (norms[b] in lx.NUMBER_WORDS | {"one"} or norms[b].isdigit()) and toks.gaps[b] == " " \
+                    and (b + 1 == len(norms) or toks.clause_start[b + 1] or norms[b + 1] in lx.COPULAS | {"to", "here"}):
+                continue  # "Control, Hazmat One, we're ...": a call sign
             start, end = toks.tokens[a].start, toks.tokens[b - 1].end
             cue = CueMention(a, b, start, end, toks.text[start:end], cat, source)
+            if source == "lexicon" and norms[a:b] in (("collapsed",), ("collapse",)) and self._person_category \
+                    and self._person_before(norms, a):
+                cue = replace(cue, category=self._person_category, reason="a person collapsed")
             checked = self._apply_cue_negation(toks, norms, cue)
             cues.append(checked)
             if checked.category != cue.category:  # "no longer safe": unsafe now, and no longer safe
                 cues.append(replace(cue, polarity="denied", reason=checked.reason))
+        cues = self._read_cue_pairs(toks, norms, cues)
         cues.extend(self._predicative_cues(ex, norms, blocked | {i for c in cues for i in range(c.start_tok, c.end_tok)}))
         cues.extend(self._person_cues(ex, norms, blocked | {i for c in cues for i in range(c.start_tok, c.end_tok)}))
         cues.extend(self._another_one_cues(toks, norms, cues, blocked))
@@ -1716,6 +1839,44 @@ class ReportAnalyzer:
             claims.extend(extra)
             cues.extend(c.cue for c in extra)
         return Classification(cues, claims, denied)
+
+    @staticmethod
+    def _person_before(norms: tuple[str, ...], a: int) -> bool:
+        """Is the subject before token ``a`` a person ("two residents have collapsed", "the gardeners all
+        collapsed")? A person word, or a counted noun of a doer ("two gardeners", "3 climbers")."""
+        j = a - 1
+        while j >= 0 and norms[j] in ("have", "has", "had", "s", "just", "both", "all", "also", "then", "suddenly"):
+            j -= 1
+        if j < 0:
+            return False
+        w = norms[j]
+        if w in lx.LAY_PERSONS or w in lx.WORKER_PERSONS or w in lx.PERSON_NOUNS or w in ("we", "they", "i"):
+            return True
+        counted = j > 0 and (norms[j - 1] in lx.NUMBER_WORDS or norms[j - 1].isdigit())
+        return counted and w.endswith(("er", "ent", "ist", "or", "ian"))
+
+    PAIR_LINKS = {"is", "are", "s", "re", "was", "were", "has", "have", "been", "still", "now", "all", "badly"}
+
+    def _read_cue_pairs(self, toks: Tokens, norms: tuple[str, ...], cues: list[CueMention]) -> list[CueMention]:
+        """Two vocabulary cues of one role that the KB splits into several categories, said as one
+        predicate ("the ammonia is leaking", "fuel leaking"), take the category of what they say
+        together: "leaking" alone reads as flood water, "ammonia is leaking" as a chemical danger."""
+        out = list(cues)
+        order = sorted(range(len(out)), key=lambda k: out[k].start_tok)
+        for x, y in zip(order, order[1:], strict=False):
+            c1, c2 = out[x], out[y]
+            if c1.source != "lexicon" or c2.source != "lexicon" or c1.category == c2.category \
+                    or c1.polarity != "affirmed" or c2.polarity != "affirmed":
+                continue
+            role = self.kb.category_by_name[c1.category].role
+            if self.kb.category_by_name[c2.category].role != role or c2.start_tok - c1.end_tok > 2 \
+                    or any(norms[i] not in self.PAIR_LINKS for i in range(c1.end_tok, c2.start_tok)) \
+                    or any(toks.clause_start[i] for i in range(c1.end_tok, c2.end_tok)):
+                continue
+            cat = self._category_for_role(role.value, toks.text[c1.start:c2.end])
+            if cat is not None:
+                out[x], out[y] = replace(c1, category=cat), replace(c2, category=cat)
+        return out
 
     # ------------------------------------------------------------------ semantic fallback
     semantic_fallback: bool = True
@@ -1810,6 +1971,17 @@ class ReportAnalyzer:
                              reason=f"MiniLM predicate match {score:.2f} (runner-up {runner:.2f})")
             out.append(Claim(p, cue))
         return out
+
+    @staticmethod
+    def _answered_no(toks: Tokens, norms: tuple[str, ...], sentence: tuple[int, int]) -> bool:
+        """Does the sentence open with a "no" ("Caller: no, no, the school"), past a speaker's label?"""
+        a, b = sentence
+        i = a
+        if i + 1 < b and toks.gaps[i + 1].strip() == ":":
+            i += 1  # "Caller:"
+        while i < b and norms[i] in lx.FILLERS:
+            i += 1
+        return i < b and norms[i] in ("no", "negative", "nope", "nah") and (i + 1 >= b or toks.clause_start[i + 1])
 
     @staticmethod
     def _question_sentences(toks: Tokens) -> set[int]:
@@ -1953,8 +2125,13 @@ class ReportAnalyzer:
         toks = ex.tokens
         ends = {p.end_tok for p in ex.places}
         out = []
+        if getattr(self, "_predicatives", None) is None:
+            self._predicatives = dict(lx.PREDICATIVE_CUES)
+            for word, role in lx.DESCRIBED_PREDICATIVE_CUES.items():
+                if any(word in norm_phrase(c.description) for c in self.kb.categories_with_role(role)):
+                    self._predicatives[word] = role
         for i, w in enumerate(norms):
-            role = lx.PREDICATIVE_CUES.get(w)
+            role = self._predicatives.get(w)
             if role is None or i in blocked or i == 0:
                 continue
             after = norms[i + 1] if i + 1 < len(norms) else ""
@@ -1979,8 +2156,11 @@ class ReportAnalyzer:
                     or prev in ("that's", "it's", "its")):
                 continue
             nxt = i + 2
-            if nxt < len(norms) and not toks.clause_start[nxt] and (norms[nxt] in lx.PREPOSITIONS or nxt in starts):
+            if nxt < len(norms) and not toks.clause_start[nxt] and (norms[nxt] in lx.PREPOSITIONS or nxt in starts
+                                                                    or norms[nxt] in ("there", "here")):
                 continue
+            if i >= 2 and norms[i - 1] in ("are", "is") and norms[i - 2] in lx.LAY_PERSONS | {"we", "everyone", "everybody"}:
+                continue  # "people are going up there": people move, nothing burns
             cat = self._category_for_role(lx.UNDESIRABLE, "going up in flames")
             if cat:
                 t0, t1 = toks.tokens[i], toks.tokens[i + 1]
@@ -2011,6 +2191,8 @@ class ReportAnalyzer:
                 first = next((i for i in range(start, b) if norms[i] not in lx.FILLERS), start)
                 if norms[first] in lx.QUESTION_OPENERS and first not in marker_starts:
                     asked.update(range(start, b))
+                elif n + 1 < len(sentences) and self._answered_no(toks, norms, sentences[n + 1]):
+                    asked.update(range(start, b))  # "the church is flooded? -- no, no, the school": an echo denied
                 continue
             opener = next((i for i in range(a, b) if norms[i] not in lx.FILLERS), a)
             if norms[opener] in lx.YES_NO_OPENERS and opener + 1 < b and norms[opener + 1] in lx.YES_NO_SUBJECTS \
@@ -2111,6 +2293,8 @@ class ReportAnalyzer:
         j = cue.start_tok - 1
         steps = 0
         place_toks = self._place_tokens | self._marker_tokens
+        if norms[cue.start_tok] in lx.NEGATORS:
+            j = -1  # "he's not, he's not breathing": a cue that is itself a negation is not negated again
         while j >= 0 and steps < 4 and j not in place_toks:
             if j + 1 < cue.start_tok and toks.clause_start[j + 1]:
                 break  # "the place across from it isn't — there's a fire": another clause's negation
@@ -2118,7 +2302,11 @@ class ReportAnalyzer:
                                                     or j + 1 < cue.start_tok and norms[j + 1] in ("s", "is", "are")):
                 break  # "wait no its not theres a gas smell": a new "there's" clause, past the negation
             if norms[j] in lx.NEGATORS or norms[j].endswith("nt") and norms[j] in ("isnt", "arent", "wasnt", "werent", "dont", "doesnt", "didnt", "hasnt", "havent", "cant"):
-                if norms[j + 1 : j + 3] != ("the", "one"):  # "the pharmacy isn't the one on fire": which place, not whether
+                if norms[j + 1 : j + 3] != ("the", "one") and not (
+                        norms[j] == "no" and j + 1 < cue.start_tok
+                        and (norms[j + 1] in lx.NUMBER_WORDS or norms[j + 1].isdigit())):
+                    # ("the pharmacy isn't the one on fire": which place, not whether; "two, no three
+                    # patients": a repaired count)
                     negated_by = toks.tokens[j].text
                 break
             hit = None
@@ -2190,10 +2378,16 @@ class ReportAnalyzer:
             j = k
             while j < len(norms) and j - k < 6 and norms[j] in lx.BACK_REFERENCE_WORDS | lx.FILLERS:
                 j += 1
-            h = self._cancel.match_at(norms, j) if j > k and j < len(norms) else None
+            h = self._cancel.match_at(norms, j) if j < len(norms) else None
+            if h is not None and j == k and h[1] not in lx.CANCEL_CLAUSES:
+                h = None  # (a clause of its own, "no sign of him", needs no "it's" before it)
             if h is None and j > k and j < len(norms) and norms[j] == "out":
                 h = (j + 1, "out")
-            if h is not None and (h[0] >= len(norms) or toks.clause_start[h[0]] or norms[h[0]] in ("now", "completely")):
+            if h is not None and h[1] in lx.CANCEL_PEOPLE_ONLY \
+                    and self.kb.category_by_name[cue.category].role != Role.CRITICAL:
+                h = None  # "gas in the winding house, we've pulled everyone out, all accounted for": the gas stays
+            if h is not None and (h[0] >= len(norms) or toks.clause_start[h[0]] or norms[h[0]] in ("now", "completely")
+                                  or h[1] in lx.CANCEL_CLAUSES):
                 cancelled_by = h[1]
         if negated_by is None:
             j = cue.start_tok - 1
@@ -2266,6 +2460,13 @@ class ReportAnalyzer:
             last = max(before, key=lambda c: c.start_tok)
             i = out.index(last)
             out[i] = replace(last, status="retracted", reason=f"self-repair: '{toks.span_text(a, b)}' then '{first_cue.text}'")
+            # ... with the cues of the same category said of the same place just before it ("it's dry
+            # inside, safe to come -- no, scratch that, the floor's cracking")
+            since = max((p.end_tok for p in ex.places if p.end_tok <= last.start_tok), default=lo)
+            for c in before:
+                if c is not last and c.category == last.category and c.start_tok >= max(lo, since) \
+                        and c.category != first_cue.category:
+                    out[out.index(c)] = replace(c, status="retracted", reason=out[i].reason)
             if kind == "cue":  # a restated claim ("full") keeps its own binding
                 j = out.index(first_cue)
                 out[j] = replace(first_cue, replaces=last.start_tok)
@@ -2495,7 +2696,42 @@ class ReportAnalyzer:
                     pairs.append(Claim(p, c))
         claims = [c for c in pairs if c.cue.polarity == "affirmed"]
         denied = [c for c in pairs if c.cue.polarity == "denied"]
+        # the last word on a place and category stands: "the gas at the wash house ... the gas men
+        # capped the pipe" revokes the first mention, "no fire at the bank -- wait, there is" restores it
+        last: dict[tuple[str, str], tuple[int, bool]] = {}
+        for c in sorted(pairs, key=lambda c: c.cue.start_tok):
+            if c.cue.polarity == "denied" and c.cue.reason.lower().startswith(lx.ABILITY_NEGATIONS):
+                continue  # "she can't get past the smoke on the stairs" revokes nothing
+            last[c.key] = (c.cue.start_tok, c.cue.polarity == "affirmed")
+        for landmark, at in self._people_revoked(ex, norms, cues):
+            # "1012 STILT VLG - 3 stranded on rf. 1014 UPD STILT VLG - all 3 lifted off": no cue is said
+            # again, but the people at the place are out
+            for key, (pos, _) in list(last.items()):
+                if key[0] == landmark and pos < at \
+                        and self.kb.category_by_name[key[1]].role == Role.CRITICAL:
+                    last[key] = (at, False)
+        revoked = {k for k, (_, affirmed) in last.items() if not affirmed}
+        denied.extend(c for c in claims if c.key in revoked)
+        claims = [c for c in claims if c.key not in revoked]
         return claims, denied
+
+    def _people_revoked(self, ex: Extraction, norms: tuple[str, ...], cues: list[CueMention]) -> list[tuple[str, int]]:
+        """(landmark, token) for each phrase that says the people of a place are out ("all 3 lifted off",
+        "everyone rescued") with no cue of its own: the place named last before it in its sentence."""
+        toks = ex.tokens
+        cue_ends = {c.end_tok for c in cues}
+        out = []
+        for i in range(len(norms)):
+            h = self._cancel.match_at(norms, i)
+            if h is None or h[1] not in lx.CANCEL_PEOPLE_ONLY or i in cue_ends:
+                continue
+            if i > 0 and norms[i - 1] in lx.NEGATORS | {"be", "being", "to", "will", "need", "needs"}:
+                continue  # "not rescued yet", "to be lifted off": not done
+            lo = max(t for t in range(0, i + 1) if toks.sentence_start[t])
+            before = [p for p in ex.places if lo <= p.start_tok and p.end_tok <= i and p.status == "active"]
+            if before:
+                out.append((max(before, key=lambda p: p.end_tok).landmark, i))
+        return out
 
     @staticmethod
     def _list_share(ex: Extraction, norms: tuple[str, ...], p: PlaceMention, pairs: list[Claim]) -> list[CueMention]:

@@ -66,6 +66,9 @@ petrol all over|fuel all over|diesel all over|oil all over|petrol everywhere|die
 petrol leak|diesel leak|fuel spill|petrol spill|diesel spill|exploding|explode|could explode|
 wall's fallen|wall has fallen|walls have fallen|roof's fallen|roof has fallen|ceiling's fallen|ceiling has fallen|
 chimney's fallen|chimney has fallen|fallen masonry|fallen tree|tree's fallen|tree has fallen|tree down|trees down|
+has fallen into|have fallen into|fallen into the|shifting|sliding|bulging|bulging out|could let go|might let go|about to let go|going to let go|
+cracked open|split in two|full of water|filled with water|filling with water|filling up with water|it's going under|it's gone under|going under fast|all under|all under water|roofs only showing|only the roofs showing|
+floor's gone under|floor has gone under|whole floor's gone under|
 """.replace("\n", ""))
 
 _add(DESIRABLE, """
@@ -117,7 +120,9 @@ still in there|still in there somewhere|can't find him|can't find her|can't find
 people coughing|few of them collapsed|some of them collapsed|collapsed on the floor|
 live find|a live find|indicating a find|can't get down|cannot get down|can't get downstairs|cut his arm|cut her arm|
 cut his hand|cut his head|cut her head|badly cut|bleeding heavily|can't get the doors open|can't get the door open|
-fire fighter down|fireman down|fire fighter injured|not answering|isn't answering|he's not answering|she's not answering|
+is sick|are sick|sick inside|feeling sick|being sick|vomiting|throwing up|taken ill|feeling ill|
+send a boat|please send a boat|need a boat|send help|please send help|come and get us|come get us|get us out|
+please come|please hurry|please help us|fire fighter down|fireman down|fire fighter injured|not answering|isn't answering|he's not answering|she's not answering|
 just lying there|lying there|lying on the floor|lying on the ground|fell off|fallen off|took a fall|
 out cold|knocked out|knocked unconscious|electrocuted|got a shock|got a belt|needs lifting|needs lifting off|
 needs winching|needs winching off|heat signature|heat signatures|thermal signature|under the bricks|
@@ -142,11 +147,25 @@ CANCEL_AFTER = ["is out", "s out", "are out", "was out", "put out", "out now", "
                 "turned off", "shut off", "capped", "receded", "drained", "false alarm",
                 "all rescued", "rescued", "evacuated", "got out", "out safely", "accounted for",
                 "no longer", "taken to hospital", "been taken to hospital", "been extracted",
-                "been brought out", "is resolved", "resolved", "withdrawn", "been withdrawn",
-                "was a mix up", "a mix up", "isolated", "been isolated", "made safe", "been made safe"]
+                "been brought out", "lifted off", "been lifted off", "winched up", "been winched up", "taken off",
+                "been taken off", "picked up", "been picked up", "is resolved", "resolved", "withdrawn", "been withdrawn",
+                "was a mix up", "a mix up", "isolated", "been isolated", "made safe", "been made safe",
+                "boomed off", "been boomed", "dispersed", "been dispersed", "cleaned up", "been cleaned up",
+                "pumped out", "been pumped out", "no sign of him", "no sign of her", "no sign of them",
+                "no sign of anyone", "no sign of anybody", "no one there", "nobody there",
+                "off now", "s off now", "is off", "s off", "shut it off", "turned it off", "switched off",
+                "switched it off", "sealed", "been sealed", "plugged", "been plugged"]
+# Reasons of denials that say what cannot be done, not that a danger is gone ("can't get past the smoke").
+ABILITY_NEGATIONS = ("negated by 'can't'", "negated by 'cant'", "negated by 'cannot'", "negated by 'couldn't'",
+                     "negated by 'couldnt'", "negated by 'ca'")
+# ... of which these are clauses of their own, after the one they revoke ("the missing man, no sign of him")
+CANCEL_CLAUSES = {"no sign of him", "no sign of her", "no sign of them", "no sign of anyone", "no sign of anybody",
+                  "no one there", "nobody there"}
 # ... of which these revoke only a person in need ("gas leak at the police post, they evacuated" stands)
 CANCEL_PEOPLE_ONLY = {"all rescued", "rescued", "evacuated", "got out", "out safely", "accounted for",
-                      "taken to hospital", "been taken to hospital", "been extracted", "been brought out"}
+                      "taken to hospital", "been taken to hospital", "been extracted", "been brought out",
+                      "lifted off", "been lifted off", "winched up", "been winched up", "taken off", "been taken off",
+                      "picked up", "been picked up"}
 
 # Words that open a clause speaking again of the thing just named ("..., it's drained now").
 BACK_REFERENCE_WORDS = {"it", "its", "s", "is", "has", "been", "thats", "that", "was", "they", "theyre", "are", "re",
@@ -159,7 +178,10 @@ NEUTRAL_PHRASES = ["keep clear", "stay clear", "keep everyone clear", "keep ever
                    "smoke alarm", "smoke alarms", "fire alarm", "fire alarms", "fire exit", "fire escape",
                    "fire brigade", "fire crew", "fire engine", "fire truck", "fire service", "fire department",
                    "fire team", "firefighter", "firefighters", "fire fighter", "fire fighters", "fire hydrant",
-                   "fire door", "gas mask", "gas masks", "safe word", "safety officer", "clear the area",
+                   "fire door", "gas mask", "gas masks", "gas company", "gas board", "gas man", "gas men",
+                   "gas engineer", "gas engineers", "gas crew", "gas team", "gas network", "gas fitter",
+                   "hazmat crew", "hazmat team", "hazmat unit", "hazmat officer", "hazmat crews", "hazmat teams",
+                   "by hazmat", "not shifting", "isn't shifting", "won't shift", "safe word", "safety officer", "clear the area",
                    "all units", "flood light", "floodlight", "floodlights", "rescue team", "rescue teams",
                    "took everyone out", "got everyone out", "brought everyone out", "had everyone out",
                    "nobody home", "no one home", "nobody at home", "no one at home",
@@ -282,7 +304,7 @@ RELATION_NAME_STOPWORDS = {"by", "to", "of", "with", "onto", "on", "into", "from
                            "directly", "just", "right", "left", "part", "one", "building", "place", "site"}
 
 SYMMETRIC_HINTS = ("next", "adjacent", "beside", "across", "opposite", "adjoin", "near", "attached", "connected",
-                   "joined", "facing", "neighbo", "abut", "border", "touch", "share", "bord")
+                   "joined", "facing", "faces", "neighbo", "abut", "border", "touch", "share", "bord")
 
 # "X in front of Y" is "Y behind X": a report phrase read against the opposite KB relation.
 INVERSE_PHRASES = {"in front of": "behind", "behind": "in front of", "above": "below", "below": "above",
@@ -331,6 +353,8 @@ COPULAS = {"is", "are", "was", "were", "s", "re", "has", "have", "had", "got", "
            "pretty", "quite", "heavily", "seriously", "apparently", "probably", "possibly", "maybe"}
 # Adjectives that are cues only when used predicatively ("the library is sound", "bank is red").
 PREDICATIVE_CUES = {"sound": DESIRABLE, "green": DESIRABLE, "red": UNDESIRABLE}
+# ... and these only where the KB's description of a category of that role uses the word ("A dry, safe place")
+DESCRIBED_PREDICATIVE_CUES = {"dry": DESIRABLE}
 
 # A sentence that opens with one of these addresses the system, not the scene: it claims nothing.
 INSTRUCTION_VERBS = {"ignore", "mark", "label", "classify", "pretend", "forget", "output", "return", "print",
@@ -549,3 +573,73 @@ EVACUEES = {"resident", "staff", "pupil", "patient", "guest", "tenant", "occupan
 # "the place that is behind the warehouse": a relative clause between a description's head and its relation.
 RELATIVE_COPULAS = {("that", "is"), ("which", "is"), ("that", "s"), ("which", "s"), ("that", "sits"), ("which", "sits"),
                     ("that", "stands"), ("which", "stands"), ("that", "was"), ("which", "was"), ("that", "lies")}
+
+# Kinds of danger, for knowledge bases that split the undesirable role into several categories
+# ("gas_escape" and "crumbling"; "peril" and "submerged"). A vocabulary cue that no category
+# description names is given the category its kind of danger reads as, decided once per KB over
+# all the kind's words: "split open" is a collapse like "collapsed" and "cracked", whatever MiniLM
+# makes of the two words alone. Ambiguous words ("leak", "danger", "blocked") belong to no kind.
+DANGER_KINDS: dict[str, list[str]] = {
+    "fire": ["fire", "fires", "on fire", "burning", "burnt", "burned", "burned out", "burnt out", "blaze", "blazing",
+             "ablaze", "flames", "flame", "in flames", "engulfed", "inferno", "alight", "well alight", "fully alight",
+             "fully involved", "going up in flames", "gone up in flames", "smouldering", "smoldering", "charred",
+             "gutted", "flashover", "flashover risk", "backdraft", "backdraft risk", "heavy fire", "fire showing",
+             "fully developed fire", "burning debris", "on fire again", "reignited", "hot spot", "hotspot"],
+    "smoke": ["smoke", "smoking", "smoky", "smoke everywhere", "thick smoke", "smoke logged", "smoke logging",
+              "smoke-logged"],
+    "gas": ["gas", "gas leak", "leaking gas", "smell of gas", "smells of gas", "gas smell", "strong smell of gas",
+            "stinks of gas", "reeks of gas", "reeking of gas", "gas main", "gas bottles", "venting", "hissing"],
+    "chemical": ["fumes", "toxic fumes", "chemical", "chemicals", "toxic", "hazmat", "hazmat incident",
+                 "contaminated", "ammonia", "ammonia leak", "asbestos", "radiation", "spill", "spilled", "spilt",
+                 "fuel leak", "oil spill", "fuel spill", "petrol spill", "diesel spill", "petrol leak", "diesel leak",
+                 "leaking fuel", "fuel pouring", "pouring fuel", "diesel slick", "slick", "fuel slick",
+                 "petrol all over", "fuel all over", "diesel all over", "oil all over", "petrol everywhere",
+                 "diesel everywhere", "fuel everywhere"],
+    "explosion": ["explosion", "exploded", "explosive", "blast", "exploding", "explode", "could explode"],
+    "collapse": ["collapse", "collapsed", "collapsing", "caved in", "cave in", "cave-in", "caving in", "caving",
+                  "fell in", "falling down", "come down", "came down", "coming down", "about to collapse",
+                  "unstable", "crumbling", "cracked", "cracking", "cracks", "a crack", "crack right across",
+                  "cracked right across", "sagging", "structural damage", "structurally unsafe", "unsound",
+                  "structurally unsound", "compromised", "unstable structure", "partially collapsed", "bowing",
+                  "bowing out", "wall's bowing", "buckling", "buckled", "leaning", "could go any second",
+                  "roof collapsed", "roof has come in", "roof's come in", "roof came in", "ceiling has come in",
+                  "ceiling's come in", "ceiling collapsed", "given way", "gave way", "has given way",
+                  "unstable masonry", "falling in", "unstable chimney", "bulging", "bulging out", "could let go",
+                  "might let go", "about to let go", "going to let go", "cracked open",
+                  "split in two", "spongy", "floor's spongy", "sinking", "subsiding", "subsidence", "slumping",
+                  "floor's gone", "floor has gone", "floor's gone through", "gone through the floor", "roof's going",
+                  "roof is going"],
+    "fallen": ["has fallen into", "have fallen into", "fallen into the", "rubble", "wall down", "walls down", "roof's in", "roof is in", "roof's gone", "roof has gone",
+                  "roof's off", "shedding bricks", "shedding slates", "masonry falling", "falling masonry",
+                  "fallen masonry", "wall's fallen", "wall has fallen", "walls have fallen", "roof's fallen",
+                  "roof has fallen", "ceiling's fallen", "ceiling has fallen", "chimney's fallen",
+                  "chimney has fallen", "roof down", "ceiling's down", "ceiling down"],
+    "ground": ["shifting", "sliding", "landslide", "mudslide", "mud slide", "landslip", "slipping", "sinkhole", "come away", "came away"],
+    "water": ["flood", "floods", "flooded", "flooding", "underwater", "under water", "water rising", "rising water",
+              "submerged", "knee deep", "waist deep", "chest deep", "ankle deep", "water's up", "water up to",
+              "up to the windowsills", "overtopping", "burst its banks", "waterlogged", "water logged", "flooded out",
+              "water everywhere", "water coming over", "taking on water", "taking water",
+              "foot of water", "feet of water", "under a foot of water", "water coming up", "water coming in",
+              "water's coming in", "coming in under the door", "coming in under the doors", "washed away",
+              "full of water", "filled with water", "filling with water", "filling up with water",
+              "it's going under", "it's gone under", "going under fast", "all under", "all under water",
+              "roofs only showing", "only the roofs showing", "floor's gone under", "floor has gone under",
+              "whole floor's gone under", "burst main", "burst pipe", "pipe burst", "pipe's burst"],
+    "current": ["strong current", "fierce current", "fast current", "swift current", "rip current", "undertow",
+                "current's ripping", "current is ripping", "current ripping", "fast flowing water",
+                "fast-flowing water", "ripping through"],
+    "electric": ["live wire", "live wires", "power line down", "power lines down", "downed lines", "sparking",
+                 "sparks", "sparks everywhere", "electrified", "arcing", "electrical hazard", "exposed wiring"],
+    "access": ["impassable", "blocked off", "no access", "no vehicle access", "no way in", "no way through",
+               "no way onto", "inaccessible", "not passable", "no through route", "can't get in", "cannot get in",
+               "can't get into", "cannot get into", "can't get through", "cannot get through", "can't reach",
+               "cannot reach", "unable to reach", "unable to get in", "can't access", "cannot access",
+               "piled across",
+               "lying across", "come down across", "came down across", "gridlocked", "choked with",
+               "full of parked cars", "cordoned off", "shed its load", "fallen tree", "tree's fallen",
+               "tree has fallen", "tree down", "trees down"],
+}
+# Words of the kinds' phrases that name the thing, not the danger: they do not vote ("roof down").
+DANGER_KIND_PARTS = {"roof", "roofs", "wall", "walls", "ceiling", "floor", "chimney", "tree", "trees", "door", "doors",
+                     "pipe", "main", "bricks", "slates", "right", "across", "through", "everywhere", "going", "could",
+                     "might", "about", "second", "under", "over", "coming", "gone", "fully", "well", "again", "risk"}

@@ -23,7 +23,12 @@ _KEEP_S = {"it", "he", "she", "who", "let", "how", "what", "where", "there", "th
 # Log and radio shorthand read as the word it stands for ("police stn", "bldg opp st marys", "2 inj").
 ABBREVIATIONS = {"stn": "station", "bldg": "building", "opp": "opposite", "ppl": "people", "inj": "injured",
                  "veh": "vehicle", "hosp": "hospital", "frm": "from", "pls": "please", "plz": "please",
-                 "rprtd": "reported", "approx": "approximately"}
+                 "rprtd": "reported", "approx": "approximately", "hse": "house", "plnt": "plant", "twr": "tower",
+                 "whse": "warehouse", "wkshp": "workshop", "rd": "road", "nr": "near", "adj": "adjacent",
+                 "bhd": "behind", "dn": "down", "clr": "clear", "mkt": "market", "vlg": "village",
+                 "cntr": "centre", "ctr": "centre", "upd": "update", "rf": "roof", "flr": "floor", "blk": "block",
+                 "apt": "apartment", "gdn": "garden", "corr": "correction", "cas": "casualty", "invlvd": "involved",
+                 "consc": "conscious", "uncon": "unconscious", "uncons": "unconscious", "evac": "evacuated", "crk": "crack"}
 
 
 def norm(word: str) -> str:
