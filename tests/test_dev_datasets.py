@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev13) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev14) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -23,6 +23,8 @@ DELTA = ROOT / "knowledge_bases" / "delta_town"
 METRO = ROOT / "knowledge_bases" / "metro_interchange"
 HILLSIDE = ROOT / "knowledge_bases" / "hillside_quake"
 CHEMICAL = ROOT / "knowledge_bases" / "chemical_works"
+FESTIVAL = ROOT / "knowledge_bases" / "festival_site"
+FERRY = ROOT / "knowledge_bases" / "ferry_ship"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -79,6 +81,9 @@ SETS = {
                                  {"standard": 30, "messy": 30, "advanced_messy": 30}),
     "dev13/chemical_works": _set("dev13/chemical_works.jsonl", CHEMICAL, "cw",
                                  {"standard": 30, "messy": 30, "advanced_messy": 30}),
+    "dev14/festival_site": _set("dev14/festival_site.jsonl", FESTIVAL, "fs",
+                                {"standard": 30, "messy": 30, "advanced_messy": 30}),
+    "dev14/ferry_ship": _set("dev14/ferry_ship.jsonl", FERRY, "fr", {"standard": 30, "messy": 30, "advanced_messy": 30}),
 }
 
 
