@@ -599,3 +599,64 @@ def test_slips_counts_and_stutters(analyzer, kb_analyzers):
         ("stilt village", "stranded")]
     assert claims(kb_analyzers["delta_town"], "the co-op silo, it's dry inside, safe to come- no, scratch that, "
                                               "the floor's cracking") == [("grain silo", "peril")]
+
+
+FESTIVAL = ROOT / "knowledge_bases" / "festival_site"
+FERRY = ROOT / "knowledge_bases" / "ferry_ship"
+
+
+@pytest.fixture(scope="module")
+def more_analyzers() -> dict[str, ReportAnalyzer]:
+    emb = get_embedder()
+    return {path.name: ReportAnalyzer(load_kb(path), emb) for path in (FESTIVAL, FERRY)}
+
+
+@pytest.mark.parametrize(("kb", "text", "expected"), [
+    # a cue said again at once is one cue: the first binds to nothing said before it
+    ("delta_town", "from the cottage I can see the swing bridge and the mast, and, uh, there's a fire, there's a "
+                   "fire at the jute sheds", [("jute warehouse", "peril")]),
+    # the speaker's own place: "my school" is the school; "my cottage" anchors a relation, "my kitchen" is no name
+    ("delta_town", "My little sister is stuck in the big building that shares the yard with my school",
+     [("st anselm's church", "stranded")]),
+    ("delta_town", "Lock keeper. The hall right below my cottage here on the levee, the whole floor's gone under.",
+     [("market hall", "submerged")]),
+    ("delta_town", "The keeper's cottage is dry and I've got six people off the boats in my kitchen.",
+     [("lock keeper's cottage", "refuge")]),
+    # an answer after a label of two words; a full stop after shorthand ends no sentence
+    ("delta_town", "Control: Heron Four, confirm you have persons stranded at the ferry landing? Heron Four: "
+                   "negative, negative, nobody at the ferry landing, three persons on the sluice gate.",
+     [("floodgate", "stranded")]),
+    ("metro_interchange", "02:16 TSS arcing reported. 02:19 RVP est. taxi rank.",
+     [("taxi rank", "muster_zone"), ("traction substation", "electrical_danger")]),
+    # "hang on" before a casualty is news, not a repair of the meeting point
+    ("metro_interchange", "the taxi rank? they're using it for the meeting point, everyone's there, but, er, hang on, "
+                          "someone's just collapsed right there at the rank",
+     [("taxi rank", "casualty"), ("taxi rank", "muster_zone")]),
+    # a person cue the speaker says of themselves goes to where they say they are
+    ("container_port", "I can't get down, the cab's filling with smoke, I'm in crane, the, the STS cranes",
+     [("quay cranes", "casualty"), ("quay cranes", "exclusion_zone")]),
+    ("container_port", "One of our crew is burned very bad, he is now at the seamen's mission",
+     [("seafarers' mission", "casualty")]),
+    # "at the foot of X" is where a casualty lies, unless the KB names an at_the_foot_of relation
+    ("container_port", "There's a bloke lying unconscious at the foot of the ops tower", [("port control tower", "casualty")]),
+    ("metro_interchange", "a casualty at the bottom of the long escalator", [("cross passage", "casualty")]),
+])
+def test_restarts_speakers_and_positions(kb_analyzers, kb, text, expected):
+    assert claims(kb_analyzers[kb], text) == expected
+
+
+@pytest.mark.parametrize(("kb", "text", "expected"), [
+    ("festival_site", "People are crammed shoulder to shoulder on Brook bridge and being crushed against the railings.",
+     [("footbridge", "crowd_crush")]),
+    ("festival_site", "Pile-up at the front of stage one, and several injured fans are being pulled out",
+     [("main stage", "crowd_crush"), ("main stage", "person_at_risk")]),
+    ("ferry_ship", "The wheelhouse is full of smoke; we are shifting to emergency steering in the tiller flat.",
+     [("wheelhouse", "fire_or_smoke")]),
+    ("ferry_ship", "the leak in the pump room's been shored, uh, holding now, but the thruster room, water's still "
+                   "pouring in there", [("bow thruster room", "water_ingress")]),
+    ("ferry_ship", "there's water in the, in the ballast pump room, and in the thruster room",
+     [("ballast pump room", "water_ingress"), ("bow thruster room", "water_ingress")]),
+    ("ferry_ship", "please, help, my son he is lost, he was in the cinema", [("cinema lounge", "person_in_danger")]),
+])
+def test_crowds_ships_and_the_people_on_them(more_analyzers, kb, text, expected):
+    assert claims(more_analyzers[kb], text) == expected

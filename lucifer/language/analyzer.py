@@ -478,7 +478,7 @@ class ReportAnalyzer:
                 k -= 1  # "the big rusty dredger": the article before the adjectives
             if k < a - 1 and norms[k] in lx.ARTICLES:
                 prev = norms[k]
-            if norms[a:b] in self._needs_article and prev not in lx.DETERMINERS | {"our", "your"} \
+            if norms[a:b] in self._needs_article and prev not in lx.DETERMINERS | {"our", "your", "my", "his", "her"} \
                     and not self._telegraphic_subject(toks, norms, a, b) \
                     and not (log and (b - a >= 2 or prev in lx.PREPOSITIONS and len(norms[a]) >= 5)):
                 # the KB wrote "the tower": "bell tower" is not it (a log drops articles: "fire LPG plant",
@@ -587,7 +587,9 @@ class ReportAnalyzer:
         out = []
         for i in range(1, len(norms)):
             w = norms[i]
-            if w not in self._heads or i in taken or norms[i - 1] != "the" or (i - 1) in taken:
+            if w not in self._heads or i in taken or (i - 1) in taken or not (
+                    norms[i - 1] == "the" or norms[i - 1] in ("my", "our") and (i - 1) in rel_ends):
+                # ("the hall right below my cottage": the speaker's own, as a relation's anchor; not "my kitchen")
                 continue
             if w in lx.UNNAMING_HEADS or (w in lx.GENERIC_HEADS or w in lx.DESCRIPTION_HEADS) and (i - 1) not in rel_ends:
                 continue  # "the terrace" names the one terrace only as a relation's anchor ("back to back with the terrace")
@@ -1088,6 +1090,13 @@ class ReportAnalyzer:
             return
         if not generic:
             # a cue (or nothing) before the relation: "man down across the street from the fire station"
+            if norms[a:a + 2] == ("at", "the") and b > a + 2 and norms[a + 2] in lx.LOCATIVE_PARTS and not any(
+                    rel.phrase.startswith("at the") and _link_stems(norms[a + 2]) & {
+                        st for v in rel.phrase.split()[2:] for st in _link_stems(v)}
+                    for rel in self.kb.relations):
+                # "a bloke lying unconscious at the foot of the ops tower", "pile-up at the front of stage one":
+                # where it is, unless the KB names a relation so ("at_the_foot_of")
+                return
             if norms[a:b] in lx.AMBIGUOUS_HEADLESS or (words and not self._is_cue_end(norms, head_end)
                                                        and not set(words) <= lx.HEADLESS_OK):
                 return
@@ -1815,9 +1824,9 @@ class ReportAnalyzer:
                 continue  # "Control, Hazmat One, we're ...": a call sign
             start, end = toks.tokens[a].start, toks.tokens[b - 1].end
             cue = CueMention(a, b, start, end, toks.text[start:end], cat, source)
-            if source == "lexicon" and norms[a:b] in (("collapsed",), ("collapse",)) and self._person_category \
+            if source == "lexicon" and norms[a:b] in lx.PERSON_STATE_CUES and self._person_category \
                     and self._person_before(norms, a):
-                cue = replace(cue, category=self._person_category, reason="a person collapsed")
+                cue = replace(cue, category=self._person_category, reason=f"a person {norms[a]}")
             checked = self._apply_cue_negation(toks, norms, cue)
             cues.append(checked)
             if checked.category != cue.category:  # "no longer safe": unsafe now, and no longer safe
@@ -1829,6 +1838,7 @@ class ReportAnalyzer:
         cues = self._evacuation_destinations(ex, norms, cues)
         cues.sort(key=lambda c: c.start_tok)
         cues = self._apply_cue_repairs(ex, cues)
+        cues = self._drop_restarted_cues(toks, norms, cues)
         cues = self._apply_false_alarms(toks, norms, cues)
         self._markers_now = ex.markers
         cues = self._apply_non_reports(toks, norms, cues)
@@ -1840,17 +1850,39 @@ class ReportAnalyzer:
             cues.extend(c.cue for c in extra)
         return Classification(cues, claims, denied)
 
+    RESTART_WORDS = frozenset({"there", "theres", "s", "is", "a", "an", "the", "its", "it", "some"})
+
+    @staticmethod
+    def _drop_restarted_cues(toks: Tokens, norms: tuple[str, ...], cues: list[CueMention]) -> list[CueMention]:
+        """"there's a fire, there's a fire at the jute sheds": a cue the speaker says again at once, in the
+        same sentence, is one cue, the second; the first would bind to the places said before it."""
+        out = sorted(cues, key=lambda c: c.start_tok)
+        for x in range(len(out) - 1):
+            c1, c2 = out[x], out[x + 1]
+            if c1.status != "active" or c2.status != "active":
+                continue
+            if norms[c1.start_tok:c1.end_tok] == norms[c2.start_tok:c2.end_tok] and c1.polarity == c2.polarity \
+                    and 0 < c2.start_tok - c1.end_tok <= 4 and toks.sentence_of[c1.start_tok] == toks.sentence_of[c2.start_tok] \
+                    and all(norms[i] in ReportAnalyzer.RESTART_WORDS or norms[i] in lx.FILLERS
+                            for i in range(c1.end_tok, c2.start_tok)):
+                out[x] = replace(c1, status="retracted", reason=f"said again: '{c2.text}'")
+                if c2.replaces is None and c1.replaces is not None:
+                    out[x + 1] = replace(c2, replaces=c1.replaces)  # (the repair it made is the second one's)
+        return out
+
     @staticmethod
     def _person_before(norms: tuple[str, ...], a: int) -> bool:
         """Is the subject before token ``a`` a person ("two residents have collapsed", "the gardeners all
         collapsed")? A person word, or a counted noun of a doer ("two gardeners", "3 climbers")."""
         j = a - 1
-        while j >= 0 and norms[j] in ("have", "has", "had", "s", "just", "both", "all", "also", "then", "suddenly"):
+        while j >= 0 and norms[j] in ("have", "has", "had", "s", "is", "are", "was", "were", "been", "got", "just",
+                                      "both", "all", "also", "then", "suddenly", "badly", "very", "bad"):
             j -= 1
         if j < 0:
             return False
         w = norms[j]
-        if w in lx.LAY_PERSONS or w in lx.WORKER_PERSONS or w in lx.PERSON_NOUNS or w in ("we", "they", "i"):
+        if w in lx.LAY_PERSONS or w in lx.WORKER_PERSONS or w in lx.PERSON_NOUNS or w in lx.CREW_NOUNS \
+                or w in ("we", "they", "i", "he", "she", "hes", "shes"):
             return True
         counted = j > 0 and (norms[j - 1] in lx.NUMBER_WORDS or norms[j - 1].isdigit())
         return counted and w.endswith(("er", "ent", "ist", "or", "ian"))
@@ -1977,8 +2009,9 @@ class ReportAnalyzer:
         """Does the sentence open with a "no" ("Caller: no, no, the school"), past a speaker's label?"""
         a, b = sentence
         i = a
-        if i + 1 < b and toks.gaps[i + 1].strip() == ":":
-            i += 1  # "Caller:"
+        label = next((k for k in range(a + 1, min(b, a + 4)) if toks.gaps[k].strip() == ":"), None)
+        if label is not None:
+            i = label  # "Caller:", "Heron Four:"
         while i < b and norms[i] in lx.FILLERS:
             i += 1
         return i < b and norms[i] in ("no", "negative", "nope", "nah") and (i + 1 >= b or toks.clause_start[i + 1])
@@ -2375,6 +2408,14 @@ class ReportAnalyzer:
                 e = next((i for i in range(j + 1, min(len(norms), j + 8)) if toks.clause_start[i]), None)
                 if e is not None and not any(self._cues.match_at(norms, i) is not None for i in range(j, e)):
                     k = e
+            for _ in range(2):
+                # "the fire in the, er, the paint shed, it's out": past the rest of a noun phrase cut by pauses
+                e = next((i for i in range(k + 1, min(len(norms), k + 6)) if toks.clause_start[i]), None)
+                if e is None or norms[k] not in lx.DETERMINERS | lx.FILLERS or any(
+                        norms[i] in lx.COPULAS or norms[i] in lx.PRONOUNS - {"that", "this"}
+                        or self._cues.match_at(norms, i) is not None for i in range(k, e)):
+                    break
+                k = e
             j = k
             while j < len(norms) and j - k < 6 and norms[j] in lx.BACK_REFERENCE_WORDS | lx.FILLERS:
                 j += 1
@@ -2458,6 +2499,10 @@ class ReportAnalyzer:
             if not before:
                 continue
             last = max(before, key=lambda c: c.start_tok)
+            if not strong and kind == "cue" and norms_all[a:_b] in (("hang", "on"), ("hold", "on"), ("wait",)) \
+                    and self.kb.category_by_name[first_cue.category].role == Role.CRITICAL \
+                    and self.kb.category_by_name[last.category].role != Role.CRITICAL:
+                continue  # "the meeting point, everyone's there, but hang on, someone's just collapsed": news
             i = out.index(last)
             out[i] = replace(last, status="retracted", reason=f"self-repair: '{toks.span_text(a, b)}' then '{first_cue.text}'")
             # ... with the cues of the same category said of the same place just before it ("it's dry
@@ -2694,6 +2739,7 @@ class ReportAnalyzer:
                         # "the station is not flooded, the clinic is": the contrast takes the claim
                         c = replace(c, polarity="affirmed", reason="contrast with a negated claim")
                     pairs.append(Claim(p, c))
+        pairs.extend(self._speaker_claims(ex, norms, cues, pairs))
         claims = [c for c in pairs if c.cue.polarity == "affirmed"]
         denied = [c for c in pairs if c.cue.polarity == "denied"]
         # the last word on a place and category stands: "the gas at the wash house ... the gas men
@@ -2714,6 +2760,33 @@ class ReportAnalyzer:
         denied.extend(c for c in claims if c.key in revoked)
         claims = [c for c in claims if c.key not in revoked]
         return claims, denied
+
+    def _speaker_claims(self, ex: Extraction, norms: tuple[str, ...], cues: list[CueMention],
+                        pairs: list[Claim]) -> list[Claim]:
+        """"I can't get down, the cab's filling with smoke, I'm in crane, the STS cranes": a person cue the
+        speaker says of themselves, bound to no place, is claimed of the one place the speaker says they are."""
+        bound = {id(c.cue) for c in pairs}
+        toks = ex.tokens
+        mine = [c for c in cues if id(c) not in bound and c.status == "active" and c.polarity == "affirmed"
+                and self.kb.category_by_name[c.category].role == Role.CRITICAL
+                and any(norms[i] in ("i", "im", "we", "were", "me") for i in range(max(0, c.start_tok - 3), c.start_tok)
+                        if toks.sentence_of[i] == toks.sentence_of[c.start_tok])]
+        if not mine:
+            return []
+        def said_at(p: PlaceMention) -> bool:  # "I'm in crane, the, the STS cranes": a few words after "I'm in"
+            if self._speaker_at(norms, p):
+                return True
+            for j in range(max(1, p.start_tok - 6), p.start_tok):
+                if norms[j] in ("in", "at", "on", "inside") and norms[j - 1] in ("im", "were") \
+                        and toks.sentence_of[j] == toks.sentence_of[p.start_tok] \
+                        and not any(q.start_tok in range(j, p.start_tok) for q in ex.places):
+                    return True
+            return False
+        at = {p.landmark: p for p in ex.places if p.status == "active" and said_at(p)}
+        if len(at) != 1:
+            return []
+        place = next(iter(at.values()))
+        return [Claim(place, c) for c in mine]
 
     def _people_revoked(self, ex: Extraction, norms: tuple[str, ...], cues: list[CueMention]) -> list[tuple[str, int]]:
         """(landmark, token) for each phrase that says the people of a place are out ("all 3 lifted off",
@@ -2767,6 +2840,8 @@ class ReportAnalyzer:
                           seg_cues: dict[int, list[CueMention]], sentence_of: list[int], hollow: set[int],
                           first_norm: list[str]) -> int | None:
         sent = sentence_of[segs[k][0]]
+        if first_norm[k] in ("we", "i", "im", "were", "you", "youre"):
+            return None  # "...full of smoke; we are shifting to emergency steering in the tiller flat": no list item
         # a list closed by "and": "the hotel and the market square are all clear"
         j = k + 1
         while j < len(segs) and sentence_of[segs[j][0]] == sent and (j in hollow or (seg_places.get(j) and not seg_cues.get(j))):

@@ -66,7 +66,12 @@ petrol all over|fuel all over|diesel all over|oil all over|petrol everywhere|die
 petrol leak|diesel leak|fuel spill|petrol spill|diesel spill|exploding|explode|could explode|
 wall's fallen|wall has fallen|walls have fallen|roof's fallen|roof has fallen|ceiling's fallen|ceiling has fallen|
 chimney's fallen|chimney has fallen|fallen masonry|fallen tree|tree's fallen|tree has fallen|tree down|trees down|
-has fallen into|have fallen into|fallen into the|shifting|sliding|bulging|bulging out|could let go|might let go|about to let go|going to let go|
+crowd crush|crowd surge|surge at|surge in|surging|crammed|packed solid|pressed flat|pressed against|pushed up against|
+crushing|pile-up|pile up|overcrowded|stampede|people pushing|everyone pushing|crushed against|being crushed against|
+crush in there|it's a crush|petrol on the water|fuel on the water|oil on the water|diesel on the water|petrol|diesel|avgas|kerosene|
+has fallen into|have fallen into|fallen into the|is shifting|s shifting|its shifting|keeps shifting|started shifting|
+sliding|bulging|there's water in|theres water in|water pouring in|water's pouring in|water is pouring in|
+water's still pouring|water still pouring in|water is come in|bulging out|could let go|might let go|about to let go|going to let go|
 cracked open|split in two|full of water|filled with water|filling with water|filling up with water|it's going under|it's gone under|going under fast|all under|all under water|roofs only showing|only the roofs showing|
 floor's gone under|floor has gone under|whole floor's gone under|
 """.replace("\n", ""))
@@ -83,7 +88,7 @@ structurally sound|intact|usable|refuge|sanctuary|holding area|collection point|
 welfare point|holding point|muster point|muster station|assembly point|assembly area|evacuee assembly area|
 reception centre|reception center|rest center|high ground|taking evacuees|taking in evacuees|open as a rest centre|
 opened as a rest centre|safe ground|dry and safe|bone dry|warming centre|warm and dry|sheltering there|
-empty and checked|checked and empty|evacuated and checked|searched and clear|
+meeting point|the meeting point|empty and checked|checked and empty|evacuated and checked|searched and clear|
 """.replace("\n", ""))
 
 _add(CRITICAL, """
@@ -120,7 +125,7 @@ still in there|still in there somewhere|can't find him|can't find her|can't find
 people coughing|few of them collapsed|some of them collapsed|collapsed on the floor|
 live find|a live find|indicating a find|can't get down|cannot get down|can't get downstairs|cut his arm|cut her arm|
 cut his hand|cut his head|cut her head|badly cut|bleeding heavily|can't get the doors open|can't get the door open|
-is sick|are sick|sick inside|feeling sick|being sick|vomiting|throwing up|taken ill|feeling ill|
+is lost|he's lost|she's lost|got lost|lost child|lost kid|gone missing|has gone missing|is sick|are sick|sick inside|feeling sick|being sick|vomiting|throwing up|taken ill|feeling ill|
 send a boat|please send a boat|need a boat|send help|please send help|come and get us|come get us|get us out|
 please come|please hurry|please help us|fire fighter down|fireman down|fire fighter injured|not answering|isn't answering|he's not answering|she's not answering|
 just lying there|lying there|lying on the floor|lying on the ground|fell off|fallen off|took a fall|
@@ -147,7 +152,8 @@ CANCEL_AFTER = ["is out", "s out", "are out", "was out", "put out", "out now", "
                 "turned off", "shut off", "capped", "receded", "drained", "false alarm",
                 "all rescued", "rescued", "evacuated", "got out", "out safely", "accounted for",
                 "no longer", "taken to hospital", "been taken to hospital", "been extracted",
-                "been brought out", "lifted off", "been lifted off", "winched up", "been winched up", "taken off",
+                "been brought out", "been shored", "shored up", "been shored up", "shored", "holding now", "it's holding",
+                "knocked down", "been knocked down", "lifted off", "been lifted off", "winched up", "been winched up", "taken off",
                 "been taken off", "picked up", "been picked up", "is resolved", "resolved", "withdrawn", "been withdrawn",
                 "was a mix up", "a mix up", "isolated", "been isolated", "made safe", "been made safe",
                 "boomed off", "been boomed", "dispersed", "been dispersed", "cleaned up", "been cleaned up",
@@ -491,6 +497,9 @@ POSSESSIVE_RELATIONS = {("neighbour",): "next to", ("neighbor",): "next to", ("n
                         ("neighbouring", "building"): "next to", ("neighboring", "building"): "next to"}
 
 # Parts of a building between a relation and its anchor ("built onto the side of the mill").
+# "at the foot of X" said of a danger or a person is where it is, at X, unless the KB names a relation so
+# ("at the back of the square" stays the behind relation).
+LOCATIVE_PARTS = {"foot", "bottom", "base", "top", "front"}
 PART_NOUNS = {"side", "wall", "end", "rear", "corner", "gable", "flank"}
 
 # Words for people: "<person> collapsed" is a casualty, not a structural collapse.
@@ -504,6 +513,10 @@ for _p in PERSON_NOUNS:
     ROLE_CUES[f"{_p} has collapsed"] = CRITICAL
     ROLE_CUES[f"{_p} s collapsed"] = CRITICAL
 
+# Danger words that say what happened to a person when a person is their subject ("two residents have
+# collapsed", "one of our crew is burned very bad").
+PERSON_STATE_CUES = {("collapsed",), ("collapse",), ("collapsing",), ("burned",), ("burnt",), ("burned", "out")}
+
 # Members of the public: "<a|two|there's> <person> <at|in|under|clinging...>" is a casualty claim.
 LAY_PERSONS = {"man", "woman", "person", "people", "someone", "somebody", "child", "children", "kid", "baby",
                "resident", "fella", "guy", "bloke", "lady", "girl", "boy", "family", "occupant", "pensioner",
@@ -512,7 +525,8 @@ LAY_PERSONS = {"man", "woman", "person", "people", "someone", "somebody", "child
                "survivor", "persons"}
 # People at work there: a casualty only when pinned, under or hanging ("a forklift driver under it").
 WORKER_PERSONS = {"driver", "worker", "workman", "lad", "labourer", "passenger", "pupil", "shopper", "baker",
-                  "cleaner", "operator", "builder"}
+                  "cleaner", "operator", "builder", "steward", "stewardess", "crewman", "deckhand", "fitter",
+                  "engineer", "gardener", "fan", "punter", "marshal", "chemist", "resident", "technician"}
 PINNED_SITUATIONS = {"under", "underneath", "beneath", "clinging", "lying", "hanging", "pinned", "trapped", "floating",
                      "caught"}
 PERSON_MODIFIERS = {"elderly", "old", "young", "little", "small", "older", "adult", "injured", "disabled", "more",
@@ -580,6 +594,10 @@ RELATIVE_COPULAS = {("that", "is"), ("which", "is"), ("that", "s"), ("which", "s
 # all the kind's words: "split open" is a collapse like "collapsed" and "cracked", whatever MiniLM
 # makes of the two words alone. Ambiguous words ("leak", "danger", "blocked") belong to no kind.
 DANGER_KINDS: dict[str, list[str]] = {
+    "crowd": ["crowd crush", "crowd surge", "surge at", "surge in", "surging", "crammed", "packed solid", "pressed flat",
+              "pressed against", "pushed up against", "crushing", "pile-up", "pile up", "overcrowded", "stampede",
+              "people pushing", "everyone pushing", "crushed against", "being crushed against", "crush in there",
+              "it's a crush"],
     "fire": ["fire", "fires", "on fire", "burning", "burnt", "burned", "burned out", "burnt out", "blaze", "blazing",
              "ablaze", "flames", "flame", "in flames", "engulfed", "inferno", "alight", "well alight", "fully alight",
              "fully involved", "going up in flames", "gone up in flames", "smouldering", "smoldering", "charred",
@@ -589,42 +607,46 @@ DANGER_KINDS: dict[str, list[str]] = {
               "smoke-logged"],
     "gas": ["gas", "gas leak", "leaking gas", "smell of gas", "smells of gas", "gas smell", "strong smell of gas",
             "stinks of gas", "reeks of gas", "reeking of gas", "gas main", "gas bottles", "venting", "hissing"],
-    "chemical": ["fumes", "toxic fumes", "chemical", "chemicals", "toxic", "hazmat", "hazmat incident",
-                 "contaminated", "ammonia", "ammonia leak", "asbestos", "radiation", "spill", "spilled", "spilt",
-                 "fuel leak", "oil spill", "fuel spill", "petrol spill", "diesel spill", "petrol leak", "diesel leak",
-                 "leaking fuel", "fuel pouring", "pouring fuel", "diesel slick", "slick", "fuel slick",
-                 "petrol all over", "fuel all over", "diesel all over", "oil all over", "petrol everywhere",
-                 "diesel everywhere", "fuel everywhere"],
+    "chemical": ["petrol on the water", "fuel on the water", "oil on the water", "diesel on the water", "petrol",
+                 "diesel", "avgas", "kerosene", "fumes", "toxic fumes", "chemical", "chemicals", "toxic", "hazmat",
+                 "hazmat incident", "contaminated", "ammonia", "ammonia leak", "asbestos", "radiation", "spill",
+                 "spilled", "spilt", "fuel leak", "oil spill", "fuel spill", "petrol spill", "diesel spill",
+                 "petrol leak", "diesel leak", "leaking fuel", "fuel pouring", "pouring fuel", "diesel slick",
+                 "slick", "fuel slick", "petrol all over", "fuel all over", "diesel all over", "oil all over",
+                 "petrol everywhere", "diesel everywhere", "fuel everywhere"],
     "explosion": ["explosion", "exploded", "explosive", "blast", "exploding", "explode", "could explode"],
     "collapse": ["collapse", "collapsed", "collapsing", "caved in", "cave in", "cave-in", "caving in", "caving",
-                  "fell in", "falling down", "come down", "came down", "coming down", "about to collapse",
-                  "unstable", "crumbling", "cracked", "cracking", "cracks", "a crack", "crack right across",
-                  "cracked right across", "sagging", "structural damage", "structurally unsafe", "unsound",
-                  "structurally unsound", "compromised", "unstable structure", "partially collapsed", "bowing",
-                  "bowing out", "wall's bowing", "buckling", "buckled", "leaning", "could go any second",
-                  "roof collapsed", "roof has come in", "roof's come in", "roof came in", "ceiling has come in",
-                  "ceiling's come in", "ceiling collapsed", "given way", "gave way", "has given way",
-                  "unstable masonry", "falling in", "unstable chimney", "bulging", "bulging out", "could let go",
-                  "might let go", "about to let go", "going to let go", "cracked open",
-                  "split in two", "spongy", "floor's spongy", "sinking", "subsiding", "subsidence", "slumping",
-                  "floor's gone", "floor has gone", "floor's gone through", "gone through the floor", "roof's going",
-                  "roof is going"],
-    "fallen": ["has fallen into", "have fallen into", "fallen into the", "rubble", "wall down", "walls down", "roof's in", "roof is in", "roof's gone", "roof has gone",
-                  "roof's off", "shedding bricks", "shedding slates", "masonry falling", "falling masonry",
-                  "fallen masonry", "wall's fallen", "wall has fallen", "walls have fallen", "roof's fallen",
-                  "roof has fallen", "ceiling's fallen", "ceiling has fallen", "chimney's fallen",
-                  "chimney has fallen", "roof down", "ceiling's down", "ceiling down"],
-    "ground": ["shifting", "sliding", "landslide", "mudslide", "mud slide", "landslip", "slipping", "sinkhole", "come away", "came away"],
+                 "fell in", "falling down", "come down", "came down", "coming down", "about to collapse", "unstable",
+                 "crumbling", "cracked", "cracking", "cracks", "a crack", "crack right across",
+                 "cracked right across", "sagging", "structural damage", "structurally unsafe", "unsound",
+                 "structurally unsound", "compromised", "unstable structure", "partially collapsed", "bowing",
+                 "bowing out", "wall's bowing", "buckling", "buckled", "leaning", "could go any second",
+                 "roof collapsed", "roof has come in", "roof's come in", "roof came in", "ceiling has come in",
+                 "ceiling's come in", "ceiling collapsed", "given way", "gave way", "has given way",
+                 "unstable masonry", "falling in", "unstable chimney", "bulging", "bulging out", "could let go",
+                 "might let go", "about to let go", "going to let go", "cracked open", "split in two", "spongy",
+                 "floor's spongy", "sinking", "subsiding", "subsidence", "slumping", "floor's gone", "floor has gone",
+                 "floor's gone through", "gone through the floor", "roof's going", "roof is going"],
+    "fallen": ["has fallen into", "have fallen into", "fallen into the", "rubble", "wall down", "walls down",
+               "roof's in", "roof is in", "roof's gone", "roof has gone", "roof's off", "shedding bricks",
+               "shedding slates", "masonry falling", "falling masonry", "fallen masonry", "wall's fallen",
+               "wall has fallen", "walls have fallen", "roof's fallen", "roof has fallen", "ceiling's fallen",
+               "ceiling has fallen", "chimney's fallen", "chimney has fallen", "roof down", "ceiling's down",
+               "ceiling down"],
+    "ground": ["is shifting", "s shifting", "its shifting", "keeps shifting", "started shifting", "sliding",
+               "landslide", "mudslide", "mud slide", "landslip", "slipping", "sinkhole", "come away", "came away"],
     "water": ["flood", "floods", "flooded", "flooding", "underwater", "under water", "water rising", "rising water",
               "submerged", "knee deep", "waist deep", "chest deep", "ankle deep", "water's up", "water up to",
               "up to the windowsills", "overtopping", "burst its banks", "waterlogged", "water logged", "flooded out",
-              "water everywhere", "water coming over", "taking on water", "taking water",
-              "foot of water", "feet of water", "under a foot of water", "water coming up", "water coming in",
-              "water's coming in", "coming in under the door", "coming in under the doors", "washed away",
-              "full of water", "filled with water", "filling with water", "filling up with water",
-              "it's going under", "it's gone under", "going under fast", "all under", "all under water",
-              "roofs only showing", "only the roofs showing", "floor's gone under", "floor has gone under",
-              "whole floor's gone under", "burst main", "burst pipe", "pipe burst", "pipe's burst"],
+              "water everywhere", "water coming over", "taking on water", "taking water", "foot of water",
+              "feet of water", "under a foot of water", "water coming up", "water coming in", "water's coming in",
+              "coming in under the door", "coming in under the doors", "washed away", "there's water in",
+              "theres water in", "water pouring in", "water's pouring in", "water is pouring in",
+              "water's still pouring", "water still pouring in", "water is come in", "full of water",
+              "filled with water", "filling with water", "filling up with water", "it's going under",
+              "it's gone under", "going under fast", "all under", "all under water", "roofs only showing",
+              "only the roofs showing", "floor's gone under", "floor has gone under", "whole floor's gone under",
+              "burst main", "burst pipe", "pipe burst", "pipe's burst"],
     "current": ["strong current", "fierce current", "fast current", "swift current", "rip current", "undertow",
                 "current's ripping", "current is ripping", "current ripping", "fast flowing water",
                 "fast-flowing water", "ripping through"],
@@ -633,8 +655,7 @@ DANGER_KINDS: dict[str, list[str]] = {
     "access": ["impassable", "blocked off", "no access", "no vehicle access", "no way in", "no way through",
                "no way onto", "inaccessible", "not passable", "no through route", "can't get in", "cannot get in",
                "can't get into", "cannot get into", "can't get through", "cannot get through", "can't reach",
-               "cannot reach", "unable to reach", "unable to get in", "can't access", "cannot access",
-               "piled across",
+               "cannot reach", "unable to reach", "unable to get in", "can't access", "cannot access", "piled across",
                "lying across", "come down across", "came down across", "gridlocked", "choked with",
                "full of parked cars", "cordoned off", "shed its load", "fallen tree", "tree's fallen",
                "tree has fallen", "tree down", "trees down"],

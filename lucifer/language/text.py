@@ -28,7 +28,10 @@ ABBREVIATIONS = {"stn": "station", "bldg": "building", "opp": "opposite", "ppl":
                  "bhd": "behind", "dn": "down", "clr": "clear", "mkt": "market", "vlg": "village",
                  "cntr": "centre", "ctr": "centre", "upd": "update", "rf": "roof", "flr": "floor", "blk": "block",
                  "apt": "apartment", "gdn": "garden", "corr": "correction", "cas": "casualty", "invlvd": "involved",
-                 "consc": "conscious", "uncon": "unconscious", "uncons": "unconscious", "evac": "evacuated", "crk": "crack"}
+                 "consc": "conscious", "uncon": "unconscious", "uncons": "unconscious", "evac": "evacuated",
+                 "crk": "crack", "chan": "channel", "est": "established"}
+# Shorthand written with a full stop that does not end the sentence before a lower-case word.
+_PERIOD_ABBREVIATIONS = set(ABBREVIATIONS) | {"est", "st", "vs", "etc"}
 
 
 def norm(word: str) -> str:
@@ -119,6 +122,9 @@ def tokenize(text: str) -> Tokens:
         g = gap.replace("...", " , ").replace("…", " , ")
         # "— or is it the school? — the post office": a terminator followed by a dash or comma is a pause
         is_sent = i == 0 or (bool(_SENTENCE_END.search(g)) and not _PAUSE_AFTER_END.search(gap)) or "\n" in gap
+        if is_sent and i > 0 and gap.strip() == "." and toks[i - 1].text.lower() in _PERIOD_ABBREVIATIONS \
+                and toks[i].text[:1].islower():
+            is_sent = False  # "RVP est. taxi rank", "bldg across chan. from": an abbreviation's point
         sent.append(is_sent)
         clause.append(is_sent or bool(_CLAUSE.search(gap.strip())) or bool(_CLAUSE.search(g)))
     sentence_of = tuple(itertools.accumulate(int(x) for x in sent)) if sent else ()
