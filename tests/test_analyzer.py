@@ -660,3 +660,44 @@ def test_restarts_speakers_and_positions(kb_analyzers, kb, text, expected):
 ])
 def test_crowds_ships_and_the_people_on_them(more_analyzers, kb, text, expected):
     assert claims(more_analyzers[kb], text) == expected
+
+
+@pytest.mark.parametrize(("kb", "text", "expected"), [
+    # what is said of a list's last place after "are both" is said of all of it
+    ("festival_site", "Zulu 3: the medical centre and the welfare tent are both dry, powered and open for shelter.",
+     [("medical centre", "refuge"), ("welfare tent", "refuge")]),
+    # the KB's own relation name is its own, whatever synonym group ("below": looms_over read backwards) has it
+    ("festival_site", "The campsite downhill from the showers is under a foot of water.", [("red campsite", "site_damage")]),
+    ("festival_site", "no fire at the dance tent, repeat, no fire at the dance tent, it was the smoke machine", []),
+    # an acronym needs no article; "compartment" heads a description; open links chain, and "aft" reads "forward" back
+    ("ferry_ship", "Chief engineer to bridge: engine room and ECR both checked, dry and safe, all clear down here.",
+     [("engine control room", "clear_and_safe"), ("engine room", "clear_and_safe")]),
+    ("ferry_ship", "the compartment through the watertight door from the bow thruster room is flooding",
+     [("ballast pump room", "water_ingress")]),
+    ("ferry_ship", "OOW log 0309: bilge alarm in the space just aft of the space just aft of the ECR.",
+     [("steering gear room", "water_ingress")]),
+])
+def test_lists_own_relation_names_and_ship_directions(more_analyzers, kb, text, expected):
+    assert claims(more_analyzers[kb], text) == expected
+
+
+def test_falls_frostbite_and_things_buried():
+    an = ReportAnalyzer(load_kb(ROOT / "knowledge_bases" / "alpine_village"), get_embedder())
+    assert claims(an, "my husband, he fall on the ice at the skating rink, he cannot stand up") == [
+        ("ice rink", "person_in_need")]
+    # a place said again after a semicolon is no restart: the first mention keeps its own claim
+    assert claims(an, "Patrol: frostbite case at the berghaus; the mountain hut is otherwise secure") == [
+        ("edelweiss hut", "person_in_need"), ("edelweiss hut", "refuge")]
+    assert claims(an, "avalanche path's through the main car park, cars buried, no people though") == [
+        ("lower car park", "avalanche_risk")]
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    ("[Dispatcher: Is the bakery on fire?] Yes. Flames everywhere.", [("bakery", "hazard")]),
+    ("Is anyone hurt at the bank? Yes, my husband.", [("bank", "victim")]),
+    ("Is the library safe? I don't know.", []),
+    ("the square's clear but the bank, the bank's got a chemical spill, no, sorry, a gas leak",
+     [("bank", "hazard"), ("market square", "safe_zone")]),
+])
+def test_a_question_answered_yes_says_what_is_so(analyzer, text, expected):
+    assert claims(analyzer, text) == expected

@@ -307,11 +307,15 @@ class ReportAnalyzer:
             opposite = lx.INVERSE_PHRASES.get(canon)
             if opposite:
                 owned.setdefault(opposite, phrase)
+        own_names = {norm_phrase(rel.phrase): rel.phrase for rel in self.kb.relations}
         for rel in self.kb.relations:
+            name = set(norm_phrase(rel.phrase))
             for form, inverse in _relation_forms(rel.phrase):
                 key = norm_phrase(form)
+                if own_names.get(key, rel.phrase) != rel.phrase:
+                    continue  # the KB's own name, "downhill_from", is that relation's, whatever group has its words
                 held = forms.get(key)
-                if held is not None and owned.get(held[0], rel.phrase) != rel.phrase:
+                if held is not None and owned.get(held[0], rel.phrase) != rel.phrase and not name <= set(key):
                     continue
                 forms[key] = (rel.phrase, inverse)
         for key, val in list(forms.items()):
@@ -478,8 +482,10 @@ class ReportAnalyzer:
                 k -= 1  # "the big rusty dredger": the article before the adjectives
             if k < a - 1 and norms[k] in lx.ARTICLES:
                 prev = norms[k]
+            acronym = b == a + 1 and a > 0 and len(toks.tokens[a].text) >= 2 and toks.tokens[a].text.isupper()
+            # (not the first word: "ECR to bridge" is who calls)
             if norms[a:b] in self._needs_article and prev not in lx.DETERMINERS | {"our", "your", "my", "his", "her"} \
-                    and not self._telegraphic_subject(toks, norms, a, b) \
+                    and not acronym and not self._telegraphic_subject(toks, norms, a, b) \
                     and not (log and (b - a >= 2 or prev in lx.PREPOSITIONS and len(norms[a]) >= 5)):
                 # the KB wrote "the tower": "bell tower" is not it (a log drops articles: "fire LPG plant",
                 # "leak at bldg at mouth of galleria")
@@ -922,8 +928,17 @@ class ReportAnalyzer:
     def _resolve_open(self, ex: Extraction, toks: Tokens, norms: tuple[str, ...], place_tokens: set[int],
                       marker_tokens: set[int], cue_tokens: set[int]) -> None:
         """"the place sharing a wall with the mill": an unknown linking phrase between a generic
-        head and a place, matched to the KB's relation forms with MiniLM (antonyms flip direction)."""
-        for anchor in sorted([p for p in ex.places if p.status == "active" and p.via is None], key=lambda p: -p.start_tok):
+        head and a place, matched to the KB's relation forms with MiniLM (antonyms flip direction); then
+        once more from the places so found ("the space just aft of the space just aft of the ECR")."""
+        first = len(ex.places)
+        self._resolve_open_from(ex, toks, norms, place_tokens, marker_tokens, cue_tokens,
+                                [p for p in ex.places if p.status == "active" and p.via is None])
+        self._resolve_open_from(ex, toks, norms, place_tokens, marker_tokens, cue_tokens,
+                                [p for p in ex.places[first:] if p.status == "active"])
+
+    def _resolve_open_from(self, ex: Extraction, toks: Tokens, norms: tuple[str, ...], place_tokens: set[int],
+                           marker_tokens: set[int], cue_tokens: set[int], anchors: list[PlaceMention]) -> None:
+        for anchor in sorted(anchors, key=lambda p: -p.start_tok):
             j = anchor.start_tok
             while j > 0 and norms[j - 1] in lx.DETERMINERS and anchor.start_tok - j < 2:
                 j -= 1
@@ -1275,6 +1290,16 @@ class ReportAnalyzer:
             ex.places[idx] = replace(p, status="reference", reason=f"reference point: {via}")
         ex.places.append(self._mention(toks, p.start_tok if idx >= 0 else k - 1, end, target, via=via))
         return True
+
+    def _cue_at(self, norms: tuple[str, ...], a: int) -> bool:
+        """Is the place at token ``a`` the object of a cue's preposition ("frostbite case at the berghaus")?"""
+        j = a
+        while j > 0 and norms[j - 1] in lx.DETERMINERS:
+            j -= 1
+        if j == 0 or norms[j - 1] not in ("at", "in", "on", "inside"):
+            return False
+        return any((hit := self._cues.match_at(norms, k)) is not None and hit[0] == j - 1 and hit[1][1] != "neutral"
+                   for k in range(max(0, j - 5), j - 1))
 
     def _cue_before(self, toks: Tokens, norms: tuple[str, ...], a: int) -> bool:
         """Does a cue end at most four words before token ``a``, in its clause ("a vapour cloud is still |sitting
@@ -1640,7 +1665,10 @@ class ReportAnalyzer:
                 continue
             between = norms[p.end_tok : q.start_tok]
             if between and len(between) <= 4 and all(w in lx.COPULAS | lx.FILLERS | lx.DETERMINERS | lx.PRONOUNS for w in between) \
-                    and any(ex.tokens.clause_start[k] for k in range(p.end_tok, q.start_tok + 1)):
+                    and any(ex.tokens.clause_start[k] for k in range(p.end_tok, q.start_tok + 1)) \
+                    and not any(";" in ex.tokens.gaps[k] for k in range(p.end_tok, q.start_tok + 1)) \
+                    and not self._cue_at(norms, p.start_tok):
+                # (not "frostbite case at the berghaus; the mountain hut is secure": the first has its own claim)
                 ex.places[i] = replace(p, status="retracted", reason="restarted: the speaker repeats the place")
                 ex.places[j] = replace(q, replaces=p.start_tok)
 
@@ -1827,6 +1855,11 @@ class ReportAnalyzer:
             if source == "lexicon" and norms[a:b] in lx.PERSON_STATE_CUES and self._person_category \
                     and self._person_before(norms, a):
                 cue = replace(cue, category=self._person_category, reason=f"a person {norms[a]}")
+            if source in ("lexicon", "category") and norms[a:b] == ("buried",) and a > 0 and norms[a - 1] in lx.THING_SUBJECTS \
+                    and self.kb.category_by_name[cat].role == Role.CRITICAL:
+                und = self._category_for_role(lx.UNDESIRABLE, "buried under snow and debris")
+                if und is not None:
+                    cue = replace(cue, category=und, reason="a thing buried")  # "cars buried": no person
             checked = self._apply_cue_negation(toks, norms, cue)
             cues.append(checked)
             if checked.category != cue.category:  # "no longer safe": unsafe now, and no longer safe
@@ -2007,6 +2040,11 @@ class ReportAnalyzer:
     @staticmethod
     def _answered_no(toks: Tokens, norms: tuple[str, ...], sentence: tuple[int, int]) -> bool:
         """Does the sentence open with a "no" ("Caller: no, no, the school"), past a speaker's label?"""
+        return ReportAnalyzer._answered(toks, norms, sentence, {"no", "negative", "nope", "nah"})
+
+    @staticmethod
+    def _answered(toks: Tokens, norms: tuple[str, ...], sentence: tuple[int, int], words: set[str]) -> bool:
+        """Does the sentence open with one of ``words`` ("Caller: no, no", "Yes."), past a speaker's label?"""
         a, b = sentence
         i = a
         label = next((k for k in range(a + 1, min(b, a + 4)) if toks.gaps[k].strip() == ":"), None)
@@ -2014,7 +2052,7 @@ class ReportAnalyzer:
             i = label  # "Caller:", "Heron Four:"
         while i < b and norms[i] in lx.FILLERS:
             i += 1
-        return i < b and norms[i] in ("no", "negative", "nope", "nah") and (i + 1 >= b or toks.clause_start[i + 1])
+        return i < b and norms[i] in words and (i + 1 >= b or toks.clause_start[i + 1])
 
     @staticmethod
     def _question_sentences(toks: Tokens) -> set[int]:
@@ -2223,7 +2261,8 @@ class ReportAnalyzer:
                 # (a hyphen inside a word, "walk-in", does not open the asking clause)
                 first = next((i for i in range(start, b) if norms[i] not in lx.FILLERS), start)
                 if norms[first] in lx.QUESTION_OPENERS and first not in marker_starts:
-                    asked.update(range(start, b))
+                    if not (n + 1 < len(sentences) and self._answered(toks, norms, sentences[n + 1], lx.YES_WORDS)):
+                        asked.update(range(start, b))  # (answered "Yes.", the question says what is so)
                 elif n + 1 < len(sentences) and self._answered_no(toks, norms, sentences[n + 1]):
                     asked.update(range(start, b))  # "the church is flooded? -- no, no, the school": an echo denied
                 continue
@@ -2740,6 +2779,7 @@ class ReportAnalyzer:
                         c = replace(c, polarity="affirmed", reason="contrast with a negated claim")
                     pairs.append(Claim(p, c))
         pairs.extend(self._speaker_claims(ex, norms, cues, pairs))
+        pairs.extend(self._shared_by_list(ex, norms, pairs))
         claims = [c for c in pairs if c.cue.polarity == "affirmed"]
         denied = [c for c in pairs if c.cue.polarity == "denied"]
         # the last word on a place and category stands: "the gas at the wash house ... the gas men
@@ -2760,6 +2800,38 @@ class ReportAnalyzer:
         denied.extend(c for c in claims if c.key in revoked)
         claims = [c for c in claims if c.key not in revoked]
         return claims, denied
+
+    @staticmethod
+    def _shared_by_list(ex: Extraction, norms: tuple[str, ...], pairs: list[Claim]) -> list[Claim]:
+        """"the medical centre and the welfare tent are both dry, powered and open for shelter": what is said of
+        the last place of a list after "are both" / "are all" is said of every place of the list."""
+        toks = ex.tokens
+        places = sorted((p for p in ex.places if p.status == "active"), key=lambda p: p.start_tok)
+        out: list[Claim] = []
+        for idx, last in enumerate(places):
+            e = last.end_tok
+            if norms[e:e + 2] not in (("are", "both"), ("are", "all"), ("were", "both"), ("were", "all"),
+                                      ("re", "both"), ("re", "all")):
+                continue
+            listed = [last]
+            k = idx - 1
+            claimed = {id(c.place) for c in pairs}
+            while k >= 0:
+                gap = norms[places[k].end_tok:listed[0].start_tok]
+                if not set(gap) <= {"and", "the", "a", "an"} or not gap and toks.gaps[listed[0].start_tok].strip() != "," \
+                        or id(places[k]) in claimed or any(";" in toks.gaps[i] or toks.sentence_start[i]
+                                                           for i in range(places[k].end_tok, listed[0].start_tok + 1)):
+                    break  # (not "heavy smoke at the coffee house, the hotel and the square are all clear")
+                listed.insert(0, places[k])
+                k -= 1
+            if len(listed) < 2 or "and" not in norms[listed[-2].end_tok:last.start_tok]:
+                continue
+            said = [c for c in pairs if c.place is last and c.cue.start_tok >= e
+                    and toks.sentence_of[c.cue.start_tok] == toks.sentence_of[e]
+                    and not any(";" in toks.gaps[i] for i in range(e, c.cue.start_tok + 1))]
+            have = {(id(c.place), id(c.cue)) for c in pairs}
+            out.extend(Claim(p, c.cue) for p in listed[:-1] for c in said if (id(p), id(c.cue)) not in have)
+        return out
 
     def _speaker_claims(self, ex: Extraction, norms: tuple[str, ...], cues: list[CueMention],
                         pairs: list[Claim]) -> list[Claim]:

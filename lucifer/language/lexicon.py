@@ -125,7 +125,8 @@ still in there|still in there somewhere|can't find him|can't find her|can't find
 people coughing|few of them collapsed|some of them collapsed|collapsed on the floor|
 live find|a live find|indicating a find|can't get down|cannot get down|can't get downstairs|cut his arm|cut her arm|
 cut his hand|cut his head|cut her head|badly cut|bleeding heavily|can't get the doors open|can't get the door open|
-is lost|he's lost|she's lost|got lost|lost child|lost kid|gone missing|has gone missing|is sick|are sick|sick inside|feeling sick|being sick|vomiting|throwing up|taken ill|feeling ill|
+cannot stand up|can't stand up|can't walk|cannot walk|fell over|has fallen over|he fell|she fell|
+he fall|she fall|frostbite|frostbitten|frostbite case|is lost|he's lost|she's lost|got lost|lost child|lost kid|gone missing|has gone missing|is sick|are sick|sick inside|feeling sick|being sick|vomiting|throwing up|taken ill|feeling ill|
 send a boat|please send a boat|need a boat|send help|please send help|come and get us|come get us|get us out|
 please come|please hurry|please help us|fire fighter down|fireman down|fire fighter injured|not answering|isn't answering|he's not answering|she's not answering|
 just lying there|lying there|lying on the floor|lying on the ground|fell off|fallen off|took a fall|
@@ -181,7 +182,8 @@ BACK_REFERENCE_WORDS = {"it", "its", "s", "is", "has", "been", "thats", "that", 
 NEUTRAL_PHRASES = ["keep clear", "stay clear", "keep everyone clear", "keep everybody clear", "keep people clear",
                    "keep them clear", "keep the public clear", "keep well clear", "clear the public",
                    "clear everyone away", "clear everybody away", "clear people away", "clear the crowd",
-                   "smoke alarm", "smoke alarms", "fire alarm", "fire alarms", "fire exit", "fire escape",
+                   "gas monitor", "gas monitors", "gas detector", "gas detectors", "gas reading", "gas readings",
+                   "smoke alarm", "smoke alarms", "smoke machine", "smoke machines", "fog machine", "haze machine", "fire alarm", "fire alarms", "fire exit", "fire escape",
                    "fire brigade", "fire crew", "fire engine", "fire truck", "fire service", "fire department",
                    "fire team", "firefighter", "firefighters", "fire fighter", "fire fighters", "fire hydrant",
                    "fire door", "gas mask", "gas masks", "gas company", "gas board", "gas man", "gas men",
@@ -274,7 +276,8 @@ ANTONYMS = {"upstream": "downstream", "downstream": "upstream", "upriver": "down
             "front": "back", "back": "front", "inside": "outside", "outside": "inside", "higher": "lower",
             "lower": "higher", "feeds": "fed", "supplies": "supplied", "seaward": "landward",
             "landward": "seaward", "inland": "seaward", "up": "down", "down": "up", "upwind": "downwind",
-            "downwind": "upwind", "windward": "leeward", "leeward": "windward"}
+            "downwind": "upwind", "windward": "leeward", "leeward": "windward", "forward": "aft", "aft": "forward",
+            "fore": "aft", "ahead": "astern", "astern": "ahead", "port": "starboard", "starboard": "port"}
 # Direction words of relation names, each with the ways a report says it; a relation named with
 # one ("seaward_of", "uphill_from") is also matched by the others, and backwards by the opposite family.
 DIRECTION_FAMILIES: dict[str, list[str]] = {
@@ -335,7 +338,7 @@ GENERIC_HEADS = {
     "space", "green", "lawn", "garden", "gardens", "road", "street", "alley", "terrace", "plot", "land", "apartments",
     "flats", "bay", "wing", "hotel", "inn", "library", "hospital", "quarter", "section", "zone", "ones",
     "neighbour", "neighbor", "door", "location", "address", "greenspace", "premise", "whatever", "what", "works", "work",
-    "row", "parade", "arcade", "kiosk", "stall", "lodge", "chapel",
+    "row", "parade", "arcade", "kiosk", "stall", "lodge", "chapel", "compartment", "tent", "deck", "campsite",
 }
 
 FILLERS = {"uh", "um", "er", "erm", "ah", "eh", "hmm", "like", "so", "okay", "ok", "well", "yeah", "right",
@@ -515,6 +518,9 @@ for _p in PERSON_NOUNS:
 
 # Danger words that say what happened to a person when a person is their subject ("two residents have
 # collapsed", "one of our crew is burned very bad").
+# Person words that say what happened to a thing when a thing is their subject ("cars buried").
+THING_SUBJECTS = {"car", "vehicle", "van", "truck", "lorry", "bus", "road", "track", "path", "lift", "entrance",
+                  "door", "gate", "bike", "tent", "hut"}
 PERSON_STATE_CUES = {("collapsed",), ("collapse",), ("collapsing",), ("burned",), ("burnt",), ("burned", "out")}
 
 # Members of the public: "<a|two|there's> <person> <at|in|under|clinging...>" is a casualty claim.
@@ -539,6 +545,8 @@ PERSON_SITUATIONS = {"at", "in", "on", "under", "underneath", "beneath", "inside
                      "crying", "stranded", "left", "behind", "stuck", "still", "down", "floating", "caught"}
 
 # A sentence opening with one of these, then one of the subjects, asks even without a "?" ("is the square safe").
+# One-word answers that confirm the question before them ("Is the bakery on fire? Yes.").
+YES_WORDS = {"yes", "yeah", "yep", "yup", "affirm", "affirmative", "correct", "aye", "confirmed"}
 YES_NO_OPENERS = {"is", "are", "was", "were", "has", "have", "can", "could", "does", "did", "do", "should"}
 YES_NO_SUBJECTS = {"the", "there", "anyone", "anybody", "anything", "it", "that", "this"}
 # A clause opening with one of these and ending in "?" asks rather than reports.
