@@ -701,3 +701,14 @@ def test_falls_frostbite_and_things_buried():
 ])
 def test_a_question_answered_yes_says_what_is_so(analyzer, text, expected):
     assert claims(analyzer, text) == expected
+
+
+@pytest.mark.parametrize(("kb", "text", "expected"), [
+    ("knowledge_base", "omg the bank's on fire— wait no, that's just the emergency lights flashing, sorry chat, "
+                       "false alarm, the bank's not on fire", []),
+    ("knowledge_base", "man down at the fire st-- at the police station", [("police station", "victim")]),
+    ("knowledge_bases/saltmarsh_airfield", "no fire at the tower, repeat no fire at the tower, it was burnt toast", []),
+    ("knowledge_bases/riverbend", "fire at the boathouse is out and the casualty's been handed to the ambulance crew", []),
+])
+def test_revocations_and_false_alarms_of_unseen_wording(kb, text, expected):
+    assert claims(ReportAnalyzer(load_kb(ROOT / kb), get_embedder()), text) == expected

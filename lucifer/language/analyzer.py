@@ -707,6 +707,9 @@ class ReportAnalyzer:
             frag = t.text.lower()
             if frag in lx.FUNCTION_WORDS or frag in ("he", "she", "we", "i", "me", "you", "him", "her", "my"):
                 continue  # "he- he fell": a stutter on a pronoun is no cut-off name
+            if t.i > 0 and any((hit := self._cues.match_at(toks.norms(0, len(toks)), k)) is not None
+                               and hit[0] == t.i + 1 and k < t.i for k in range(max(0, t.i - 3), t.i)):
+                continue  # "the bank's on fire— wait": a cue said whole, not "fire st—"
             for lm in self.kb.landmarks:
                 for form in lm.surface_forms:
                     words = list(name_words(form))
@@ -1878,7 +1881,8 @@ class ReportAnalyzer:
         claims, denied = self._associate(ex, cues)
         if self.embedder is not None and self.semantic_fallback:
             self._all_cues_now = cues
-            extra = self._semantic_claims(ex, claims, denied)
+            denied_keys = {c.key for c in denied}
+            extra = [c for c in self._semantic_claims(ex, claims, denied) if c.key not in denied_keys]
             claims.extend(extra)
             cues.extend(c.cue for c in extra)
         return Classification(cues, claims, denied)
@@ -2340,9 +2344,10 @@ class ReportAnalyzer:
         """"... the smoke was a false alarm": every claim of that sentence is denied."""
         sentence_of = toks.sentence_of
         alarms: dict[int, int] = {}  # sentence -> the token before which its claims are denied
-        for phrase in lx.FALSE_ALARM:
-            key = norm_phrase(phrase)
+        for phrase, key in _FALSE_ALARM_KEYS:
             for i in range(len(norms) - len(key) + 1):
+                if norms[i] != key[0]:
+                    continue
                 stutter = i + 1 + len(key) <= len(norms) and norms[i] == key[0] \
                     and norms[i + 1 : i + 1 + len(key)] == key  # "are, are false"
                 if norms[i : i + len(key)] == key or stutter:
@@ -2560,8 +2565,7 @@ class ReportAnalyzer:
         toks = ex.tokens
         norms = toks.norms(0, len(toks))
         marker_tokens = {i for a, b, _ in ex.markers for i in range(a, b)}
-        coord = {i for phrase in lx.COORDINATOR_PHRASES for i in range(len(norms))
-                 if norms[i : i + len(phrase.split())] == norm_phrase(phrase)}
+        coord = {i for key in _COORDINATOR_KEYS for i in range(len(norms)) if norms[i : i + len(key)] == key}
         cuts = [0]
         for i in range(1, len(toks)):
             if toks.clause_start[i] or norms[i] in lx.COORDINATORS or i in coord or i in marker_tokens and (i - 1) not in marker_tokens:
@@ -2975,6 +2979,10 @@ def _same_stem(a: str, b: str) -> bool:
     k = max(4, n - 3)
     return a[:k] == b[:k] and (a.startswith(b[: len(b) - 3]) or b.startswith(a[: len(a) - 3]) or a[:5] == b[:5])
 
+
+# Coordinating phrases and false-alarm markers as token keys, computed once.
+_COORDINATOR_KEYS = [norm_phrase(p) for p in lx.COORDINATOR_PHRASES]
+_FALSE_ALARM_KEYS = [(p, norm_phrase(p)) for p in lx.FALSE_ALARM]
 
 # The withdrawal markers ("scratch that") as token keys joined by spaces.
 _WITHDRAW_KEYS = frozenset(" ".join(norm_phrase(m)) for m in lx.WITHDRAW_MARKERS)

@@ -153,7 +153,8 @@ CANCEL_AFTER = ["is out", "s out", "are out", "was out", "put out", "out now", "
                 "turned off", "shut off", "capped", "receded", "drained", "false alarm",
                 "all rescued", "rescued", "evacuated", "got out", "out safely", "accounted for",
                 "no longer", "taken to hospital", "been taken to hospital", "been extracted",
-                "been brought out", "been shored", "shored up", "been shored up", "shored", "holding now", "it's holding",
+                "been brought out", "handed to the ambulance crew", "handed over to the ambulance", "been handed over",
+                "been handed to the ambulance crew", "been shored", "shored up", "been shored up", "shored", "holding now", "it's holding",
                 "knocked down", "been knocked down", "lifted off", "been lifted off", "winched up", "been winched up", "taken off",
                 "been taken off", "picked up", "been picked up", "is resolved", "resolved", "withdrawn", "been withdrawn",
                 "was a mix up", "a mix up", "isolated", "been isolated", "made safe", "been made safe",
@@ -172,7 +173,8 @@ CANCEL_CLAUSES = {"no sign of him", "no sign of her", "no sign of them", "no sig
 CANCEL_PEOPLE_ONLY = {"all rescued", "rescued", "evacuated", "got out", "out safely", "accounted for",
                       "taken to hospital", "been taken to hospital", "been extracted", "been brought out",
                       "lifted off", "been lifted off", "winched up", "been winched up", "taken off", "been taken off",
-                      "picked up", "been picked up"}
+                      "picked up", "been picked up", "handed to the ambulance crew", "handed over to the ambulance",
+                      "been handed over", "been handed to the ambulance crew"}
 
 # Words that open a clause speaking again of the thing just named ("..., it's drained now").
 BACK_REFERENCE_WORDS = {"it", "its", "s", "is", "has", "been", "thats", "that", "was", "they", "theyre", "are", "re",
@@ -183,6 +185,7 @@ NEUTRAL_PHRASES = ["keep clear", "stay clear", "keep everyone clear", "keep ever
                    "keep them clear", "keep the public clear", "keep well clear", "clear the public",
                    "clear everyone away", "clear everybody away", "clear people away", "clear the crowd",
                    "gas monitor", "gas monitors", "gas detector", "gas detectors", "gas reading", "gas readings",
+                   "burnt toast", "burned toast", "burnt food", "burned food",
                    "smoke alarm", "smoke alarms", "smoke machine", "smoke machines", "fog machine", "haze machine", "fire alarm", "fire alarms", "fire exit", "fire escape",
                    "fire brigade", "fire crew", "fire engine", "fire truck", "fire service", "fire department",
                    "fire team", "firefighter", "firefighters", "fire fighter", "fire fighters", "fire hydrant",
