@@ -492,18 +492,18 @@ def test_any_word_salad_is_safe(analyzer, words):
         assert c.cue.category in kb.category_by_name
 
 
-DELTA = ROOT / "knowledge_bases" / "delta_town"
-METRO = ROOT / "knowledge_bases" / "metro_interchange"
-HILLSIDE = ROOT / "knowledge_bases" / "hillside_quake"
-CHEMICAL = ROOT / "knowledge_bases" / "chemical_works"
-PORT = ROOT / "knowledge_bases" / "container_port"
+class _AnalyzerPerKB(dict):
+    """Analyzers by KB directory name ("delta_town" under knowledge_bases/, or "knowledge_base"), built once."""
+
+    def __missing__(self, name: str) -> ReportAnalyzer:
+        path = ROOT / name if name == "knowledge_base" else ROOT / "knowledge_bases" / name
+        self[name] = ReportAnalyzer(load_kb(path), get_embedder())
+        return self[name]
 
 
 @pytest.fixture(scope="module")
 def kb_analyzers() -> dict[str, ReportAnalyzer]:
-    emb = get_embedder()
-    return {path.name: ReportAnalyzer(load_kb(path), emb) for path in (DELTA, METRO, HILLSIDE, CHEMICAL, PORT,
-                                                                        HARBOURSIDE)}
+    return _AnalyzerPerKB()
 
 
 def test_a_kind_of_danger_reads_as_one_category(kb_analyzers):
@@ -601,16 +601,6 @@ def test_slips_counts_and_stutters(analyzer, kb_analyzers):
                                               "the floor's cracking") == [("grain silo", "peril")]
 
 
-FESTIVAL = ROOT / "knowledge_bases" / "festival_site"
-FERRY = ROOT / "knowledge_bases" / "ferry_ship"
-
-
-@pytest.fixture(scope="module")
-def more_analyzers() -> dict[str, ReportAnalyzer]:
-    emb = get_embedder()
-    return {path.name: ReportAnalyzer(load_kb(path), emb) for path in (FESTIVAL, FERRY)}
-
-
 @pytest.mark.parametrize(("kb", "text", "expected"), [
     # a cue said again at once is one cue: the first binds to nothing said before it
     ("delta_town", "from the cottage I can see the swing bridge and the mast, and, uh, there's a fire, there's a "
@@ -658,8 +648,8 @@ def test_restarts_speakers_and_positions(kb_analyzers, kb, text, expected):
      [("ballast pump room", "water_ingress"), ("bow thruster room", "water_ingress")]),
     ("ferry_ship", "please, help, my son he is lost, he was in the cinema", [("cinema lounge", "person_in_danger")]),
 ])
-def test_crowds_ships_and_the_people_on_them(more_analyzers, kb, text, expected):
-    assert claims(more_analyzers[kb], text) == expected
+def test_crowds_ships_and_the_people_on_them(kb_analyzers, kb, text, expected):
+    assert claims(kb_analyzers[kb], text) == expected
 
 
 @pytest.mark.parametrize(("kb", "text", "expected"), [
@@ -677,12 +667,12 @@ def test_crowds_ships_and_the_people_on_them(more_analyzers, kb, text, expected)
     ("ferry_ship", "OOW log 0309: bilge alarm in the space just aft of the space just aft of the ECR.",
      [("steering gear room", "water_ingress")]),
 ])
-def test_lists_own_relation_names_and_ship_directions(more_analyzers, kb, text, expected):
-    assert claims(more_analyzers[kb], text) == expected
+def test_lists_own_relation_names_and_ship_directions(kb_analyzers, kb, text, expected):
+    assert claims(kb_analyzers[kb], text) == expected
 
 
-def test_falls_frostbite_and_things_buried():
-    an = ReportAnalyzer(load_kb(ROOT / "knowledge_bases" / "alpine_village"), get_embedder())
+def test_falls_frostbite_and_things_buried(kb_analyzers):
+    an = kb_analyzers["alpine_village"]
     assert claims(an, "my husband, he fall on the ice at the skating rink, he cannot stand up") == [
         ("ice rink", "person_in_need")]
     # a place said again after a semicolon is no restart: the first mention keeps its own claim
@@ -707,8 +697,8 @@ def test_a_question_answered_yes_says_what_is_so(analyzer, text, expected):
     ("knowledge_base", "omg the bank's on fire— wait no, that's just the emergency lights flashing, sorry chat, "
                        "false alarm, the bank's not on fire", []),
     ("knowledge_base", "man down at the fire st-- at the police station", [("police station", "victim")]),
-    ("knowledge_bases/saltmarsh_airfield", "no fire at the tower, repeat no fire at the tower, it was burnt toast", []),
-    ("knowledge_bases/riverbend", "fire at the boathouse is out and the casualty's been handed to the ambulance crew", []),
+    ("saltmarsh_airfield", "no fire at the tower, repeat no fire at the tower, it was burnt toast", []),
+    ("riverbend", "fire at the boathouse is out and the casualty's been handed to the ambulance crew", []),
 ])
-def test_revocations_and_false_alarms_of_unseen_wording(kb, text, expected):
-    assert claims(ReportAnalyzer(load_kb(ROOT / kb), get_embedder()), text) == expected
+def test_revocations_and_false_alarms_of_unseen_wording(kb_analyzers, kb, text, expected):
+    assert claims(kb_analyzers[kb], text) == expected

@@ -700,6 +700,7 @@ class ReportAnalyzer:
     def _false_starts(self, toks: Tokens, taken: set[int]) -> list[PlaceMention]:
         """Cut-off words ("the fire st— at the police station") that begin a landmark name."""
         out = []
+        norms = toks.norms(0, len(toks))
         for t in toks.tokens:
             nxt_gap = toks.gaps[t.i + 1] if t.i + 1 < len(toks) else toks.text[t.end:]
             if t.i in taken or nxt_gap[:1] not in ("-", "—", "–") or len(t.text) > 6:
@@ -707,7 +708,7 @@ class ReportAnalyzer:
             frag = t.text.lower()
             if frag in lx.FUNCTION_WORDS or frag in ("he", "she", "we", "i", "me", "you", "him", "her", "my"):
                 continue  # "he- he fell": a stutter on a pronoun is no cut-off name
-            if t.i > 0 and any((hit := self._cues.match_at(toks.norms(0, len(toks)), k)) is not None
+            if t.i > 0 and any((hit := self._cues.match_at(norms, k)) is not None
                                and hit[0] == t.i + 1 and k < t.i for k in range(max(0, t.i - 3), t.i)):
                 continue  # "the bank's on fire— wait": a cue said whole, not "fire st—"
             for lm in self.kb.landmarks:
@@ -863,13 +864,14 @@ class ReportAnalyzer:
                 if found is None:
                     continue
                 a, key = found
-                related = {c for c in tails[key] for rel in self.kb.relations
-                           if {rel.subject, rel.object} == {c, anchor.landmark}}
+                related: dict[str, str] = {}  # landmark -> the first KB relation joining it to the anchor
+                for c in tails[key]:
+                    for r in self.kb.relations:
+                        if {r.subject, r.object} == {c, anchor.landmark}:
+                            related.setdefault(c, f"{r.subject} {r.relation} {r.object}")
                 if len(related) != 1:
                     break
-                target = next(iter(related))
-                via = next(f"{r.subject} {r.relation} {r.object}" for r in self.kb.relations
-                           if {r.subject, r.object} == {target, anchor.landmark})
+                target, via = next(iter(related.items()))
                 idx = ex.places.index(anchor)
                 ex.places[idx] = replace(anchor, status="reference", reason=f"reference point: {via}")
                 ex.places.append(self._mention(toks, a - 1, anchor.end_tok, target,
@@ -2042,12 +2044,7 @@ class ReportAnalyzer:
         return out
 
     @staticmethod
-    def _answered_no(toks: Tokens, norms: tuple[str, ...], sentence: tuple[int, int]) -> bool:
-        """Does the sentence open with a "no" ("Caller: no, no, the school"), past a speaker's label?"""
-        return ReportAnalyzer._answered(toks, norms, sentence, {"no", "negative", "nope", "nah"})
-
-    @staticmethod
-    def _answered(toks: Tokens, norms: tuple[str, ...], sentence: tuple[int, int], words: set[str]) -> bool:
+    def _answered(toks: Tokens, norms: tuple[str, ...], sentence: tuple[int, int], words: frozenset[str]) -> bool:
         """Does the sentence open with one of ``words`` ("Caller: no, no", "Yes."), past a speaker's label?"""
         a, b = sentence
         i = a
@@ -2267,7 +2264,7 @@ class ReportAnalyzer:
                 if norms[first] in lx.QUESTION_OPENERS and first not in marker_starts:
                     if not (n + 1 < len(sentences) and self._answered(toks, norms, sentences[n + 1], lx.YES_WORDS)):
                         asked.update(range(start, b))  # (answered "Yes.", the question says what is so)
-                elif n + 1 < len(sentences) and self._answered_no(toks, norms, sentences[n + 1]):
+                elif n + 1 < len(sentences) and self._answered(toks, norms, sentences[n + 1], lx.NO_WORDS):
                     asked.update(range(start, b))  # "the church is flooded? -- no, no, the school": an echo denied
                 continue
             opener = next((i for i in range(a, b) if norms[i] not in lx.FILLERS), a)
@@ -2348,8 +2345,7 @@ class ReportAnalyzer:
             for i in range(len(norms) - len(key) + 1):
                 if norms[i] != key[0]:
                     continue
-                stutter = i + 1 + len(key) <= len(norms) and norms[i] == key[0] \
-                    and norms[i + 1 : i + 1 + len(key)] == key  # "are, are false"
+                stutter = norms[i + 1 : i + 1 + len(key)] == key  # "are, are false"
                 if norms[i : i + len(key)] == key or stutter:
                     # "disregard my last, the spill is at the store": an earlier report is withdrawn and
                     # what follows replaces it
@@ -2811,6 +2807,8 @@ class ReportAnalyzer:
         the last place of a list after "are both" / "are all" is said of every place of the list."""
         toks = ex.tokens
         places = sorted((p for p in ex.places if p.status == "active"), key=lambda p: p.start_tok)
+        claimed = {id(c.place) for c in pairs}
+        have = {(id(c.place), id(c.cue)) for c in pairs}
         out: list[Claim] = []
         for idx, last in enumerate(places):
             e = last.end_tok
@@ -2819,7 +2817,6 @@ class ReportAnalyzer:
                 continue
             listed = [last]
             k = idx - 1
-            claimed = {id(c.place) for c in pairs}
             while k >= 0:
                 gap = norms[places[k].end_tok:listed[0].start_tok]
                 if not set(gap) <= {"and", "the", "a", "an"} or not gap and toks.gaps[listed[0].start_tok].strip() != "," \
@@ -2833,7 +2830,6 @@ class ReportAnalyzer:
             said = [c for c in pairs if c.place is last and c.cue.start_tok >= e
                     and toks.sentence_of[c.cue.start_tok] == toks.sentence_of[e]
                     and not any(";" in toks.gaps[i] for i in range(e, c.cue.start_tok + 1))]
-            have = {(id(c.place), id(c.cue)) for c in pairs}
             out.extend(Claim(p, c.cue) for p in listed[:-1] for c in said if (id(p), id(c.cue)) not in have)
         return out
 
@@ -2876,8 +2872,8 @@ class ReportAnalyzer:
                 continue
             if i > 0 and norms[i - 1] in lx.NEGATORS | {"be", "being", "to", "will", "need", "needs"}:
                 continue  # "not rescued yet", "to be lifted off": not done
-            lo = max(t for t in range(0, i + 1) if toks.sentence_start[t])
-            before = [p for p in ex.places if lo <= p.start_tok and p.end_tok <= i and p.status == "active"]
+            before = [p for p in ex.places if p.status == "active" and p.end_tok <= i
+                      and toks.sentence_of[p.start_tok] == toks.sentence_of[i]]
             if before:
                 out.append((max(before, key=lambda p: p.end_tok).landmark, i))
         return out
@@ -2989,8 +2985,6 @@ _WITHDRAW_KEYS = frozenset(" ".join(norm_phrase(m)) for m in lx.WITHDRAW_MARKERS
 
 # Closed-class words that never head a description.
 _NOT_HEADS = lx.PREPOSITIONS | lx.COPULAS | lx.FILLERS | lx.PRONOUNS | lx.INVERSE_VERBS | lx.DETERMINERS
-
-
 
 
 def _is_log(toks: Tokens) -> bool:

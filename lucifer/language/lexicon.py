@@ -547,9 +547,11 @@ PERSON_SITUATIONS = {"at", "in", "on", "under", "underneath", "beneath", "inside
                      "waving", "sat", "sitting", "lying", "hanging", "holding", "calling", "shouting", "screaming",
                      "crying", "stranded", "left", "behind", "stuck", "still", "down", "floating", "caught"}
 
+# One-word answers that confirm the question before them ("Is the bakery on fire? Yes.") or deny it
+# ("the church is flooded? -- no, no, the school").
+YES_WORDS = frozenset({"yes", "yeah", "yep", "yup", "affirm", "affirmative", "correct", "aye", "confirmed"})
+NO_WORDS = frozenset({"no", "negative", "nope", "nah"})
 # A sentence opening with one of these, then one of the subjects, asks even without a "?" ("is the square safe").
-# One-word answers that confirm the question before them ("Is the bakery on fire? Yes.").
-YES_WORDS = {"yes", "yeah", "yep", "yup", "affirm", "affirmative", "correct", "aye", "confirmed"}
 YES_NO_OPENERS = {"is", "are", "was", "were", "has", "have", "can", "could", "does", "did", "do", "should"}
 YES_NO_SUBJECTS = {"the", "there", "anyone", "anybody", "anything", "it", "that", "this"}
 # A clause opening with one of these and ending in "?" asks rather than reports.
