@@ -66,14 +66,6 @@ petrol all over|fuel all over|diesel all over|oil all over|petrol everywhere|die
 petrol leak|diesel leak|fuel spill|petrol spill|diesel spill|exploding|explode|could explode|
 wall's fallen|wall has fallen|walls have fallen|roof's fallen|roof has fallen|ceiling's fallen|ceiling has fallen|
 chimney's fallen|chimney has fallen|fallen masonry|fallen tree|tree's fallen|tree has fallen|tree down|trees down|
-crowd crush|crowd surge|surge at|surge in|surging|crammed|packed solid|pressed flat|pressed against|pushed up against|
-crushing|pile-up|pile up|overcrowded|stampede|people pushing|everyone pushing|crushed against|being crushed against|
-crush in there|it's a crush|petrol on the water|fuel on the water|oil on the water|diesel on the water|petrol|diesel|avgas|kerosene|
-has fallen into|have fallen into|fallen into the|is shifting|s shifting|its shifting|keeps shifting|started shifting|
-sliding|bulging|there's water in|theres water in|water pouring in|water's pouring in|water is pouring in|
-water's still pouring|water still pouring in|water is come in|bulging out|could let go|might let go|about to let go|going to let go|
-cracked open|split in two|full of water|filled with water|filling with water|filling up with water|it's going under|it's gone under|going under fast|all under|all under water|roofs only showing|only the roofs showing|
-floor's gone under|floor has gone under|whole floor's gone under|
 """.replace("\n", ""))
 
 _add(DESIRABLE, """
@@ -677,3 +669,9 @@ DANGER_KINDS: dict[str, list[str]] = {
 DANGER_KIND_PARTS = {"roof", "roofs", "wall", "walls", "ceiling", "floor", "chimney", "tree", "trees", "door", "doors",
                      "pipe", "main", "bricks", "slates", "right", "across", "through", "everywhere", "going", "could",
                      "might", "about", "second", "under", "over", "coming", "gone", "fully", "well", "again", "risk"}
+
+# Every kind's phrase is an undesirable cue: a new one needs writing only in its kind (older ones are
+# in the UNDESIRABLE list above as well).
+for _phrases in DANGER_KINDS.values():
+    for _p in _phrases:
+        ROLE_CUES.setdefault(_p, UNDESIRABLE)
