@@ -122,3 +122,22 @@ def test_optional_files_may_be_absent(tmp_path):
     (kb_dir / "query_options.yaml").unlink(missing_ok=True)
     kb = load_kb(kb_dir)
     assert kb.glossary == () and kb.query_options == ()
+
+
+def test_landmarks_may_overlap_and_a_shared_cell_goes_to_the_smaller_one(tmp_path):
+    # SPEC §1 does not ask for disjoint landmarks: a kiosk inside a square, a refuge bay inside a tunnel
+    kb_dir = tmp_path / "kb"
+    shutil.copytree(KB, kb_dir)
+    before = load_kb(kb_dir).cell_owner
+    _edit(kb_dir / "map.yaml", lambda d: d["landmarks"].extend([
+        {"name": "south quarter", "cells": [[4, 0], [4, 1], [4, 2], [4, 3], [4, 4]]},
+        {"name": "flower kiosk", "cells": [[4, 1]], "description": "A kiosk inside the park."},
+    ]))
+    kb = load_kb(kb_dir)
+    assert kb.cells_of("flower kiosk") == [[4, 1]]
+    assert kb.cells_of("south quarter") == [[4, c] for c in range(5)]
+    # the big one listed later takes no cell from the smaller ones; a one-cell place listed later
+    # than another one-cell place leaves it its cell
+    assert kb.cell_owner == before
+    _edit(kb_dir / "map.yaml", lambda d: d["landmarks"].insert(0, {"name": "phone box", "cells": [[4, 1]]}))
+    assert load_kb(kb_dir).cell_owner[(4, 1)] == "phone box"

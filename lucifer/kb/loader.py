@@ -91,8 +91,19 @@ class KnowledgeBase:
 
     @cached_property
     def cell_owner(self) -> dict[tuple[int, int], str]:
-        """Map each covered cell to the landmark that covers it."""
-        return {tuple(c): lm.name for lm in self.landmarks for c in lm.cells}
+        """Map each covered cell to the landmark that covers it.
+
+        Landmarks may overlap (a refuge bay inside a tunnel bore, a shop inside a service area): a
+        shared cell goes to the landmark that covers the fewest cells, the most specific place, and
+        between equals to the one listed first.
+        """
+        owner: dict[tuple[int, int], str] = {}
+        for lm in self.landmarks:
+            for c in lm.cells:
+                held = owner.get(tuple(c))  # type: ignore[arg-type]
+                if held is None or len(lm.cells) < len(self.landmark_by_name[held].cells):
+                    owner[tuple(c)] = lm.name  # type: ignore[index]
+        return owner
 
 
 def resolve_kb_dir(kb: str | os.PathLike[str] | None = None) -> Path:
@@ -227,7 +238,6 @@ def _check_cross_rules(
 
     rows, cols = mapf.grid.rows, mapf.grid.cols
     names: dict[str, str] = {}  # lowercased surface form -> owning landmark
-    cell_owner: dict[tuple[int, int], str] = {}
     for i, lm in enumerate(mapf.landmarks):
         label = f"landmarks[{i}] ({lm.name})"
         key = lm.name.lower()
@@ -245,10 +255,6 @@ def _check_cross_rules(
             r, c = cell
             if not (0 <= r < rows and 0 <= c < cols):
                 problems.append(KBProblem(MAP, label, f"cell [{r}, {c}] is outside the {rows}x{cols} grid"))
-            elif tuple(cell) in cell_owner and cell_owner[tuple(cell)] != lm.name:
-                problems.append(KBProblem(MAP, label, f"cell [{r}, {c}] is already covered by landmark '{cell_owner[tuple(cell)]}'"))
-            else:
-                cell_owner[tuple(cell)] = lm.name
     canon = {lm.name for lm in mapf.landmarks}
     for i, rel in enumerate(mapf.relations):
         label = f"relations[{i}] ({rel.subject} {rel.relation} {rel.object})"
