@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev14) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev15) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -25,6 +25,8 @@ HILLSIDE = ROOT / "knowledge_bases" / "hillside_quake"
 CHEMICAL = ROOT / "knowledge_bases" / "chemical_works"
 FESTIVAL = ROOT / "knowledge_bases" / "festival_site"
 FERRY = ROOT / "knowledge_bases" / "ferry_ship"
+CAMPGROUND = ROOT / "knowledge_bases" / "lakeside_campground"
+TUNNEL = ROOT / "knowledge_bases" / "road_tunnel"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -84,6 +86,11 @@ SETS = {
     "dev14/festival_site": _set("dev14/festival_site.jsonl", FESTIVAL, "fs",
                                 {"standard": 30, "messy": 30, "advanced_messy": 30}),
     "dev14/ferry_ship": _set("dev14/ferry_ship.jsonl", FERRY, "fr", {"standard": 30, "messy": 30, "advanced_messy": 30}),
+    "dev15/market_square": _set("dev15/market_square.jsonl", MARKET_SQUARE, "d15",
+                                {"standard": 20, "messy": 55, "advanced_messy": 45}, sep=""),
+    "dev15/lakeside_campground": _set("dev15/lakeside_campground.jsonl", CAMPGROUND, "lc",
+                                      {"standard": 30, "messy": 30, "advanced_messy": 30}),
+    "dev15/road_tunnel": _set("dev15/road_tunnel.jsonl", TUNNEL, "rt", {"standard": 30, "messy": 30, "advanced_messy": 30}),
 }
 
 
