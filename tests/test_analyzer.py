@@ -702,3 +702,57 @@ def test_a_question_answered_yes_says_what_is_so(analyzer, text, expected):
 ])
 def test_revocations_and_false_alarms_of_unseen_wording(kb_analyzers, kb, text, expected):
     assert claims(kb_analyzers[kb], text) == expected
+
+
+@pytest.mark.parametrize(("kb", "text", "expected"), [
+    # an ordinal, "the former" / "the latter" or "the other one" names a place of the last list said
+    ("knowledge_base", "I checked the bank and the hotel. The first one has a man collapsed in the lobby.",
+     [("bank", "victim")]),
+    ("knowledge_base", "Messages about the school and the church: the former is a shelter now, the latter has smoke "
+                       "coming from the roof.", [("church", "hazard"), ("school", "safe_zone")]),
+    ("knowledge_base", "Teams went to the cafe and the library. The library is empty. The other one, though, has "
+                       "two people trapped.", [("cafe", "victim")]),
+    ("lakeside_campground", "we looked at the boathouse and the chapel, the second of those is on fire",
+     [("chapel", "fire_and_smoke")]),
+    # what an ordinal adds stands beside the list's claim; where they disagree (a shelter, then a danger)
+    # the ordinal's word is the last
+    ("knowledge_base", "Smoke at the bank and the hotel. The first one also has a man trapped.",
+     [("bank", "hazard"), ("bank", "victim"), ("hotel", "hazard")]),
+    ("knowledge_base", "Two possible shelters, the church and the cafe. The former's roof is falling in; the latter's "
+                       "open for people to shelter.", [("cafe", "safe_zone"), ("church", "hazard")]),
+    ("lakeside_campground", "Checked cabin row A and cabin row B. First one, empty. Second one, a family trapped inside.",
+     [("cabin row B", "person_at_risk")]),
+    # a list counted by ordinals is not claimed as a whole; "the first crew" counts no place
+    ("knowledge_base", "Crews at the bank and the hotel, the first crew reports smoke at the garage.",
+     [("garage", "hazard")]),
+    # "both of them" / "neither of them" speak of every place of the list
+    ("knowledge_base", "We went to the bakery and the cafe, and both of them are flooded.",
+     [("bakery", "hazard"), ("cafe", "hazard")]),
+    ("knowledge_base", "I looked in the bank and the hotel. Neither of them has anyone hurt. The church has smoke.",
+     [("church", "hazard")]),
+])
+def test_ordinal_and_list_anaphora(kb_analyzers, kb, text, expected):
+    assert claims(kb_analyzers[kb], text) == expected
+
+
+@pytest.mark.parametrize(("kb", "text", "expected"), [
+    # a place negated in a later sentence takes back what an earlier one said of it ...
+    ("knowledge_base", "Smoke at the library. ... Sorry, my mistake. Not the library, the museum.", []),
+    ("knowledge_base", "Man hurt at the bakery. Later: scratch that, it wasn't the bakery. It's the cafe, he's "
+                       "unconscious.", [("cafe", "victim")]),
+    ("knowledge_base", "10:02 casualty reported in the hotel. 10:09 correction, casualty is in the bank, not the hotel.",
+     [("bank", "victim")]),
+    # ... in the categories of the negating sentence only
+    ("knowledge_base", "Fire at the school. People trapped in the library, not the school.",
+     [("library", "victim"), ("school", "hazard")]),
+    # a correction's replacement, in its sentence or the next, takes over the claim
+    ("lakeside_campground", "LOG 09:10 spot fire at the chapel. 09:12 T1 corrects: NOT chapel, it was the boathouse.",
+     [("boathouse", "fire_and_smoke")]),
+    # people got out, or nobody was there after all, revoke the casualty but not the danger
+    ("knowledge_base", "A man was trapped in the garage, they got him out of there, the garage is still burning.",
+     [("garage", "hazard")]),
+    ("knowledge_base", "Someone reported people stuck in the gym. Turns out nobody was in there after all.", []),
+    ("knowledge_base", "Two hurt in the cafe, but the paramedics have taken everybody out of the cafe now.", []),
+])
+def test_corrections_and_revocations_across_sentences(kb_analyzers, kb, text, expected):
+    assert claims(kb_analyzers[kb], text) == expected

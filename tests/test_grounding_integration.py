@@ -35,6 +35,18 @@ async def test_spec_examples():
         assert res.report[res.objects[0].span.start : res.objects[0].span.end] == "the shop attached to the bakery"
 
 
+async def test_list_anaphora_survive_the_graph_state():
+    # the extract node hands its places to the classify node through the (serialised) graph state:
+    # what an anaphor names ("both of them", "the former") must come through it whole
+    async with Grounder(KB) as g:
+        assert _pairs(await g.ground("We went to the bakery and the cafe, and both of them are flooded.")) == [
+            ("bakery", "hazard"), ("cafe", "hazard")]
+        assert _pairs(await g.ground("I looked in the bank and the hotel. Neither of them has anyone hurt.")) == []
+        assert _pairs(await g.ground("Two possible shelters, the church and the cafe. The former's roof is falling "
+                                     "in; the latter's open for people to shelter.")) == [
+            ("cafe", "safe_zone"), ("church", "hazard")]
+
+
 async def test_editing_the_kb_takes_effect_on_the_next_call(kb_copy):
     async with Grounder(kb_copy) as g:
         assert _pairs(await g.ground("fire at the observatory")) == []

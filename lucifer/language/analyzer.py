@@ -49,6 +49,9 @@ class PlaceMention:
     reason: str = ""
     via: str | None = None  # "pharmacy attached_to bakery" when reached through a relation
     replaces: int | None = None  # start token of the mention this one repairs
+    anaphor: Literal["ordinal", "both", "neither"] | None = None  # "the first one", "both of them", "neither of them"
+    also: tuple[str, ...] = ()  # the other places "both of them" / "neither of them" names
+    counted_by: int | None = None  # a list member: start token of the first ordinal that names one of its list
 
     def as_dict(self) -> dict[str, object]:
         d: dict[str, object] = {"text": self.text, "span": [self.start, self.end], "landmark": self.landmark,
@@ -523,12 +526,91 @@ class ReportAnalyzer:
         self._resolve_possessives(ex)
         self._resolve_relations(ex)
         self._resolve_itself(ex)
+        self._ordinal_anaphora(toks, norms, ex)
         self._apply_place_negation(ex)
         self._apply_restarts(ex)
         self._apply_place_repairs(ex)
         self._apply_transit(ex)
         ex.places.sort(key=lambda p: p.start_tok)
         return ex
+
+    def _ordinal_anaphora(self, toks: Tokens, norms: tuple[str, ...], ex: Extraction) -> None:
+        """"the chemist's and the coffee shop. The first one -- a woman on the floor": an ordinal, "the
+        former" / "the latter" or "the other one" names a place of the last list of places said before it.
+
+        The list is the most recent sentence (up to the anaphor) that names two or more landmarks; "the
+        other one" needs a list of two and names the one not named last. Anything that does not resolve
+        to exactly one list member ("the first car", "the second of three fires") is left alone. The
+        members of a list so named are ``counted_by`` the first such ordinal: they borrow no claim said
+        after it. "both of them" / "neither of them" name every member (``also``): what is said of the
+        mention is said of each, and after "neither" it is denied.
+        """
+        places = ex.places
+        out: list[PlaceMention] = []
+        taken = {i for p in places for i in range(p.start_tok, p.end_tok)}
+        for i in range(len(norms)):
+            word = norms[i]
+            every = word in ("both", "neither") and norms[i + 1:i + 3] in (("of", "them"), ("of", "those"), ("of", "these"))
+            start = i
+            if every:
+                i += 1  # (the mention starts at "both", as an ordinal's starts at its "the")
+            elif i in taken or not (word in lx.ORDINAL_PLACES or word == "other"):
+                continue
+            elif i > 0 and norms[i - 1] == "the":
+                start = i - 1
+            elif not (toks.clause_start[i] and norms[i + 1:i + 2] == ("one",)):
+                continue  # (a bare "First one, empty" opens its clause)
+            end = i + 1
+            nxt = norms[end] if end < len(norms) else ""
+            if every:
+                end += 1
+            elif nxt == "of" and norms[end + 1:end + 2] in (("them",), ("those",), ("these",), ("the",)):
+                after = end + 2
+                if norms[end + 1] == "the" or after < len(norms) and not toks.clause_start[after] \
+                        and norms[after] not in lx.COPULAS | lx.ANAPHOR_VERBS:
+                    continue  # "the second of those fires", "the first of the crews": counted things
+                end = after  # "the second of those is where we're mustering"
+            elif nxt in ("one", "ones") or nxt in lx.GENERIC_HEADS and end not in taken and word != "other":
+                end += 1
+            elif nxt and not toks.clause_start[end] and nxt not in lx.COPULAS | lx.ANAPHOR_VERBS \
+                    and not toks.tokens[i].text.lower().endswith(("'s", "’s")):
+                continue  # "the first crew", "the other bore": a noun the ordinal counts, not a place
+            earlier = [p for p in places + out if p.start_tok < start and p.status == "active"]
+            sentence = max(t for t in range(0, start + 1) if toks.sentence_start[t])
+            listed: list[str] = []
+            members: list[int] = []
+            for s_start in sorted({max(t for t in range(0, p.start_tok + 1) if toks.sentence_start[t]) for p in earlier},
+                                  reverse=True):
+                said = [p for p in sorted(places, key=lambda p: p.start_tok) if p.status == "active"
+                        and s_start <= p.start_tok < (start if s_start == sentence else len(norms))
+                        and max(t for t in range(0, p.start_tok + 1) if toks.sentence_start[t]) == s_start]
+                names = list(dict.fromkeys(p.landmark for p in said))
+                if len(names) >= 2:
+                    listed, members = names, [p.start_tok for p in said]
+                    break
+            if not listed:
+                continue
+            if every:
+                landmark = listed[-1]
+            elif word == "other":
+                if len(listed) != 2:
+                    continue
+                last = max((p for p in earlier if p.landmark in listed), key=lambda p: p.start_tok)
+                landmark = listed[1 - listed.index(last.landmark)]
+            else:
+                k = lx.ORDINAL_PLACES[word]
+                if k >= len(listed):
+                    continue
+                landmark = listed[k]
+            out.append(replace(self._mention(toks, start, end, landmark), anaphor=word if every else "ordinal",
+                               also=tuple(listed[:-1]) if every else (),
+                               reason=f"'{toks.text[toks.tokens[start].start:toks.tokens[end - 1].end]}' of the list "
+                                      f"{', '.join(listed)}"))
+            taken.update(range(start, end))
+            for idx, p in enumerate(places):
+                if p.start_tok in members and p.counted_by is None:
+                    places[idx] = replace(p, counted_by=start)
+        places.extend(out)
 
     def _telegraphic_subject(self, toks: Tokens, norms: tuple[str, ...], a: int, b: int) -> bool:
         """"Precinct secure, holding evacuees there": radio speech drops the article of a sentence's subject."""
@@ -1591,12 +1673,25 @@ class ReportAnalyzer:
                     sent_start = max(t for t in range(0, sent_start) if toks.sentence_start[t])
                 earlier = [q for q in ex.places if q.status == "active" and q.landmark == p.landmark
                            and sent_start <= q.start_tok < p.start_tok]
-                for q in earlier:
-                    ex.places[ex.places.index(q)] = replace(q, status="retracted", reason=f"then '{toks.tokens[j].text} {p.text}'")
+                corrects = not earlier and any(i in marker_toks or norms[i] in lx.CORRECTION_WORDS
+                                               for i in range(min(sent_start, max(0, j - 6)), j))
                 nxt = min((q for q in ex.places if q.status == "active" and q.start_tok >= p.end_tok
                            and (q.start_tok - p.end_tok <= 3 or q.start_tok - p.end_tok <= 8 and not any(
                                toks.sentence_start[i] for i in range(p.end_tok, q.start_tok + 1)))),
                           key=lambda q: q.start_tok, default=None)
+                if corrects:
+                    # "16:12 T2 corrects previous msg: NOT lower field, it was the upper caravan field": a
+                    # correction retracts the place from any earlier sentence when a place said next, in this
+                    # sentence or the one after, takes over its claims
+                    if nxt is None:
+                        nxt = min((q for q in ex.places if q.status == "active"
+                                   and p.end_tok <= q.start_tok <= p.end_tok + 12
+                                   and sum(toks.sentence_start[i] for i in range(p.end_tok, q.start_tok + 1)) <= 1),
+                                  key=lambda q: q.start_tok, default=None)
+                    earlier = [q for q in ex.places if q.status == "active" and q.landmark == p.landmark
+                               and q.start_tok < sent_start] if nxt is not None else []
+                for q in earlier:
+                    ex.places[ex.places.index(q)] = replace(q, status="retracted", reason=f"then '{toks.tokens[j].text} {p.text}'")
                 # ("not the school, they moved it, it's the library now": the next place in the sentence)
                 if earlier and nxt is not None and nxt.replaces is None:
                     ex.places[ex.places.index(nxt)] = replace(nxt, replaces=earlier[-1].start_tok)
@@ -2762,17 +2857,22 @@ class ReportAnalyzer:
             if any(q.landmark == p.landmark and q.status == "retracted" and q.start_tok < p.start_tok
                    and not q.reason.startswith(("restarted", "false start")) for q in ex.places) and p.replaces is None:
                 continue  # "that should be the town hall, the library's shut": no claim revives the library
+            # "the lodge and the car park, the first one's got smoke": a list member borrows nothing said
+            # after an ordinal names one of the list
+            counted = len(norms) if p.counted_by is None else p.counted_by
             listed = self._list_share(ex, norms, p, pairs)
             if listed:
                 # "casualties at the school, the church and the bank — no, not the bank, the town hall":
                 # the replacement takes the retracted list item's share of the list's claims
-                pairs.extend(Claim(p, c) for c in listed)
+                pairs.extend(Claim(p, c) for c in listed if c.start_tok < counted)
                 claimed_places.add(p.start_tok)
                 continue
             donor = self._donor_for_places(k, segs, seg_places, seg_cues, sentence_of, hollow,
                                            [norms[a] for a, _ in segs])
             if donor is not None:
                 for c in seg_cues[donor]:
+                    if c.start_tok >= counted:
+                        continue
                     if c.polarity == "denied" and c.reason.lower().startswith(("negated by 'not'", "negated by 'n't'", "negated by 'isn't'",
                                                                           "negated by 's not'", "negated by 'nt'")):
                         # "the station is not flooded, the clinic is": the contrast takes the claim
@@ -2780,14 +2880,28 @@ class ReportAnalyzer:
                     pairs.append(Claim(p, c))
         pairs.extend(self._speaker_claims(ex, norms, cues, pairs))
         pairs.extend(self._shared_by_list(ex, norms, pairs))
+        pairs = self._distribute(pairs)
+        # "Two possible shelters: the church and the cafe. The former's roof is unsafe": what the list was
+        # introduced as gives way to what its members are then said to be, one by one, where the two disagree
+        # (a safe place against a danger); "Smoke at the bank and the hotel. The first one also has a man
+        # trapped" adds to the list's claim
+        desirable = {c.place.landmark: self.kb.category_by_name[c.cue.category].role == Role.DESIRABLE
+                     for c in pairs if c.place.anaphor and c.cue.polarity == "affirmed"}
+        pairs = [c for c in pairs if not (c.place.counted_by is not None and c.place.landmark in desirable
+                                          and desirable[c.place.landmark]
+                                          != (self.kb.category_by_name[c.cue.category].role == Role.DESIRABLE))]
         claims = [c for c in pairs if c.cue.polarity == "affirmed"]
-        denied = [c for c in pairs if c.cue.polarity == "denied"]
+        held = {c.key for c in claims}
+        denied = [c for c in pairs if c.cue.polarity == "denied"
+                  and not (c.cue.reason == "said with 'neither'" and c.key in held)]
         # the last word on a place and category stands: "the gas at the wash house ... the gas men
         # capped the pipe" revokes the first mention, "no fire at the bank -- wait, there is" restores it
         last: dict[tuple[str, str], tuple[int, bool]] = {}
         for c in sorted(pairs, key=lambda c: c.cue.start_tok):
-            if c.cue.polarity == "denied" and c.cue.reason.lower().startswith(lx.ABILITY_NEGATIONS):
-                continue  # "she can't get past the smoke on the stairs" revokes nothing
+            if c.cue.polarity == "denied" and (c.cue.reason.lower().startswith(lx.ABILITY_NEGATIONS)
+                                               or c.cue.reason == "said with 'neither'"):
+                continue  # "she can't get past the smoke on the stairs" revokes nothing, nor does "the first has a
+                # chemical spill ... neither of them has a fire"
             last[c.key] = (c.cue.start_tok, c.cue.polarity == "affirmed")
         for landmark, at in self._people_revoked(ex, norms, cues):
             # "1012 STILT VLG - 3 stranded on rf. 1014 UPD STILT VLG - all 3 lifted off": no cue is said
@@ -2796,10 +2910,48 @@ class ReportAnalyzer:
                 if key[0] == landmark and pos < at \
                         and self.kb.category_by_name[key[1]].role == Role.CRITICAL:
                     last[key] = (at, False)
+        for landmark, at, cats in self._places_negated_later(ex, cues):
+            # "Fire at the school. ... No, that's not the school, that's the library": a place negated in a
+            # later sentence takes back what was said of it before, in the negating sentence's categories
+            for key, (pos, _) in list(last.items()):
+                if key[0] == landmark and pos < at and (not cats or key[1] in cats):
+                    last[key] = (at, False)
         revoked = {k for k, (_, affirmed) in last.items() if not affirmed}
         denied.extend(c for c in claims if c.key in revoked)
         claims = [c for c in claims if c.key not in revoked]
         return claims, denied
+
+    @staticmethod
+    def _distribute(pairs: list[Claim]) -> list[Claim]:
+        """"the gym and the park ... both of them are flooded": a claim on "both of them" is a claim on every
+        place of the list; "Neither of them has anyone hurt" denies it of every one."""
+        out: list[Claim] = []
+        for c in pairs:
+            if c.place.anaphor == "neither" and c.cue.polarity == "affirmed":
+                c = Claim(c.place, replace(c.cue, polarity="denied", reason="said with 'neither'"))
+            out.append(c)
+            out.extend(Claim(replace(c.place, landmark=other, also=()), c.cue) for other in c.place.also)
+        return out
+
+    @staticmethod
+    def _places_negated_later(ex: Extraction, cues: list[CueMention]) -> list[tuple[str, int, set[str]]]:
+        """(landmark, token, categories) for each place negated after an earlier sentence named it: "Scratch my
+        last, wasn't the bank", "Correction: casualty is in the bank, not the hotel". The categories are
+        those the negating sentence affirms (the hotel loses its casualty, not a fire said of it), or
+        every category where it affirms none."""
+        toks = ex.tokens
+        out: list[tuple[str, int, set[str]]] = []
+        for p in ex.places:
+            if p.status != "negated" or not p.reason.startswith("negated by"):
+                continue
+            start = max(t for t in range(0, p.start_tok + 1) if toks.sentence_start[t])
+            if not any(q.landmark == p.landmark and q.start_tok < start and q.status == "active" for q in ex.places):
+                continue
+            end = next((t for t in range(p.end_tok, len(toks)) if toks.sentence_start[t]), len(toks))
+            cats = {c.category for c in cues if start <= c.start_tok < end and c.polarity == "affirmed"
+                    and c.status == "active"}
+            out.append((p.landmark, p.start_tok, cats))
+        return out
 
     @staticmethod
     def _shared_by_list(ex: Extraction, norms: tuple[str, ...], pairs: list[Claim]) -> list[Claim]:
@@ -2874,6 +3026,15 @@ class ReportAnalyzer:
                 continue  # "not rescued yet", "to be lifted off": not done
             before = [p for p in ex.places if p.status == "active" and p.end_tok <= i
                       and toks.sentence_of[p.start_tok] == toks.sentence_of[i]]
+            after = [p for p in ex.places if p.status == "active" and h[0] < p.start_tok <= h[0] + 2
+                     and "of" in norms[h[0]:p.start_tok]]
+            if after:  # "the paramedics have taken everybody out of the cafe"
+                out.append((after[0].landmark, i))
+                continue
+            if not before and any(w in ("there", "inside") for w in norms[i:i + 6]):
+                # "Caller B said the gym was empty. Turns out nobody was in there": the place of the sentence before
+                before = [p for p in ex.places if p.status == "active" and p.end_tok <= i
+                          and toks.sentence_of[p.start_tok] == toks.sentence_of[i] - 1]
             if before:
                 out.append((max(before, key=lambda p: p.end_tok).landmark, i))
         return out

@@ -100,6 +100,7 @@ trapped in rubble|under the rubble|needs medics|need medics|needs a doctor|requi
 people still inside|still inside|someone still inside|people stuck|people stuck inside|with people inside|
 man collapsed|woman collapsed|person collapsed|someone collapsed|somebody collapsed|he collapsed|she collapsed|
 needs oxygen|need oxygen|having a heart attack|heart attack|seizure|having a seizure|can't breathe|cannot breathe|
+asthma attack|asthma attacks|an asthma attack|having an asthma attack|shut in|locked in|
 stuck on the roof|stranded on the roof|on the roof waiting|waving from|trapped upstairs|trapped on|
 can't get up|cannot get up|can't get out|can't free|cannot free|waving for help|yelling for help|for help|
 head wound|head injury|hurt bad|badly hurt|walking wounded|screaming inside|kids screaming|someone in the water|
@@ -154,7 +155,10 @@ CANCEL_AFTER = ["is out", "s out", "are out", "was out", "put out", "out now", "
                 "pumped out", "been pumped out", "no sign of him", "no sign of her", "no sign of them",
                 "no sign of anyone", "no sign of anybody", "no one there", "nobody there",
                 "off now", "s off now", "is off", "s off", "shut it off", "turned it off", "switched off",
-                "switched it off", "sealed", "been sealed", "plugged", "been plugged"]
+                "switched it off", "sealed", "been sealed", "plugged", "been plugged"] + [
+                f"{verb} {who} out" for verb in ("got", "gotten", "taken", "took", "pulled", "brought")
+                for who in ("him", "her", "them", "everyone", "everybody", "all of them", "the casualty")] + [
+                "nobody was in", "no one was in", "nobody was inside", "no one was inside"]
 # Reasons of denials that say what cannot be done, not that a danger is gone ("can't get past the smoke").
 ABILITY_NEGATIONS = ("negated by 'can't'", "negated by 'cant'", "negated by 'cannot'", "negated by 'couldn't'",
                      "negated by 'couldnt'", "negated by 'ca'")
@@ -166,7 +170,10 @@ CANCEL_PEOPLE_ONLY = {"all rescued", "rescued", "evacuated", "got out", "out saf
                       "taken to hospital", "been taken to hospital", "been extracted", "been brought out",
                       "lifted off", "been lifted off", "winched up", "been winched up", "taken off", "been taken off",
                       "picked up", "been picked up", "handed to the ambulance crew", "handed over to the ambulance",
-                      "been handed over", "been handed to the ambulance crew"}
+                      "been handed over", "been handed to the ambulance crew", "nobody was in", "no one was in",
+                      "nobody was inside", "no one was inside"} | {
+                      f"{verb} {who} out" for verb in ("got", "gotten", "taken", "took", "pulled", "brought")
+                      for who in ("him", "her", "them", "everyone", "everybody", "all of them", "the casualty")}
 
 # Words that open a clause speaking again of the thing just named ("..., it's drained now").
 BACK_REFERENCE_WORDS = {"it", "its", "s", "is", "has", "been", "thats", "that", "was", "they", "theyre", "are", "re",
@@ -350,6 +357,14 @@ DETERMINERS = {"the", "a", "an", "that", "this", "those", "these", "its", "their
 PREPOSITIONS = {"at", "in", "on", "inside", "near", "from", "by", "outside", "behind", "around", "into",
                 "within", "of", "to", "towards", "toward", "under", "over", "across", "through", "beside",
                 "next", "out", "along", "past", "up", "down", "for", "with"}
+# "the first one", "the latter": which member of the last list of places said
+ORDINAL_PLACES = {"first": 0, "second": 1, "third": 2, "fourth": 3, "former": 0, "latter": -1}
+# verbs that may follow a bare ordinal anaphor ("the first reports a spill", "the latter looks worse")
+ANAPHOR_VERBS = {"reports", "reported", "says", "said", "looks", "look", "needs", "seems", "sounds", "still", "though",
+                 "also", "too", "definitely", "really", "just", "now", "then", "as", "being"}
+# words that make a sentence a correction of an earlier one ("T2 corrects previous msg: NOT lower field")
+CORRECTION_WORDS = {"correct", "corrects", "corrected", "amend", "correction", "correcting", "amended", "amends", "mistake", "wrong",
+                    "scratch", "scrap", "disregard"}
 COPULAS = {"is", "are", "was", "were", "s", "re", "has", "have", "had", "got", "gotten", "looks", "seems",
            "appears", "be", "been", "being", "still", "now", "currently", "definitely", "totally",
            "completely", "fully", "all", "partly", "partially", "badly", "also", "too", "reported",

@@ -37,7 +37,8 @@ def _step(node: str, t0: float, inp: dict[str, Any], out: dict[str, Any]) -> lis
 
 def _extraction(state: GroundingState) -> Extraction:
     """Rebuild the analyzer's extraction from the (serialisable) state."""
-    places = [PlaceMention(**{k: v for k, v in p.items() if k != "span"}) for p in state.places]
+    places = [PlaceMention(**{k: tuple(v) if k == "also" else v for k, v in p.items() if k != "span"})
+              for p in state.places]
     markers = [(int(a), int(b), bool(s)) for a, b, s in state.markers]
     return Extraction(tokenize(state.report), places, markers)
 
