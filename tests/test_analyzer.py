@@ -756,3 +756,30 @@ def test_ordinal_and_list_anaphora(kb_analyzers, kb, text, expected):
 ])
 def test_corrections_and_revocations_across_sentences(kb_analyzers, kb, text, expected):
     assert claims(kb_analyzers[kb], text) == expected
+
+
+@pytest.mark.parametrize(("kb", "text", "expected"), [
+    # a verb a relation's stem was given to ("fed", of fed_by_the_hydrant_main_from) may name another of
+    # the KB's relations, the one the anchor takes part in (the substation supplies_power_to ...)
+    ("road_tunnel", "the building the substation feeds has lost its roof",
+     [("ventilation building", "blocked_or_spill")]),
+    # "that looks down over" is a relative clause, not the noun "looks"; watching is monitoring
+    ("road_tunnel", "two hurt in the post that looks down over the toll booths", [("traffic police post", "trapped_or_injured")]),
+    ("road_tunnel", "smoke in the building they watch the toll plaza from", [("control centre", "fire_smoke")]),
+    # a word of a name ("Red Watch") is no relation's verb
+    ("road_tunnel", "Red Watch reports XP3 is full of smoke", [("cross-passage 3", "fire_smoke")]),
+])
+def test_relation_verbs_of_unseen_kbs(kb_analyzers, kb, text, expected):
+    assert claims(kb_analyzers[kb], text) == expected
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    # a short sentence naming no place goes on about the place before it
+    ("The place that faces the church. Windows all blown out. Gas everywhere.", [("cafe", "hazard")]),
+    ("Whatever's behind the hardware store. That's the one. Fuel all over the floor.", [("garage", "hazard")]),
+    # "nothing wrong at X", "X's untouched" negate the place
+    ("Fire reported at the bank. Crew checked: nothing wrong at the bank itself.", []),
+    ("Fire at the town hall. Engine's on scene now, town hall's untouched.", []),
+])
+def test_sentences_about_the_place_before_and_places_found_untouched(analyzer, text, expected):
+    assert claims(analyzer, text) == expected

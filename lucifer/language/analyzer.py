@@ -425,13 +425,17 @@ class ReportAnalyzer:
         for t in range(len(norms)):
             if t in taken or t in cue_tokens or t in known or t + 1 in known:
                 continue  # (a word right before a listed phrase heads it: "the annexe tacked onto X")
-            hit = self._keyword_relation(toks.tokens[t].text.lower())
+            word = toks.tokens[t].text
+            if t > 0 and word[:1].isupper() and not word.isupper() and toks.tokens[t - 1].text[:1].isupper() \
+                    and not toks.sentence_start[t]:
+                continue  # "Red Watch to TCC": a word of a name, not a relation's verb
+            hit = self._keyword_relation(word.lower())
             if hit is None:
                 continue
             if norms[t] in lx.PART_NOUNS and t + 1 < len(norms) and norms[t + 1] == "of":
                 continue  # "the back wall of the Stella" is part of it, not "shares_a_wall_with"
             phrase, voice = hit
-            if voice == "active" and t > 0 and norms[t - 1] in lx.ARTICLES and phrase.split()[0] in (
+            if voice == "active" and t > 0 and norms[t - 1] in lx.ARTICLES - {"that"} and phrase.split()[0] in (
                     norms[t], toks.tokens[t].text.lower()):
                 continue  # "the vents on the forecourt": the verb of ``vents_into`` said as a noun
             b = t + 1
@@ -1578,6 +1582,8 @@ class ReportAnalyzer:
             back, via = self._follow(anchor, phrase, head, inverse=not inverse, _loose=True)
             if back is not None:
                 return back, via
+        if not cands and not _loose:
+            cands = self._sibling_relations(anchor, phrase, inverse)
         if not cands:
             cands = self._grid_relation(anchor, phrase)
         uniq = {c[0]: c for c in cands}
@@ -1586,6 +1592,26 @@ class ReportAnalyzer:
         if len(uniq) == 1:
             return next(iter(uniq.values()))
         return self._pick_by_head(list(uniq.values()), head)
+
+    def _sibling_relations(self, anchor: str, phrase: str, inverse: bool) -> list[tuple[str, str]]:
+        """The relation a word names may be another of the KB's than the one its stem was given to: "the
+        building the substation feeds" is ``supplies_power_to`` (the substation's), not ``fed_by_the_
+        hydrant_main_from`` (which has "fed" itself). Relations that share a link stem with ``phrase`` and
+        take part with ``anchor``; a passive name ("supplied by") read against an active one turns the direction."""
+        stems = {st for w in phrase.split() if len(w) >= 3 and w not in lx.RELATION_NAME_STOPWORDS
+                 for st in _link_stems(w)}
+        out: list[tuple[str, str]] = []
+        for rel in self.kb.relations:
+            if rel.phrase == phrase or rel.subject != anchor and rel.object != anchor:
+                continue
+            if not stems & {st for w in rel.phrase.split() if len(w) >= 3 and w not in lx.RELATION_NAME_STOPWORDS
+                            for st in _link_stems(w)}:
+                continue
+            flip = inverse != (_passive_name(rel.phrase) != _passive_name(phrase))
+            hit = (rel.object if rel.subject == anchor else None) if flip else (rel.subject if rel.object == anchor else None)
+            if hit:
+                out.append((hit, f"{rel.subject} {rel.relation} {rel.object}"))
+        return out
 
     def _fuzzy_relation(self, kb_phrase: str, phrase: str) -> bool:
         """An unknown KB relation name ("abuts") against a report phrase, via MiniLM."""
@@ -1639,7 +1665,9 @@ class ReportAnalyzer:
                 j -= 1
             tail = norms[p.end_tok : p.end_tok + 4]
             not_the_one = tail[:3] in (("isnt", "the", "one"), ("wasnt", "the", "one"), ("aint", "the", "one")) \
-                or tail[:4] in (("is", "not", "the", "one"), ("s", "not", "the", "one"), ("was", "not", "the", "one"))
+                or tail[:4] in (("is", "not", "the", "one"), ("s", "not", "the", "one"), ("was", "not", "the", "one")) \
+                or tail[:1] in (("untouched",), ("unaffected",)) \
+                or tail[:2] in ((v, w) for v in ("is", "was", "s") for w in ("untouched", "unaffected"))
             if j < 0 and not_the_one:
                 ex.places[idx] = replace(p, status="negated", reason="negated by 'not the one'")
                 continue  # "the school isn't the one with people trapped, it's the library"
@@ -1651,6 +1679,8 @@ class ReportAnalyzer:
                 j > 0 and norms[j - 1 : j + 1] in (("rather", "than"), ("instead", "of"))
             ) or (
                 j > 0 and norms[j - 1 : j + 1] == ("no", "longer")  # "the rest centre is no longer the town hall"
+            ) or (
+                norms[j] == "wrong" and j > 0 and norms[j - 1] == "nothing"  # "nothing wrong at the police station"
             ) or norms[j] == "instead" or (
                 norms[j] in ("rule", "ruled", "ruling") and norms[j + 1] == "out"  # "rule out the park"
             ) or (
@@ -2783,7 +2813,8 @@ class ReportAnalyzer:
             sent_words[sentence_of[i]] = sent_words.get(sentence_of[i], 0) + (norms[i] not in lx.FILLERS)
         placed = {sentence_of[p.start_tok] for p in usable}
         cued = {sentence_of[c.start_tok] for c in cues if c.status == "active"}
-        transparent = {n for n in sent_words if n not in placed and (n in questions or n in cued or sent_words[n] <= 2)}
+        # (a short sentence that names no place goes on about it too: "That's the one.", "Windows all blown out.")
+        transparent = {n for n in sent_words if n not in placed and (n in questions or n in cued or sent_words[n] <= 4)}
 
         # 3. cue-only segments attach to the places they talk about; a segment whose place was
         #    repaired away keeps its cues for the replacement (step 2), they do not float
@@ -3185,6 +3216,17 @@ def _reads_backwards(link: str, phrase: str, inverse: bool) -> bool:
     """The direction of a relation form as a linking phrase says it: an antonym in the phrase
     ("downhill" against "uphill") reads it the other way."""
     return not inverse if any(lx.ANTONYMS.get(w) in phrase.split() for w in link.split()) else inverse
+
+
+def _passive_name(phrase: str) -> bool:
+    """Is a relation name passive the way ``_relation_keywords`` reads voices ("supplied by": its verb, said,
+    reads the relation backwards)?
+
+    >>> _passive_name("supplied by"), _passive_name("supplies power to"), _passive_name("fed by the main from")
+    (True, False, False)
+    """
+    words = phrase.split()
+    return len(words) >= 2 and words[-1] == "by"
 
 
 def _direction_word(word: str) -> bool:

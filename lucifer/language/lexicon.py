@@ -306,7 +306,8 @@ IRREGULAR_PARTICIPLES = {"fed": "feed", "built": "build", "held": "hold", "led":
 LINK_SYNONYMS = [{"suppl", "feed", "power", "serv"}, {"pair", "twin", "sister", "partner"}, {"link", "connect", "join"},
                  {"annex", "extension"},
                  {"tunnel", "underpas", "subway", "passag"}, {"bridg", "walkway", "footbridg"},
-                 {"moor", "tied", "tie", "berth"}, {"foot", "bottom"}, {"vent", "exhaust"}]
+                 {"moor", "tied", "tie", "berth"}, {"foot", "bottom"}, {"vent", "exhaust"},
+                 {"monitor", "watch", "observ", "surveil"}]
 # Words of a relation name that are too common to identify it on their own in a report.
 RELATION_NAME_STOPWORDS = {"by", "to", "of", "with", "onto", "on", "into", "from", "the", "a", "an", "is", "and", "in",
                            "at", "that", "its", "it", "side", "end", "other", "way", "same", "far", "near", "up",
