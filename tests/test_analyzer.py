@@ -783,3 +783,27 @@ def test_relation_verbs_of_unseen_kbs(kb_analyzers, kb, text, expected):
 ])
 def test_sentences_about_the_place_before_and_places_found_untouched(analyzer, text, expected):
     assert claims(analyzer, text) == expected
+
+
+@pytest.mark.parametrize(("kb", "text", "expected"), [
+    # "the" / "that" and a head several names end in is the one of them named last ("refuge bay 4": the
+    # head before the number), by name or by a description
+    ("road_tunnel", "Smoke at the west portal. That portal's completely blocked by a lorry now.",
+     [("west portal", "blocked_or_spill"), ("west portal", "fire_smoke")]),
+    ("road_tunnel", "Whatever's tucked in behind the east portal is on fire, and the portal itself has a car "
+                    "blocking lane one.", [("east portal", "blocked_or_spill"), ("substation", "fire_smoke")]),
+    ("road_tunnel", "Casualty in RB4. Sorry, correction, not in the bay, he's at the toll plaza.",
+     [("toll plaza", "trapped_or_injured")]),
+    # a head going on into a relative clause is a description, not the last one named
+    ("lakeside_campground", "Spot fire in the upper caravan field. People trapped in the field the shower block "
+                            "backs onto.", [("lower caravan field", "person_at_risk"),
+                                            ("upper caravan field", "fire_and_smoke")]),
+    # a log drops the "s" of "sits" in a relative clause
+    ("lakeside_campground", "Spot fire in the field that sits uphill of the field the shower block backs onto.",
+     [("upper caravan field", "fire_and_smoke")]),
+    # a place before a comma is no head of the pronoun description after it
+    ("knowledge_base", "he says the bus station... no, not the station, in front of it, people hurt on the ground",
+     [("market square", "victim")]),
+])
+def test_definite_heads_name_the_last_of_their_landmarks(kb_analyzers, kb, text, expected):
+    assert claims(kb_analyzers[kb], text) == expected

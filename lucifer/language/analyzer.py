@@ -513,6 +513,7 @@ class ReportAnalyzer:
                                        {b for _, b, _ in all_relations}))
         places.extend(self._misheard_names(toks, norms, {i for p in places for i in range(p.start_tok, p.end_tok)},
                                            {i for a, b, _ in all_cues for i in range(a, b)}))
+        places.extend(self._definite_heads(toks, norms, places))
         for idx, p in enumerate(places):
             if p.end_tok < len(norms) and norms[p.end_tok] in lx.MODIFIED_BY and not toks.clause_start[p.end_tok] \
                     and norms[p.end_tok : p.end_tok + 2] not in lx.PART_OF_PLACE:
@@ -530,6 +531,7 @@ class ReportAnalyzer:
         self._resolve_possessives(ex)
         self._resolve_relations(ex)
         self._resolve_itself(ex)
+        ex.places.extend(self._definite_heads(toks, norms, ex.places))  # again, after descriptions ("the portal with ...")
         self._ordinal_anaphora(toks, norms, ex)
         self._apply_place_negation(ex)
         self._apply_restarts(ex)
@@ -691,6 +693,42 @@ class ReportAnalyzer:
                     and norms[i + 1] not in lx.FUNCTION_WORDS and self._relations.match_at(norms, i + 1) is None:
                 continue  # "the lodge gate": a longer noun phrase
             out.append(self._mention(toks, i, i + 1, self._heads[w]))
+        return out
+
+    def _definite_heads(self, toks: Tokens, norms: tuple[str, ...], places: list[PlaceMention]) -> list[PlaceMention]:
+        """"Hydrant pressure's gone at the west portal ... that portal's full of smoke": "the" / "that" and a
+        head word several landmarks' names end in ("east portal", "west portal") is the one of them named
+        last before it, by name or (in a second pass, once they are resolved) by a description. A head that goes on into a longer noun phrase or a relative clause ("the portal
+        that has the lay-by", "the field the shower block backs onto") is a description, not this."""
+        if not hasattr(self, "_shared_heads"):
+            owners: dict[str, set[str]] = {}
+            for lm in self.kb.landmarks:
+                for form in lm.surface_forms:
+                    words = name_words(form)
+                    if len(words) >= 2 and (words[-1].isdigit() or len(words[-1]) == 1 or words[-1] in lx.NUMBER_WORDS):
+                        words = words[:-1]  # "refuge bay 4", "cabin row A": the head is the word before the number
+                    if len(words) >= 2 and words[-1].isalpha():
+                        owners.setdefault(words[-1], set()).add(lm.name)
+            self._shared_heads = {w: names for w, names in owners.items() if len(names) >= 2}
+        out: list[PlaceMention] = []
+        taken = {i for p in places for i in range(p.start_tok, p.end_tok)}
+        for i in range(1, len(norms)):
+            names = self._shared_heads.get(norms[i])
+            if not names or i in taken or (i - 1) in taken or norms[i - 1] not in ("the", "that", "this"):
+                continue
+            end = i + 1
+            if end < len(norms) and norms[end] == "itself":
+                end += 1
+            elif end < len(norms) and not toks.clause_start[end] and norms[end] not in lx.COPULAS | lx.ANAPHOR_VERBS \
+                    and not toks.tokens[i].text.lower().endswith(("'s", "’s")):
+                continue
+            before = [p for p in places if p.end_tok <= i - 1 and p.landmark in names]
+            if not before:
+                continue
+            last = max(before, key=lambda p: p.end_tok)
+            out.append(replace(self._mention(toks, i - 1, end, last.landmark),
+                               reason=f"the '{norms[i]}' named last, '{last.text}'"))
+            taken.update(range(i - 1, end))
         return out
 
     def _name_keys(self) -> list[tuple[str, str]]:
@@ -1134,8 +1172,9 @@ class ReportAnalyzer:
         elif a >= 3 and norms[a - 1] in ("that", "which") and norms[a - 2] in lx.GENERIC_HEADS:
             head_end = a - 1  # "the hall that faces onto it"
         head_place = next((p for p in ex.places if p.end_tok == head_end and p.status == "active"), None)
-        if head_place is not None and toks.sentence_start[head_end]:
+        if head_place is not None and (toks.sentence_start[head_end] or toks.clause_start[head_end] and pronoun):
             head_place = None  # "I'm at the warehouse. Behind it there's flooding": the place ends another clause
+            # ("not the station, in front of it, the big open place": and so does a place before a comma)
         if pronoun and head_place is not None and anchor is head_place:
             # "the hall that faces onto them": the pronoun is not the head it follows, but the place before
             before = [p for p in ex.places if p.end_tok <= head_place.start_tok and p.status not in ("retracted", "reference")]

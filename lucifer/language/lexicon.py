@@ -607,7 +607,9 @@ EVACUEES = {"resident", "staff", "pupil", "patient", "guest", "tenant", "occupan
 
 # "the place that is behind the warehouse": a relative clause between a description's head and its relation.
 RELATIVE_COPULAS = {("that", "is"), ("which", "is"), ("that", "s"), ("which", "s"), ("that", "sits"), ("which", "sits"),
-                    ("that", "stands"), ("which", "stands"), ("that", "was"), ("which", "was"), ("that", "lies")}
+                    ("that", "stands"), ("which", "stands"), ("that", "was"), ("which", "was"), ("that", "lies"),
+                    # (a log's words lose their "s": "LOG spot fire in the field that sits uphill of ...")
+                    ("that", "sit"), ("which", "sit"), ("that", "stand"), ("which", "stand"), ("that", "lie")}
 
 # Kinds of danger, for knowledge bases that split the undesirable role into several categories
 # ("gas_escape" and "crumbling"; "peril" and "submerged"). A vocabulary cue that no category
