@@ -807,3 +807,19 @@ def test_sentences_about_the_place_before_and_places_found_untouched(analyzer, t
 ])
 def test_definite_heads_name_the_last_of_their_landmarks(kb_analyzers, kb, text, expected):
     assert claims(kb_analyzers[kb], text) == expected
+
+
+@pytest.mark.parametrize(("kb", "text", "expected"), [
+    # a place located by a landmark that holds it ("at the services") leaves that one a reference point
+    ("road_tunnel", "the fuel station shop at the motorway services is being used as a safe haven",
+     [("fuel station shop", "clear_route")]),
+    # a sentence that only says where the place just named is, from the speaker, names no other place
+    ("knowledge_base", "It's the bank. Across the road from me. The wall's down.", [("bank", "hazard")]),
+    ("knowledge_base", "we're parked up at the bank; the place across the road from us has a man down",
+     [("fire station", "victim")]),
+    # "it's just their ovens" takes the smoke back; heat is a fire's
+    ("knowledge_base", "I thought there was smoke at the bakery but no, it's just their ovens.", []),
+    ("lakeside_campground", "The gas cage behind the shop is getting very hot.", [("gas bottle cage", "fire_and_smoke")]),
+])
+def test_containers_speaker_asides_and_deflations(kb_analyzers, kb, text, expected):
+    assert claims(kb_analyzers[kb], text) == expected

@@ -531,6 +531,7 @@ class ReportAnalyzer:
         self._resolve_possessives(ex)
         self._resolve_relations(ex)
         self._resolve_itself(ex)
+        self._resolve_containers(ex, norms)
         ex.places.extend(self._definite_heads(toks, norms, ex.places))  # again, after descriptions ("the portal with ...")
         self._ordinal_anaphora(toks, norms, ex)
         self._apply_place_negation(ex)
@@ -694,6 +695,25 @@ class ReportAnalyzer:
                 continue  # "the lodge gate": a longer noun phrase
             out.append(self._mention(toks, i, i + 1, self._heads[w]))
         return out
+
+    def _resolve_containers(self, ex: Extraction, norms: tuple[str, ...]) -> None:
+        """"the fuel station shop at the motorway services", "the HGV park at the services": a place said with
+        a landmark whose cells hold all of its own ("at", "in", "inside", "on", "within" it) is located by
+        it; the larger one is a reference point, not a claim."""
+        cells = {lm.name: {tuple(c) for c in lm.cells} for lm in self.kb.landmarks}
+        for idx, q in enumerate(ex.places):
+            if q.status != "active" or q.via is not None:
+                continue
+            k = q.start_tok - 1
+            if k >= 1 and norms[k - 1] in lx.DETERMINERS and norms[k].isalpha():
+                k -= 1  # "at the motorway services": a modifier the name did not take in
+            while k >= 0 and norms[k] in lx.DETERMINERS:
+                k -= 1
+            if k < 1 or norms[k] not in ("at", "in", "inside", "on", "within") or ex.tokens.clause_start[k]:
+                continue
+            p = next((p for p in ex.places if p.end_tok == k and p.status == "active"), None)
+            if p is not None and p.landmark != q.landmark and cells[p.landmark] < cells[q.landmark]:
+                ex.places[idx] = replace(q, status="reference", reason=f"holds '{p.text}'")
 
     def _definite_heads(self, toks: Tokens, norms: tuple[str, ...], places: list[PlaceMention]) -> list[PlaceMention]:
         """"Hydrant pressure's gone at the west portal ... that portal's full of smoke": "the" / "that" and a
@@ -1234,6 +1254,10 @@ class ReportAnalyzer:
             place_tokens.update(range(hs, b))
             return
         if not generic:
+            if pronoun and toks.sentence_start[a] and norms[anchor_end - 1] in ("me", "us") \
+                    and not self._cue_between(norms, a, next((t for t in range(anchor_end, len(norms))
+                                                              if toks.sentence_start[t]), len(norms))):
+                return  # "It's the bank. Across the road from me.": where the place just named is, not another
             # a cue (or nothing) before the relation: "man down across the street from the fire station"
             if norms[a:a + 2] == ("at", "the") and b > a + 2 and norms[a + 2] in lx.LOCATIVE_PARTS and not any(
                     rel.phrase.startswith("at the") and _link_stems(norms[a + 2]) & {
@@ -2853,7 +2877,7 @@ class ReportAnalyzer:
         placed = {sentence_of[p.start_tok] for p in usable}
         cued = {sentence_of[c.start_tok] for c in cues if c.status == "active"}
         # (a short sentence that names no place goes on about it too: "That's the one.", "Windows all blown out.")
-        transparent = {n for n in sent_words if n not in placed and (n in questions or n in cued or sent_words[n] <= 4)}
+        transparent = {n for n in sent_words if n not in placed and (n in questions or n in cued or sent_words[n] <= 5)}
 
         # 3. cue-only segments attach to the places they talk about; a segment whose place was
         #    repaired away keeps its cues for the replacement (step 2), they do not float

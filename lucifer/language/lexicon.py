@@ -201,7 +201,7 @@ NEUTRAL_PHRASES = ["keep clear", "stay clear", "keep everyone clear", "keep ever
 # Whole-report "nothing to see" markers that cancel every claim in their sentence.
 FALSE_ALARM = ["false alarm", "never mind", "nevermind", "disregard my last", "disregard the last report",
                "nothing in it", "nothing to it", "just steam", "only steam", "extractor fan", "was just a", "was only a",
-               "was just their", "was just the", "nothing to worry about", "ignore my last", "cancel my last",
+               "was just their", "was just the", "its just their", "is just their", "its only their", "nothing to worry about", "ignore my last", "cancel my last",
                "disregard my last message", "disregard previous", "disregard my earlier report",
                "ignore my earlier report", "disregard the earlier report", "were wrong", "were unfounded",
                "was unfounded", "were false", "are false", "are wrong", "are unfounded", "was false",
@@ -621,7 +621,7 @@ DANGER_KINDS: dict[str, list[str]] = {
               "pressed against", "pushed up against", "crushing", "pile-up", "pile up", "overcrowded", "stampede",
               "people pushing", "everyone pushing", "crushed against", "being crushed against", "crush in there",
               "it's a crush"],
-    "fire": ["fire", "fires", "on fire", "burning", "burnt", "burned", "burned out", "burnt out", "blaze", "blazing",
+    "fire": ["fire", "fires", "on fire", "getting very hot", "getting hot", "red hot", "glowing red", "heavy heat", "burning", "burnt", "burned", "burned out", "burnt out", "blaze", "blazing",
              "ablaze", "flames", "flame", "in flames", "engulfed", "inferno", "alight", "well alight", "fully alight",
              "fully involved", "going up in flames", "gone up in flames", "smouldering", "smoldering", "charred",
              "gutted", "flashover", "flashover risk", "backdraft", "backdraft risk", "heavy fire", "fire showing",
