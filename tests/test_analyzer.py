@@ -823,3 +823,20 @@ def test_definite_heads_name_the_last_of_their_landmarks(kb_analyzers, kb, text,
 ])
 def test_containers_speaker_asides_and_deflations(kb_analyzers, kb, text, expected):
     assert claims(kb_analyzers[kb], text) == expected
+
+
+@pytest.mark.parametrize(("kb", "text", "expected"), [
+    # "the west one" is the landmark named "west ..." whose head was said; "the other one" of two landmarks
+    # sharing a head is the one not just named
+    ("lakeside_campground", "The west jetty is closed. Actually no, that's the east one. The west one's our safe route off.",
+     [("west jetty", "safe_haven")]),
+    ("road_tunnel", "We've checked both portals. The west one is clear, and the other one's got a burning car in it.",
+     [("east portal", "fire_smoke"), ("west portal", "clear_route")]),
+    # people who walked off, or a place found empty, take back the casualty there
+    ("road_tunnel", "two casualties at the helipad and one in the lorry park. Update, the lorry park one's walked off.",
+     [("helipad", "trapped_or_injured")]),
+    ("lakeside_campground", "people trapped at the shop, sorry, the shop's empty, it's the chapel, people trapped in the "
+                            "chapel", [("chapel", "person_at_risk")]),
+])
+def test_modifier_ones_and_people_gone(kb_analyzers, kb, text, expected):
+    assert claims(kb_analyzers[kb], text) == expected

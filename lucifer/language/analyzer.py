@@ -514,6 +514,7 @@ class ReportAnalyzer:
         places.extend(self._misheard_names(toks, norms, {i for p in places for i in range(p.start_tok, p.end_tok)},
                                            {i for a, b, _ in all_cues for i in range(a, b)}))
         places.extend(self._definite_heads(toks, norms, places))
+        places.extend(self._modifier_ones(toks, norms, places))
         for idx, p in enumerate(places):
             if p.end_tok < len(norms) and norms[p.end_tok] in lx.MODIFIED_BY and not toks.clause_start[p.end_tok] \
                     and norms[p.end_tok : p.end_tok + 2] not in lx.PART_OF_PLACE:
@@ -595,6 +596,14 @@ class ReportAnalyzer:
                 if len(names) >= 2:
                     listed, members = names, [p.start_tok for p in said]
                     break
+            if not listed and word == "other" and earlier:
+                # "the west one is clear, and the other one's got a burning car": of two landmarks that share
+                # a head ("west portal", "east portal"), the one not just named
+                last = max(earlier, key=lambda p: p.start_tok)
+                pair = next((names for names in self._head_groups().values()
+                             if last.landmark in names and len(names) == 2), None)
+                if pair is not None:
+                    listed = [last.landmark, next(n for n in pair if n != last.landmark)]
             if not listed:
                 continue
             if every:
@@ -715,25 +724,58 @@ class ReportAnalyzer:
             if p is not None and p.landmark != q.landmark and cells[p.landmark] < cells[q.landmark]:
                 ex.places[idx] = replace(q, status="reference", reason=f"holds '{p.text}'")
 
-    def _definite_heads(self, toks: Tokens, norms: tuple[str, ...], places: list[PlaceMention]) -> list[PlaceMention]:
-        """"Hydrant pressure's gone at the west portal ... that portal's full of smoke": "the" / "that" and a
-        head word several landmarks' names end in ("east portal", "west portal") is the one of them named
-        last before it, by name or (in a second pass, once they are resolved) by a description. A head that goes on into a longer noun phrase or a relative clause ("the portal
-        that has the lay-by", "the field the shower block backs onto") is a description, not this."""
+    def _modifier_ones(self, toks: Tokens, norms: tuple[str, ...], places: list[PlaceMention]) -> list[PlaceMention]:
+        """"west jetty ... Actually no, that's the east one": "the X one" names the landmark whose name is X and
+        a head; where several are (the east jetty, the east portal), the one whose head was said before."""
+        if not hasattr(self, "_modifiers"):
+            mods: dict[str, set[str]] = {}
+            for lm in self.kb.landmarks:
+                for form in lm.surface_forms:
+                    words = name_words(form)
+                    if len(words) >= 2 and words[0].isalpha() and len(words[0]) >= 3 \
+                            and words[0] not in lx.GENERIC_HEADS and words[0] not in lx.FUNCTION_WORDS:
+                        mods.setdefault(words[0], set()).add(lm.name)
+            self._modifiers = mods
+        out: list[PlaceMention] = []
+        taken = {i for p in places for i in range(p.start_tok, p.end_tok)}
+        for i in range(1, len(norms) - 1):
+            names = self._modifiers.get(norms[i])
+            if not names or norms[i - 1] != "the" or norms[i + 1] != "one" or {i - 1, i, i + 1} & taken:
+                continue
+            if len(names) > 1:
+                said = set(norms[:i - 1])
+                names = {n for n in names if name_words(n)[-1] in said}
+            if len(names) != 1:
+                continue
+            out.append(replace(self._mention(toks, i - 1, i + 2, next(iter(names))), reason=f"the '{norms[i]}' one"))
+            taken.update(range(i - 1, i + 2))
+        return out
+
+    def _head_groups(self) -> dict[str, set[str]]:
+        """Head words several landmarks' names end in ("portal": east and west portal; "bay": refuge bay 4 and
+        7, the head before the number), with those landmarks."""
         if not hasattr(self, "_shared_heads"):
             owners: dict[str, set[str]] = {}
             for lm in self.kb.landmarks:
                 for form in lm.surface_forms:
                     words = name_words(form)
                     if len(words) >= 2 and (words[-1].isdigit() or len(words[-1]) == 1 or words[-1] in lx.NUMBER_WORDS):
-                        words = words[:-1]  # "refuge bay 4", "cabin row A": the head is the word before the number
+                        words = words[:-1]
                     if len(words) >= 2 and words[-1].isalpha():
                         owners.setdefault(words[-1], set()).add(lm.name)
             self._shared_heads = {w: names for w, names in owners.items() if len(names) >= 2}
+        return self._shared_heads
+
+    def _definite_heads(self, toks: Tokens, norms: tuple[str, ...], places: list[PlaceMention]) -> list[PlaceMention]:
+        """"Hydrant pressure's gone at the west portal ... that portal's full of smoke": "the" / "that" and a
+        head word several landmarks' names end in ("east portal", "west portal") is the one of them named
+        last before it, by name or (in a second pass, once they are resolved) by a description. A head that goes on into a longer noun phrase or a relative clause ("the portal
+        that has the lay-by", "the field the shower block backs onto") is a description, not this."""
+        shared = self._head_groups()
         out: list[PlaceMention] = []
         taken = {i for p in places for i in range(p.start_tok, p.end_tok)}
         for i in range(1, len(norms)):
-            names = self._shared_heads.get(norms[i])
+            names = shared.get(norms[i])
             if not names or i in taken or (i - 1) in taken or norms[i - 1] not in ("the", "that", "this"):
                 continue
             end = i + 1

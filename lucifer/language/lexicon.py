@@ -158,7 +158,8 @@ CANCEL_AFTER = ["is out", "s out", "are out", "was out", "put out", "out now", "
                 "switched it off", "sealed", "been sealed", "plugged", "been plugged"] + [
                 f"{verb} {who} out" for verb in ("got", "gotten", "taken", "took", "pulled", "brought")
                 for who in ("him", "her", "them", "everyone", "everybody", "all of them", "the casualty")] + [
-                "nobody was in", "no one was in", "nobody was inside", "no one was inside"]
+                "nobody was in", "no one was in", "nobody was inside", "no one was inside", "walked off",
+                "empty"]
 # Reasons of denials that say what cannot be done, not that a danger is gone ("can't get past the smoke").
 ABILITY_NEGATIONS = ("negated by 'can't'", "negated by 'cant'", "negated by 'cannot'", "negated by 'couldn't'",
                      "negated by 'couldnt'", "negated by 'ca'")
@@ -171,6 +172,7 @@ CANCEL_PEOPLE_ONLY = {"all rescued", "rescued", "evacuated", "got out", "out saf
                       "lifted off", "been lifted off", "winched up", "been winched up", "taken off", "been taken off",
                       "picked up", "been picked up", "handed to the ambulance crew", "handed over to the ambulance",
                       "been handed over", "been handed to the ambulance crew", "nobody was in", "no one was in",
+                      "walked off", "empty",
                       "nobody was inside", "no one was inside"} | {
                       f"{verb} {who} out" for verb in ("got", "gotten", "taken", "took", "pulled", "brought")
                       for who in ("him", "her", "them", "everyone", "everybody", "all of them", "the casualty")}
