@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev15) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev16) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -27,6 +27,8 @@ FESTIVAL = ROOT / "knowledge_bases" / "festival_site"
 FERRY = ROOT / "knowledge_bases" / "ferry_ship"
 CAMPGROUND = ROOT / "knowledge_bases" / "lakeside_campground"
 TUNNEL = ROOT / "knowledge_bases" / "road_tunnel"
+STADIUM = ROOT / "knowledge_bases" / "football_stadium"
+MALL = ROOT / "knowledge_bases" / "shopping_mall"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -91,6 +93,9 @@ SETS = {
     "dev15/lakeside_campground": _set("dev15/lakeside_campground.jsonl", CAMPGROUND, "lc",
                                       {"standard": 30, "messy": 30, "advanced_messy": 30}),
     "dev15/road_tunnel": _set("dev15/road_tunnel.jsonl", TUNNEL, "rt", {"standard": 30, "messy": 30, "advanced_messy": 30}),
+    "dev16/football_stadium": _set("dev16/football_stadium.jsonl", STADIUM, "fb",
+                                   {"standard": 30, "messy": 30, "advanced_messy": 30}),
+    "dev16/shopping_mall": _set("dev16/shopping_mall.jsonl", MALL, "sm", {"standard": 30, "messy": 30, "advanced_messy": 30}),
 }
 
 
