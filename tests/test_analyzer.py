@@ -840,3 +840,20 @@ def test_containers_speaker_asides_and_deflations(kb_analyzers, kb, text, expect
 ])
 def test_modifier_ones_and_people_gone(kb_analyzers, kb, text, expected):
     assert claims(kb_analyzers[kb], text) == expected
+
+
+@pytest.mark.parametrize(("kb", "text", "expected"), [
+    # a description no phrase table reads: the place noun that heads it, linking words, the anchor inside;
+    # the place meant is the one the KB relates to the anchor (named by the head noun where several are)
+    ("lakeside_campground", "Fire's in the meadow you cross the footbridge from to get to the lifeguard hut.",
+     [("tent meadow", "fire_and_smoke")]),
+    ("lakeside_campground", "the building with the gas cage round the back of it still has people inside",
+     [("shop", "person_at_risk")]),
+    ("road_tunnel", "a P1 casualty in the cross-passage right before RB7", [("cross-passage 3", "trapped_or_injured")]),
+    ("road_tunnel", "three walking wounded at the plaza TCC keeps an eye on", [("toll plaza", "trapped_or_injured")]),
+    # "the roof of X", "a tank wagon on the siding", a place held by another: no description
+    ("knowledge_base", "the roof of the bakery is on fire", [("bakery", "hazard")]),
+    ("chemical_works", "A tank wagon on the loading siding is leaking chlorine.", [("rail siding", "chemical_release")]),
+])
+def test_descriptions_resolved_through_the_anchors_relations(kb_analyzers, kb, text, expected):
+    assert claims(kb_analyzers[kb], text) == expected

@@ -1002,6 +1002,12 @@ class ReportAnalyzer:
             cue_tokens = self._claim_cue_tokens(norms, place_tokens | marker_tokens)
             self._resolve_open(ex, toks, norms, place_tokens, marker_tokens, cue_tokens)
             self._resolve_open_inverse(ex, toks, norms, place_tokens, marker_tokens, cue_tokens)
+            if self._resolve_related(ex, toks, norms, place_tokens, marker_tokens, cue_tokens):
+                # "the path that winds down to the row after the A cabins": a description so resolved may anchor
+                # a listed one
+                for a, b, (phrase, flipped) in ordered:
+                    self._resolve_one(ex, toks, norms, a, b, phrase, flipped, place_tokens, marker_tokens,
+                                      inverse_pass=False)
         for d in [p for p in ex.places if p.via is not None and p.status == "active"]:
             for idx, p in enumerate(ex.places):
                 if p.via is None and p.status == "active" and d.start_tok <= p.start_tok and p.end_tok <= d.end_tok:
@@ -1212,6 +1218,105 @@ class ReportAnalyzer:
             ex.places[idx] = replace(anchor, status="reference", reason=f"reference point: {via} (matched '{link}')")
             ex.places.append(self._mention(toks, hs, m, target, via=f"{via} ~ '{link}'"))
             place_tokens.update(range(hs, m))
+
+    RELATED_MARGIN = 0.04
+
+    def _place_nouns(self) -> frozenset[str]:
+        """Nouns that can head a description of a place: the generic ones and the head words of the KB's names
+        ("portal", "meadow"; not their modifiers: "lorry" of "lorry park" is no place in "a lorry cab")."""
+        if getattr(self, "_place_noun_cache", None) is None:
+            words = set()
+            for lm in self.kb.landmarks:
+                for f in lm.surface_forms:
+                    ws = [w for w in name_words(f) if not (w.isdigit() or len(w) == 1 or w in lx.NUMBER_WORDS)]
+                    head = ws[-1].split("-")[-1] if ws else ""  # ("cross-passage": said as "cross", "passage")
+                    if head.isalpha() and len(head) >= 3 and head not in lx.FUNCTION_WORDS:
+                        words.add(head)
+            self._place_noun_cache = frozenset(words | lx.GENERIC_HEADS)
+        return self._place_noun_cache
+
+    def _resolve_related(self, ex: Extraction, toks: Tokens, norms: tuple[str, ...], place_tokens: set[int],
+                         marker_tokens: set[int], cue_tokens: set[int]) -> bool:
+        """The last resort for a description no phrase table or MiniLM link reading resolved: "the place you
+        row out to from the boat jetty", "the tube the shaft draws from". A place noun heads it, the
+        anchor sits inside it after linking words (a verb, a relative clause, a preposition that is no
+        mere "of" / "at" / "in"), or right after it before a verb. The anchor is then only a reference
+        point, and the place meant is one the KB relates to it: the only one, else the one whose name has
+        the head noun, else the relation MiniLM reads closest to the description, if it stands clearly
+        first. Where none stands out, nothing is claimed there rather than the anchor. True where it found any."""
+        nouns = self._place_nouns()
+        found = False
+        blocked = place_tokens | marker_tokens | cue_tokens
+        for anchor in [p for p in ex.places if p.via is None and (p.status == "active" or p.status == "reference"
+                                                                  and p.reason.startswith("reference point of an unresolved"))]:
+            a = anchor.start_tok
+            while a > 0 and norms[a - 1] in lx.DETERMINERS and anchor.start_tok - a < 2:
+                a -= 1
+            head = None
+            for h in range(a - 1, max(-1, a - 9), -1):
+                if h in blocked or toks.clause_start[h + 1] and toks.gaps[h + 1] != "-" or norms[h] in lx.COORDINATORS:
+                    break  # (a hyphen inside a word, "cross-passage", ends no clause)
+                if norms[h] in nouns and h > 0 and (norms[h - 1] in lx.ARTICLES | {"whatever"} or h > 1
+                                                    and norms[h - 2] in lx.ARTICLES and norms[h - 1].isalpha()
+                                                    and (h - 1) not in blocked) or norms[h] == "whatever":
+                    # (one modifier may stand between: "the cross-passage right before RB7", "that little bay")
+                    head = h
+                    break
+            if head is None:
+                continue
+            between = [norms[i] for i in range(head + 1, a) if norms[i] not in lx.FILLERS]
+            end = anchor.end_tok
+            if between:
+                if set(between) <= lx.LOCATIVE_LINKS or any(w in lx.COPULAS - {"s"} for w in between):
+                    continue  # "the roof of the bakery", "the kiosk at the services": where it is, not another place
+                if not (between[0] in lx.PREPOSITIONS | lx.RELATION_ENDINGS | lx.DESCRIPTION_OPENERS
+                        or between[0].endswith(("s", "ed", "ing"))):
+                    continue  # "a tank wagon on the siding": the noun goes on, it heads nothing
+            else:
+                # "the tube the shaft draws from": the linking verb comes after the anchor
+                if norms[head] == "whatever" or head == 0 or norms[head - 1] not in lx.ARTICLES:
+                    continue
+                while end < len(norms) and end - anchor.end_tok < 6 and end not in blocked \
+                        and not toks.clause_start[end] and norms[end] not in lx.COORDINATORS:
+                    end += 1
+                after = norms[anchor.end_tok:end]
+                if not after or after[0] in lx.COPULAS | lx.PREPOSITIONS \
+                        or not any(w.endswith("s") or w.endswith("ed") or w in lx.RELATION_ENDINGS for w in after):
+                    continue  # ("a tank wagon on the loading siding is leaking": the anchor's own predicate)
+            related: dict[str, str] = {}
+            for rel in self.kb.relations:
+                if anchor.landmark in (rel.subject, rel.object) and rel.subject != rel.object:
+                    other = rel.object if rel.subject == anchor.landmark else rel.subject
+                    related.setdefault(other, f"{rel.subject} {rel.relation} {rel.object}")
+            idx = ex.places.index(anchor)
+            if not related:
+                continue
+            named = {n: v for n, v in related.items() if norms[head] in name_words(n)
+                     or any(norms[head] in name_words(f) for f in self.kb.landmark_by_name[n].surface_forms)}
+            pool = named or related
+            target = None
+            if len(pool) == 1:
+                target = next(iter(pool))
+            elif self.embedder is not None:
+                text = " ".join(toks.tokens[i].text for i in range(head, end))
+                names = sorted(pool)
+                vecs = self.embedder.embed([text] + [pool[n].replace("_", " ") for n in names])
+                sims = vecs[1:] @ vecs[0]
+                order = np.argsort(-sims)
+                if float(sims[order[0]] - sims[order[1]]) >= self.RELATED_MARGIN:
+                    target = names[int(order[0])]
+            ex.places[idx] = replace(anchor, status="reference",
+                                     reason=f"reference point of the description headed by '{toks.tokens[head].text}'")
+            if target is None:
+                continue
+            hs = head
+            while hs > 0 and norms[hs - 1] in lx.DETERMINERS and (hs - 1) not in marker_tokens:
+                hs -= 1
+            via = related[target]
+            ex.places.append(self._mention(toks, hs, end, target, via=f"{via} (related to {anchor.landmark})"))
+            place_tokens.update(range(hs, end))
+            found = True
+        return found
 
     def _resolve_one(self, ex: Extraction, toks: Tokens, norms: tuple[str, ...], a: int, b: int, phrase: str,
                      flipped: bool, place_tokens: set[int], marker_tokens: set[int], inverse_pass: bool) -> None:

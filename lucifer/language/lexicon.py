@@ -368,6 +368,13 @@ ANAPHOR_VERBS = {"reports", "reported", "says", "said", "looks", "look", "needs"
 # words that make a sentence a correction of an earlier one ("T2 corrects previous msg: NOT lower field")
 CORRECTION_WORDS = {"correct", "corrects", "corrected", "amend", "correction", "correcting", "amended", "amends", "mistake", "wrong",
                     "scratch", "scrap", "disregard"}
+# words that only say where a place is ("the roof of the bakery", "the kiosk at the services"), not a relation
+LOCATIVE_LINKS = {"of", "at", "in", "on", "inside", "near", "by", "outside", "within", "the", "a", "an", "its"}
+# words that open the rest of a description after its head ("the place you row out to", "the bay with a door")
+DESCRIPTION_OPENERS = {"that", "which", "where", "whose", "you", "they", "we", "i", "he", "she", "with", "just", "right",
+                       "directly", "straight", "whatever", "before", "after", "behind", "beyond", "past", "above",
+                       "below", "beneath", "under", "underneath", "opposite", "across", "beside", "towards", "toward",
+                       "up", "down", "over", "round", "around"}
 COPULAS = {"is", "are", "was", "were", "s", "re", "has", "have", "had", "got", "gotten", "looks", "seems",
            "appears", "be", "been", "being", "still", "now", "currently", "definitely", "totally",
            "completely", "fully", "all", "partly", "partially", "badly", "also", "too", "reported",
