@@ -857,3 +857,16 @@ def test_modifier_ones_and_people_gone(kb_analyzers, kb, text, expected):
 ])
 def test_descriptions_resolved_through_the_anchors_relations(kb_analyzers, kb, text, expected):
     assert claims(kb_analyzers[kb], text) == expected
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    # a strong marker whose sentence names no place before it reaches back to the last sentence that does
+    ("Man collapsed in the library. ... Okafor again, wrong building, apologies, he's in the one next door to it.",
+     [("town hall", "victim")]),
+    # a place listed with the description that leads from it is a list member all the same
+    ("We looked in on the town hall and the building next to it. Neither of them has any casualties.", []),
+    # "nobody was in the park" takes the park's casualty back
+    ("Someone was stuck in whatever's behind the warehouse. Turns out nobody was in the park after all.", []),
+])
+def test_repairs_reaching_back_and_lists_with_descriptions(analyzer, text, expected):
+    assert claims(analyzer, text) == expected

@@ -589,7 +589,10 @@ class ReportAnalyzer:
             members: list[int] = []
             for s_start in sorted({max(t for t in range(0, p.start_tok + 1) if toks.sentence_start[t]) for p in earlier},
                                   reverse=True):
-                said = [p for p in sorted(places, key=lambda p: p.start_tok) if p.status == "active"
+                spans = [(q.start_tok, q.end_tok) for q in places if q.via is not None]
+                said = [p for p in sorted(places, key=lambda p: p.start_tok)
+                        if (p.status == "active" or p.status == "reference" and not any(  # "the town hall and the
+                            sa <= p.start_tok < se for sa, se in spans))  # building next to it": both are listed
                         and s_start <= p.start_tok < (start if s_start == sentence else len(norms))
                         and max(t for t in range(0, p.start_tok + 1) if toks.sentence_start[t]) == s_start]
                 names = list(dict.fromkeys(p.landmark for p in said))
@@ -2117,6 +2120,16 @@ class ReportAnalyzer:
                 link_to = None
             start = self._repair_window_start(ex, k)
             before = [p for p in ex.places if start <= p.start_tok < a and p.status == "active"]
+            if not before and _strong:
+                # "Man collapsed in the library. ... Okafor again, wrong building, apologies -- he's in the one
+                # next door to it": a strong marker whose sentence names no place before it reaches the last
+                # sentence that does, up to two back
+                prev_end = ex.markers[k - 1][1] if k > 0 else 0
+                starts = [t for t in range(0, start) if toks.sentence_start[t] and t >= prev_end][-2:]
+                for s0 in reversed(starts):
+                    before = [p for p in ex.places if s0 <= p.start_tok < a and p.status == "active"]
+                    if before:
+                        break
             if not before:
                 continue
             last = max(before, key=lambda p: p.end_tok)
@@ -3267,8 +3280,8 @@ class ReportAnalyzer:
                 continue  # "not rescued yet", "to be lifted off": not done
             before = [p for p in ex.places if p.status == "active" and p.end_tok <= i
                       and toks.sentence_of[p.start_tok] == toks.sentence_of[i]]
-            after = [p for p in ex.places if p.status == "active" and h[0] < p.start_tok <= h[0] + 2
-                     and "of" in norms[h[0]:p.start_tok]]
+            after = [p for p in ex.places if p.status == "active" and h[0] <= p.start_tok <= h[0] + 2
+                     and ("of" in norms[h[0]:p.start_tok] or norms[h[0] - 1] in ("in", "inside"))]
             if after:  # "the paramedics have taken everybody out of the cafe"
                 out.append((after[0].landmark, i))
                 continue
