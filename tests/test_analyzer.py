@@ -870,3 +870,17 @@ def test_descriptions_resolved_through_the_anchors_relations(kb_analyzers, kb, t
 ])
 def test_repairs_reaching_back_and_lists_with_descriptions(analyzer, text, expected):
     assert claims(analyzer, text) == expected
+
+
+@pytest.mark.parametrize(("kb", "text", "expected"), [
+    # a body part with a person's possessive makes "burned" a person's state
+    ("knowledge_base", "In the fire station there is a man, his arm is burned.", [("fire station", "victim")]),
+    # what was seen while passing a place is a claim there; passing alone is none
+    ("knowledge_base", "going past the town hall there was loads of people hurt on the steps", [("town hall", "victim")]),
+    ("knowledge_base", "we drove past the town hall on the way to the depot", []),
+    # "nobody in X" takes X's casualty back; a path that "comes down to" a place is no collapse
+    ("lakeside_campground", "People stuck in the boathouse. Update: nobody in the boathouse, they got out.", []),
+    ("lakeside_campground", "Negative on casualties at the cabins the ridge path comes down to, they all got out.", []),
+])
+def test_bodies_sightings_and_paths(kb_analyzers, kb, text, expected):
+    assert claims(kb_analyzers[kb], text) == expected

@@ -1970,6 +1970,10 @@ class ReportAnalyzer:
                         and not toks.sentence_start[k] and norms[k - 1] != "we":
                     continue  # "my son and his friend were at the gym": "were", not "we're"
                 if hit is not None and j <= hit[0] <= p.start_tok and not any(toks.clause_start[i] for i in range(k + 1, min(hit[0], p.start_tok) + 1) if i < p.start_tok):
+                    if norms[k] in ("passing", "past", "going", "driving", "walking") \
+                            and (norms[p.end_tok:p.end_tok + 2] in lx.SEEN_THERE
+                                 or norms[p.end_tok:p.end_tok + 1] in lx.SEEN_THERE):
+                        break  # "going past the town hall there was loads of people hurt": what was seen there
                     ex.places[idx] = replace(p, status="reference", reason=f"in transit ('{hit[1]}'): no claim")
                     break
 
@@ -2271,6 +2275,8 @@ class ReportAnalyzer:
         if w in lx.LAY_PERSONS or w in lx.WORKER_PERSONS or w in lx.PERSON_NOUNS or w in lx.CREW_NOUNS \
                 or w in ("we", "they", "i", "he", "she", "hes", "shes"):
             return True
+        if w in lx.BODY_PARTS and j > 0 and norms[j - 1] in ("his", "her", "their", "my", "your"):
+            return True  # "his arm is burned": a person's
         counted = j > 0 and (norms[j - 1] in lx.NUMBER_WORDS or norms[j - 1].isdigit())
         return counted and w.endswith(("er", "ent", "ist", "or", "ian"))
 

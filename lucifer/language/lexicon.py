@@ -159,6 +159,7 @@ CANCEL_AFTER = ["is out", "s out", "are out", "was out", "put out", "out now", "
                 f"{verb} {who} out" for verb in ("got", "gotten", "taken", "took", "pulled", "brought")
                 for who in ("him", "her", "them", "everyone", "everybody", "all of them", "the casualty")] + [
                 "nobody was in", "no one was in", "nobody was inside", "no one was inside", "walked off",
+                "nobody in", "no one in",
                 "empty"]
 # Reasons of denials that say what cannot be done, not that a danger is gone ("can't get past the smoke").
 ABILITY_NEGATIONS = ("negated by 'can't'", "negated by 'cant'", "negated by 'cannot'", "negated by 'couldn't'",
@@ -172,7 +173,7 @@ CANCEL_PEOPLE_ONLY = {"all rescued", "rescued", "evacuated", "got out", "out saf
                       "lifted off", "been lifted off", "winched up", "been winched up", "taken off", "been taken off",
                       "picked up", "been picked up", "handed to the ambulance crew", "handed over to the ambulance",
                       "been handed over", "been handed to the ambulance crew", "nobody was in", "no one was in",
-                      "walked off", "empty",
+                      "walked off", "empty", "nobody in", "no one in",
                       "nobody was inside", "no one was inside"} | {
                       f"{verb} {who} out" for verb in ("got", "gotten", "taken", "took", "pulled", "brought")
                       for who in ("him", "her", "them", "everyone", "everybody", "all of them", "the casualty")}
@@ -182,7 +183,7 @@ BACK_REFERENCE_WORDS = {"it", "its", "s", "is", "has", "been", "thats", "that", 
                         "have", "ve", "now", "all", "finally", "fully"}
 
 # Phrases that contain cue words but claim nothing ("the smoke alarm went off", "fire crew on site").
-NEUTRAL_PHRASES = ["keep clear", "stay clear", "keep everyone clear", "keep everybody clear", "keep people clear",
+NEUTRAL_PHRASES = ["comes down to", "come down to", "coming down to", "goes down to", "runs down to", "keep clear", "stay clear", "keep everyone clear", "keep everybody clear", "keep people clear",
                    "keep them clear", "keep the public clear", "keep well clear", "clear the public",
                    "clear everyone away", "clear everybody away", "clear people away", "clear the crowd",
                    "gas monitor", "gas monitors", "gas detector", "gas detectors", "gas reading", "gas readings",
@@ -375,6 +376,9 @@ DESCRIPTION_OPENERS = {"that", "which", "where", "whose", "you", "they", "we", "
                        "directly", "straight", "whatever", "before", "after", "behind", "beyond", "past", "above",
                        "below", "beneath", "under", "underneath", "opposite", "across", "beside", "towards", "toward",
                        "up", "down", "over", "round", "around"}
+# what opens a sighting right after a place passed ("going past the town hall there was ...")
+SEEN_THERE = {("there", "was"), ("there", "were"), ("there", "s"), ("theres",), ("there", "are"), ("i", "saw"),
+              ("we", "saw"), ("i", "could"), ("you", "could")}
 COPULAS = {"is", "are", "was", "were", "s", "re", "has", "have", "had", "got", "gotten", "looks", "seems",
            "appears", "be", "been", "being", "still", "now", "currently", "definitely", "totally",
            "completely", "fully", "all", "partly", "partially", "badly", "also", "too", "reported",
@@ -542,6 +546,10 @@ for _p in PERSON_NOUNS:
 THING_SUBJECTS = {"car", "vehicle", "van", "truck", "lorry", "bus", "road", "track", "path", "lift", "entrance",
                   "door", "gate", "bike", "tent", "hut"}
 PERSON_STATE_CUES = {("collapsed",), ("collapse",), ("collapsing",), ("burned",), ("burnt",), ("burned", "out")}
+
+# Parts of a person: "his arm is burned" is said of a person
+BODY_PARTS = {"arm", "arms", "leg", "legs", "hand", "hands", "head", "face", "foot", "feet", "back", "chest", "neck",
+              "eyes", "skin"}
 
 # Members of the public: "<a|two|there's> <person> <at|in|under|clinging...>" is a casualty claim.
 LAY_PERSONS = {"man", "woman", "person", "people", "someone", "somebody", "child", "children", "kid", "baby",
