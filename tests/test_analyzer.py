@@ -884,3 +884,18 @@ def test_repairs_reaching_back_and_lists_with_descriptions(analyzer, text, expec
 ])
 def test_bodies_sightings_and_paths(kb_analyzers, kb, text, expected):
     assert claims(kb_analyzers[kb], text) == expected
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    # what the rest of the sentence says after a place passed is said of it, where it names no other place
+    ("just walked past the flats, half the windows are blown out and there's smoke everywhere",
+     [("apartment block", "hazard")]),
+    # where the crew stands, and a place nobody has been in yet, claim nothing
+    ("we're standing outside the town hall and the roof of the library's come down, nobody's been in the town "
+     "hall yet", [("library", "hazard")]),
+    # "at the town hall, not the bank": the place said just before the negated one takes over its claims
+    ("casualty at the bank, cut to the head. Correction, all of that's at the town hall, not the bank.",
+     [("town hall", "victim")]),
+])
+def test_passing_standing_and_replacements_before_a_negation(analyzer, text, expected):
+    assert claims(analyzer, text) == expected

@@ -1936,6 +1936,10 @@ class ReportAnalyzer:
                 for q in earlier:
                     ex.places[ex.places.index(q)] = replace(q, status="retracted", reason=f"then '{toks.tokens[j].text} {p.text}'")
                 # ("not the school, they moved it, it's the library now": the next place in the sentence)
+                if earlier and nxt is None:
+                    # "correction, all of that's at the town hall, not the bank": the place said just before
+                    nxt = next((q for q in ex.places if q.status == "active" and j - 3 <= q.end_tok <= j
+                                and q.landmark != p.landmark and q.start_tok > earlier[-1].start_tok), None)
                 if earlier and nxt is not None and nxt.replaces is None:
                     ex.places[ex.places.index(nxt)] = replace(nxt, replaces=earlier[-1].start_tok)
 
@@ -1970,12 +1974,24 @@ class ReportAnalyzer:
                         and not toks.sentence_start[k] and norms[k - 1] != "we":
                     continue  # "my son and his friend were at the gym": "were", not "we're"
                 if hit is not None and j <= hit[0] <= p.start_tok and not any(toks.clause_start[i] for i in range(k + 1, min(hit[0], p.start_tok) + 1) if i < p.start_tok):
-                    if norms[k] in ("passing", "past", "going", "driving", "walking") \
+                    if norms[k] in ("passing", "past", "going", "driving", "walking", "passed") \
                             and (norms[p.end_tok:p.end_tok + 2] in lx.SEEN_THERE
-                                 or norms[p.end_tok:p.end_tok + 1] in lx.SEEN_THERE):
+                                 or norms[p.end_tok:p.end_tok + 1] in lx.SEEN_THERE
+                                 or "past" in hit[1].split() + [hit[1]] and self._sighting_after(ex, norms, p)):
                         break  # "going past the town hall there was loads of people hurt": what was seen there
+                    if any(norms[i] in ("dont", "never") or norms[i:i + 2] == ("do", "not") for i in range(max(0, k - 2), k)):
+                        break  # "dont go to the bakery, theres a fire": a warning about the place, not a move
                     ex.places[idx] = replace(p, status="reference", reason=f"in transit ('{hit[1]}'): no claim")
                     break
+
+    def _sighting_after(self, ex: Extraction, norms: tuple[str, ...], p: PlaceMention) -> bool:
+        """"just walked past the flats, like half the windows are blown out": the rest of the sentence after a
+        place passed says what is there (a cue, and no other place)."""
+        toks = ex.tokens
+        end = next((t for t in range(p.end_tok, len(norms)) if toks.sentence_start[t]), len(norms))
+        if any(q is not p and p.end_tok <= q.start_tok < end for q in ex.places):
+            return False
+        return self._cue_between(norms, p.end_tok, end)
 
     @staticmethod
     def _evacuated_to(toks: Tokens, norms: tuple[str, ...], e: int) -> bool:

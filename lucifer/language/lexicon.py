@@ -424,7 +424,9 @@ TRANSIT = ["evacuated from", "moved out of", "moved from", "relocated from", "de
            "staged at", "regrouping at", "relocating to", "diverting to", "rerouting to", "going round",
            "we're at", "we are at", "currently at", "positioned at", "standing by at", "checking", "will check",
            "we're outside", "we are outside", "we're by", "we are by", "we're in front of", "we're opposite",
-           "we're standing at", "we're parked at", "outside of", "went via", "going via", "came via", "parked up at",
+           "we're standing at", "we're standing outside", "we are standing outside", "standing outside",
+           "nobody's been in", "no one's been in", "nobody has been in", "no one has been in",
+           "we're parked at", "outside of", "went via", "going via", "came via", "parked up at",
            "parked up by", "parked up outside", "walking from", "driving from", "came out of", "stood down at",
            "standing down at",
            "about to check", "searching", "sweeping", "en route"]
