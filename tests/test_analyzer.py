@@ -899,3 +899,16 @@ def test_bodies_sightings_and_paths(kb_analyzers, kb, text, expected):
 ])
 def test_passing_standing_and_replacements_before_a_negation(analyzer, text, expected):
     assert claims(analyzer, text) == expected
+
+
+@pytest.mark.parametrize(("kb", "text", "expected"), [
+    # a relation phrase does not reach into the next sentence for its anchor
+    ("road_tunnel", "Diesel all over the road. Toll plaza is the marshalling area.",
+     [("toll plaza", "clear_route")]),
+    # a log's article-less subject before "checked and clear"; ground that has subsided into a cutting
+    ("quarrytown", "Dressing mill checked and clear. Sidings checked and clear.",
+     [("dressing sheds", "haven"), ("loading sidings", "haven")]),
+    ("quarrytown", "The platform at the halt has subsided into the cutting.", [("railway halt", "unstable_ground")]),
+])
+def test_sentence_bounds_log_subjects_and_subsidence(kb_analyzers, kb, text, expected):
+    assert claims(kb_analyzers[kb], text) == expected

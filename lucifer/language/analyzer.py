@@ -638,7 +638,9 @@ class ReportAnalyzer:
             return False
         return toks.clause_start[b] or norms[b] in lx.COPULAS \
             or self._cues.match_at(norms, b) is not None \
-            or (norms[b] in lx.TELEGRAPHIC_LINKS and self._cues.match_at(norms, b + 1) is not None)
+            or (norms[b] in lx.TELEGRAPHIC_LINKS and (self._cues.match_at(norms, b + 1) is not None
+                                                        or norms[b + 1:b + 2] == ("and",)  # "Sidings checked and clear"
+                                                        and self._cues.match_at(norms, b + 2) is not None))
 
     def _partial_names(self, toks: Tokens, norms: tuple[str, ...], taken: set[int]) -> list[PlaceMention]:
         """"the hardware —": the first words of a multi-word name, cut off by a pause."""
@@ -1644,6 +1646,8 @@ class ReportAnalyzer:
                 break
             j += 1
         place = next((p for p in ex.places if p.start_tok == j or (p.start_tok >= b and p.start_tok <= j and p.status == "active")), None)
+        if place is not None and any(ex.tokens.sentence_start[t] for t in range(b, place.start_tok + 1)):
+            place = None  # "diesel all over the road. Toll plaza is ...": a relation does not reach into the next sentence
         if place is not None and place.status in ("active", "retracted", "negated"):
             if place.status == "active" or place.start_tok == j:
                 return place, place.end_tok, False
