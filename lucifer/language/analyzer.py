@@ -584,17 +584,14 @@ class ReportAnalyzer:
                     and not toks.tokens[i].text.lower().endswith(("'s", "’s")):
                 continue  # "the first crew", "the other bore": a noun the ordinal counts, not a place
             earlier = [p for p in places + out if p.start_tok < start and p.status == "active"]
-            sentence = max(t for t in range(0, start + 1) if toks.sentence_start[t])
+            spans = [(q.start_tok, q.end_tok) for q in places if q.via is not None]
             listed: list[str] = []
             members: list[int] = []
-            for s_start in sorted({max(t for t in range(0, p.start_tok + 1) if toks.sentence_start[t]) for p in earlier},
-                                  reverse=True):
-                spans = [(q.start_tok, q.end_tok) for q in places if q.via is not None]
+            for n in sorted({toks.sentence_of[p.start_tok] for p in earlier}, reverse=True):
                 said = [p for p in sorted(places, key=lambda p: p.start_tok)
                         if (p.status == "active" or p.status == "reference" and not any(  # "the town hall and the
                             sa <= p.start_tok < se for sa, se in spans))  # building next to it": both are listed
-                        and s_start <= p.start_tok < (start if s_start == sentence else len(norms))
-                        and max(t for t in range(0, p.start_tok + 1) if toks.sentence_start[t]) == s_start]
+                        and toks.sentence_of[p.start_tok] == n and p.start_tok < start]
                 names = list(dict.fromkeys(p.landmark for p in said))
                 if len(names) >= 2:
                     listed, members = names, [p.start_tok for p in said]
@@ -762,12 +759,8 @@ class ReportAnalyzer:
         if not hasattr(self, "_shared_heads"):
             owners: dict[str, set[str]] = {}
             for lm in self.kb.landmarks:
-                for form in lm.surface_forms:
-                    words = name_words(form)
-                    if len(words) >= 2 and (words[-1].isdigit() or len(words[-1]) == 1 or words[-1] in lx.NUMBER_WORDS):
-                        words = words[:-1]
-                    if len(words) >= 2 and words[-1].isalpha():
-                        owners.setdefault(words[-1], set()).add(lm.name)
+                for head in filter(None, map(_name_head, lm.surface_forms)):
+                    owners.setdefault(head, set()).add(lm.name)
             self._shared_heads = {w: names for w, names in owners.items() if len(names) >= 2}
         return self._shared_heads
 
@@ -1230,13 +1223,8 @@ class ReportAnalyzer:
         """Nouns that can head a description of a place: the generic ones and the head words of the KB's names
         ("portal", "meadow"; not their modifiers: "lorry" of "lorry park" is no place in "a lorry cab")."""
         if getattr(self, "_place_noun_cache", None) is None:
-            words = set()
-            for lm in self.kb.landmarks:
-                for f in lm.surface_forms:
-                    ws = [w for w in name_words(f) if not (w.isdigit() or len(w) == 1 or w in lx.NUMBER_WORDS)]
-                    head = ws[-1].split("-")[-1] if ws else ""  # ("cross-passage": said as "cross", "passage")
-                    if head.isalpha() and len(head) >= 3 and head not in lx.FUNCTION_WORDS:
-                        words.add(head)
+            heads = (_name_head(f) or "".join(name_words(f)[-1:]) for lm in self.kb.landmarks for f in lm.surface_forms)
+            words = {head for head in heads if head.isalpha() and len(head) >= 3 and head not in lx.FUNCTION_WORDS}
             self._place_noun_cache = frozenset(words | lx.GENERIC_HEADS)
         return self._place_noun_cache
 
@@ -1993,7 +1981,7 @@ class ReportAnalyzer:
         place passed says what is there (a cue, and no other place)."""
         toks = ex.tokens
         end = next((t for t in range(p.end_tok, len(norms)) if toks.sentence_start[t]), len(norms))
-        if any(q is not p and p.end_tok <= q.start_tok < end for q in ex.places):
+        if any(q is not p and p.end_tok <= q.start_tok < end for q in ex.places):  # (the sentence's end)
             return False
         return self._cue_between(norms, p.end_tok, end)
 
@@ -3219,16 +3207,16 @@ class ReportAnalyzer:
         last, wasn't the bank", "Correction: casualty is in the bank, not the hotel". The categories are
         those the negating sentence affirms (the hotel loses its casualty, not a fire said of it), or
         every category where it affirms none."""
-        toks = ex.tokens
+        sentence_of = ex.tokens.sentence_of
         out: list[tuple[str, int, set[str]]] = []
         for p in ex.places:
             if p.status != "negated" or not p.reason.startswith("negated by"):
                 continue
-            start = max(t for t in range(0, p.start_tok + 1) if toks.sentence_start[t])
-            if not any(q.landmark == p.landmark and q.start_tok < start and q.status == "active" for q in ex.places):
+            n = sentence_of[p.start_tok]
+            if not any(q.landmark == p.landmark and sentence_of[q.start_tok] < n and q.status == "active"
+                       for q in ex.places):
                 continue
-            end = next((t for t in range(p.end_tok, len(toks)) if toks.sentence_start[t]), len(toks))
-            cats = {c.category for c in cues if start <= c.start_tok < end and c.polarity == "affirmed"
+            cats = {c.category for c in cues if sentence_of[c.start_tok] == n and c.polarity == "affirmed"
                     and c.status == "active"}
             out.append((p.landmark, p.start_tok, cats))
         return out
@@ -3465,6 +3453,19 @@ def _reads_backwards(link: str, phrase: str, inverse: bool) -> bool:
     """The direction of a relation form as a linking phrase says it: an antonym in the phrase
     ("downhill" against "uphill") reads it the other way."""
     return not inverse if any(lx.ANTONYMS.get(w) in phrase.split() for w in link.split()) else inverse
+
+
+def _name_head(form: str) -> str:
+    """The head word of a landmark's name, the word before a trailing number or letter ("refuge bay 4",
+    "cabin row A") and the last part of a hyphenated one; "" for a one-word name.
+
+    >>> _name_head("refuge bay 4"), _name_head("cross-passage 2"), _name_head("east portal"), _name_head("gym")
+    ('bay', 'passage', 'portal', '')
+    """
+    words = list(name_words(form))
+    if len(words) >= 2 and (words[-1].isdigit() or len(words[-1]) == 1 or words[-1] in lx.NUMBER_WORDS):
+        words = words[:-1]
+    return words[-1].split("-")[-1] if len(words) >= 2 and words[-1].isalpha() else ""
 
 
 def _passive_name(phrase: str) -> bool:
