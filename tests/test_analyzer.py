@@ -912,3 +912,11 @@ def test_passing_standing_and_replacements_before_a_negation(analyzer, text, exp
 ])
 def test_sentence_bounds_log_subjects_and_subsidence(kb_analyzers, kb, text, expected):
     assert claims(kb_analyzers[kb], text) == expected
+
+
+def test_itself_names_the_anchor_of_a_description_taken_back(kb_analyzers):
+    # "the lagoons below Vic Terrace -- no, scratch that -- the terrace itself": the repaired description's
+    # reference point is the place meant; a person who has fallen down a cellar is a casualty
+    assert claims(kb_analyzers["quarrytown"], "a kid's gone into the lagoons below Vic Terrace, no, scratch that, "
+                                              "he's fallen down a cellar in the terrace itself") == [
+        ("victoria terrace", "person_at_risk")]

@@ -1514,8 +1514,9 @@ class ReportAnalyzer:
                 continue
             if norms[i - 1] not in lx.GENERIC_HEADS or norms[i - 2] not in lx.DETERMINERS:
                 continue
-            anchors = [p for p in ex.places if p.end_tok <= i - 2 and p.status == "reference"
-                       and p.reason.startswith("reference point")]
+            anchors = [p for p in ex.places if p.end_tok <= i - 2 and p.status in ("reference", "retracted")
+                       and p.reason.startswith("reference point")]  # (also of a description taken back: "the lagoons
+            # below Vic Terrace -- no, scratch that, he's fallen down a cellar in the terrace itself")
             if not anchors:
                 continue
             anchor = max(anchors, key=lambda p: p.end_tok)

@@ -122,7 +122,7 @@ cannot stand up|can't stand up|can't walk|cannot walk|fell over|has fallen over|
 he fall|she fall|frostbite|frostbitten|frostbite case|is lost|he's lost|she's lost|got lost|lost child|lost kid|gone missing|has gone missing|is sick|are sick|sick inside|feeling sick|being sick|vomiting|throwing up|taken ill|feeling ill|
 send a boat|please send a boat|need a boat|send help|please send help|come and get us|come get us|get us out|
 please come|please hurry|please help us|fire fighter down|fireman down|fire fighter injured|not answering|isn't answering|he's not answering|she's not answering|
-just lying there|lying there|lying on the floor|lying on the ground|fell off|fallen off|took a fall|
+just lying there|lying there|lying on the floor|lying on the ground|fell off|fallen off|took a fall|fallen down a|fell down a|fallen down the|fell down the|
 out cold|knocked out|knocked unconscious|electrocuted|got a shock|got a belt|needs lifting|needs lifting off|
 needs winching|needs winching off|heat signature|heat signatures|thermal signature|under the bricks|
 under the wreckage|under the masonry|is under it|s under it|are under it|still under it|
