@@ -850,6 +850,10 @@ def test_modifier_ones_and_people_gone(kb_analyzers, kb, text, expected):
     ("lakeside_campground", "the building with the gas cage round the back of it still has people inside",
      [("shop", "person_at_risk")]),
     ("road_tunnel", "a P1 casualty in the cross-passage right before RB7", [("cross-passage 3", "trapped_or_injured")]),
+    # two relations from the anchor: MiniLM reads the linking words against the relation names, the
+    # anchor said as "it" ("row out to from it" is "reached by boat from", not "opens onto")
+    ("lakeside_campground", "family stranded on the place you row out to from the boat jetty",
+     [("island", "person_at_risk")]),
     ("road_tunnel", "three walking wounded at the plaza TCC keeps an eye on", [("toll plaza", "trapped_or_injured")]),
     # "the roof of X", "a tank wagon on the siding", a place held by another: no description
     ("knowledge_base", "the roof of the bakery is on fire", [("bakery", "hazard")]),

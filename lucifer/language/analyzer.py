@@ -1277,10 +1277,12 @@ class ReportAnalyzer:
                         or not any(w.endswith("s") or w.endswith("ed") or w in lx.RELATION_ENDINGS for w in after):
                     continue  # ("a tank wagon on the loading siding is leaking": the anchor's own predicate)
             related: dict[str, str] = {}
+            phrases: dict[str, str] = {}
             for rel in self.kb.relations:
                 if anchor.landmark in (rel.subject, rel.object) and rel.subject != rel.object:
                     other = rel.object if rel.subject == anchor.landmark else rel.subject
                     related.setdefault(other, f"{rel.subject} {rel.relation} {rel.object}")
+                    phrases.setdefault(other, rel.phrase)
             idx = ex.places.index(anchor)
             if not related:
                 continue
@@ -1291,9 +1293,15 @@ class ReportAnalyzer:
             if len(pool) == 1:
                 target = next(iter(pool))
             elif self.embedder is not None:
-                text = " ".join(toks.tokens[i].text for i in range(head, end))
+                # the linking words against the relation names, the anchor said as "it": names in both would
+                # only measure how alike the places' names are ("the boat jetty" and "the boathouse")
+                first = head
+                while first > 0 and norms[first - 1] in lx.ARTICLES:
+                    first -= 1
+                text = " ".join("it" if i == a else toks.tokens[i].text for i in range(first, end)
+                                if not a < i < anchor.end_tok)
                 names = sorted(pool)
-                vecs = self.embedder.embed([text] + [pool[n].replace("_", " ") for n in names])
+                vecs = self.embedder.embed([text] + [phrases[n] for n in names])
                 sims = vecs[1:] @ vecs[0]
                 order = np.argsort(-sims)
                 if float(sims[order[0]] - sims[order[1]]) >= self.RELATED_MARGIN:
