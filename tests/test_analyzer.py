@@ -794,6 +794,9 @@ def test_sentences_about_the_place_before_and_places_found_untouched(analyzer, t
                     "blocking lane one.", [("east portal", "blocked_or_spill"), ("substation", "fire_smoke")]),
     ("road_tunnel", "Casualty in RB4. Sorry, correction, not in the bay, he's at the toll plaza.",
      [("toll plaza", "trapped_or_injured")]),
+    # ... and, negated, still the anchor of "it": a KB head word one modifier after the article heads it
+    ("road_tunnel", "Casualty in RB4, sorry, correction, not in the bay, in the cross-passage it opens into.",
+     [("cross-passage 2", "trapped_or_injured")]),
     # a head going on into a relative clause is a description, not the last one named
     ("lakeside_campground", "Spot fire in the upper caravan field. People trapped in the field the shower block "
                             "backs onto.", [("lower caravan field", "person_at_risk"),

@@ -1721,7 +1721,7 @@ class ReportAnalyzer:
             if before:
                 ante = max(before, key=lambda p: p.end_tok)
                 if norms[hs] in lx.GENERIC_HEADS or (hs + 1 < len(norms) and norms[hs + 1] in lx.GENERIC_HEADS) \
-                        or (hs + 1 < len(norms) and self._plain_head(norms, hs + 1)):
+                        or (hs + 1 < len(norms) and self._plain_head(norms, hs + 1)) or self._plain_head(norms, hs):
                     return ante, hs, "pronoun"  # type: ignore[return-value]
         if anchor is None:
             return None
@@ -1742,8 +1742,11 @@ class ReportAnalyzer:
         return None
 
     def _plain_head(self, norms: tuple[str, ...], i: int) -> bool:
-        """A plain noun right after an article ("the taxiway it opens onto"), which may head a description."""
+        """A plain noun right after an article ("the taxiway it opens onto"), which may head a description; or
+        a KB's head word one modifier after it ("the cross-passage it opens into")."""
         w = norms[i]
+        if i > 1 and norms[i - 2] in lx.ARTICLES and w in self._place_nouns() and norms[i - 1].isalpha():
+            return True
         return i > 0 and norms[i - 1] in lx.ARTICLES and w.isalpha() and len(w) >= 3 and w not in _NOT_HEADS \
             and self._cues.match_at(norms, i) is None
 
