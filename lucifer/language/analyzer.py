@@ -115,6 +115,9 @@ class Classification:
     denied: list[Claim]
 
 
+# The reason of a denial made by "neither of them": it takes back only what it is said of, nothing earlier.
+NEITHER = "said with 'neither'"
+
 _REL_SPLIT = re.compile(r"[_\-\s]+")
 
 
@@ -361,7 +364,7 @@ class ReportAnalyzer:
         voice: dict[str, str] = {}
         for rel in self.kb.relations:
             words = rel.phrase.split()
-            if words and words[-1] == "by" and len(words) >= 2:
+            if _passive_name(rel.phrase):
                 voice[rel.phrase] = "passive"
             elif words and words[0].endswith("s") and not words[0].endswith("ss") and not _direction_word(words[0]):
                 voice[rel.phrase] = "active"
@@ -3173,13 +3176,13 @@ class ReportAnalyzer:
         claims = [c for c in pairs if c.cue.polarity == "affirmed"]
         held = {c.key for c in claims}
         denied = [c for c in pairs if c.cue.polarity == "denied"
-                  and not (c.cue.reason == "said with 'neither'" and c.key in held)]
+                  and not (c.cue.reason == NEITHER and c.key in held)]
         # the last word on a place and category stands: "the gas at the wash house ... the gas men
         # capped the pipe" revokes the first mention, "no fire at the bank -- wait, there is" restores it
         last: dict[tuple[str, str], tuple[int, bool]] = {}
         for c in sorted(pairs, key=lambda c: c.cue.start_tok):
             if c.cue.polarity == "denied" and (c.cue.reason.lower().startswith(lx.ABILITY_NEGATIONS)
-                                               or c.cue.reason == "said with 'neither'"):
+                                               or c.cue.reason == NEITHER):
                 continue  # "she can't get past the smoke on the stairs" revokes nothing, nor does "the first has a
                 # chemical spill ... neither of them has a fire"
             last[c.key] = (c.cue.start_tok, c.cue.polarity == "affirmed")
@@ -3208,7 +3211,7 @@ class ReportAnalyzer:
         out: list[Claim] = []
         for c in pairs:
             if c.place.anaphor == "neither" and c.cue.polarity == "affirmed":
-                c = Claim(c.place, replace(c.cue, polarity="denied", reason="said with 'neither'"))
+                c = Claim(c.place, replace(c.cue, polarity="denied", reason=NEITHER))
             out.append(c)
             out.extend(Claim(replace(c.place, landmark=other, also=()), c.cue) for other in c.place.also)
         return out
