@@ -927,3 +927,18 @@ def test_itself_names_the_anchor_of_a_description_taken_back(kb_analyzers):
     assert claims(kb_analyzers["quarrytown"], "a kid's gone into the lagoons below Vic Terrace, no, scratch that, "
                                               "he's fallen down a cellar in the terrace itself") == [
         ("victoria terrace", "person_at_risk")]
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    # "wait" before a place said "as well" / "too" adds news; it repairs nothing
+    ("the bank— no— the hotel, ground floor... heavy heat... withdrawing... wait... control, crew three says "
+     "the bank's alight as well", [("bank", "hazard"), ("hotel", "hazard")]),
+    ("fire at the bakery, wait, the school is burning too", [("bakery", "hazard"), ("school", "hazard")]),
+    ("fire at the bakery, wait, the school", [("school", "hazard")]),
+    # a report that opens with the danger names its place in a later sentence of its own
+    ("Please, there is fire! Big fire. It is the... the shop for medicine. The pharmacy.", [("pharmacy", "hazard")]),
+    ("Help, there's smoke everywhere! It's the school.", [("school", "hazard")]),
+    ("Fire! Crew two heading to the bakery.", []),
+])
+def test_wait_that_adds_and_a_place_named_after_its_danger(analyzer, text, expected):
+    assert claims(analyzer, text) == expected

@@ -2165,6 +2165,9 @@ class ReportAnalyzer:
             first_after = min((p for p in after if p.status == "active"), key=lambda p: p.start_tok, default=None)
             if first_after is not None and first_after.landmark == last.landmark:
                 continue  # "I mean the chapel, st mary's, same place": a restatement, not a repair
+            if first_after is not None and norms[a:ex.markers[k][1]] in (("wait",), ("hang", "on"), ("hold", "on")) \
+                    and self._adds_to(toks, norms, first_after):
+                continue  # "wait... crew three says the bank's alight as well": more news, not a repair
             i = ex.places.index(last)
             ex.places[i] = replace(last, status="retracted",
                                    reason=f"self-repair: '{toks.span_text(a, b)}' then '{after[0].text}'")
@@ -2179,6 +2182,18 @@ class ReportAnalyzer:
             for j, q in enumerate(ex.places):
                 if q.status == "reference" and last.start_tok <= q.start_tok < a:
                     ex.places[j] = replace(q, status="retracted", reason="reference point of a retracted place")
+
+    @staticmethod
+    def _adds_to(toks: Tokens, norms: tuple[str, ...], place: PlaceMention) -> bool:
+        """The place after a "wait" is said as more news, not instead: "wait... crew three says the
+        bank's alight as well", "... the school too"."""
+        end = place.end_tok
+        while end < len(norms) and not toks.clause_start[end] and end - place.end_tok < 6:
+            end += 1
+        tail = norms[place.end_tok:end]
+        if "too" in tail:
+            return True
+        return any(tail[i:i + 2] == ("as", "well") and tail[i + 2:i + 3] != ("as",) for i in range(len(tail) - 1))
 
     @staticmethod
     def _repair_window_start(ex: Extraction, k: int) -> int:
@@ -3111,6 +3126,8 @@ class ReportAnalyzer:
                     pairs.extend(Claim(here[-1], c) for c in cs)
                     continue
             target = self._target_for_cues(k, segs, seg_usable, seg_cues, sentence_of, transparent)
+            if target is None and not any(seg_usable.get(j) for j in range(k)):
+                target = self._named_after(k, segs, seg_usable, seg_cues, sentence_of, norms, sent_words)
             if target is not None and all(q.status == "negated" for q in seg_usable[target]):
                 # "the harbour master's office, not the ice house, has got a gas leak": past the negated aside
                 # to the place it was contrasted with, in the same sentence
@@ -3386,6 +3403,30 @@ class ReportAnalyzer:
             if not seg_places.get(j) and j not in hollow:
                 break
             j += 1
+        return None
+
+    @staticmethod
+    def _named_after(k: int, segs: list[tuple[int, int]], seg_places: dict[int, list[PlaceMention]],
+                     seg_cues: dict[int, list[CueMention]], sentence_of: list[int], norms: tuple[str, ...],
+                     sent_words: dict[int, int]) -> int | None:
+        """A report that opens with the danger and names the place after it: "There is fire! Big fire.
+        It is the... the shop for medicine. The pharmacy." Up to two sentences on, none with a cue of
+        its own, the first place said alone or as "it's the X" is the one meant."""
+        here = sentence_of[segs[k][0]]
+        for j in range(k + 1, len(segs)):
+            n = sentence_of[segs[j][0]]
+            if n == here or n > here + 2:
+                if n > here + 2:
+                    return None
+                continue
+            if seg_cues.get(j):
+                return None
+            if seg_places.get(j):
+                start = next(i for i in range(segs[j][0], -1, -1) if i == 0 or sentence_of[i - 1] != n)
+                words = [w for w in norms[start:segs[j][1]] if w not in lx.FILLERS]
+                said_alone = sent_words.get(n, 99) <= 3
+                named = words[:2] in (["it", "is"], ["its"], ["thats"], ["this", "is"]) or words[:1] in (["its"], ["thats"])
+                return j if said_alone or named else None
         return None
 
     @staticmethod
