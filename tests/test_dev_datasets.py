@@ -29,6 +29,8 @@ CAMPGROUND = ROOT / "knowledge_bases" / "lakeside_campground"
 TUNNEL = ROOT / "knowledge_bases" / "road_tunnel"
 STADIUM = ROOT / "knowledge_bases" / "football_stadium"
 MALL = ROOT / "knowledge_bases" / "shopping_mall"
+HOSPITAL = ROOT / "knowledge_bases" / "hospital_campus"
+ZOO = ROOT / "knowledge_bases" / "city_zoo"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -96,6 +98,11 @@ SETS = {
     "dev16/football_stadium": _set("dev16/football_stadium.jsonl", STADIUM, "fb",
                                    {"standard": 30, "messy": 30, "advanced_messy": 30}),
     "dev16/shopping_mall": _set("dev16/shopping_mall.jsonl", MALL, "sm", {"standard": 30, "messy": 30, "advanced_messy": 30}),
+    "dev17/market_square": _set("dev17/market_square.jsonl", MARKET_SQUARE, "d17",
+                                {"standard": 20, "messy": 55, "advanced_messy": 45}, sep=""),
+    "dev17/city_zoo": _set("dev17/city_zoo.jsonl", ZOO, "zo", {"standard": 30, "messy": 30, "advanced_messy": 30}),
+    "dev17/hospital_campus": _set("dev17/hospital_campus.jsonl", HOSPITAL, "hc",
+                                  {"standard": 30, "messy": 30, "advanced_messy": 30}),
 }
 
 
