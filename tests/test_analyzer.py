@@ -942,3 +942,49 @@ def test_itself_names_the_anchor_of_a_description_taken_back(kb_analyzers):
 ])
 def test_wait_that_adds_and_a_place_named_after_its_danger(analyzer, text, expected):
     assert claims(analyzer, text) == expected
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    # transcribed slips of description words and of a name with a cue word in it
+    ("transcript: smoke at the bilding next too the clinic", [("police station", "hazard")]),
+    ("transcript: fire at the bakry and the shop atached to it", [("bakery", "hazard"), ("pharmacy", "hazard")]),
+    ("transcript: large smoke ploom over the fire staytion", [("fire station", "hazard")]),
+    ("transcript: we have a man down at the munisipal building", [("town hall", "victim")]),
+    # a caller saying who and where they are claims nothing there
+    ("Scaffolder on the roof of the hotel, over. I can see flames coming out of the hardware store",
+     [("hardware store", "hazard")]),
+    # a place's entrance is the place; at the foot of a landmark is at it
+    ("there's a live wire down at the town hall entrance", [("town hall", "hazard")]),
+    ("a man lying at the foot of the water tower, he's not moving", [("water tower", "victim")]),
+    # "negative the X" after X was repaired away denies it; a restated claim after "amend that"
+    ("smoke from the school, no, the post office, negative the school, it's the post office roof",
+     [("post office", "hazard")]),
+    ("Two survivors recovered from the library. Amend that: the survivors were recovered from the town hall.",
+     [("town hall", "victim")]),
+    ("survivors sheltering in the church", [("church", "safe_zone")]),
+])
+def test_transcribed_slips_callers_and_restated_claims(analyzer, text, expected):
+    assert claims(analyzer, text) == expected
+
+
+@pytest.mark.parametrize(("kb", "text", "expected"), [
+    # "collapsed" in the critical category's description: said of a structure it is the danger
+    ("city_zoo", "A section of the north boundary wall has collapsed, about ten metres of it.",
+     [("north boundary wall", "unsafe_area")]),
+    ("city_zoo", "keeper mills has collapsed in the aviary", [("aviary", "person_at_risk")]),
+    ("saltmarsh_airfield", "directly north of the terminal, up top, a controller's collapsed up there",
+     [("control tower", "person_in_need")]),
+    ("city_zoo", "The water upstream of the pump house has burst its bank on the south side.",
+     [("boating lake", "unsafe_area")]),
+    # a missing person found, a fire out after an update, a cancel phrase after "till"
+    ("city_zoo", "lost child at the aviary, mum's found her", []),
+    ("city_zoo", "Fire reported in the block attached to the cafe — update, that's out now.", []),
+    ("hospital_campus", "A&E is open, it's safe — no hang on, the ceiling's cracked in resus, A&E is no entry till "
+                        "it's shored up", [("emergency department", "no_entry")]),
+    ("hospital_campus", "the helipad is open, and the laundry fire is still burning",
+     [("helipad", "operational"), ("laundry", "no_entry")]),
+    # "I mean" said after the new place
+    ("hospital_campus", "the mortuary — er, the chapel I mean — is safe", [("chapel", "operational")]),
+])
+def test_structures_that_collapse_found_people_and_trailing_repairs(kb_analyzers, kb, text, expected):
+    assert claims(kb_analyzers[kb], text) == expected

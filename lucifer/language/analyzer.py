@@ -475,7 +475,7 @@ class ReportAnalyzer:
             return self._extract(text)
 
     def _extract(self, text: str) -> Extraction:
-        toks = tokenize(text)
+        toks = self._respell(tokenize(text))
         norms = toks.norms(0, len(toks))
         places: list[PlaceMention] = []
         all_cues = self._cues.find_all(norms)
@@ -541,6 +541,7 @@ class ReportAnalyzer:
         self._apply_place_negation(ex)
         self._apply_restarts(ex)
         self._apply_place_repairs(ex)
+        self._apply_trailing_repairs(ex)
         self._apply_transit(ex)
         ex.places.sort(key=lambda p: p.start_tok)
         return ex
@@ -823,17 +824,19 @@ class ReportAnalyzer:
             best: tuple[float, int, str] | None = None
             for n in (3, 2, 1):
                 span = range(i, i + n)
-                if i + n > len(norms) or any(j in taken or j in cue_tokens or norms[j] in closed for j in span) \
+                if i + n > len(norms) or any(j in taken or (norms[j] in closed and not (
+                        j > i and norms[j] in lx.GENERIC_HEADS)) for j in span) \
                         or any(toks.clause_start[j] for j in range(i + 1, i + n)):
-                    continue  # ("fuel from" is not "fuel farm")
+                    continue  # ("fuel from" is not "fuel farm"; "the munisipal building" is the municipal one)
                 word = "".join(norms[j] for j in span)  # ("hanger two's": the keys drop the "'s")
                 typo = self._typo_of(word, [norms[j] for j in span],
                                      raw=toks.tokens[i].text.lower() if n == 1 else None)
-                if typo is not None:
+                if typo is not None and not all(j in cue_tokens for j in span):
+                    # ("the fire staytion": one slipped word keeps the name, a cue word in it or not)
                     if best is None or 0.99 > best[0]:
                         best = (0.99, n, typo)
                     continue
-                if not word.isalnum() or len(word) < self.MISHEARD_MIN_CHARS - 1:
+                if not word.isalnum() or len(word) < self.MISHEARD_MIN_CHARS - 1 or any(j in cue_tokens for j in span):
                     continue
                 head = norms[i]
                 scores = sorted(((difflib.SequenceMatcher(None, word, key).ratio(), name)
@@ -860,6 +863,39 @@ class ReportAnalyzer:
                 continue
             i += 1
         return out
+
+    RESPELL_MIN_CHARS = 5
+
+    def _respell(self, toks: Tokens) -> Tokens:
+        """Typed and transcribed slips of the words descriptions are built from: "the bilding in frunt of
+        the bus station", "the shop atached to it". A word that is no English word (not in MiniLM's
+        vocabulary) and one edit from exactly one relation or place-noun word is read as that word."""
+        if self.embedder is None:
+            return toks
+        if not hasattr(self, "_respellings"):
+            words = {w for bucket in self._relations._by_first.values() for key, _ in bucket for w in key}
+            words |= set(lx.GENERIC_HEADS)
+            named = {w for key, _ in self._name_keys() for w in [key]} | {
+                w for lm in self.kb.landmarks for form in lm.surface_forms for w in name_words(form)}
+            self._respellings = sorted(w for w in words - named if len(w) >= self.RESPELL_MIN_CHARS and w.isalpha())
+            self._named_words = named
+            self._to_after = {key[i] for bucket in self._relations._by_first.values() for key, _ in bucket
+                              for i in range(len(key) - 1) if key[i + 1] == "to"}
+        known = self.embedder.vocabulary()
+        fixed = list(toks.tokens)
+        for t in toks.tokens:
+            w = t.norm
+            if w == "too" and t.i > 0 and fixed[t.i - 1].norm in self._to_after and not toks.clause_start[t.i]:
+                fixed[t.i] = replace(t, norm="to")  # "the building next too the clinic"
+                continue
+            if len(w) < self.RESPELL_MIN_CHARS or not w.isalpha() or w in known or t.text.lower() in known \
+                    or w in self._named_words:
+                continue
+            hits = [r for r in self._respellings if r[0] == w[0] and abs(len(r) - len(w)) <= 1 and _one_edit(w, r)
+                    and not w.startswith(r) and not r.startswith(w)]  # ("fenced" is no slip of "fence")
+            if len(hits) == 1:
+                fixed[t.i] = replace(t, norm=hits[0])
+        return replace(toks, tokens=tuple(fixed)) if fixed != list(toks.tokens) else toks
 
     TYPO_MIN_CHARS = 4
 
@@ -1427,6 +1463,8 @@ class ReportAnalyzer:
             if target is None:
                 if not generic and self._cue_before(ex.tokens, norms, a):
                     return  # "a vapour cloud sitting over the reactor building": where the danger is, not a description
+                if norms[a:a + 2] == ("at", "the") and b > a + 2 and norms[a + 2] in lx.LOCATIVE_PARTS:
+                    return  # "a man lying at the foot of the water tower": where he lies, when nothing lies below it
                 ex.places[idx] = replace(anchor, status="reference",
                                          reason=f"reference point of an unresolved '{phrase}' description")
                 return
@@ -1896,6 +1934,10 @@ class ReportAnalyzer:
             neg = norms[j] in ("not", "nt", "isnt", "wasnt") or norms[j] in lx.RETRACT_VERBS or (
                 norms[j] == "negative" and norms[j + 1] == "on"  # "negative on the quarry, it's the campsite"
             ) or (
+                # "from the school, no, the post office, negative the school": said again only to deny it
+                norms[j] == "negative" and not toks.clause_start[j + 1]
+                and any(q.landmark == p.landmark and q.end_tok <= j for q in ex.places)
+            ) or (
                 j > 0 and norms[j - 1 : j + 1] in (("rather", "than"), ("instead", "of"))
             ) or (
                 j > 0 and norms[j - 1 : j + 1] == ("no", "longer")  # "the rest centre is no longer the town hall"
@@ -2105,6 +2147,8 @@ class ReportAnalyzer:
             between = norms[first_cue[1] : first_place.start_tok]
             glue = lx.PREPOSITIONS | lx.DETERMINERS | lx.FILLERS | lx.COPULAS
             new_clause = {"its", "it", "there", "theres", "thats", "that", "we", "were", "i"}
+            raw = [t.text.lower().replace("’", "'") for t in ex.tokens.tokens[first_cue[1]:first_place.start_tok]]
+            new_clause -= {"were"} if "we're" not in raw else set()  # ("the survivors were recovered from")
             if len(between) <= 4 and not new_clause & set(between) and (
                     all(w in glue for w in between) or (len([w for w in between if w not in glue]) <= 1
                                                         and any(w in lx.PREPOSITIONS for w in between))):
@@ -2184,6 +2228,65 @@ class ReportAnalyzer:
                     ex.places[j] = replace(q, status="retracted", reason="reference point of a retracted place")
 
     @staticmethod
+    def _says_who_and_where(toks: Tokens, norms: tuple[str, ...], p: PlaceMention) -> bool:
+        """A clause that is only a caller and a position: "Scaffolder on the roof of the hotel, over",
+        "Postman at the bakery here"."""
+        start = p.start_tok
+        while start > 0 and not toks.sentence_start[start]:
+            start -= 1
+        before = [w for w in norms[start:p.start_tok] if w not in lx.FILLERS and w not in lx.DETERMINERS]
+        if len(before) < 2 or before[1] not in lx.POSITION_PREPS or before[0] in lx.PRONOUNS | lx.LAY_PERSONS \
+                or before[0] in lx.MOVED_PEOPLE:
+            return False
+        if not set(before[2:]) <= lx.PREPOSITIONS | lx.LOCATIVE_PARTS | {"roof", "of", "top", "up", "here"}:
+            return False
+        end = p.end_tok
+        while end < len(norms) and not toks.sentence_start[end] and norms[end] not in lx.COORDINATORS:
+            end += 1
+        tail = [w for w in norms[p.end_tok:end] if w not in lx.FILLERS or w in ("over", "here")]
+        if not set(tail) <= {"over", "here", "now"}:
+            return False
+        # ("Water in the compartment." claims; "Scaffolder on the roof of the hotel, over." calls in)
+        return bool(tail) or before[0] in lx.WORKER_PERSONS or before[0] in lx.CREW_NOUNS
+
+    def _sheltered_people(self, norms: tuple[str, ...], cues: list[CueMention]) -> list[CueMention]:
+        """"twenty patients sheltering in there": people said with the shelter they have are no casualty claim."""
+        starts = {c.start_tok: c for c in cues}
+        out = []
+        for c in cues:
+            nxt = starts.get(c.end_tok)
+            if c.end_tok - c.start_tok == 1 and norms[c.start_tok] in lx.MOVED_PEOPLE | {"patient", "survivor", "evacuee"} \
+                    and self.kb.category_by_name[c.category].role == Role.CRITICAL and nxt is not None \
+                    and self.kb.category_by_name[nxt.category].role == Role.DESIRABLE:
+                continue
+            out.append(c)
+        return out
+
+    def _apply_trailing_repairs(self, ex: Extraction) -> None:
+        """"the mortuary -- er, the chapel I mean -- is safe": "I mean" said after the new place retracts
+        the one before it, when nothing was claimed in between."""
+        toks = ex.tokens
+        norms = toks.norms(0, len(toks))
+        cue_tokens = {i for a, b in self._cue_starts(ex) for i in range(a, b)}
+        for a, b, _ in ex.markers:
+            if norms[a:b] not in (("i", "mean"), ("i", "meant")):
+                continue
+            new = next((p for p in ex.places if p.end_tok == a and p.status == "active"), None)
+            if new is None or toks.clause_start[a]:
+                continue
+            sent = toks.sentence_of[a]
+            old = max((p for p in ex.places if p.status == "active" and p.end_tok <= new.start_tok
+                       and toks.sentence_of[p.start_tok] == sent), key=lambda p: p.end_tok, default=None)
+            if old is None or old.landmark == new.landmark or cue_tokens & set(range(old.end_tok, new.start_tok)):
+                continue
+            if not any(toks.clause_start[i] for i in range(old.end_tok, new.start_tok + 1)):
+                continue  # ("the bakery and the school I mean": a list, no pause)
+            if any(norms[i] in lx.COORDINATORS for i in range(old.end_tok, new.start_tok)):
+                continue
+            ex.places[ex.places.index(old)] = replace(old, status="retracted",
+                                                      reason=f"self-repair: '{new.text}' then '{toks.span_text(a, b)}'")
+
+    @staticmethod
     def _adds_to(toks: Tokens, norms: tuple[str, ...], place: PlaceMention) -> bool:
         """The place after a "wait" is said as more news, not instead: "wait... crew three says the
         bank's alight as well", "... the school too"."""
@@ -2250,6 +2353,13 @@ class ReportAnalyzer:
             if source == "lexicon" and norms[a:b] in lx.PERSON_STATE_CUES and self._person_category \
                     and self._person_before(norms, a):
                 cue = replace(cue, category=self._person_category, reason=f"a person {norms[a]}")
+            if source == "category" and norms[a:b] in lx.PERSON_STATE_CUES \
+                    and self.kb.category_by_name[cat].role == Role.CRITICAL and self._thing_before(norms, a, self._place_tokens):
+                # the critical category's description lists "collapsed" (a person who has): the wall that has
+                # collapsed is the danger the vocabulary reads it as
+                und = self._category_for_role(lx.UNDESIRABLE, " ".join(norms[a:b]))
+                if und is not None:
+                    cue = replace(cue, category=und, source="lexicon", reason=f"a thing {norms[a]}")
             if source in ("lexicon", "category") and norms[a:b] == ("buried",) and a > 0 and norms[a - 1] in lx.THING_SUBJECTS \
                     and self.kb.category_by_name[cat].role == Role.CRITICAL:
                 und = self._category_for_role(lx.UNDESIRABLE, "buried under snow and debris")
@@ -2260,6 +2370,7 @@ class ReportAnalyzer:
             if checked.category != cue.category:  # "no longer safe": unsafe now, and no longer safe
                 cues.append(replace(cue, polarity="denied", reason=checked.reason))
         cues = self._read_cue_pairs(toks, norms, cues)
+        cues = self._sheltered_people(norms, cues)
         cues.extend(self._predicative_cues(ex, norms, blocked | {i for c in cues for i in range(c.start_tok, c.end_tok)}))
         cues.extend(self._person_cues(ex, norms, blocked | {i for c in cues for i in range(c.start_tok, c.end_tok)}))
         cues.extend(self._another_one_cues(toks, norms, cues, blocked))
@@ -2300,6 +2411,18 @@ class ReportAnalyzer:
         return out
 
     @staticmethod
+    def _thing_before(norms: tuple[str, ...], a: int, place_tokens: set[int]) -> bool:
+        """Is the subject before token ``a`` a structure ("the north boundary wall has collapsed", "its roof
+        has collapsed", "the stairs collapsed")? A place named there, or a word for part of a building."""
+        j = a - 1
+        while j >= 0 and norms[j] in ("have", "has", "had", "s", "is", "are", "was", "were", "been", "just", "partly",
+                                      "partially", "completely", "totally", "now", "all", "also", "then"):
+            j -= 1
+        if j < 0:
+            return False
+        return j in place_tokens or norms[j] in lx.DANGER_KIND_PARTS or norms[j] in lx.STRUCTURE_WORDS
+
+    @staticmethod
     def _person_before(norms: tuple[str, ...], a: int) -> bool:
         """Is the subject before token ``a`` a person ("two residents have collapsed", "the gardeners all
         collapsed")? A person word, or a counted noun of a doer ("two gardeners", "3 climbers")."""
@@ -2315,6 +2438,8 @@ class ReportAnalyzer:
             return True
         if w in lx.BODY_PARTS and j > 0 and norms[j - 1] in ("his", "her", "their", "my", "your"):
             return True  # "his arm is burned": a person's
+        if j > 0 and norms[j - 1] in ("mr", "mrs", "ms", "miss", "dr", "keeper", "nurse", "officer", "sister"):
+            return True  # "keeper Mills has collapsed": a name after a title
         counted = j > 0 and (norms[j - 1] in lx.NUMBER_WORDS or norms[j - 1].isdigit())
         return counted and w.endswith(("er", "ent", "ist", "or", "ian"))
 
@@ -2410,6 +2535,8 @@ class ReportAnalyzer:
                 continue  # the vocabulary (or a repair) already spoke here; the fallback stays silent
             if any(a <= i < b for i in negated):
                 continue  # "nobody home at the flats": a negated predicate is no claim to guess at
+            if self._says_who_and_where(toks, norms, p):
+                continue  # "Scaffolder on the roof of the hotel, over.": who is calling and from where
             kept.append(p)
         todo = kept
         if not todo:
@@ -2795,6 +2922,8 @@ class ReportAnalyzer:
         steps = 0
         ends = {p.start_tok: p.end_tok for p in getattr(self, "_places_now", [])}
         while k < len(norms) and steps < 7 and not toks.clause_start[k]:  # "the fire on the roof at the bakery is out"
+            if norms[k] in lx.UNTIL_WORDS:
+                break  # "no entry till it's shored up": what will end it, not that it has
             if k in ends and ends[k] > k:
                 k = ends[k]  # a place (or a whole relational description) counts as one word
                 steps += 1
@@ -2808,6 +2937,8 @@ class ReportAnalyzer:
                     break  # "the evacuation point is no longer the town hall": the place is negated, not the cue
                 if h[1] in lx.CANCEL_PEOPLE_ONLY and self.kb.category_by_name[cue.category].role != Role.CRITICAL:
                     break  # "gas leak at the police post, they evacuated": people left, the leak stays
+                if h[1] in lx.CANCEL_MISSING_ONLY and " ".join(norms[cue.start_tok:cue.end_tok]) not in lx.MISSING_CUES:
+                    break  # "casualty at the bank, we found him under the desk": found, not safe
                 cancelled_by = h[1]
                 break
             undesirable = self.kb.category_by_name[cue.category].role == Role.UNDESIRABLE
@@ -2859,6 +2990,9 @@ class ReportAnalyzer:
             if h is not None and h[1] in lx.CANCEL_PEOPLE_ONLY \
                     and self.kb.category_by_name[cue.category].role != Role.CRITICAL:
                 h = None  # "gas in the winding house, we've pulled everyone out, all accounted for": the gas stays
+            if h is not None and h[1] in lx.CANCEL_MISSING_ONLY \
+                    and " ".join(norms[cue.start_tok:cue.end_tok]) not in lx.MISSING_CUES:
+                h = None
             if h is not None and (h[0] >= len(norms) or toks.clause_start[h[0]] or norms[h[0]] in ("now", "completely")
                                   or h[1] in lx.CANCEL_CLAUSES):
                 cancelled_by = h[1]

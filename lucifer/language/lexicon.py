@@ -66,6 +66,7 @@ petrol all over|fuel all over|diesel all over|oil all over|petrol everywhere|die
 petrol leak|diesel leak|fuel spill|petrol spill|diesel spill|exploding|explode|could explode|
 wall's fallen|wall has fallen|walls have fallen|roof's fallen|roof has fallen|ceiling's fallen|ceiling has fallen|
 chimney's fallen|chimney has fallen|fallen masonry|fallen tree|tree's fallen|tree has fallen|tree down|trees down|
+flattened|smashed in|swaying|
 """.replace("\n", ""))
 
 _add(DESIRABLE, """
@@ -81,6 +82,7 @@ welfare point|holding point|muster point|muster station|assembly point|assembly 
 reception centre|reception center|rest center|high ground|taking evacuees|taking in evacuees|open as a rest centre|
 opened as a rest centre|safe ground|dry and safe|bone dry|warming centre|warm and dry|sheltering there|
 meeting point|the meeting point|empty and checked|checked and empty|evacuated and checked|searched and clear|
+is open|s open|are open|still open|open again|reopened|open and usable|open for landing|
 """.replace("\n", ""))
 
 _add(CRITICAL, """
@@ -98,6 +100,7 @@ hypothermic|drowning|bleeding out|critical condition|in shock|lost consciousness
 pinned under debris|pinned under rubble|trapped under debris|trapped under rubble|buried under rubble|buried under debris|
 trapped in rubble|under the rubble|needs medics|need medics|needs a doctor|requires evacuation|unaccounted for|
 people still inside|still inside|someone still inside|people stuck|people stuck inside|with people inside|
+breathing problems|breathing difficulties|difficulty breathing|struggling to breathe|can't breathe|cannot breathe|
 man collapsed|woman collapsed|person collapsed|someone collapsed|somebody collapsed|he collapsed|she collapsed|
 needs oxygen|need oxygen|having a heart attack|heart attack|seizure|having a seizure|can't breathe|cannot breathe|
 asthma attack|asthma attacks|an asthma attack|having an asthma attack|shut in|locked in|
@@ -159,8 +162,14 @@ CANCEL_AFTER = ["is out", "s out", "are out", "was out", "put out", "out now", "
                 f"{verb} {who} out" for verb in ("got", "gotten", "taken", "took", "pulled", "brought")
                 for who in ("him", "her", "them", "everyone", "everybody", "all of them", "the casualty")] + [
                 "nobody was in", "no one was in", "nobody was inside", "no one was inside", "walked off",
-                "nobody in", "no one in",
+                "nobody in", "no one in", "found her", "found him", "found them", "found safe",
                 "empty"]
+# ... of which these revoke only a missing person ("lost child at the aviary, mum's found her")
+CANCEL_MISSING_ONLY = {"found her", "found him", "found them", "found safe"}
+MISSING_CUES = {"missing", "lost", "lost child", "last seen", "unaccounted for", "missing person", "missing persons",
+                "not accounted for", "can't find", "cannot find", "lost contact with"}
+# Words after which a cancelling phrase says what will end a danger, not that it has ended.
+UNTIL_WORDS = {"till", "until", "til", "unless", "once"}
 # Reasons of denials that say what cannot be done, not that a danger is gone ("can't get past the smoke").
 ABILITY_NEGATIONS = ("negated by 'can't'", "negated by 'cant'", "negated by 'cannot'", "negated by 'couldn't'",
                      "negated by 'couldnt'", "negated by 'ca'")
@@ -174,13 +183,14 @@ CANCEL_PEOPLE_ONLY = {"all rescued", "rescued", "evacuated", "got out", "out saf
                       "picked up", "been picked up", "handed to the ambulance crew", "handed over to the ambulance",
                       "been handed over", "been handed to the ambulance crew", "nobody was in", "no one was in",
                       "walked off", "empty", "nobody in", "no one in",
-                      "nobody was inside", "no one was inside"} | {
+                      "nobody was inside", "no one was inside", "found her", "found him", "found them",
+                      "found safe"} | {
                       f"{verb} {who} out" for verb in ("got", "gotten", "taken", "took", "pulled", "brought")
                       for who in ("him", "her", "them", "everyone", "everybody", "all of them", "the casualty")}
 
 # Words that open a clause speaking again of the thing just named ("..., it's drained now").
 BACK_REFERENCE_WORDS = {"it", "its", "s", "is", "has", "been", "thats", "that", "was", "they", "theyre", "are", "re",
-                        "have", "ve", "now", "all", "finally", "fully"}
+                        "have", "ve", "now", "all", "finally", "fully", "update", "updating", "latest"}
 
 # Phrases that contain cue words but claim nothing ("the smoke alarm went off", "fire crew on site").
 NEUTRAL_PHRASES = ["comes down to", "come down to", "coming down to", "goes down to", "runs down to", "keep clear", "stay clear", "keep everyone clear", "keep everybody clear", "keep people clear",
@@ -398,7 +408,7 @@ INSTRUCTION_WORDS = {"instruction", "instructions", "previous", "every", "everyt
 
 # Nouns after a place name that make the name a modifier ("pharmacy team reports ...").
 MODIFIED_BY = {"team", "crew", "unit", "squad", "staff", "manager", "owner", "workers", "worker", "group",
-               "side", "entrance", "exit", "car", "truck", "van", "bus", "sign", "road", "street", "lane"}
+               "side", "car", "truck", "van", "bus", "sign", "road", "street", "lane"}
 
 # Words after a place that name a part of it, not another thing ("the surgery car park").
 PART_OF_PLACE = {("car", "park"), ("car", "parks")}
@@ -547,6 +557,10 @@ for _p in PERSON_NOUNS:
 # Person words that say what happened to a thing when a thing is their subject ("cars buried").
 THING_SUBJECTS = {"car", "vehicle", "van", "truck", "lorry", "bus", "road", "track", "path", "lift", "entrance",
                   "door", "gate", "bike", "tent", "hut"}
+# Parts of a structure that can be the subject of "collapsed" (no person is).
+STRUCTURE_WORDS = {"stair", "stairs", "staircase", "stairwell", "scaffold", "scaffolding", "structure", "section",
+                   "building", "fence", "canopy", "stand", "bridge", "balcony", "shelf", "shelving", "racking",
+                   "tunnel", "shaft", "mezzanine", "platform", "awning", "shed", "barn", "enclosure", "gantry"}
 PERSON_STATE_CUES = {("collapsed",), ("collapse",), ("collapsing",), ("burned",), ("burnt",), ("burned", "out")}
 
 # Parts of a person: "his arm is burned" is said of a person
@@ -674,7 +688,7 @@ DANGER_KINDS: dict[str, list[str]] = {
                "shedding slates", "masonry falling", "falling masonry", "fallen masonry", "wall's fallen",
                "wall has fallen", "walls have fallen", "roof's fallen", "roof has fallen", "ceiling's fallen",
                "ceiling has fallen", "chimney's fallen", "chimney has fallen", "roof down", "ceiling's down",
-               "ceiling down"],
+               "ceiling down", "tree through the roof", "tree on it", "the tree on it", "tree on the roof"],
     "ground": ["is shifting", "s shifting", "its shifting", "keeps shifting", "started shifting", "sliding",
                "landslide", "mudslide", "mud slide", "landslip", "slipping", "sinkhole", "come away", "came away",
                "subsided into", "subsiding into", "subsidence"],
@@ -689,7 +703,8 @@ DANGER_KINDS: dict[str, list[str]] = {
               "filled with water", "filling with water", "filling up with water", "it's going under",
               "it's gone under", "going under fast", "all under", "all under water", "roofs only showing",
               "only the roofs showing", "floor's gone under", "floor has gone under", "whole floor's gone under",
-              "burst main", "burst pipe", "pipe burst", "pipe's burst"],
+              "burst main", "burst pipe", "pipe burst", "pipe's burst", "overflowing", "overflowed", "overtopped",
+              "burst its", "burst its bank", "burst its south bank", "burst its north bank"],
     "current": ["strong current", "fierce current", "fast current", "swift current", "rip current", "undertow",
                 "current's ripping", "current is ripping", "current ripping", "fast flowing water",
                 "fast-flowing water", "ripping through"],
