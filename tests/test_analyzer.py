@@ -988,3 +988,21 @@ def test_transcribed_slips_callers_and_restated_claims(analyzer, text, expected)
 ])
 def test_structures_that_collapse_found_people_and_trailing_repairs(kb_analyzers, kb, text, expected):
     assert claims(kb_analyzers[kb], text) == expected
+
+
+@pytest.mark.parametrize(("kb", "text", "expected"), [
+    # a person who has fallen or slipped in; a wall repaired to its other name, then collapsed
+    ("city_zoo", "The pool that feeds into the boating lake is overflowing and a keeper's slipped in there.",
+     [("penguin pool", "person_at_risk"), ("penguin pool", "unsafe_area")]),
+    ("city_zoo", "the north wall's down, the perimeter wall, yeah, collapsed onto the pavement",
+     [("north boundary wall", "unsafe_area")]),
+    # "everyone's out of" says nobody is left there
+    ("hospital_campus", "Everyone's out of the lift shaft now, but the unit it's attached to has a midwife injured.",
+     [("maternity unit", "people_in_danger")]),
+    # a clause with its own subject after a bare repaired place lends it nothing
+    ("knowledge_base", "scaffolder on the roof of the, uh, the bank — no, sorry, the hotel — and I can see a bloke "
+                      "trapped in the hardware st-- hardware store", [("hardware store", "victim")]),
+    ("knowledge_base", "the roof of the bakery has fallen in", [("bakery", "hazard")]),
+])
+def test_people_fallen_in_everyone_out_and_new_subjects(kb_analyzers, kb, text, expected):
+    assert claims(kb_analyzers[kb], text) == expected

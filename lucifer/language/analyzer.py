@@ -2349,6 +2349,12 @@ class ReportAnalyzer:
                     and (b + 1 == len(norms) or toks.clause_start[b + 1] or norms[b + 1] in lx.COPULAS | {"to", "here"}):
                 continue  # "Control, Hazmat One, we're ...": a call sign
             start, end = toks.tokens[a].start, toks.tokens[b - 1].end
+            if norms[a:b] in (("everyone", "out"), ("everybody", "out")) \
+                    and toks.tokens[a].text.lower().endswith(("'s", "’s")) and self._person_category:
+                # "everyone's out of the lift shaft": they have left (nobody in need there), no order to get out
+                cues.append(CueMention(a, b, start, end, toks.text[start:end], self._person_category, source,
+                                       polarity="denied", reason="everyone has left"))
+                continue
             cue = CueMention(a, b, start, end, toks.text[start:end], cat, source)
             if source == "lexicon" and norms[a:b] in lx.PERSON_STATE_CUES and self._person_category \
                     and self._person_before(norms, a):
@@ -2415,8 +2421,9 @@ class ReportAnalyzer:
         """Is the subject before token ``a`` a structure ("the north boundary wall has collapsed", "its roof
         has collapsed", "the stairs collapsed")? A place named there, or a word for part of a building."""
         j = a - 1
-        while j >= 0 and norms[j] in ("have", "has", "had", "s", "is", "are", "was", "were", "been", "just", "partly",
-                                      "partially", "completely", "totally", "now", "all", "also", "then"):
+        while j >= 0 and (norms[j] in ("have", "has", "had", "s", "is", "are", "was", "were", "been", "just", "partly",
+                                       "partially", "completely", "totally", "now", "all", "also", "then")
+                          or norms[j] in lx.FILLERS):
             j -= 1
         if j < 0:
             return False
@@ -3302,7 +3309,7 @@ class ReportAnalyzer:
                 claimed_places.add(p.start_tok)
                 continue
             donor = self._donor_for_places(k, segs, seg_places, seg_cues, sentence_of, hollow,
-                                           [norms[a] for a, _ in segs])
+                                           [self._opening(norms, a, b) for a, b in segs])
             if donor is not None:
                 for c in seg_cues[donor]:
                     if c.start_tok >= counted:
@@ -3529,6 +3536,8 @@ class ReportAnalyzer:
         # forward through a list: "the bakery, the school and the library are on fire"
         j = k + 1
         while j < len(segs) and sentence_of[segs[j][0]] == sent:
+            if " " in first_norm[j]:
+                break  # "the hotel — and I can see a bloke trapped in ...": a new clause with its own subject
             if seg_cues.get(j):
                 ps = seg_places.get(j, [])
                 if not ps or min(p.start_tok for p in ps) <= min(c.start_tok for c in seg_cues[j]):
@@ -3538,6 +3547,13 @@ class ReportAnalyzer:
                 break
             j += 1
         return None
+
+    @staticmethod
+    def _opening(norms: tuple[str, ...], a: int, b: int) -> str:
+        """First word of a segment; "and i", "but we": a coordinator that opens a clause with its own subject."""
+        if a + 1 < b and norms[a] in lx.COORDINATORS and norms[a + 1] in ("i", "we", "im", "you", "they", "he", "she"):
+            return f"{norms[a]} {norms[a + 1]}"
+        return norms[a]
 
     @staticmethod
     def _named_after(k: int, segs: list[tuple[int, int]], seg_places: dict[int, list[PlaceMention]],

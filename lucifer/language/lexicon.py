@@ -66,7 +66,7 @@ petrol all over|fuel all over|diesel all over|oil all over|petrol everywhere|die
 petrol leak|diesel leak|fuel spill|petrol spill|diesel spill|exploding|explode|could explode|
 wall's fallen|wall has fallen|walls have fallen|roof's fallen|roof has fallen|ceiling's fallen|ceiling has fallen|
 chimney's fallen|chimney has fallen|fallen masonry|fallen tree|tree's fallen|tree has fallen|tree down|trees down|
-flattened|smashed in|swaying|
+flattened|smashed in|swaying|fallen in|slipped in|
 """.replace("\n", ""))
 
 _add(DESIRABLE, """
@@ -561,7 +561,8 @@ THING_SUBJECTS = {"car", "vehicle", "van", "truck", "lorry", "bus", "road", "tra
 STRUCTURE_WORDS = {"stair", "stairs", "staircase", "stairwell", "scaffold", "scaffolding", "structure", "section",
                    "building", "fence", "canopy", "stand", "bridge", "balcony", "shelf", "shelving", "racking",
                    "tunnel", "shaft", "mezzanine", "platform", "awning", "shed", "barn", "enclosure", "gantry"}
-PERSON_STATE_CUES = {("collapsed",), ("collapse",), ("collapsing",), ("burned",), ("burnt",), ("burned", "out")}
+PERSON_STATE_CUES = {("collapsed",), ("collapse",), ("collapsing",), ("burned",), ("burnt",), ("burned", "out"),
+                     ("fallen", "in"), ("fell", "in"), ("slipped", "in")}
 
 # Parts of a person: "his arm is burned" is said of a person
 BODY_PARTS = {"arm", "arms", "leg", "legs", "hand", "hands", "head", "face", "foot", "feet", "back", "chest", "neck",
@@ -576,7 +577,8 @@ LAY_PERSONS = {"man", "woman", "person", "people", "someone", "somebody", "child
 # People at work there: a casualty only when pinned, under or hanging ("a forklift driver under it").
 WORKER_PERSONS = {"driver", "worker", "workman", "lad", "labourer", "passenger", "pupil", "shopper", "baker",
                   "cleaner", "operator", "builder", "steward", "stewardess", "crewman", "deckhand", "fitter",
-                  "engineer", "gardener", "fan", "punter", "marshal", "chemist", "resident", "technician"}
+                  "engineer", "gardener", "fan", "punter", "marshal", "chemist", "resident", "technician", "keeper",
+                  "porter", "nurse", "midwife", "tourist", "walker", "climber", "swimmer", "diver", "angler"}
 PINNED_SITUATIONS = {"under", "underneath", "beneath", "clinging", "lying", "hanging", "pinned", "trapped", "floating",
                      "caught"}
 PERSON_MODIFIERS = {"elderly", "old", "young", "little", "small", "older", "adult", "injured", "disabled", "more",
