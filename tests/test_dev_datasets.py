@@ -31,6 +31,8 @@ STADIUM = ROOT / "knowledge_bases" / "football_stadium"
 MALL = ROOT / "knowledge_bases" / "shopping_mall"
 HOSPITAL = ROOT / "knowledge_bases" / "hospital_campus"
 ZOO = ROOT / "knowledge_bases" / "city_zoo"
+PIER = ROOT / "knowledge_bases" / "seaside_pier"
+OLD_TOWN = ROOT / "knowledge_bases" / "old_town"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -101,6 +103,10 @@ SETS = {
     "dev17/market_square": _set("dev17/market_square.jsonl", MARKET_SQUARE, "d17",
                                 {"standard": 20, "messy": 55, "advanced_messy": 45}, sep=""),
     "dev17/city_zoo": _set("dev17/city_zoo.jsonl", ZOO, "zo", {"standard": 30, "messy": 30, "advanced_messy": 30}),
+    "dev18/market_square": _set("dev18/market_square.jsonl", MARKET_SQUARE, "d18",
+                                {"standard": 10, "messy": 70, "advanced_messy": 40}, sep=""),
+    "dev18/seaside_pier": _set("dev18/seaside_pier.jsonl", PIER, "sp", {"standard": 30, "messy": 30, "advanced_messy": 30}),
+    "dev18/old_town": _set("dev18/old_town.jsonl", OLD_TOWN, "ot", {"standard": 30, "messy": 30, "advanced_messy": 30}),
     "dev17/hospital_campus": _set("dev17/hospital_campus.jsonl", HOSPITAL, "hc",
                                   {"standard": 30, "messy": 30, "advanced_messy": 30}),
 }
