@@ -1006,3 +1006,34 @@ def test_structures_that_collapse_found_people_and_trailing_repairs(kb_analyzers
 ])
 def test_people_fallen_in_everyone_out_and_new_subjects(kb_analyzers, kb, text, expected):
     assert claims(kb_analyzers[kb], text) == expected
+
+
+@pytest.mark.parametrize(("kb", "text", "expected"), [
+    # a relation named "runs_down_from" is also said "running down from"; a name so described is that place
+    ("seaside_pier", "We've got a lad hurt on the ramp running down from the lifeboat station — no, scratch that — "
+                     "he's on the rock groyne.", [("rock groyne", "person_in_danger")]),
+    ("seaside_pier", "uh the ramp running down from the station the car park towers over is, like, completely underwater",
+     [("slipway", "surge_structural")]),
+    # an order to keep people clear is no "keeps_watch_over"; a false alarm stops at a contrast with another place
+    ("seaside_pier", "Coastguard update: breakwater, sea wall and tidal pool all overtopping, keep everyone clear of them.",
+     [("breakwater", "surge_structural"), ("sea wall", "surge_structural"), ("tidal pool", "surge_structural")]),
+    ("seaside_pier", "no fire at the chip shop, it's just steam from the fryers, but the hotel kitchen, yeah the "
+                     "hotel's got a proper fire going", [("seafront hotel", "fire_electric")]),
+    ("seaside_pier", "um, coxswain, uh, we're clear of the slipway and heading out, er, five minutes to the pier", []),
+    # "X, the Y next door" says again which place: next door to the one said before it
+    ("seaside_pier", "the chippy is on fire — sorry, not the chippy, it's Rossi's, the ice cream place next door, "
+                     "that's on fire", [("ice cream parlour", "fire_electric")]),
+    # inside a landmark with no containment relation is in it; "clear of" does not negate "safe"
+    ("old_town", "a trader is trapped under a fallen stall inside the corn exchange", [("corn exchange", "casualty")]),
+    ("old_town", "the place the clock tower overlooks is clear of stalls now and safe for the ambulances",
+     [("market place", "sanctuary")]),
+    # "actually" after a new place corrects what that place was said to be
+    ("old_town", "the cathedral's er... it's the rest centre yeah, and uh, the cloisters are, um... they're shut, "
+                 "actually there's a gas smell in there", [("cathedral", "sanctuary"), ("cloisters", "peril")]),
+    # "— it's not," denies what was said of it; "the well" heads "town well" although "well alight" is a cue
+    ("old_town", "earlier I said the archway was coming down — it's not, the engineer's looked.", []),
+    ("old_town", "The Shambles is burning and there's a woman with burns sitting at the well they back onto.",
+     [("the Shambles", "peril"), ("town well", "casualty")]),
+])
+def test_pier_and_old_town_readings(kb_analyzers, kb, text, expected):
+    assert claims(kb_analyzers[kb], text) == expected

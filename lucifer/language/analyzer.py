@@ -437,6 +437,9 @@ class ReportAnalyzer:
                 continue
             if norms[t] in lx.PART_NOUNS and t + 1 < len(norms) and norms[t + 1] == "of":
                 continue  # "the back wall of the Stella" is part of it, not "shares_a_wall_with"
+            if toks.clause_start[t] and t + 1 < len(norms) and norms[t + 1] in lx.MOVED_PEOPLE | {
+                    "them", "it", "clear", "away", "out", "back", "off", "everybody"}:
+                continue  # "..., keep everyone clear of them": an order, not "keeps_watch_over"
             phrase, voice = hit
             if voice == "active" and t > 0 and norms[t - 1] in lx.ARTICLES - {"that"} and phrase.split()[0] in (
                     norms[t], toks.tokens[t].text.lower()):
@@ -689,7 +692,8 @@ class ReportAnalyzer:
                         words_elsewhere.setdefault(w, set()).add(lm.name)
                     if len(words) >= 2:
                         owners.setdefault(words[-1], set()).add(lm.name)
-            cue_words = {w for key in self._cue_keys() for w in key}
+            # (a word of a longer cue still heads a name: "the well" is the town well, "well alight" aside)
+            cue_words = {key[0] for key in self._cue_keys() if len(key) == 1}
             rel_words = {w for rel in self.kb.relations for w in rel.phrase.split()}
             self._heads = {w: next(iter(names)) for w, names in owners.items()
                            if len(names) == 1 and words_elsewhere.get(w, set()) == names and len(w) >= 4 and w.isalpha()
@@ -1369,6 +1373,15 @@ class ReportAnalyzer:
             before = [p for p in ex.places if p.end_tok <= a and p.status != "retracted"]
             if before and not self._inverse_anchor(ex, norms, a):
                 anchor, anchor_end, pronoun = max(before, key=lambda p: p.end_tok), b, True
+                earlier = [p for p in before if p.end_tok <= anchor.start_tok and p.landmark != anchor.landmark]
+                if earlier and ex.tokens.clause_start[anchor.end_tok] and anchor.end_tok < a \
+                        and all(w in lx.DETERMINERS or w.isalpha() for w in norms[anchor.end_tok:a]) \
+                        and a - anchor.end_tok <= 5:
+                    # "not the chippy, it's Rossi's, the ice cream place next door": an aside that says again
+                    # which place was meant, next door to the one said before it
+                    prev = max(earlier, key=lambda p: p.end_tok)
+                    if self._follow(prev.landmark, phrase, "", inverse=flipped)[0] == anchor.landmark:
+                        anchor = prev
         if (anchor is None) != inverse_pass:
             return
         head_end = a
@@ -1465,6 +1478,8 @@ class ReportAnalyzer:
                     return  # "a vapour cloud sitting over the reactor building": where the danger is, not a description
                 if norms[a:a + 2] == ("at", "the") and b > a + 2 and norms[a + 2] in lx.LOCATIVE_PARTS:
                     return  # "a man lying at the foot of the water tower": where he lies, when nothing lies below it
+                if norms[a:b] in (("inside",), ("inside", "of"), ("within",)) and generic:
+                    return  # "trapped under a fallen stall inside the corn exchange": in it, when nothing is built into it
                 ex.places[idx] = replace(anchor, status="reference",
                                          reason=f"reference point of an unresolved '{phrase}' description")
                 return
@@ -2344,6 +2359,10 @@ class ReportAnalyzer:
             if norms[a:b] == ("clear",) and any(norms[k] in ("keep", "stay") for k in range(max(0, a - 4), a)) \
                     and not any(toks.clause_start[k] for k in range(max(1, a - 3), a + 1)):
                 continue  # "keep all boats clear of the lock", "stay well clear": an instruction, like "keep clear"
+            if norms[a:b] == ("clear",) and b < len(norms) and norms[b] == "of" and a > 0 \
+                    and toks.tokens[a - 1].text.lower().replace("’", "'") in ("we're", "were", "i'm", "im", "they're",
+                                                                               "we", "they", "everyone's"):
+                continue  # "we're clear of the slipway and heading out": the crew has left it
             if b == a + 1 and b < len(norms) and toks.tokens[a].text[:1].isupper() \
                     and (norms[b] in lx.NUMBER_WORDS | {"one"} or norms[b].isdigit()) and toks.gaps[b] == " " \
                     and (b + 1 == len(norms) or toks.clause_start[b + 1] or norms[b + 1] in lx.COPULAS | {"to", "here"}):
@@ -2876,6 +2895,14 @@ class ReportAnalyzer:
                     # "disregard my last, the spill is at the store": an earlier report is withdrawn and
                     # what follows replaces it
                     until = i if phrase in lx.PREVIOUS_REPORT_WITHDRAWN else len(norms)
+                    # "no fire at the chip shop, it's just steam, but the hotel's got a proper fire going": a
+                    # contrast that names another place afterwards is not part of the false alarm
+                    places = {p.start_tok for p in getattr(self, "_places_now", [])}
+                    but = next((j for j in range(i + len(key), len(norms)) if sentence_of[j] == sentence_of[i]
+                                and norms[j] in ("but", "however", "whereas")
+                                and any(t in places for t in range(j + 1, min(len(norms), j + 8)))), None)
+                    if but is not None and until == len(norms):
+                        until = but
                     alarms[sentence_of[i]] = max(alarms.get(sentence_of[i], 0), until)
         if not alarms:
             return cues
@@ -2994,6 +3021,9 @@ class ReportAnalyzer:
                 h = None  # (a clause of its own, "no sign of him", needs no "it's" before it)
             if h is None and j > k and j < len(norms) and norms[j] == "out":
                 h = (j + 1, "out")
+            if h is None and j > k and j < len(norms) and norms[j] in ("not", "isnt", "wasnt", "arent", "werent") \
+                    and (j + 1 >= len(norms) or toks.clause_start[j + 1]):
+                h = (j + 1, norms[j])  # "I said the archway was coming down — it's not, ...": said of it, denied
             if h is not None and h[1] in lx.CANCEL_PEOPLE_ONLY \
                     and self.kb.category_by_name[cue.category].role != Role.CRITICAL:
                 h = None  # "gas in the winding house, we've pulled everyone out, all accounted for": the gas stays
@@ -3016,6 +3046,8 @@ class ReportAnalyzer:
             if j >= 0 and (norms[j] in lx.INTENT_WORDS or norms[j] == "to" and j > 0 and norms[j - 1] in lx.INTENT_TO):
                 # "crews will clear shortly": a plan, not yet a fact (and not "unsafe" either)
                 return replace(cue, polarity="denied", reason=f"a plan ('{norms[j]}'), not a report")
+        if negated_by in ("clear of", "free of") and self.kb.category_by_name[cue.category].role == Role.DESIRABLE:
+            negated_by = None  # "clear of stalls now and safe": what it is clear of is the danger, not the safety
         if negated_by is None and cancelled_by is None:
             return cue
         why = negated_by or cancelled_by
@@ -3076,6 +3108,11 @@ class ReportAnalyzer:
                     and self.kb.category_by_name[first_cue.category].role == Role.CRITICAL \
                     and self.kb.category_by_name[last.category].role != Role.CRITICAL:
                 continue  # "the meeting point, everyone's there, but hang on, someone's just collapsed": news
+            if not strong and kind == "cue" and any(p.status == "active" and last.end_tok <= p.start_tok < a
+                                                    for p in ex.places):
+                # "it's the rest centre, and the cloisters, they're shut, actually there's a gas smell in
+                # there": what the new place was said to be is corrected, not the claim before it
+                continue
             i = out.index(last)
             out[i] = replace(last, status="retracted", reason=f"self-repair: '{toks.span_text(a, b)}' then '{first_cue.text}'")
             # ... with the cues of the same category said of the same place just before it ("it's dry
@@ -3750,10 +3787,16 @@ def _relation_forms(phrase: str) -> list[tuple[str, bool]]:
     rest = " ".join(words[1:])
     if not (len(words) == 1 or verb.endswith("s")) or _direction_word(verb) or verb.endswith("ss"):
         return _with_group_inverses(phrase, out)
-    stems = {verb[:-1]} if verb.endswith("s") and len(verb) > 4 else {verb}
+    stems = {verb[:-1]} if verb.endswith("s") and len(verb) > 3 else {verb}
     for stem in list(stems):
         base = stem[:-1] if stem.endswith("e") else stem
-        for v in (stem, stem + "s", base + "ing"):
+        ings = {base + "ing"}
+        if stem.endswith("ie"):
+            ings.add(stem[:-2] + "ying")  # "lies" -> "lying"
+        if len(stem) <= 4 and len(stem) >= 3 and stem[-1] not in "aeiouwxy" and stem[-2] in "aeiou" \
+                and stem[-3] not in "aeiou":
+            ings.add(stem + stem[-1] + "ing")  # "runs" -> "running", "sits" -> "sitting"
+        for v in (stem, stem + "s", *sorted(ings)):
             out.append((f"{v} {rest}".strip(), False))
             out.append((f"that {v} {rest}".strip(), False))
         for v in (base + "ed", stem + "ed"):

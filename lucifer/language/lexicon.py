@@ -66,7 +66,7 @@ petrol all over|fuel all over|diesel all over|oil all over|petrol everywhere|die
 petrol leak|diesel leak|fuel spill|petrol spill|diesel spill|exploding|explode|could explode|
 wall's fallen|wall has fallen|walls have fallen|roof's fallen|roof has fallen|ceiling's fallen|ceiling has fallen|
 chimney's fallen|chimney has fallen|fallen masonry|fallen tree|tree's fallen|tree has fallen|tree down|trees down|
-flattened|smashed in|swaying|fallen in|slipped in|
+flattened|smashed in|swaying|fallen in|slipped in|smashed|
 """.replace("\n", ""))
 
 _add(DESIRABLE, """
@@ -690,7 +690,9 @@ DANGER_KINDS: dict[str, list[str]] = {
                "shedding slates", "masonry falling", "falling masonry", "fallen masonry", "wall's fallen",
                "wall has fallen", "walls have fallen", "roof's fallen", "roof has fallen", "ceiling's fallen",
                "ceiling has fallen", "chimney's fallen", "chimney has fallen", "roof down", "ceiling's down",
-               "ceiling down", "tree through the roof", "tree on it", "the tree on it", "tree on the roof"],
+               "ceiling down", "tree through the roof", "tree on it", "the tree on it", "tree on the roof",
+               "smashed", "smashed up", "smashed to pieces", "smashed to matchwood", "full of wreckage", "wreckage",
+               "a breach in it", "breach in the"],
     "ground": ["is shifting", "s shifting", "its shifting", "keeps shifting", "started shifting", "sliding",
                "landslide", "mudslide", "mud slide", "landslip", "slipping", "sinkhole", "come away", "came away",
                "subsided into", "subsiding into", "subsidence"],
@@ -706,7 +708,10 @@ DANGER_KINDS: dict[str, list[str]] = {
               "it's gone under", "going under fast", "all under", "all under water", "roofs only showing",
               "only the roofs showing", "floor's gone under", "floor has gone under", "whole floor's gone under",
               "burst main", "burst pipe", "pipe burst", "pipe's burst", "overflowing", "overflowed", "overtopped",
-              "burst its", "burst its bank", "burst its south bank", "burst its north bank"],
+              "burst its", "burst its bank", "burst its south bank", "burst its north bank", "washed out",
+              "washed clean away", "waves breaking over", "waves going over", "waves coming over", "waves over",
+              "going right over the top", "sea's come through", "sea's come right through", "sea's pouring through",
+              "sea pouring through", "pouring through"],
     "current": ["strong current", "fierce current", "fast current", "swift current", "rip current", "undertow",
                 "current's ripping", "current is ripping", "current ripping", "fast flowing water",
                 "fast-flowing water", "ripping through"],
