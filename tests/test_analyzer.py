@@ -1037,3 +1037,27 @@ def test_people_fallen_in_everyone_out_and_new_subjects(kb_analyzers, kb, text, 
 ])
 def test_pier_and_old_town_readings(kb_analyzers, kb, text, expected):
     assert claims(kb_analyzers[kb], text) == expected
+
+
+@pytest.mark.parametrize(("kb", "text", "expected"), [
+    # a place with a predicate of its own borrows no claim from the clause before
+    ("knowledge_base", "it's not the bank it's the hotel, the hotel's got the gas leak, the bank's just got its alarm "
+                       "ringing", [("hotel", "hazard")]),
+    ("knowledge_base", "Gas bottles going off at the ironmonger's, and the place out back of it is catching too.",
+     [("garage", "hazard"), ("hardware store", "hazard")]),
+    # people who walked out, a leak capped, a correction of what "I said" two sentences back
+    ("knowledge_base", "update, the lady who was trapped at the bank, she's out, she walked out on her own, she's okay",
+     []),
+    ("knowledge_base", "the gas leak at the hardware store, they've capped it, that's sorted, but there's an old "
+                       "fella collapsed in the park", [("park", "victim")]),
+    ("knowledge_base", "There's a man collapsed in the library, he's breathing but he won't wake up. Sorry, I said the "
+                       "library, I meant the school. The school.", [("school", "victim")]),
+    ("old_town", "Trader one says the injured are at the butter cross. Trader two says no, they've been carried away "
+                 "from there, they're lying in the cloisters now.", [("cloisters", "casualty")]),
+    ("old_town", "th-th-the ar-- archway's come down, the whole arch, people under it",
+     [("Weavers' Arch", "casualty"), ("Weavers' Arch", "peril")]),
+    ("riverbend", "Flashover at the place facing the ruin that overlooks the green — crews out, crews out!",
+     [("red lion", "threat")]),
+])
+def test_own_predicates_people_gone_and_quoted_repairs(kb_analyzers, kb, text, expected):
+    assert claims(kb_analyzers[kb], text) == expected

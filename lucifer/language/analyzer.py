@@ -2233,10 +2233,15 @@ class ReportAnalyzer:
             successor = link_to or next((p for p in sorted(after, key=lambda p: p.start_tok) if p.status == "active"), None)
             if successor is not None and successor.replaces is None:
                 ex.places[ex.places.index(successor)] = replace(successor, replaces=last.start_tok)
-            # every earlier mention of the retracted place in the window goes too ("I said the bank")
+            # every earlier mention of the retracted place in the window goes too ("I said the bank"); after
+            # "I said", every earlier one in the report ("A man collapsed in the library. ... Sorry, I said the
+            # library, I meant the school."), its claims going to the place that replaces it
+            quoted = any(norms[i] == "said" for i in range(max(0, last.start_tok - 3), last.start_tok))
             for j, q in enumerate(ex.places):
                 if q.status == "active" and q.landmark == last.landmark and start <= q.start_tok < a:
                     ex.places[j] = replace(q, status="retracted", reason=f"self-repair of '{last.text}'")
+                elif quoted and q.status == "active" and q.landmark == last.landmark and q.start_tok < start:
+                    ex.places[j] = replace(q, status="retracted", reason=f"said again later, then repaired: '{last.text}'")
             # its reference points ("the cafe across from the church") go with it
             for j, q in enumerate(ex.places):
                 if q.status == "reference" and last.start_tok <= q.start_tok < a:
@@ -3030,6 +3035,9 @@ class ReportAnalyzer:
             if h is not None and h[1] in lx.CANCEL_MISSING_ONLY \
                     and " ".join(norms[cue.start_tok:cue.end_tok]) not in lx.MISSING_CUES:
                 h = None
+            if h is not None and h[0] < len(norms) and norms[h[0]] in ("it", "them") \
+                    and (h[0] + 1 >= len(norms) or toks.clause_start[h[0] + 1]):
+                h = (h[0] + 1, h[1])  # "the gas leak at the hardware store, they've capped it, ..."
             if h is not None and (h[0] >= len(norms) or toks.clause_start[h[0]] or norms[h[0]] in ("now", "completely")
                                   or h[1] in lx.CANCEL_CLAUSES):
                 cancelled_by = h[1]
@@ -3192,7 +3200,9 @@ class ReportAnalyzer:
             seen = 0
             while p is not None and p.status != "active" and seen < 10:
                 nxt = successor.get(p.start_tok)
-                if nxt is None and p.reason.startswith(("false start", "restarted")):
+                if nxt is None and p.reason.startswith("said again later"):
+                    nxt = next((q for q in ex.places if q.landmark == p.landmark and q.start_tok > p.start_tok), None)
+                elif nxt is None and p.reason.startswith(("false start", "restarted")):
                     # "fire at the hot-- / ... / hotel": a name cut off or said again is the same place, named
                     # in full later
                     nxt = next((q for q in usable if q.landmark == p.landmark and q.start_tok > p.start_tok), None)
@@ -3345,6 +3355,10 @@ class ReportAnalyzer:
                 pairs.extend(Claim(p, c) for c in listed if c.start_tok < counted)
                 claimed_places.add(p.start_tok)
                 continue
+            tail = [w for w in norms[p.end_tok:segs[k][1]] if w not in lx.FILLERS]
+            if len(tail) >= 3 and set(tail[:3]) & {"got", "has", "have", "is", "was", "are", "had"} \
+                    and len(seg_places.get(k, [])) == 1 and not {"too", "also", "well"} & set(tail):
+                continue  # "the hotel's got the gas leak, the bank's just got its alarm ringing": a predicate of its own
             donor = self._donor_for_places(k, segs, seg_places, seg_cues, sentence_of, hollow,
                                            [self._opening(norms, a, b) for a, b in segs])
             if donor is not None:

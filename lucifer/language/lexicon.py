@@ -66,7 +66,7 @@ petrol all over|fuel all over|diesel all over|oil all over|petrol everywhere|die
 petrol leak|diesel leak|fuel spill|petrol spill|diesel spill|exploding|explode|could explode|
 wall's fallen|wall has fallen|walls have fallen|roof's fallen|roof has fallen|ceiling's fallen|ceiling has fallen|
 chimney's fallen|chimney has fallen|fallen masonry|fallen tree|tree's fallen|tree has fallen|tree down|trees down|
-flattened|smashed in|swaying|fallen in|slipped in|smashed|
+flattened|smashed in|swaying|fallen in|slipped in|smashed|is going up|s going up|still going up|going up properly|is catching|catching too|caught too|
 """.replace("\n", ""))
 
 _add(DESIRABLE, """
@@ -100,7 +100,7 @@ hypothermic|drowning|bleeding out|critical condition|in shock|lost consciousness
 pinned under debris|pinned under rubble|trapped under debris|trapped under rubble|buried under rubble|buried under debris|
 trapped in rubble|under the rubble|needs medics|need medics|needs a doctor|requires evacuation|unaccounted for|
 people still inside|still inside|someone still inside|people stuck|people stuck inside|with people inside|
-breathing problems|breathing difficulties|difficulty breathing|struggling to breathe|can't breathe|cannot breathe|
+people under it|people under there|someone under it|somebody under it|people underneath|breathing problems|breathing difficulties|difficulty breathing|struggling to breathe|can't breathe|cannot breathe|
 man collapsed|woman collapsed|person collapsed|someone collapsed|somebody collapsed|he collapsed|she collapsed|
 needs oxygen|need oxygen|having a heart attack|heart attack|seizure|having a seizure|can't breathe|cannot breathe|
 asthma attack|asthma attacks|an asthma attack|having an asthma attack|shut in|locked in|
@@ -163,6 +163,8 @@ CANCEL_AFTER = ["is out", "s out", "are out", "was out", "put out", "out now", "
                 for who in ("him", "her", "them", "everyone", "everybody", "all of them", "the casualty")] + [
                 "nobody was in", "no one was in", "nobody was inside", "no one was inside", "walked off",
                 "nobody in", "no one in", "found her", "found him", "found them", "found safe",
+                "walked out", "she's out", "he's out", "they're out", "she's okay", "he's okay", "they're okay",
+                "carried away", "been carried away", "been moved", "moved away",
                 "empty"]
 # ... of which these revoke only a missing person ("lost child at the aviary, mum's found her")
 CANCEL_MISSING_ONLY = {"found her", "found him", "found them", "found safe"}
@@ -184,13 +186,15 @@ CANCEL_PEOPLE_ONLY = {"all rescued", "rescued", "evacuated", "got out", "out saf
                       "been handed over", "been handed to the ambulance crew", "nobody was in", "no one was in",
                       "walked off", "empty", "nobody in", "no one in",
                       "nobody was inside", "no one was inside", "found her", "found him", "found them",
-                      "found safe"} | {
+                      "found safe", "walked out", "she's out", "he's out", "they're out", "she's okay", "he's okay",
+                      "they're okay", "carried away", "been carried away", "been moved", "moved away"} | {
                       f"{verb} {who} out" for verb in ("got", "gotten", "taken", "took", "pulled", "brought")
                       for who in ("him", "her", "them", "everyone", "everybody", "all of them", "the casualty")}
 
 # Words that open a clause speaking again of the thing just named ("..., it's drained now").
 BACK_REFERENCE_WORDS = {"it", "its", "s", "is", "has", "been", "thats", "that", "was", "they", "theyre", "are", "re",
-                        "have", "ve", "now", "all", "finally", "fully", "update", "updating", "latest"}
+                        "have", "ve", "now", "all", "finally", "fully", "update", "updating", "latest", "theyve", "weve",
+                        "ive"}
 
 # Phrases that contain cue words but claim nothing ("the smoke alarm went off", "fire crew on site").
 NEUTRAL_PHRASES = ["comes down to", "come down to", "coming down to", "goes down to", "runs down to", "keep clear", "stay clear", "keep everyone clear", "keep everybody clear", "keep people clear",
@@ -682,7 +686,7 @@ DANGER_KINDS: dict[str, list[str]] = {
                  "roof collapsed", "roof has come in", "roof's come in", "roof came in", "ceiling has come in",
                  "ceiling's come in", "ceiling collapsed", "given way", "gave way", "has given way",
                  "unstable masonry", "falling in", "unstable chimney", "bulging", "bulging out", "could let go",
-                 "might let go", "about to let go", "going to let go", "cracked open", "split in two", "spongy",
+                 "might let go", "about to let go", "going to let go", "cracked open", "split in two", "split open", "spongy",
                  "floor's spongy", "sinking", "subsiding", "subsidence", "slumping", "floor's gone", "floor has gone",
                  "floor's gone through", "gone through the floor", "roof's going", "roof is going"],
     "fallen": ["has fallen into", "have fallen into", "fallen into the", "rubble", "wall down", "walls down",
