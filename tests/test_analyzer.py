@@ -1053,7 +1053,8 @@ def test_pier_and_old_town_readings(kb_analyzers, kb, text, expected):
     ("knowledge_base", "There's a man collapsed in the library, he's breathing but he won't wake up. Sorry, I said the "
                        "library, I meant the school. The school.", [("school", "victim")]),
     ("old_town", "Trader one says the injured are at the butter cross. Trader two says no, they've been carried away "
-                 "from there, they're lying in the cloisters now.", [("cloisters", "casualty")]),
+                 "from there, they're lying in the cloisters now waiting for the ambulance. Trader two's right.",
+     [("cloisters", "casualty")]),
     ("old_town", "th-th-the ar-- archway's come down, the whole arch, people under it",
      [("Weavers' Arch", "casualty"), ("Weavers' Arch", "peril")]),
     ("riverbend", "Flashover at the place facing the ruin that overlooks the green — crews out, crews out!",
