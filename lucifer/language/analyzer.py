@@ -3357,7 +3357,7 @@ class ReportAnalyzer:
                 continue
             tail = [w for w in norms[p.end_tok:segs[k][1]] if w not in lx.FILLERS]
             if len(tail) >= 3 and set(tail[:3]) & {"got", "has", "have", "is", "was", "are", "had"} \
-                    and len(seg_places.get(k, [])) == 1 and not {"too", "also", "well"} & set(tail):
+                    and len(seg_places.get(k, [])) == 1 and not {"too", "also", "well", "same"} & set(tail):
                 continue  # "the hotel's got the gas leak, the bank's just got its alarm ringing": a predicate of its own
             donor = self._donor_for_places(k, segs, seg_places, seg_cues, sentence_of, hollow,
                                            [self._opening(norms, a, b) for a, b in segs])
