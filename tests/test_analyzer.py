@@ -1062,3 +1062,17 @@ def test_pier_and_old_town_readings(kb_analyzers, kb, text, expected):
 ])
 def test_own_predicates_people_gone_and_quoted_repairs(kb_analyzers, kb, text, expected):
     assert claims(kb_analyzers[kb], text) == expected
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    # "the bakery one's out" in a later sentence ends the fire said there before
+    ("Item one, fire at the garage. Item two, fire at the bakery. Er, update just in: the bakery one's out, crew's "
+     "damped it down. Garage still going.", [("garage", "hazard")]),
+    # a church that is locked is shut, no danger, where no category is about access
+    ("We're setting up our triage point in the hotel lounge. The church is locked, nobody's using it.",
+     [("hotel", "safe_zone")]),
+    ("Message one, fire in the clinic's x-ray room. Message two, that fire's out now. Message three, one staff member "
+     "burned on the hands, being seen to inside the clinic.", [("clinic", "victim")]),
+])
+def test_put_out_later_locked_and_staff_members(analyzer, text, expected):
+    assert claims(analyzer, text) == expected

@@ -2373,6 +2373,8 @@ class ReportAnalyzer:
                     and (b + 1 == len(norms) or toks.clause_start[b + 1] or norms[b + 1] in lx.COPULAS | {"to", "here"}):
                 continue  # "Control, Hazmat One, we're ...": a call sign
             start, end = toks.tokens[a].start, toks.tokens[b - 1].end
+            if norms[a:b] in lx.LOCK_CUES and not self._access_category():
+                continue  # "The church is locked, nobody's using it": shut, no danger, where no category is about access
             if norms[a:b] in (("everyone", "out"), ("everybody", "out")) \
                     and toks.tokens[a].text.lower().endswith(("'s", "’s")) and self._person_category:
                 # "everyone's out of the lift shaft": they have left (nobody in need there), no order to get out
@@ -3402,6 +3404,12 @@ class ReportAnalyzer:
                 if key[0] == landmark and pos < at \
                         and self.kb.category_by_name[key[1]].role == Role.CRITICAL:
                     last[key] = (at, False)
+        for landmark, at in self._places_put_out(ex, norms):
+            # "Item two, fire at the bakery. Er, update just in: the bakery one's out": the place's danger is over
+            for key, (pos, _) in list(last.items()):
+                if key[0] == landmark and pos < at \
+                        and self.kb.category_by_name[key[1]].role == Role.UNDESIRABLE:
+                    last[key] = (at, False)
         for landmark, at, cats in self._places_negated_later(ex, cues):
             # "Fire at the school. ... No, that's not the school, that's the library": a place negated in a
             # later sentence takes back what was said of it before, in the negating sentence's categories
@@ -3503,6 +3511,32 @@ class ReportAnalyzer:
             return []
         place = next(iter(at.values()))
         return [Claim(place, c) for c in mine]
+
+    def _access_category(self) -> bool:
+        """Does an undesirable category's description speak of places that cannot be entered or got through?"""
+        if not hasattr(self, "_access_cat"):
+            words = ("lock", "closed", "blocked", "access", "impassable", "cannot be entered", "got through",
+                     "cannot be passed", "jammed")
+            self._access_cat = any(any(w in c.description.lower() for w in words)
+                                   for c in self.kb.categories_with_role(Role.UNDESIRABLE))
+        return self._access_cat
+
+    @staticmethod
+    def _places_put_out(ex: Extraction, norms: tuple[str, ...]) -> list[tuple[str, int]]:
+        """(landmark, token) for each "<place> (one)'s out" clause: "the bakery one's out", "garage is out now"."""
+        toks = ex.tokens
+        out = []
+        for p in ex.places:
+            if p.status != "active":
+                continue
+            j = p.end_tok
+            while j < len(norms) and j - p.end_tok < 4 and not toks.clause_start[j] \
+                    and norms[j] in ("one", "s", "is", "are", "was", "been", "put", "now", "all", "fire"):
+                j += 1
+            if j < len(norms) and norms[j] == "out" and j > p.end_tok and not toks.clause_start[j] \
+                    and (j + 1 >= len(norms) or toks.clause_start[j + 1] or norms[j + 1] in ("now", "completely")):
+                out.append((p.landmark, j))
+        return out
 
     def _people_revoked(self, ex: Extraction, norms: tuple[str, ...], cues: list[CueMention]) -> list[tuple[str, int]]:
         """(landmark, token) for each phrase that says the people of a place are out ("all 3 lifted off",

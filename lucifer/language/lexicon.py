@@ -561,6 +561,8 @@ for _p in PERSON_NOUNS:
 # Person words that say what happened to a thing when a thing is their subject ("cars buried").
 THING_SUBJECTS = {"car", "vehicle", "van", "truck", "lorry", "bus", "road", "track", "path", "lift", "entrance",
                   "door", "gate", "bike", "tent", "hut"}
+# Cues that say a place is shut: a danger only where a category is about access.
+LOCK_CUES = {("locked",), ("padlocked",), ("chained",), ("chained", "shut"), ("locked", "up")}
 # Parts of a structure that can be the subject of "collapsed" (no person is).
 STRUCTURE_WORDS = {"stair", "stairs", "staircase", "stairwell", "scaffold", "scaffolding", "structure", "section",
                    "building", "fence", "canopy", "stand", "bridge", "balcony", "shelf", "shelving", "racking",
@@ -582,7 +584,7 @@ LAY_PERSONS = {"man", "woman", "person", "people", "someone", "somebody", "child
 WORKER_PERSONS = {"driver", "worker", "workman", "lad", "labourer", "passenger", "pupil", "shopper", "baker",
                   "cleaner", "operator", "builder", "steward", "stewardess", "crewman", "deckhand", "fitter",
                   "engineer", "gardener", "fan", "punter", "marshal", "chemist", "resident", "technician", "keeper",
-                  "porter", "nurse", "midwife", "tourist", "walker", "climber", "swimmer", "diver", "angler"}
+                  "porter", "nurse", "midwife", "tourist", "walker", "climber", "swimmer", "diver", "angler", "member"}
 PINNED_SITUATIONS = {"under", "underneath", "beneath", "clinging", "lying", "hanging", "pinned", "trapped", "floating",
                      "caught"}
 PERSON_MODIFIERS = {"elderly", "old", "young", "little", "small", "older", "adult", "injured", "disabled", "more",
