@@ -33,6 +33,8 @@ HOSPITAL = ROOT / "knowledge_bases" / "hospital_campus"
 ZOO = ROOT / "knowledge_bases" / "city_zoo"
 PIER = ROOT / "knowledge_bases" / "seaside_pier"
 OLD_TOWN = ROOT / "knowledge_bases" / "old_town"
+ESTATE = ROOT / "knowledge_bases" / "industrial_estate"
+FARM = ROOT / "knowledge_bases" / "farm_village"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -107,6 +109,11 @@ SETS = {
                                 {"standard": 10, "messy": 70, "advanced_messy": 40}, sep=""),
     "dev18/seaside_pier": _set("dev18/seaside_pier.jsonl", PIER, "sp", {"standard": 30, "messy": 30, "advanced_messy": 30}),
     "dev18/old_town": _set("dev18/old_town.jsonl", OLD_TOWN, "ot", {"standard": 30, "messy": 30, "advanced_messy": 30}),
+    "dev19/market_square": _set("dev19/market_square.jsonl", MARKET_SQUARE, "d19",
+                                {"standard": 10, "messy": 50, "advanced_messy": 60}, sep=""),
+    "dev19/industrial_estate": _set("dev19/industrial_estate.jsonl", ESTATE, "ie",
+                                    {"standard": 30, "messy": 30, "advanced_messy": 30}),
+    "dev19/farm_village": _set("dev19/farm_village.jsonl", FARM, "fv", {"standard": 30, "messy": 30, "advanced_messy": 30}),
     "dev17/hospital_campus": _set("dev17/hospital_campus.jsonl", HOSPITAL, "hc",
                                   {"standard": 30, "messy": 30, "advanced_messy": 30}),
 }
