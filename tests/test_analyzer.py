@@ -1076,3 +1076,26 @@ def test_own_predicates_people_gone_and_quoted_repairs(kb_analyzers, kb, text, e
 ])
 def test_put_out_later_locked_and_staff_members(analyzer, text, expected):
     assert claims(analyzer, text) == expected
+
+
+@pytest.mark.parametrize(("kb", "text", "expected"), [
+    # a hyphen inside a word is no pause: "no-go" is a cue, not a repair "no"
+    ("farm_village", "Control summary: the slurry lagoon and the ford are no-go areas, the village hall is the rest "
+                     "centre.", [("river ford", "threat"), ("slurry lagoon", "threat"), ("village hall", "haven")]),
+    ("farm_village", "im at the caravan field its high and dry up here people can come and wait here",
+     [("caravan field", "haven")]),
+    # a locked church in a KB with no access category: neither danger nor shelter
+    ("farm_village", "The church is the rest centre. Correction to my last: the rest centre is the village hall, the "
+                     "church is locked.", [("village hall", "haven")]),
+    # "where X runs down to" is the place X runs down to; "the houses that, er, that sit below the weir"
+    ("farm_village", "uh, where the back lane runs down to, that's a raging torrent, do not attempt it",
+     [("river ford", "threat")]),
+    ("farm_village", "um, water's coming into the houses that, er, that sit below the weir", [("holiday cottages", "threat")]),
+    # people said with where they come from claim nothing there; the speaker's "my shop"
+    ("farm_village", "Residents from the caravan field are walking up to the village hall, which is our dry refuge.",
+     [("village hall", "haven")]),
+    ("farm_village", "there's a kiddie on the-- on the bridge, no, not the bridge, the weir, on the weir.",
+     [("mill weir", "person_at_risk")]),
+])
+def test_farm_village_readings(kb_analyzers, kb, text, expected):
+    assert claims(kb_analyzers[kb], text) == expected

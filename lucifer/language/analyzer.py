@@ -705,13 +705,19 @@ class ReportAnalyzer:
                     norms[i - 1] == "the" or norms[i - 1] in ("my", "our") and (i - 1) in rel_ends):
                 # ("the hall right below my cottage": the speaker's own, as a relation's anchor; not "my kitchen")
                 continue
-            if w in lx.UNNAMING_HEADS or (w in lx.GENERIC_HEADS or w in lx.DESCRIPTION_HEADS) and (i - 1) not in rel_ends:
-                continue  # "the terrace" names the one terrace only as a relation's anchor ("back to back with the terrace")
+            said_of = toks.tokens[i].text.lower().endswith(("'s", "’s")) or i + 1 >= len(norms) \
+                or toks.clause_start[i + 1] or norms[i + 1] in lx.COPULAS
+            if w in lx.UNNAMING_HEADS or (w in lx.GENERIC_HEADS or w in lx.DESCRIPTION_HEADS) and (i - 1) not in rel_ends \
+                    and not (said_of and w in lx.GENERIC_HEADS and w not in lx.DESCRIPTION_HEADS):
+                # "the terrace" names the one terrace only as a relation's anchor ("back to back with the terrace"),
+                # or as what a predicate is said of ("the barn's out now")
+                continue
             if i + 1 < len(norms) and norms[i + 1] in ("that", "which", "where", "who") and not toks.clause_start[i + 1]:
                 continue  # "the compound that supplies it": a description for the relation passes
             if i + 1 < len(norms) and not toks.clause_start[i + 1] and norms[i + 1].isalpha() \
-                    and norms[i + 1] not in lx.FUNCTION_WORDS and self._relations.match_at(norms, i + 1) is None:
-                continue  # "the lodge gate": a longer noun phrase
+                    and norms[i + 1] not in lx.FUNCTION_WORDS and self._relations.match_at(norms, i + 1) is None \
+                    and not toks.tokens[i].text.lower().endswith(("'s", "’s")):
+                continue  # "the lodge gate": a longer noun phrase ("the barn's out now" is the barn)
             out.append(self._mention(toks, i, i + 1, self._heads[w]))
         return out
 
@@ -781,6 +787,17 @@ class ReportAnalyzer:
         out: list[PlaceMention] = []
         taken = {i for p in places for i in range(p.start_tok, p.end_tok)}
         for i in range(1, len(norms)):
+            if norms[i - 1] in ("my", "our") and i not in taken and norms[i].isalpha() and len(norms[i]) >= 3:
+                # "Mrs Kay from the village shop here, the place my shop is tucked in beside": the speaker's own,
+                # named before
+                mine = [p for p in places if p.end_tok <= i - 1 and p.status == "active" and any(
+                    name_words(f)[-1:] == (norms[i],) for f in self.kb.landmark_by_name[p.landmark].surface_forms)]
+                if mine:
+                    last = max(mine, key=lambda p: p.end_tok)
+                    out.append(replace(self._mention(toks, i - 1, i + 1, last.landmark),
+                                       reason=f"the speaker's '{norms[i]}', '{last.text}'"))
+                    taken.update(range(i - 1, i + 1))
+                    continue
             names = shared.get(norms[i])
             if not names or i in taken or (i - 1) in taken or norms[i - 1] not in ("the", "that", "this"):
                 continue
@@ -1788,6 +1805,8 @@ class ReportAnalyzer:
         if named is not None and k < anchor.start_tok:
             # "the green the abbey overlooks": the head is named, the anchor is a reference
             return anchor, named.start_tok, True
+        if k < anchor.start_tok and norms[k] == "where" and (k == 0 or norms[k - 1] not in lx.PREPOSITIONS):
+            return anchor, k, False  # "where the back lane runs down to, that's a raging torrent"
         hs = k
         while hs > 0 and k - hs < 3 and norms[hs - 1] not in lx.PREPOSITIONS | lx.COPULAS and not ex.tokens.clause_start[hs]:
             hs -= 1
@@ -2358,6 +2377,8 @@ class ReportAnalyzer:
         self._places_now = ex.places
         self._marker_tokens = marker_tokens
         cues: list[CueMention] = []
+        shut: set[int] = set()
+        self._shut_tokens = shut
         for a, b, (cat, source) in self._cues.find_all(norms, blocked):
             if source == "neutral":
                 continue
@@ -2374,7 +2395,10 @@ class ReportAnalyzer:
                 continue  # "Control, Hazmat One, we're ...": a call sign
             start, end = toks.tokens[a].start, toks.tokens[b - 1].end
             if norms[a:b] in lx.LOCK_CUES and not self._access_category():
-                continue  # "The church is locked, nobody's using it": shut, no danger, where no category is about access
+                # "The church is locked, nobody's using it": shut, no danger, where no category is about access
+                # (nor a shelter: the MiniLM fallback does not guess at it)
+                shut.update(range(a, b))
+                continue
             if norms[a:b] in (("everyone", "out"), ("everybody", "out")) \
                     and toks.tokens[a].text.lower().endswith(("'s", "’s")) and self._person_category:
                 # "everyone's out of the lift shaft": they have left (nobody in need there), no order to get out
@@ -2564,7 +2588,8 @@ class ReportAnalyzer:
                 if nxt in lx.RADIO_CALL_WORDS:
                     continue  # "Port Control, uh, all stations, ...": the station called, no claim to guess at
             a, b = self._predicate_region(ex, p)
-            if any(a <= c.start_tok < b for c in all_cues) or any(a <= ma < b for ma, _, _ in ex.markers):
+            if any(a <= c.start_tok < b for c in all_cues) or any(a <= ma < b for ma, _, _ in ex.markers) \
+                    or any(a <= i < b for i in getattr(self, "_shut_tokens", ())):
                 continue  # the vocabulary (or a repair) already spoke here; the fallback stays silent
             if any(a <= i < b for i in negated):
                 continue  # "nobody home at the flats": a negated predicate is no claim to guess at
@@ -3330,6 +3355,8 @@ class ReportAnalyzer:
                     target = back
             if target is not None:
                 for q in seg_usable[target]:
+                    if len(seg_usable[target]) > 1 and self._origin(norms, q):
+                        continue
                     fq = forward(q)
                     if fq is not None:
                         pairs.extend(Claim(fq, c) for c in cs)
@@ -3356,6 +3383,8 @@ class ReportAnalyzer:
                 # the replacement takes the retracted list item's share of the list's claims
                 pairs.extend(Claim(p, c) for c in listed if c.start_tok < counted)
                 claimed_places.add(p.start_tok)
+                continue
+            if self._origin(norms, p):
                 continue
             tail = [w for w in norms[p.end_tok:segs[k][1]] if w not in lx.FILLERS]
             if len(tail) >= 3 and set(tail[:3]) & {"got", "has", "have", "is", "was", "are", "had"} \
@@ -3632,6 +3661,18 @@ class ReportAnalyzer:
                 break
             j += 1
         return None
+
+    @staticmethod
+    def _origin(norms: tuple[str, ...], p: PlaceMention) -> bool:
+        """Where the speaker or the people come from: "Mrs Kay from the village shop here, ...", "Residents
+        from the caravan field are walking up to the village hall, which is our dry refuge"."""
+        j = p.start_tok - 1
+        while j >= 0 and norms[j] in lx.DETERMINERS:
+            j -= 1
+        after = [w for w in norms[p.end_tok:min(len(norms), p.end_tok + 4)] if w not in lx.FILLERS]
+        return j >= 0 and norms[j] == "from" and bool(after) and (
+            after[0] in ("here", "calling", "speaking")
+            or bool(set(after) & {"walking", "coming", "heading", "moving", "going", "making"}))
 
     @staticmethod
     def _opening(norms: tuple[str, ...], a: int, b: int) -> str:

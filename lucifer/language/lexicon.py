@@ -67,6 +67,8 @@ petrol leak|diesel leak|fuel spill|petrol spill|diesel spill|exploding|explode|c
 wall's fallen|wall has fallen|walls have fallen|roof's fallen|roof has fallen|ceiling's fallen|ceiling has fallen|
 chimney's fallen|chimney has fallen|fallen masonry|fallen tree|tree's fallen|tree has fallen|tree down|trees down|
 flattened|smashed in|swaying|fallen in|slipped in|smashed|is going up|s going up|still going up|going up properly|is catching|catching too|caught too|
+no-go|no go|no-go area|no go area|no-go areas|no go areas|a no-go|a no go|a torrent|raging torrent|like a torrent|
+up to the gutters|is up to the|
 """.replace("\n", ""))
 
 _add(DESIRABLE, """
@@ -83,6 +85,7 @@ reception centre|reception center|rest center|high ground|taking evacuees|taking
 opened as a rest centre|safe ground|dry and safe|bone dry|warming centre|warm and dry|sheltering there|
 meeting point|the meeting point|empty and checked|checked and empty|evacuated and checked|searched and clear|
 is open|s open|are open|still open|open again|reopened|open and usable|open for landing|
+high and dry|can shelter there|can shelter here|people can shelter|can come and wait|opened up for|opened its doors|
 """.replace("\n", ""))
 
 _add(CRITICAL, """
@@ -575,7 +578,8 @@ BODY_PARTS = {"arm", "arms", "leg", "legs", "hand", "hands", "head", "face", "fo
               "eyes", "skin"}
 
 # Members of the public: "<a|two|there's> <person> <at|in|under|clinging...>" is a casualty claim.
-LAY_PERSONS = {"man", "woman", "person", "people", "someone", "somebody", "child", "children", "kid", "baby",
+LAY_PERSONS = {"man", "woman", "person", "people", "someone", "somebody", "child", "children", "kid", "baby", "kiddie",
+               "bairn", "lass",
                "resident", "fella", "guy", "bloke", "lady", "girl", "boy", "family", "occupant", "pensioner",
                "teenager", "toddler", "infant", "couple", "mother", "father", "gentleman", "walker", "diver",
                "swimmer", "guest", "customer", "elderly", "youngster", "male", "female", "casualty", "adult",
@@ -707,7 +711,8 @@ DANGER_KINDS: dict[str, list[str]] = {
               "up to the windowsills", "overtopping", "burst its banks", "waterlogged", "water logged", "flooded out",
               "water everywhere", "water coming over", "taking on water", "taking water", "foot of water",
               "feet of water", "under a foot of water", "water coming up", "water coming in", "water's coming in",
-              "coming in under the door", "coming in under the doors", "washed away", "there's water in",
+              "coming in under the door", "coming in under the doors", "washed away", "water coming into",
+              "water's coming into", "water is coming into", "there's water in",
               "theres water in", "water pouring in", "water's pouring in", "water is pouring in",
               "water's still pouring", "water still pouring in", "water is come in", "full of water",
               "filled with water", "filling with water", "filling up with water", "it's going under",

@@ -126,7 +126,10 @@ def tokenize(text: str) -> Tokens:
                 and toks[i].text[:1].islower():
             is_sent = False  # "RVP est. taxi rank", "bldg across chan. from": an abbreviation's point
         sent.append(is_sent)
-        clause.append(is_sent or bool(_CLAUSE.search(gap.strip())) or bool(_CLAUSE.search(g)))
+        # a hyphen inside a word ("no-go", "x-ray", "cut-off") is no pause; a stutter's ("th-th-the") is none either
+        hyphenated = gap == "-" and i > 0 and len(toks[i].text) > 1 \
+            and not toks[i].text.lower().startswith(toks[i - 1].text.lower()[:1])
+        clause.append(is_sent or (not hyphenated and (bool(_CLAUSE.search(gap.strip())) or bool(_CLAUSE.search(g)))))
     sentence_of = tuple(itertools.accumulate(int(x) for x in sent)) if sent else ()
     return Tokens(text, tuple(toks), tuple(gaps), tuple(sent), tuple(clause), tuple(n - 1 for n in sentence_of))
 
