@@ -1099,3 +1099,24 @@ def test_put_out_later_locked_and_staff_members(analyzer, text, expected):
 ])
 def test_farm_village_readings(kb_analyzers, kb, text, expected):
     assert claims(kb_analyzers[kb], text) == expected
+
+
+@pytest.mark.parametrize(("kb", "text", "expected"), [
+    # a danger said to reach another place is that danger there too
+    ("industrial_estate", "HAZMAT: the leak from the drum store has reached the fuel island, and the staff car park is "
+                          "our welfare point.", [("car park", "safe_refuge"), ("drum store", "chemical_leak"),
+                                                 ("fuel island", "chemical_leak")]),
+    ("industrial_estate", "Drone operator: smoke plume from the distribution warehouse is now covering the battery plant.",
+     [("main warehouse", "fire_and_smoke"), ("unit 8", "fire_and_smoke")]),
+    ("industrial_estate", "we've got a leak in the drum st-- the drum store and, um, it's into the pit as well, the "
+                          "effluent pit", [("drum store", "chemical_leak"), ("effluent pit", "chemical_leak")]),
+    # "no" right between two places repairs; a place's cook is a person, not the place
+    ("industrial_estate", "trapped worker in unit 3 no unit 4 sorry sorry unit 9 the recycling one",
+     [("unit 9", "worker_casualty")]),
+    ("industrial_estate", "Canteen cook again, we've walked the whole of Halden Foods and it's all clear, nobody left "
+                          "inside.", [("unit 3", "safe_refuge")]),
+    ("industrial_estate", "The canteen is set up as the rest area, and there's a lad in here with a deep cut who needs "
+                          "a paramedic.", [("canteen", "safe_refuge"), ("canteen", "worker_casualty")]),
+])
+def test_spreading_dangers_and_bare_repairs(kb_analyzers, kb, text, expected):
+    assert claims(kb_analyzers[kb], text) == expected

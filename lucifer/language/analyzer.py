@@ -995,7 +995,10 @@ class ReportAnalyzer:
                 # ("uh no casualties": a filler before it changes nothing)
                 # "no, the bakery" / "no no" is a repair; "no fire" / "no one" is negation;
                 # "the warehouse no the library" (no pause) is a repair when a place precedes
-                if not (pause_after or nxt in ("no", "wait", "sorry", "the", "its", "it", "i", "actually", "make")):
+                # ("trapped worker in unit 3 no unit 4": a place right after "no", one just before it, is a repair)
+                named_next = b in blocked and any(i in blocked for i in range(max(0, a - 3), a))
+                if not (pause_after or named_next or nxt in ("no", "wait", "sorry", "the", "its", "it", "i", "actually",
+                                                             "make")):
                     continue
                 if nxt == "the" and not (a > 0 and toks.clause_start[a]):
                     ahead = [i for i in (b + 1, b + 2) if i < len(norms)]
@@ -2438,6 +2441,9 @@ class ReportAnalyzer:
         self._markers_now = ex.markers
         cues = self._apply_non_reports(toks, norms, cues)
         claims, denied = self._associate(ex, cues)
+        spread = self._spread_claims(ex, norms, cues, claims, denied)
+        claims.extend(spread)
+        cues.extend(c.cue for c in spread)
         if self.embedder is not None and self.semantic_fallback:
             self._all_cues_now = cues
             denied_keys = {c.key for c in denied}
@@ -3661,6 +3667,54 @@ class ReportAnalyzer:
                 break
             j += 1
         return None
+
+    def _spread_claims(self, ex: Extraction, norms: tuple[str, ...], cues: list[CueMention], claims: list[Claim],
+                       denied: list[Claim]) -> list[Claim]:
+        """"the leak from the drum store has reached the fuel island", "smoke ... is now covering the battery plant",
+        "it's into the pit as well, the effluent pit": a danger said to reach another place is that danger there too."""
+        toks = ex.tokens
+        cue_tokens = {i for c in cues for i in range(c.start_tok, c.end_tok)}
+        starts = {p.start_tok: p for p in ex.places if p.status == "active"}
+        out = []
+        for i in range(len(norms)):
+            for key in lx.SPREAD_PHRASES:
+                b = i + len(key)
+                if norms[i:b] != key or any(j in cue_tokens for j in range(i, b)) or b >= len(norms):
+                    continue
+                k = b
+                while k < len(norms) and norms[k] in lx.DETERMINERS and k - b < 2:
+                    k += 1
+                place = starts.get(k) or starts.get(b)
+                if place is None and k < len(norms):
+                    # "it's into the pit as well, the effluent pit": the place said again after a pause
+                    e = k
+                    while e < len(norms) and not toks.clause_start[e] and e - k < 5:
+                        e += 1
+                    later = [p for p in ex.places if p.status == "active" and e <= p.start_tok <= e + 2]
+                    place = later[0] if later and any(norms[j] in name_words(later[0].landmark) for j in range(k, e)) \
+                        else None
+                if place is None:
+                    continue
+                prior = [c for c in cues if c.end_tok <= i and c.polarity == "affirmed" and c.status == "active"
+                         and toks.sentence_of[c.start_tok] == toks.sentence_of[i]
+                         and self.kb.category_by_name[c.category].role == Role.UNDESIRABLE]
+                if not prior or any(c.place.landmark == place.landmark and c.place.start_tok != place.start_tok
+                                    for c in claims + denied):
+                    continue
+                # what the place borrowed from a later clause ("..., and the staff car park is our welfare point")
+                # gives way to the danger that reached it
+                later_clause = [c for c in claims if c.place is place and c.cue.start_tok > place.end_tok and any(
+                    toks.clause_start[j] for j in range(place.end_tok, c.cue.start_tok + 1))]
+                if len(later_clause) < len([c for c in claims if c.place is place]):
+                    continue  # it has a claim of its own
+                for c in later_clause:
+                    claims.remove(c)
+                src = max(prior, key=lambda c: c.start_tok)
+                start, end = toks.tokens[i].start, toks.tokens[b - 1].end
+                out.append(Claim(place, CueMention(i, b, start, end, toks.text[start:end], src.category, "lexicon",
+                                                   reason=f"the {src.text} has spread there")))
+                break
+        return out
 
     @staticmethod
     def _origin(norms: tuple[str, ...], p: PlaceMention) -> bool:

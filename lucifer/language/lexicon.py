@@ -103,7 +103,7 @@ hypothermic|drowning|bleeding out|critical condition|in shock|lost consciousness
 pinned under debris|pinned under rubble|trapped under debris|trapped under rubble|buried under rubble|buried under debris|
 trapped in rubble|under the rubble|needs medics|need medics|needs a doctor|requires evacuation|unaccounted for|
 people still inside|still inside|someone still inside|people stuck|people stuck inside|with people inside|
-people under it|people under there|someone under it|somebody under it|people underneath|breathing problems|breathing difficulties|difficulty breathing|struggling to breathe|can't breathe|cannot breathe|
+needs a paramedic|need a paramedic|needs paramedics|deep cut|bad cut|people under it|people under there|someone under it|somebody under it|people underneath|breathing problems|breathing difficulties|difficulty breathing|struggling to breathe|can't breathe|cannot breathe|
 man collapsed|woman collapsed|person collapsed|someone collapsed|somebody collapsed|he collapsed|she collapsed|
 needs oxygen|need oxygen|having a heart attack|heart attack|seizure|having a seizure|can't breathe|cannot breathe|
 asthma attack|asthma attacks|an asthma attack|having an asthma attack|shut in|locked in|
@@ -414,7 +414,8 @@ INSTRUCTION_WORDS = {"instruction", "instructions", "previous", "every", "everyt
                      "output", "json", "system", "prompt", "map", "everywhere", "rules"}
 
 # Nouns after a place name that make the name a modifier ("pharmacy team reports ...").
-MODIFIED_BY = {"team", "crew", "unit", "squad", "staff", "manager", "owner", "workers", "worker", "group",
+MODIFIED_BY = {"team", "crew", "unit", "squad", "staff", "manager", "owner", "workers", "worker", "group", "cook",
+               "chef", "caretaker", "porter", "receptionist", "warden", "supervisor", "foreman",
                "side", "car", "truck", "van", "bus", "sign", "road", "street", "lane"}
 
 # Words after a place that name a part of it, not another thing ("the surgery car park").
@@ -564,6 +565,11 @@ for _p in PERSON_NOUNS:
 # Person words that say what happened to a thing when a thing is their subject ("cars buried").
 THING_SUBJECTS = {"car", "vehicle", "van", "truck", "lorry", "bus", "road", "track", "path", "lift", "entrance",
                   "door", "gate", "bike", "tent", "hut"}
+# Words that carry a danger said before on to the place after them ("the leak has reached the fuel island").
+SPREAD_PHRASES = [("has", "reached"), ("have", "reached"), ("reached",), ("spread", "to"), ("spreading", "to"),
+                  ("spread", "into"), ("spreading", "into"), ("now", "covering"), ("covering",), ("its", "into"),
+                  ("s", "into"), ("got", "into"), ("drifting", "over"), ("drifting", "across"), ("blowing", "across"),
+                  ("blowing", "over"), ("reaching",)]
 # Cues that say a place is shut: a danger only where a category is about access.
 LOCK_CUES = {("locked",), ("padlocked",), ("chained",), ("chained", "shut"), ("locked", "up")}
 # Parts of a structure that can be the subject of "collapsed" (no person is).
