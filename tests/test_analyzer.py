@@ -1120,3 +1120,14 @@ def test_farm_village_readings(kb_analyzers, kb, text, expected):
 ])
 def test_spreading_dangers_and_bare_repairs(kb_analyzers, kb, text, expected):
     assert claims(kb_analyzers[kb], text) == expected
+
+
+def test_news_that_a_danger_is_out_repairs_nothing(kb_analyzers):
+    # "actually the fire at the barn's out now" ends a claim made before; it replaces neither the last place nor its
+    # smoke, and "the sheds" is the cattle sheds (said so), not the hay barn's alias "the hay shed"
+    assert claims(kb_analyzers["farm_village"], "fire at the hay barn and, and the cattle sheds, smoke, and, um, a-- "
+                  "actually the fire at the barn's out now, it's just the sheds still full of smoke") == [
+        ("cattle sheds", "threat")]
+    # going back to a place said before is a repair all the same
+    assert claims(kb_analyzers["quarrytown"], "the sidings — the halt — no, the sidings, definitely the sidings, crown "
+                  "hole right across the track") == [("loading sidings", "unstable_ground")]

@@ -705,10 +705,10 @@ class ReportAnalyzer:
                     norms[i - 1] == "the" or norms[i - 1] in ("my", "our") and (i - 1) in rel_ends):
                 # ("the hall right below my cottage": the speaker's own, as a relation's anchor; not "my kitchen")
                 continue
-            said_of = toks.tokens[i].text.lower().endswith(("'s", "’s")) or i + 1 >= len(norms) \
-                or toks.clause_start[i + 1] or norms[i + 1] in lx.COPULAS
+            contracted = toks.tokens[i].text.lower().endswith(("'s", "’s"))
+            said_of = contracted or i + 1 >= len(norms) or toks.clause_start[i + 1] or norms[i + 1] in lx.COPULAS
             if w in lx.UNNAMING_HEADS or (w in lx.GENERIC_HEADS or w in lx.DESCRIPTION_HEADS) and (i - 1) not in rel_ends \
-                    and not (said_of and w in lx.GENERIC_HEADS and w not in lx.DESCRIPTION_HEADS):
+                    and not (said_of and w in lx.GENERIC_HEADS and (contracted or w not in lx.DESCRIPTION_HEADS)):
                 # "the terrace" names the one terrace only as a relation's anchor ("back to back with the terrace"),
                 # or as what a predicate is said of ("the barn's out now")
                 continue
@@ -810,7 +810,10 @@ class ReportAnalyzer:
             before = [p for p in places if p.end_tok <= i - 1 and p.landmark in names]
             if not before:
                 continue
-            last = max(before, key=lambda p: p.end_tok)
+            raw = toks.tokens[i].text.lower()
+            exact = [p for p in before if any(f.lower().split()[-1:] == [raw]
+                                              for f in self.kb.landmark_by_name[p.landmark].surface_forms)]
+            last = max(exact or before, key=lambda p: p.end_tok)  # ("the sheds": the cattle sheds, not the hay shed)
             out.append(replace(self._mention(toks, i - 1, end, last.landmark),
                                reason=f"the '{norms[i]}' named last, '{last.text}'"))
             taken.update(range(i - 1, end))
@@ -2246,6 +2249,13 @@ class ReportAnalyzer:
             first_after = min((p for p in after if p.status == "active"), key=lambda p: p.start_tok, default=None)
             if first_after is not None and first_after.landmark == last.landmark:
                 continue  # "I mean the chapel, st mary's, same place": a restatement, not a repair
+            if first_after is not None and not _strong and any(
+                    q.landmark == first_after.landmark and q.status == "active" and q.end_tok <= last.start_tok
+                    for q in ex.places) and (any(self._cancel.match_at(norms, i) is not None for i in range(b, end))
+                                             or "out" in norms[b:end]):
+                # "fire at the hay barn and the cattle sheds, smoke, and, um, actually the fire at the barn's out
+                # now": news of a place said before the last one, which it does not replace
+                continue
             if first_after is not None and norms[a:ex.markers[k][1]] in (("wait",), ("hang", "on"), ("hold", "on")) \
                     and self._adds_to(toks, norms, first_after):
                 continue  # "wait... crew three says the bank's alight as well": more news, not a repair
@@ -3149,6 +3159,8 @@ class ReportAnalyzer:
                     and self.kb.category_by_name[first_cue.category].role == Role.CRITICAL \
                     and self.kb.category_by_name[last.category].role != Role.CRITICAL:
                 continue  # "the meeting point, everyone's there, but hang on, someone's just collapsed": news
+            if not strong and first_cue.polarity == "denied":
+                continue  # "smoke, and, um, actually the fire at the barn's out now": news that ends a claim, said so
             if not strong and kind == "cue" and any(p.status == "active" and last.end_tok <= p.start_tok < a
                                                     for p in ex.places):
                 # "it's the rest centre, and the cloisters, they're shut, actually there's a gas smell in
