@@ -1131,3 +1131,8 @@ def test_news_that_a_danger_is_out_repairs_nothing(kb_analyzers):
     # going back to a place said before is a repair all the same
     assert claims(kb_analyzers["quarrytown"], "the sidings — the halt — no, the sidings, definitely the sidings, crown "
                   "hole right across the track") == [("loading sidings", "unstable_ground")]
+
+
+def test_a_danger_not_there_yet(kb_analyzers):
+    assert claims(kb_analyzers["container_port"], "burning oil at the jetty, the oil jetty, it's drifting off toward "
+                  "the tug pen but, but it's not there yet") == [("tanker jetty", "exclusion_zone")]

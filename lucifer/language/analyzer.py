@@ -3570,7 +3570,8 @@ class ReportAnalyzer:
 
     @staticmethod
     def _places_put_out(ex: Extraction, norms: tuple[str, ...]) -> list[tuple[str, int]]:
-        """(landmark, token) for each "<place> (one)'s out" clause: "the bakery one's out", "garage is out now"."""
+        """(landmark, token) for each "<place> (one)'s out" clause ("the bakery one's out", "garage is out now") and
+        each place a danger has "not reached yet"."""
         toks = ex.tokens
         out = []
         for p in ex.places:
@@ -3583,6 +3584,14 @@ class ReportAnalyzer:
             if j < len(norms) and norms[j] == "out" and j > p.end_tok and not toks.clause_start[j] \
                     and (j + 1 >= len(norms) or toks.clause_start[j + 1] or norms[j + 1] in ("now", "completely")):
                 out.append((p.landmark, j))
+                continue
+            # "it's drifting off toward the tug pen but, but it's not there yet": heading there, not there
+            ahead = norms[p.end_tok:min(len(norms), p.end_tok + 10)]
+            for n in range(len(ahead) - 2):
+                if ahead[n:n + 3] == ("not", "there", "yet") or ahead[n:n + 2] in (("hasnt", "reached"),
+                                                                                   ("not", "reached")):
+                    out.append((p.landmark, p.end_tok + n))
+                    break
         return out
 
     def _people_revoked(self, ex: Extraction, norms: tuple[str, ...], cues: list[CueMention]) -> list[tuple[str, int]]:

@@ -103,7 +103,7 @@ hypothermic|drowning|bleeding out|critical condition|in shock|lost consciousness
 pinned under debris|pinned under rubble|trapped under debris|trapped under rubble|buried under rubble|buried under debris|
 trapped in rubble|under the rubble|needs medics|need medics|needs a doctor|requires evacuation|unaccounted for|
 people still inside|still inside|someone still inside|people stuck|people stuck inside|with people inside|
-needs a paramedic|need a paramedic|needs paramedics|deep cut|bad cut|people under it|people under there|someone under it|somebody under it|people underneath|breathing problems|breathing difficulties|difficulty breathing|struggling to breathe|can't breathe|cannot breathe|
+is injure|he injure|she injure|needs a paramedic|need a paramedic|needs paramedics|deep cut|bad cut|people under it|people under there|someone under it|somebody under it|people underneath|breathing problems|breathing difficulties|difficulty breathing|struggling to breathe|can't breathe|cannot breathe|
 man collapsed|woman collapsed|person collapsed|someone collapsed|somebody collapsed|he collapsed|she collapsed|
 needs oxygen|need oxygen|having a heart attack|heart attack|seizure|having a seizure|can't breathe|cannot breathe|
 asthma attack|asthma attacks|an asthma attack|having an asthma attack|shut in|locked in|
@@ -166,6 +166,7 @@ CANCEL_AFTER = ["is out", "s out", "are out", "was out", "put out", "out now", "
                 for who in ("him", "her", "them", "everyone", "everybody", "all of them", "the casualty")] + [
                 "nobody was in", "no one was in", "nobody was inside", "no one was inside", "walked off",
                 "nobody in", "no one in", "found her", "found him", "found them", "found safe",
+                "not there yet", "hasn't reached", "has not reached", "not reached",
                 "walked out", "she's out", "he's out", "they're out", "she's okay", "he's okay", "they're okay",
                 "carried away", "been carried away", "been moved", "moved away",
                 "empty"]
