@@ -114,6 +114,8 @@ SETS = {
     "dev19/industrial_estate": _set("dev19/industrial_estate.jsonl", ESTATE, "ie",
                                     {"standard": 30, "messy": 30, "advanced_messy": 30}),
     "dev19/farm_village": _set("dev19/farm_village.jsonl", FARM, "fv", {"standard": 30, "messy": 30, "advanced_messy": 30}),
+    "dev20/market_square": _set("dev20/market_square.jsonl", MARKET_SQUARE, "d20",
+                                {"standard": 10, "messy": 60, "advanced_messy": 30}, sep=""),
     "dev17/hospital_campus": _set("dev17/hospital_campus.jsonl", HOSPITAL, "hc",
                                   {"standard": 30, "messy": 30, "advanced_messy": 30}),
 }
