@@ -1136,3 +1136,22 @@ def test_news_that_a_danger_is_out_repairs_nothing(kb_analyzers):
 def test_a_danger_not_there_yet(kb_analyzers):
     assert claims(kb_analyzers["container_port"], "burning oil at the jetty, the oil jetty, it's drifting off toward "
                   "the tug pen but, but it's not there yet") == [("tanker jetty", "exclusion_zone")]
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    # a name restated under another name goes with it when the restatement is repaired
+    ("two casualties at the library and, er, one at the church — sorry, the chapel — I mean the hardware store, one "
+     "casualty at the hardware store", [("hardware store", "victim"), ("library", "victim")]),
+    # a repair that says a list again keeps the list's places
+    ("the park, the town square and uh the gym are all being used as assembly points — not the gym, sorry, just the "
+     "park and the square", [("market square", "safe_zone"), ("park", "safe_zone")]),
+    ("we've got a survivor at the garage — my mistake — at the warehouse, and the garage itself is cleared",
+     [("garage", "safe_zone"), ("warehouse", "victim")]),
+    # "but it isn't" denies what was just said; "found him collapsed" is a person
+    ("one of my pupils keeps saying the water tower's on fire but it isn't, it's the police station, the police "
+     "station's on fire", [("police station", "hazard")]),
+    ("I've checked the library, the school and the post office for the caretaker, he's not in any of them, but I "
+     "found him collapsed in the town hall", [("town hall", "victim")]),
+])
+def test_restated_names_lists_and_but_it_isnt(analyzer, text, expected):
+    assert claims(analyzer, text) == expected

@@ -2249,6 +2249,11 @@ class ReportAnalyzer:
             first_after = min((p for p in after if p.status == "active"), key=lambda p: p.start_tok, default=None)
             if first_after is not None and first_after.landmark == last.landmark:
                 continue  # "I mean the chapel, st mary's, same place": a restatement, not a repair
+            if any(q.landmark == last.landmark and q.status == "active" and b <= q.start_tok
+                   and toks.sentence_of[q.start_tok] == toks.sentence_of[a]
+                   and any(norms[i] in ("and", "plus") for i in range(b, q.start_tok))
+                   and (q.end_tok >= len(norms) or toks.clause_start[q.end_tok]) for q in ex.places):
+                continue  # "... — not the gym, sorry, just the park and the square": the list said again, the square kept
             if first_after is not None and not _strong and any(
                     q.landmark == first_after.landmark and q.status == "active" and q.end_tok <= last.start_tok
                     for q in ex.places) and (any(self._cancel.match_at(norms, i) is not None for i in range(b, end))
@@ -2269,6 +2274,13 @@ class ReportAnalyzer:
             # "I said", every earlier one in the report ("A man collapsed in the library. ... Sorry, I said the
             # library, I meant the school."), its claims going to the place that replaces it
             quoted = any(norms[i] == "said" for i in range(max(0, last.start_tok - 3), last.start_tok))
+            if k > 0 and 0 <= last.start_tok - ex.markers[k - 1][1] <= 2:
+                # "one at the church — sorry, the chapel — I mean the hardware store": the name it restated goes too
+                pa = ex.markers[k - 1][0]
+                for j, q in enumerate(ex.places):
+                    if q.status == "active" and q.landmark == last.landmark and pa - 3 <= q.end_tok <= pa \
+                            and name_words(q.text) != name_words(last.text):
+                        ex.places[j] = replace(q, status="retracted", reason=f"self-repair of '{last.text}'")
             for j, q in enumerate(ex.places):
                 if q.status == "active" and q.landmark == last.landmark and start <= q.start_tok < a:
                     ex.places[j] = replace(q, status="retracted", reason=f"self-repair of '{last.text}'")
@@ -2507,7 +2519,7 @@ class ReportAnalyzer:
             return False
         w = norms[j]
         if w in lx.LAY_PERSONS or w in lx.WORKER_PERSONS or w in lx.PERSON_NOUNS or w in lx.CREW_NOUNS \
-                or w in ("we", "they", "i", "he", "she", "hes", "shes"):
+                or w in ("we", "they", "i", "he", "she", "hes", "shes", "him", "her"):
             return True
         if w in lx.BODY_PARTS and j > 0 and norms[j - 1] in ("his", "her", "their", "my", "your"):
             return True  # "his arm is burned": a person's
@@ -3010,6 +3022,11 @@ class ReportAnalyzer:
                 k = ends[k]  # a place (or a whole relational description) counts as one word
                 steps += 1
                 continue
+            if norms[k:k + 3] in (("but", "it", "isnt"), ("but", "its", "not"), ("but", "it", "wasnt"),
+                                  ("but", "thats", "not"), ("but", "they", "arent")) \
+                    and (k + 3 >= len(norms) or toks.clause_start[k + 3]):
+                cancelled_by = "but it isn't"  # "keeps saying the water tower's on fire but it isn't, it's the ..."
+                break
             h = self._cancel.match_at(norms, k)
             if h is not None:
                 nxt = h[0]
