@@ -35,6 +35,7 @@ PIER = ROOT / "knowledge_bases" / "seaside_pier"
 OLD_TOWN = ROOT / "knowledge_bases" / "old_town"
 ESTATE = ROOT / "knowledge_bases" / "industrial_estate"
 FARM = ROOT / "knowledge_bases" / "farm_village"
+CAMPUS = ROOT / "knowledge_bases" / "university_campus"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -116,6 +117,8 @@ SETS = {
     "dev19/farm_village": _set("dev19/farm_village.jsonl", FARM, "fv", {"standard": 30, "messy": 30, "advanced_messy": 30}),
     "dev20/market_square": _set("dev20/market_square.jsonl", MARKET_SQUARE, "d20",
                                 {"standard": 10, "messy": 60, "advanced_messy": 30}, sep=""),
+    "dev20/university_campus": _set("dev20/university_campus.jsonl", CAMPUS, "uc",
+                                    {"standard": 30, "messy": 30, "advanced_messy": 30}),
     "dev17/hospital_campus": _set("dev17/hospital_campus.jsonl", HOSPITAL, "hc",
                                   {"standard": 30, "messy": 30, "advanced_messy": 30}),
 }
