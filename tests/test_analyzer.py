@@ -1155,3 +1155,25 @@ def test_a_danger_not_there_yet(kb_analyzers):
 ])
 def test_restated_names_lists_and_but_it_isnt(analyzer, text, expected):
     assert claims(analyzer, text) == expected
+
+
+@pytest.mark.parametrize(("kb", "text", "expected"), [
+    # a floor or roof of a landmark is in it; a danger "exposed behind" a landmark is behind it
+    ("university_campus", "Acid spill on the ground floor of the chemistry annexe, and one technician with burns to his "
+                          "hands in there.", [("chemistry annexe", "chem_or_electric"), ("chemistry annexe", "person_at_risk")]),
+    ("university_campus", "Live conductor exposed behind the medical centre, keep everyone back.",
+     [("electrical substation", "chem_or_electric")]),
+    # "scratch that" repairs, it does not negate the place after it
+    ("university_campus", "fire officer to control smoke from the engineering block actually no scratch that its the "
+                          "physics block the engineering one is clear",
+     [("engineering building", "refuge"), ("physics building", "fire_or_blast")]),
+    # the place after a denied one takes over its claim; a contracted place after it keeps its own predicate
+    ("university_campus", "the gym is where we're putting everyone — sorry, not the gym, the library — the gym's got "
+                          "exposed wiring in the changing rooms",
+     [("library", "refuge"), ("sports hall", "chem_or_electric")]),
+    ("knowledge_base", "Caller A says the fire's in the police station, caller B says it's in the building next to the "
+                       "police station. Crew on scene has confirmed B is right; nothing wrong at the police station "
+                       "itself.", [("clinic", "hazard")]),
+])
+def test_campus_readings(kb_analyzers, kb, text, expected):
+    assert claims(kb_analyzers[kb], text) == expected

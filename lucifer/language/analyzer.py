@@ -1220,6 +1220,8 @@ class ReportAnalyzer:
             link = " ".join(toks.tokens[i].text.lower() for i in range(k, j))
             if self._relations.match_at(norms, k) is not None:
                 continue  # a known phrase: the table-driven pass owns it
+            if norms[j - 1] == "of" and set(norms[k - 1:j]) & (lx.STOREY_WORDS | lx.PART_NOUNS | lx.LOCATIVE_PARTS):
+                continue  # "on the ground floor of the chemistry annexe": a part of the place, in it
             sims = self._link_similarities(link)
             sim = float(sims.max())
             head_start = k - 1
@@ -1489,7 +1491,9 @@ class ReportAnalyzer:
                 # "a bloke lying unconscious at the foot of the ops tower", "pile-up at the front of stage one":
                 # where it is, unless the KB names a relation so ("at_the_foot_of")
                 return
-            if norms[a:b] in lx.AMBIGUOUS_HEADLESS or (words and not self._is_cue_end(norms, head_end)
+            participle = head_end > 1 and norms[head_end - 1].endswith(("ed", "ing")) \
+                and self._is_cue_end(norms, head_end - 1)  # "Live conductor exposed behind the medical centre"
+            if norms[a:b] in lx.AMBIGUOUS_HEADLESS or (words and not self._is_cue_end(norms, head_end) and not participle
                                                        and not set(words) <= lx.HEADLESS_OK):
                 return
             head_start, head_text = a, ""
@@ -1503,6 +1507,8 @@ class ReportAnalyzer:
                     return  # "a man lying at the foot of the water tower": where he lies, when nothing lies below it
                 if norms[a:b] in (("inside",), ("inside", "of"), ("within",)) and generic:
                     return  # "trapped under a fallen stall inside the corn exchange": in it, when nothing is built into it
+                if norms[b - 1] == "of" and set(norms[a:b]) & (lx.PART_NOUNS | lx.LOCATIVE_PARTS | lx.STOREY_WORDS):
+                    return  # "acid spill on the ground floor of the chemistry annexe": a part of it, so in it
                 ex.places[idx] = replace(anchor, status="reference",
                                          reason=f"reference point of an unresolved '{phrase}' description")
                 return
@@ -1994,6 +2000,8 @@ class ReportAnalyzer:
                 neg = True  # "take the garage off that list"
             if not_the_one:
                 neg = True  # "the school isn't the one"
+            if neg and any(ma <= j < mb for ma, mb, _ in ex.markers) and norms[j + 1 : j + 2] == ("that",):
+                neg = False  # "scratch that its the physics block": the marker repairs, it does not negate the place
             if neg and not self._cue_between(norms, j + 1, p.start_tok):
                 ex.places[idx] = replace(p, status="negated", reason=f"negated by '{toks.tokens[j].text}'")
                 # "the clinic ... no, not the clinic, the police station": the earlier mention is retracted
@@ -2245,7 +2253,16 @@ class ReportAnalyzer:
                 continue
             last = max(before, key=lambda p: p.end_tok)
             if min(after, key=lambda p: p.start_tok).status == "negated":
-                continue  # "hold that, not the school": the negation already retracted it
+                # "hold that, not the school": the negation already retracted it; the place said after the
+                # negated one takes over what was said of it ("the gym is where we're putting everyone — sorry,
+                # not the gym, the library")
+                neg = min(after, key=lambda p: p.start_tok)
+                nxt = min((p for p in after if p.status == "active" and p.start_tok > neg.start_tok),
+                          key=lambda p: p.start_tok, default=None)
+                if nxt is not None and nxt.replaces is None and neg.landmark == last.landmark \
+                        and last.status != "active" and nxt.landmark != last.landmark:
+                    ex.places[ex.places.index(nxt)] = replace(nxt, replaces=last.start_tok)
+                continue
             first_after = min((p for p in after if p.status == "active"), key=lambda p: p.start_tok, default=None)
             if first_after is not None and first_after.landmark == last.landmark:
                 continue  # "I mean the chapel, st mary's, same place": a restatement, not a repair
@@ -2919,10 +2936,10 @@ class ReportAnalyzer:
     def _restated_category(self, ex: Extraction, k: int, out: list[CueMention], b: int, end: int, a: int) -> None:
         """"the hotel's sound — hold that — hotel's got a cracked stairwell": same place, new category;
         the cues said about the earlier mention are retracted."""
-        first = min((p for p in ex.places if b <= p.start_tok < end and p.status != "reference"),
+        first = min((p for p in ex.places if b <= p.start_tok < end and p.status not in ("reference", "negated")),
                     key=lambda p: p.start_tok, default=None)
         if first is None:
-            return
+            return  # ("sorry, not the gym, the library": a place denied is no place said again)
         lo = self._repair_window_start(ex, k)
         same = [p for p in ex.places if lo <= p.start_tok < a and p.landmark == first.landmark]
         if not same:
@@ -3698,6 +3715,9 @@ class ReportAnalyzer:
                 break  # "the hotel — and I can see a bloke trapped in ...": a new clause with its own subject
             if seg_cues.get(j):
                 ps = seg_places.get(j, [])
+                if ps and min(ps, key=lambda p: p.start_tok).text.lower().endswith(("'s", "’s")) \
+                        and not any(seg_places.get(i) for i in range(k + 1, j)):
+                    break  # "not the gym, the library — the gym's got exposed wiring": that place's own predicate
                 if not ps or min(p.start_tok for p in ps) <= min(c.start_tok for c in seg_cues[j]):
                     return j
                 break
