@@ -1177,3 +1177,11 @@ def test_restated_names_lists_and_but_it_isnt(analyzer, text, expected):
 ])
 def test_campus_readings(kb_analyzers, kb, text, expected):
     assert claims(kb_analyzers[kb], text) == expected
+
+
+def test_the_station_called_and_here(kb_analyzers, analyzer):
+    # "Red Watch to TCC," calls the control centre and claims nothing of it; "established here" is where the crew is
+    assert claims(kb_analyzers["road_tunnel"], "Red Watch to TCC, we're at the east portal, RVP established here. XP3 "
+                  "is full of smoke, over.") == [("cross-passage 3", "fire_smoke"), ("east portal", "clear_route")]
+    assert claims(analyzer, "we're at the bakery, it's all clear here") == [("bakery", "safe_zone")]
+    assert claims(analyzer, "heading to the school, smoke everywhere here") == []

@@ -2043,6 +2043,16 @@ class ReportAnalyzer:
     def _cue_between(self, norms: tuple[str, ...], a: int, b: int) -> bool:
         return any(self._cues.match_at(norms, k) is not None for k in range(a, b))
 
+    def _called_station(self, toks: Tokens, norms: tuple[str, ...], p: PlaceMention) -> bool:
+        """"Red Watch to TCC, we're at the east portal": a call sign, "to", the station called, a pause."""
+        a = p.start_tok
+        if a < 2 or norms[a - 1] != "to" or toks.sentence_of[a] != 0 or p.end_tok >= len(norms) \
+                or not toks.clause_start[p.end_tok]:
+            return False
+        before = range(0, a - 1)
+        return len(before) <= 4 and all(toks.tokens[i].text[:1].isupper() or toks.tokens[i].text.isdigit()
+                                        for i in before) and not any(self._cues.match_at(norms, i) for i in before)
+
     def _apply_transit(self, ex: Extraction) -> None:
         """"heading to the bakery", "passing the church": the team moves; nothing is claimed there."""
         toks = ex.tokens
@@ -2053,6 +2063,9 @@ class ReportAnalyzer:
                 continue
             if p.start_tok in supposed:
                 ex.places[idx] = replace(p, status="reference", reason="named in a condition ('if ...'): no claim")
+                continue
+            if self._called_station(toks, norms, p):
+                ex.places[idx] = replace(p, status="reference", reason="the station called ('X to Y,'): no claim")
                 continue
             j = p.start_tok
             while j > 0 and norms[j - 1] in lx.DETERMINERS | lx.FILLERS | {"at", "to", "by", "the", "from"} \
@@ -3391,6 +3404,17 @@ class ReportAnalyzer:
                         and sentence_of[p.start_tok] == sentence_of[a]]
                 if here and not seg_usable.get(k - 1):
                     pairs.extend(Claim(here[-1], c) for c in cs)
+                    continue
+            if "here" in norms[a:b]:
+                # "we're at the east portal, RVP established here": where the speaker said they are
+                sent = sentence_of[a]
+                at = {q.landmark: q for q in ex.places if (q.reason.startswith("in transit") and (
+                    "at'" in q.reason or "in'" in q.reason) or (
+                    q.status == "active" and self._speaker_at(norms, q))) and sent - 1 <= sentence_of[q.start_tok] <= sent
+                    and q.start_tok < a}
+                if len(at) == 1:
+                    q = next(iter(at.values()))
+                    pairs.extend(Claim(replace(q, status="active"), c) for c in cs)
                     continue
             target = self._target_for_cues(k, segs, seg_usable, seg_cues, sentence_of, transparent)
             if target is None and not any(seg_usable.get(j) for j in range(k)):
