@@ -1185,3 +1185,12 @@ def test_the_station_called_and_here(kb_analyzers, analyzer):
                   "is full of smoke, over.") == [("cross-passage 3", "fire_smoke"), ("east portal", "clear_route")]
     assert claims(analyzer, "we're at the bakery, it's all clear here") == [("bakery", "safe_zone")]
     assert claims(analyzer, "heading to the school, smoke everywhere here") == []
+
+
+def test_a_repair_about_the_place_just_denied(kb_analyzers):
+    # "hold on, the rec ..." is about the rec denied just before, not the corner shop said before it
+    assert claims(kb_analyzers["chemical_works"], "um so the village hall is safe, the corner shop is safe, and, er, the "
+                  "rec - not the rec, hold on, the rec hasn't been checked") == [
+        ("village hall", "clean_zone"), ("village shop", "clean_zone")]
+    assert claims(kb_analyzers["chemical_works"], "it's the rec that's the decon point, not the allotments... the "
+                  "allotments are contaminated") == [("allotments", "chemical_release"), ("playing field", "clean_zone")]

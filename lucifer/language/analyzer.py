@@ -2279,6 +2279,9 @@ class ReportAnalyzer:
             first_after = min((p for p in after if p.status == "active"), key=lambda p: p.start_tok, default=None)
             if first_after is not None and first_after.landmark == last.landmark:
                 continue  # "I mean the chapel, st mary's, same place": a restatement, not a repair
+            if first_after is not None and any(q.landmark == first_after.landmark and q.status in ("negated", "retracted")
+                                               and last.end_tok <= q.start_tok < a for q in ex.places):
+                continue  # "the corner shop is safe, and the rec - not the rec, hold on, the rec hasn't been checked"
             if any(q.landmark == last.landmark and q.status == "active" and b <= q.start_tok
                    and toks.sentence_of[q.start_tok] == toks.sentence_of[a]
                    and any(norms[i] in ("and", "plus") for i in range(b, q.start_tok))

@@ -85,7 +85,7 @@ reception centre|reception center|rest center|high ground|taking evacuees|taking
 opened as a rest centre|safe ground|dry and safe|bone dry|warming centre|warm and dry|sheltering there|
 meeting point|the meeting point|empty and checked|checked and empty|evacuated and checked|searched and clear|
 is open|s open|are open|still open|open again|reopened|open and usable|open for landing|
-where we're putting everyone|putting everyone|high and dry|can shelter there|can shelter here|people can shelter|can come and wait|opened up for|opened its doors|
+decon point|decon area|decon tent|decontamination point|where we're putting everyone|putting everyone|high and dry|can shelter there|can shelter here|people can shelter|can come and wait|opened up for|opened its doors|
 """.replace("\n", ""))
 
 _add(CRITICAL, """
@@ -103,7 +103,7 @@ hypothermic|drowning|bleeding out|critical condition|in shock|lost consciousness
 pinned under debris|pinned under rubble|trapped under debris|trapped under rubble|buried under rubble|buried under debris|
 trapped in rubble|under the rubble|needs medics|need medics|needs a doctor|requires evacuation|unaccounted for|
 people still inside|still inside|someone still inside|people stuck|people stuck inside|with people inside|
-is injure|he injure|she injure|cut head|a cut head|bleeding head|needs a paramedic|need a paramedic|needs paramedics|deep cut|bad cut|people under it|people under there|someone under it|somebody under it|people underneath|breathing problems|breathing difficulties|difficulty breathing|struggling to breathe|can't breathe|cannot breathe|
+is injure|he injure|she injure|he not move|she not move|not move|cut head|a cut head|bleeding head|needs a paramedic|need a paramedic|needs paramedics|deep cut|bad cut|people under it|people under there|someone under it|somebody under it|people underneath|breathing problems|breathing difficulties|difficulty breathing|struggling to breathe|can't breathe|cannot breathe|
 man collapsed|woman collapsed|person collapsed|someone collapsed|somebody collapsed|he collapsed|she collapsed|
 needs oxygen|need oxygen|having a heart attack|heart attack|seizure|having a seizure|can't breathe|cannot breathe|
 asthma attack|asthma attacks|an asthma attack|having an asthma attack|shut in|locked in|
