@@ -1194,3 +1194,13 @@ def test_a_repair_about_the_place_just_denied(kb_analyzers):
         ("village hall", "clean_zone"), ("village shop", "clean_zone")]
     assert claims(kb_analyzers["chemical_works"], "it's the rec that's the decon point, not the allotments... the "
                   "allotments are contaminated") == [("allotments", "chemical_release"), ("playing field", "clean_zone")]
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    # "has" is no keyword of "has_crash_road_to"; "apron's open" is a state, not "opens_onto"
+    ("its the terminal not the car park the terminal has a man down in arrivals", [("terminal building", "person_in_need")]),
+    ("apron's open apron's open uh marshalling on the apron, it's clear, bring the vehicles", [("main apron", "clear_ground")]),
+    ("we've got a little lad crying in the car park on his own, can't find his mum", [("car park", "person_in_need")]),
+])
+def test_auxiliaries_and_states_are_no_relation_keywords(kb_analyzers, text, expected):
+    assert claims(kb_analyzers["saltmarsh_airfield"], text) == expected

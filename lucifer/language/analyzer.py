@@ -437,6 +437,9 @@ class ReportAnalyzer:
                 continue
             if norms[t] in lx.PART_NOUNS and t + 1 < len(norms) and norms[t + 1] == "of":
                 continue  # "the back wall of the Stella" is part of it, not "shares_a_wall_with"
+            if t > 0 and (norms[t - 1] in lx.COPULAS or toks.tokens[t - 1].text.lower().endswith(("'s", "’s"))) \
+                    and hit[0].split()[0].startswith(norms[t]) and norms[t] != hit[0].split()[0]:
+                continue  # "apron's open": a state, not "opens_onto"
             if toks.clause_start[t] and t + 1 < len(norms) and norms[t + 1] in lx.MOVED_PEOPLE | {
                     "them", "it", "clear", "away", "out", "back", "off", "everybody"}:
                 continue  # "..., keep everyone clear of them": an order, not "keeps_watch_over"

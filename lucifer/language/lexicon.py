@@ -103,7 +103,8 @@ hypothermic|drowning|bleeding out|critical condition|in shock|lost consciousness
 pinned under debris|pinned under rubble|trapped under debris|trapped under rubble|buried under rubble|buried under debris|
 trapped in rubble|under the rubble|needs medics|need medics|needs a doctor|requires evacuation|unaccounted for|
 people still inside|still inside|someone still inside|people stuck|people stuck inside|with people inside|
-is injure|he injure|she injure|he not move|she not move|not move|cut head|a cut head|bleeding head|needs a paramedic|need a paramedic|needs paramedics|deep cut|bad cut|people under it|people under there|someone under it|somebody under it|people underneath|breathing problems|breathing difficulties|difficulty breathing|struggling to breathe|can't breathe|cannot breathe|
+is injure|he injure|she injure|he not move|she not move|not move|cut head|a cut head|bleeding head|needs a paramedic|need a paramedic|needs paramedics|deep cut|bad cut|can't find his mum|can't find her mum|can't find his dad|can't find her dad|can't find their parents|
+people under it|people under there|someone under it|somebody under it|people underneath|breathing problems|breathing difficulties|difficulty breathing|struggling to breathe|can't breathe|cannot breathe|
 man collapsed|woman collapsed|person collapsed|someone collapsed|somebody collapsed|he collapsed|she collapsed|
 needs oxygen|need oxygen|having a heart attack|heart attack|seizure|having a seizure|can't breathe|cannot breathe|
 asthma attack|asthma attacks|an asthma attack|having an asthma attack|shut in|locked in|
@@ -334,7 +335,8 @@ RELATION_NAME_STOPWORDS = {"by", "to", "of", "with", "onto", "on", "into", "from
                            "at", "that", "its", "it", "side", "end", "other", "way", "same", "far", "near", "up",
                            "down", "over", "across", "back", "out", "off", "through", "under", "above", "below",
                            "next", "behind", "front", "beside", "along", "round", "around", "opposite", "facing",
-                           "directly", "just", "right", "left", "part", "one", "building", "place", "site"}
+                           "directly", "just", "right", "left", "part", "one", "building", "place", "site",
+                           "has", "have", "had", "are", "was", "were", "be", "been", "get", "gets", "got", "does"}
 
 SYMMETRIC_HINTS = ("next", "adjacent", "beside", "across", "opposite", "adjoin", "near", "attached", "connected",
                    "joined", "facing", "faces", "neighbo", "abut", "border", "touch", "share", "bord")
