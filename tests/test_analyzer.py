@@ -1204,3 +1204,16 @@ def test_a_repair_about_the_place_just_denied(kb_analyzers):
 ])
 def test_auxiliaries_and_states_are_no_relation_keywords(kb_analyzers, text, expected):
     assert claims(kb_analyzers["saltmarsh_airfield"], text) == expected
+
+
+@pytest.mark.parametrize(("kb", "text", "expected"), [
+    # "instead" that ends the clause before negates nothing after its pause; a slipway buried under shingle is blocked
+    ("harbourside", "the Mission's open, no wait, the Mission's shut— use the school instead, the school's the rest "
+                    "centre", [("primary school", "refuge")]),
+    ("harbourside", "slip— the boat ramp, the slipway— it's, er, buried under shingle, three foot of it, and the RNLI "
+                    "station's open as a rest centre for the crews", [("lifeboat station", "refuge"), ("slipway", "no_access")]),
+    ("quarrytown", "one walker, er, twisted ankle, she's at the halt, Quarrytown Halt, sat on the platform waiting",
+     [("railway halt", "person_at_risk")]),
+])
+def test_instead_buried_things_and_ankles(kb_analyzers, kb, text, expected):
+    assert claims(kb_analyzers[kb], text) == expected

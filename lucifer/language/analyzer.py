@@ -1997,6 +1997,8 @@ class ReportAnalyzer:
             ) or (
                 norms[j] == "nothing" and any(norms[i] in ("at", "in", "inside") for i in range(j + 1, p.start_tok))
             )  # "nothing at the bus depot, it's the supermarket"
+            if neg and norms[j] == "instead" and toks.clause_start[j + 1]:
+                neg = False  # "use the school instead, the school's the rest centre": the clause before ends there
             # "not the school" but not "not on fire at the school" (that negates a cue)
             after = norms[p.end_tok : p.end_tok + 2]
             if norms[j] in ("take", "taking", "took") and after[:1] and after[0] in ("off", "out", "back", "away"):
@@ -2477,7 +2479,9 @@ class ReportAnalyzer:
                 und = self._category_for_role(lx.UNDESIRABLE, " ".join(norms[a:b]))
                 if und is not None:
                     cue = replace(cue, category=und, source="lexicon", reason=f"a thing {norms[a]}")
-            if source in ("lexicon", "category") and norms[a:b] == ("buried",) and a > 0 and norms[a - 1] in lx.THING_SUBJECTS \
+            if source in ("lexicon", "category") and norms[a:b] == ("buried",) and a > 0 and (
+                    norms[a - 1] in lx.THING_SUBJECTS or self._thing_before(norms, a, self._place_tokens)
+                    or next((w for w in reversed(norms[max(0, a - 4):a]) if w not in lx.FILLERS), "") in ("its", "it")) \
                     and self.kb.category_by_name[cat].role == Role.CRITICAL:
                 und = self._category_for_role(lx.UNDESIRABLE, "buried under snow and debris")
                 if und is not None:
