@@ -1217,3 +1217,18 @@ def test_auxiliaries_and_states_are_no_relation_keywords(kb_analyzers, text, exp
 ])
 def test_instead_buried_things_and_ankles(kb_analyzers, kb, text, expected):
     assert claims(kb_analyzers[kb], text) == expected
+
+
+@pytest.mark.parametrize(("kb", "text", "expected"), [
+    # "the car park" is the one landmark whose names end in those two words; "keep it clear" is an instruction
+    ("hillside_quake", "the car park is the muster point, not the pitch... the pitch is, uh, it's where the helicopters "
+                       "land, keep it clear", [("valley car park", "gathering_ground")]),
+    # a place said to be fine borrows no claim from the place contrasted with it
+    ("festival_site", "the bridge is-- the bridge is fine, it's the the, er, it's the acoustic barn where the water's "
+                      "coming in", [("acoustic barn", "site_damage")]),
+    # the front of a place buried is the place buried
+    ("alpine_village", "avalanche at the ski sch— the ski school, um, the whole front is buried and like there's kids "
+                       "trapped inside", [("ski school", "avalanche_risk"), ("ski school", "person_in_need")]),
+])
+def test_two_word_heads_fine_and_fronts(kb_analyzers, kb, text, expected):
+    assert claims(kb_analyzers[kb], text) == expected

@@ -722,6 +722,24 @@ class ReportAnalyzer:
                     and not toks.tokens[i].text.lower().endswith(("'s", "’s")):
                 continue  # "the lodge gate": a longer noun phrase ("the barn's out now" is the barn)
             out.append(self._mention(toks, i, i + 1, self._heads[w]))
+        # "the car park" for "valley car park" / "the big car park": a two-word tail only one landmark's names end in
+        if not hasattr(self, "_pair_heads"):
+            pairs: dict[tuple[str, ...], set[str]] = {}
+            for lm in self.kb.landmarks:
+                for form in lm.surface_forms:
+                    words = name_words(form)
+                    if len(words) >= 3:
+                        pairs.setdefault(words[-2:], set()).add(lm.name)
+                    elif len(words) == 2:
+                        pairs.setdefault(words, set()).add(lm.name)  # (a two-word name is its own tail)
+            self._pair_heads = {k: next(iter(v)) for k, v in pairs.items() if len(v) == 1}
+        taken_now = taken | {i for p in out for i in range(p.start_tok, p.end_tok)}
+        for i in range(1, len(norms) - 1):
+            key = norms[i:i + 2]
+            if key in self._pair_heads and norms[i - 1] == "the" and not {i, i + 1} & taken_now \
+                    and not toks.clause_start[i + 1]:
+                out.append(self._mention(toks, i, i + 2, self._pair_heads[key]))
+                taken_now.update((i, i + 1))
         return out
 
     def _resolve_containers(self, ex: Extraction, norms: tuple[str, ...]) -> None:
@@ -2545,7 +2563,8 @@ class ReportAnalyzer:
             j -= 1
         if j < 0:
             return False
-        return j in place_tokens or norms[j] in lx.DANGER_KIND_PARTS or norms[j] in lx.STRUCTURE_WORDS
+        return j in place_tokens or norms[j] in lx.DANGER_KIND_PARTS or norms[j] in lx.STRUCTURE_WORDS \
+            or norms[j] in lx.LOCATIVE_PARTS
 
     @staticmethod
     def _person_before(norms: tuple[str, ...], a: int) -> bool:
@@ -3473,6 +3492,8 @@ class ReportAnalyzer:
             if self._origin(norms, p):
                 continue
             tail = [w for w in norms[p.end_tok:segs[k][1]] if w not in lx.FILLERS]
+            if set(tail[:2]) & {"fine", "okay", "ok", "alright", "grand"} and len(seg_places.get(k, [])) == 1:
+                continue  # "the bridge is fine, it's the acoustic barn where the water's coming in": no claim said
             if len(tail) >= 3 and set(tail[:3]) & {"got", "has", "have", "is", "was", "are", "had"} \
                     and len(seg_places.get(k, [])) == 1 and not {"too", "also", "well", "same"} & set(tail):
                 continue  # "the hotel's got the gas leak, the bank's just got its alarm ringing": a predicate of its own

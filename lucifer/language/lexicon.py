@@ -68,7 +68,7 @@ wall's fallen|wall has fallen|walls have fallen|roof's fallen|roof has fallen|ce
 chimney's fallen|chimney has fallen|fallen masonry|fallen tree|tree's fallen|tree has fallen|tree down|trees down|
 flattened|smashed in|swaying|fallen in|slipped in|smashed|is going up|s going up|still going up|going up properly|is catching|catching too|caught too|
 no-go|no go|no-go area|no go area|no-go areas|no go areas|a no-go|a no go|a torrent|raging torrent|like a torrent|
-up to the gutters|is up to the|
+up to the gutters|is up to the|right up to the|up to the windows|up to the second-floor windows|
 """.replace("\n", ""))
 
 _add(DESIRABLE, """
@@ -203,7 +203,8 @@ BACK_REFERENCE_WORDS = {"it", "its", "s", "is", "has", "been", "thats", "that", 
 
 # Phrases that contain cue words but claim nothing ("the smoke alarm went off", "fire crew on site").
 NEUTRAL_PHRASES = ["comes down to", "come down to", "coming down to", "goes down to", "runs down to", "keep clear", "stay clear", "keep everyone clear", "keep everybody clear", "keep people clear",
-                   "keep them clear", "keep the public clear", "keep well clear", "clear the public",
+                   "keep them clear", "keep the public clear", "keep well clear", "clear the public", "keep it clear",
+                   "keep that clear", "keep this clear",
                    "clear everyone away", "clear everybody away", "clear people away", "clear the crowd",
                    "gas monitor", "gas monitors", "gas detector", "gas detectors", "gas reading", "gas readings",
                    "burnt toast", "burned toast", "burnt food", "burned food",
