@@ -3492,8 +3492,10 @@ class ReportAnalyzer:
             if self._origin(norms, p):
                 continue
             tail = [w for w in norms[p.end_tok:segs[k][1]] if w not in lx.FILLERS]
-            if set(tail[:2]) & {"fine", "okay", "ok", "alright", "grand"} and len(seg_places.get(k, [])) == 1:
-                continue  # "the bridge is fine, it's the acoustic barn where the water's coming in": no claim said
+            nxt_words = [w for w in norms[segs[k][1]:min(len(norms), segs[k][1] + 8)] if w not in lx.FILLERS]
+            if set(tail[:2]) & {"fine", "okay", "ok", "alright", "grand"} and len(seg_places.get(k, [])) == 1 \
+                    and nxt_words[:2] in (["its", "the"], ["it", "is"]):
+                continue  # "the bridge is fine, it's the acoustic barn where the water's coming in": the contrast
             if len(tail) >= 3 and set(tail[:3]) & {"got", "has", "have", "is", "was", "are", "had"} \
                     and len(seg_places.get(k, [])) == 1 and not {"too", "also", "well", "same"} & set(tail):
                 continue  # "the hotel's got the gas leak, the bank's just got its alarm ringing": a predicate of its own
