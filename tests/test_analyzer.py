@@ -1232,3 +1232,10 @@ def test_instead_buried_things_and_ankles(kb_analyzers, kb, text, expected):
 ])
 def test_two_word_heads_fine_and_fronts(kb_analyzers, kb, text, expected):
     assert claims(kb_analyzers[kb], text) == expected
+
+
+def test_a_two_word_tail_held_by_other_names_names_nothing(kb_analyzers):
+    # "the car park" in a mall whose car park levels are landmarks of their own is none of them
+    found = claims(kb_analyzers["shopping_mall"], "The structural engineer has condemned the centre court, the "
+                   "escalators and the second deck of the car park - all three at risk of further collapse.")
+    assert ("car park level 1", "collapse_risk") not in found

@@ -732,7 +732,15 @@ class ReportAnalyzer:
                         pairs.setdefault(words[-2:], set()).add(lm.name)
                     elif len(words) == 2:
                         pairs.setdefault(words, set()).add(lm.name)  # (a two-word name is its own tail)
-            self._pair_heads = {k: next(iter(v)) for k, v in pairs.items() if len(v) == 1}
+            # (and no other landmark's name holds the pair anywhere: "the car park" is none of "car park level 1",
+            # "car park level 2" and "ground level car park")
+            held: dict[tuple[str, ...], set[str]] = {}
+            for lm in self.kb.landmarks:
+                for form in lm.surface_forms:
+                    words = name_words(form)
+                    for n in range(len(words) - 1):
+                        held.setdefault(words[n:n + 2], set()).add(lm.name)
+            self._pair_heads = {k: next(iter(v)) for k, v in pairs.items() if len(v) == 1 and held.get(k, v) == v}
         taken_now = taken | {i for p in out for i in range(p.start_tok, p.end_tok)}
         for i in range(1, len(norms) - 1):
             key = norms[i:i + 2]
