@@ -1239,3 +1239,17 @@ def test_a_two_word_tail_held_by_other_names_names_nothing(kb_analyzers):
     found = claims(kb_analyzers["shopping_mall"], "The structural engineer has condemned the centre court, the "
                    "escalators and the second deck of the car park - all three at risk of further collapse.")
     assert ("car park level 1", "collapse_risk") not in found
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    # a missing child withdrawn and found "the whole time" in another place claims nothing
+    ("Lifeguard: child missing from the beach, about six, red swimsuit... stand by... okay, cancel that, mum's found "
+     "her, she was in the toilet block the whole time.", []),
+    # a place said to be empty keeps to that; a fire knocked down
+    ("not the reception, the— it's the gas cage, the gas cage is on fire, reception's empty, we checked it",
+     [("gas bottle cage", "fire_and_smoke")]),
+    ("Engine 4: fire on the pedalo jetty, er, the boat jetty — we've knocked that down now, it's out. Still got a "
+     "flare-up on the boathouse roof though.", [("boathouse", "fire_and_smoke")]),
+])
+def test_found_empty_and_knocked_down(kb_analyzers, text, expected):
+    assert claims(kb_analyzers["lakeside_campground"], text) == expected

@@ -2325,6 +2325,11 @@ class ReportAnalyzer:
                 # "fire at the hay barn and the cattle sheds, smoke, and, um, actually the fire at the barn's out
                 # now": news of a place said before the last one, which it does not replace
                 continue
+            marker_words = " ".join(norms[a:ex.markers[k][1]])
+            if first_after is not None and any(marker_words == m or marker_words.startswith(m + " ")
+                                               for m in _WITHDRAW_KEYS) \
+                    and any(self._cancel.match_at(norms, i) is not None for i in range(b, first_after.start_tok)):
+                continue  # "child missing from the beach ... cancel that, mum's found her, she was in the toilet block"
             if first_after is not None and norms[a:ex.markers[k][1]] in (("wait",), ("hang", "on"), ("hold", "on")) \
                     and self._adds_to(toks, norms, first_after):
                 continue  # "wait... crew three says the bank's alight as well": more news, not a repair
@@ -2690,6 +2695,11 @@ class ReportAnalyzer:
                 continue  # "nobody home at the flats": a negated predicate is no claim to guess at
             if self._says_who_and_where(toks, norms, p):
                 continue  # "Scaffolder on the roof of the hotel, over.": who is calling and from where
+            after = norms[p.end_tok:min(len(norms), p.end_tok + 6)]
+            if any((h := self._cancel.match_at(norms, i)) is not None and h[1] in lx.CANCEL_MISSING_ONLY
+                   for i in range(max(0, p.start_tok - 10), p.start_tok)) \
+                    and any(after[n:n + 2] in (("whole", "time"), ("all", "along")) for n in range(len(after))):
+                continue  # "mum's found her, she was in the toilet block the whole time": never lost there
             kept.append(p)
         todo = kept
         if not todo:
@@ -3500,6 +3510,8 @@ class ReportAnalyzer:
             if self._origin(norms, p):
                 continue
             tail = [w for w in norms[p.end_tok:segs[k][1]] if w not in lx.FILLERS]
+            if tail[:1] == ["empty"] and len(seg_places.get(k, [])) == 1:
+                continue  # "the gas cage is on fire, reception's empty, we checked it": said of it, its own
             nxt_words = [w for w in norms[segs[k][1]:min(len(norms), segs[k][1] + 8)] if w not in lx.FILLERS]
             if set(tail[:2]) & {"fine", "okay", "ok", "alright", "grand"} and len(seg_places.get(k, [])) == 1 \
                     and nxt_words[:2] in (["its", "the"], ["it", "is"]):

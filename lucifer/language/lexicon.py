@@ -167,7 +167,8 @@ CANCEL_AFTER = ["is out", "s out", "are out", "was out", "put out", "out now", "
                 for who in ("him", "her", "them", "everyone", "everybody", "all of them", "the casualty")] + [
                 "nobody was in", "no one was in", "nobody was inside", "no one was inside", "walked off",
                 "nobody in", "no one in", "found her", "found him", "found them", "found safe",
-                "not there yet", "hasn't reached", "has not reached", "not reached",
+                "not there yet", "hasn't reached", "has not reached", "not reached", "knocked that down",
+                "knocked it down", "put that out", "got that out",
                 "walked out", "she's out", "he's out", "they're out", "she's okay", "he's okay", "they're okay",
                 "carried away", "been carried away", "been moved", "moved away",
                 "empty"]
