@@ -1253,3 +1253,8 @@ def test_a_two_word_tail_held_by_other_names_names_nothing(kb_analyzers):
 ])
 def test_found_empty_and_knocked_down(kb_analyzers, text, expected):
     assert claims(kb_analyzers["lakeside_campground"], text) == expected
+
+
+def test_a_name_cut_off_before_a_repair_says_again_the_one_before(analyzer):
+    assert claims(analyzer, "14:15 — The cafe has been cleared, police say. The ca— sorry, autocorrect — the CLINIC has "
+                            "been cleared. Cafe status unknown.") == [("clinic", "safe_zone")]

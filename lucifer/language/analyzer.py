@@ -2294,6 +2294,15 @@ class ReportAnalyzer:
                     if before:
                         break
             if not before:
+                # "The cafe has been cleared, police say. The ca— sorry, autocorrect — the CLINIC has been
+                # cleared.": a name cut off right before the marker says again the one of the sentence before
+                cut = next((p for p in ex.places if p.reason.startswith("false start") and a - 2 <= p.end_tok <= a), None)
+                if cut is not None:
+                    s0 = [t for t in range(0, cut.start_tok + 1) if toks.sentence_start[t]]
+                    prev = s0[-2] if len(s0) >= 2 else 0
+                    before = [p for p in ex.places if p.status == "active" and p.landmark == cut.landmark
+                              and prev <= p.start_tok < cut.start_tok]
+            if not before:
                 continue
             last = max(before, key=lambda p: p.end_tok)
             if min(after, key=lambda p: p.start_tok).status == "negated":
