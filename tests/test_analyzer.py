@@ -1258,3 +1258,17 @@ def test_found_empty_and_knocked_down(kb_analyzers, text, expected):
 def test_a_name_cut_off_before_a_repair_says_again_the_one_before(analyzer):
     assert claims(analyzer, "14:15 — The cafe has been cleared, police say. The ca— sorry, autocorrect — the CLINIC has "
                             "been cleared. Cafe status unknown.") == [("clinic", "safe_zone")]
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    # the place denied after a repair is what the repair was about, not the place before it
+    ("smoke at the garage, uh, gas leak at the hardware store and a man down at the bank — no, the man down's at the "
+     "fire station, not the bank", [("fire station", "victim"), ("garage", "hazard"), ("hardware store", "hazard")]),
+    # every place of a list walked past
+    ("we came out of the bakery, walked past the cafe and the clinic, and at the police station there's a man "
+     "unconscious on the steps", [("police station", "victim")]),
+    ("ok so the gym is like a shelter now?? wait no sorry its not a shelter, theres people injured in there, like, the "
+     "gym roof fell on them", [("sports hall", "hazard"), ("sports hall", "victim")]),
+])
+def test_denied_after_repairs_lists_passed_and_roofs_that_fell(analyzer, text, expected):
+    assert claims(analyzer, text) == expected

@@ -2124,6 +2124,19 @@ class ReportAnalyzer:
                         break  # "dont go to the bakery, theres a fire": a warning about the place, not a move
                     ex.places[idx] = replace(p, status="reference", reason=f"in transit ('{hit[1]}'): no claim")
                     break
+        # "walked past the cafe and the clinic, and at the police station ...": the list passed, every place of it
+        for idx, p in enumerate(ex.places):
+            if p.status != "active" or p.via is not None or p.start_tok < 2:
+                continue
+            j = p.start_tok - 1
+            while j > 0 and norms[j] in lx.DETERMINERS:
+                j -= 1
+            if norms[j] != "and" or toks.clause_start[j] or not (p.end_tok >= len(norms) or toks.clause_start[p.end_tok]):
+                continue
+            prev = next((q for q in ex.places if q.end_tok == j and q.reason.startswith("in transit ('past")
+                         or q.end_tok == j and q.reason.startswith("in transit ('passing")), None)
+            if prev is not None:
+                ex.places[idx] = replace(p, status="reference", reason=prev.reason)
 
     def _sighting_after(self, ex: Extraction, norms: tuple[str, ...], p: PlaceMention) -> bool:
         """"just walked past the flats, like half the windows are blown out": the rest of the sentence after a
@@ -2319,8 +2332,11 @@ class ReportAnalyzer:
             first_after = min((p for p in after if p.status == "active"), key=lambda p: p.start_tok, default=None)
             if first_after is not None and first_after.landmark == last.landmark:
                 continue  # "I mean the chapel, st mary's, same place": a restatement, not a repair
-            if first_after is not None and any(q.landmark == first_after.landmark and q.status in ("negated", "retracted")
-                                               and last.end_tok <= q.start_tok < a for q in ex.places):
+            if first_after is not None and any(
+                    (q.landmark == first_after.landmark and q.status in ("negated", "retracted")
+                     or q.reason.startswith("then 'not")) and last.end_tok <= q.start_tok < a for q in ex.places):
+                # ("a man down at the bank — no, the man down's at the fire station, not the bank": the bank, said
+                # after the hardware store and denied, is what the repair is about)
                 continue  # "the corner shop is safe, and the rec - not the rec, hold on, the rec hasn't been checked"
             if any(q.landmark == last.landmark and q.status == "active" and b <= q.start_tok
                    and toks.sentence_of[q.start_tok] == toks.sentence_of[a]

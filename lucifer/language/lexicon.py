@@ -714,6 +714,7 @@ DANGER_KINDS: dict[str, list[str]] = {
                "wall has fallen", "walls have fallen", "roof's fallen", "roof has fallen", "ceiling's fallen",
                "ceiling has fallen", "chimney's fallen", "chimney has fallen", "roof down", "ceiling's down",
                "ceiling down", "tree through the roof", "tree on it", "the tree on it", "tree on the roof",
+               "roof fell on", "fell on them", "came down on them", "come down on them", "collapsed on them",
                "smashed", "smashed up", "smashed to pieces", "smashed to matchwood", "full of wreckage", "wreckage",
                "a breach in it", "breach in the"],
     "ground": ["is shifting", "s shifting", "its shifting", "keeps shifting", "started shifting", "sliding",
