@@ -36,6 +36,7 @@ OLD_TOWN = ROOT / "knowledge_bases" / "old_town"
 ESTATE = ROOT / "knowledge_bases" / "industrial_estate"
 FARM = ROOT / "knowledge_bases" / "farm_village"
 CAMPUS = ROOT / "knowledge_bases" / "university_campus"
+RAILWAY = ROOT / "knowledge_bases" / "mountain_railway"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -120,6 +121,10 @@ SETS = {
                                 {"standard": 10, "messy": 60, "advanced_messy": 30}, sep=""),
     "dev20/university_campus": _set("dev20/university_campus.jsonl", CAMPUS, "uc",
                                     THIRTY),
+    "dev21/market_square": _set("dev21/market_square.jsonl", MARKET_SQUARE, "d21",
+                                {"standard": 5, "messy": 60, "advanced_messy": 15}, sep=""),
+    "dev21/mountain_railway": _set("dev21/mountain_railway.jsonl", RAILWAY, "mr",
+                                   {"standard": 20, "messy": 20, "advanced_messy": 20}),
     "dev17/hospital_campus": _set("dev17/hospital_campus.jsonl", HOSPITAL, "hc",
                                   THIRTY),
 }
