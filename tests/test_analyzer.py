@@ -1272,3 +1272,12 @@ def test_a_name_cut_off_before_a_repair_says_again_the_one_before(analyzer):
 ])
 def test_denied_after_repairs_lists_passed_and_roofs_that_fell(analyzer, text, expected):
     assert claims(analyzer, text) == expected
+
+
+def test_a_place_said_again_then_put_out(analyzer):
+    assert claims(analyzer, "cyclist here, fires at the garage, the warehouse and the supermarket, er, the warehouse, "
+                            "oh, they've put that out now, the fire crew got it. garage and supermarket still going "
+                            "though.") == [("garage", "hazard"), ("supermarket", "hazard")]
+    # "pulling all crews out now" ends nothing
+    assert claims(analyzer, "Watch commander: flashover risk in the clinic, pulling all crews out now.") == [
+        ("clinic", "hazard")]

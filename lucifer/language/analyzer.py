@@ -2351,9 +2351,11 @@ class ReportAnalyzer:
                 # now": news of a place said before the last one, which it does not replace
                 continue
             marker_words = " ".join(norms[a:ex.markers[k][1]])
-            if first_after is not None and any(marker_words == m or marker_words.startswith(m + " ")
-                                               for m in _WITHDRAW_KEYS) \
-                    and any(self._cancel.match_at(norms, i) is not None for i in range(b, first_after.start_tok)):
+            withdraw = any(marker_words == m or marker_words.startswith(m + " ") for m in _WITHDRAW_KEYS)
+            if first_after is not None and any(
+                    (h := self._cancel.match_at(norms, i)) is not None
+                    and (withdraw or h[1] in lx.CANCEL_MISSING_ONLY) for i in range(b, first_after.start_tok)):
+                # ("The verger's missing — no, no, he's been found, he was at the post office")
                 continue  # "child missing from the beach ... cancel that, mum's found her, she was in the toilet block"
             if first_after is not None and norms[a:ex.markers[k][1]] in (("wait",), ("hang", "on"), ("hold", "on")) \
                     and self._adds_to(toks, norms, first_after):
@@ -3704,8 +3706,7 @@ class ReportAnalyzer:
                                    for c in self.kb.categories_with_role(Role.UNDESIRABLE))
         return self._access_cat
 
-    @staticmethod
-    def _places_put_out(ex: Extraction, norms: tuple[str, ...]) -> list[tuple[str, int]]:
+    def _places_put_out(self, ex: Extraction, norms: tuple[str, ...]) -> list[tuple[str, int]]:
         """(landmark, token) for each "<place> (one)'s out" clause ("the bakery one's out", "garage is out now") and
         each place a danger has "not reached yet"."""
         toks = ex.tokens
@@ -3721,6 +3722,16 @@ class ReportAnalyzer:
                     and (j + 1 >= len(norms) or toks.clause_start[j + 1] or norms[j + 1] in ("now", "completely")):
                 out.append((p.landmark, j))
                 continue
+            # "fires at the garage, the warehouse and the supermarket, er, the warehouse, oh, they've put that out
+            # now": the place said again, then its danger put out
+            k = p.end_tok
+            while k < len(norms) and k - p.end_tok < 8 and not any(q.start_tok == k for q in ex.places if q is not p):
+                h = self._cancel.match_at(norms, k)
+                if h is not None and h[1] not in lx.CANCEL_PEOPLE_ONLY and h[1] not in lx.CANCEL_MISSING_ONLY \
+                        and h[1] in lx.CANCEL_SAID_AGAIN:
+                    out.append((p.landmark, k))
+                    break
+                k += 1
             # "it's drifting off toward the tug pen but, but it's not there yet": heading there, not there
             ahead = norms[p.end_tok:min(len(norms), p.end_tok + 10)]
             for n in range(len(ahead) - 2):

@@ -169,11 +169,17 @@ CANCEL_AFTER = ["is out", "s out", "are out", "was out", "put out", "out now", "
                 "nobody in", "no one in", "found her", "found him", "found them", "found safe",
                 "not there yet", "hasn't reached", "has not reached", "not reached", "knocked that down",
                 "knocked it down", "put that out", "got that out",
+                "he's been found", "she's been found", "they've been found",
                 "walked out", "she's out", "he's out", "they're out", "she's okay", "he's okay", "they're okay",
                 "carried away", "been carried away", "been moved", "moved away",
                 "empty"]
+# ... of which these, said a few words after a place named again, end its danger ("the warehouse, oh, they've
+# put that out now")
+CANCEL_SAID_AGAIN = {"put that out", "put it out", "knocked that down", "knocked it down", "extinguished",
+                     "been put out", "got that out"}
 # ... of which these revoke only a missing person ("lost child at the aviary, mum's found her")
-CANCEL_MISSING_ONLY = {"found her", "found him", "found them", "found safe"}
+CANCEL_MISSING_ONLY = {"found her", "found him", "found them", "found safe", "he's been found", "she's been found",
+                       "they've been found"}
 MISSING_CUES = {"missing", "lost", "lost child", "last seen", "unaccounted for", "missing person", "missing persons",
                 "not accounted for", "can't find", "cannot find", "lost contact with"}
 # Words after which a cancelling phrase says what will end a danger, not that it has ended.
@@ -434,7 +440,7 @@ IMPLICIT_ANCHOR = {("next", "door"), ("next", "door", "to"), ("opposite",), ("ac
 COORDINATOR_PHRASES = ["as well as", "along with", "together with", "and also", "and then"]
 
 # Verbs of removal that retract the place after them ("scratch the pharmacy").
-RETRACT_VERBS = {"scratch", "strike", "forget", "cancel", "remove", "minus", "drop", "lose"}
+RETRACT_VERBS = {"scratch", "strike", "forget", "cancel", "remove", "minus", "drop", "lose", "scrap", "scrub"}
 
 # Places in these phrases are being passed or travelled to: the report claims nothing about them.
 TRANSIT = ["evacuated from", "moved out of", "moved from", "relocated from", "decanted from", "brought out of",
