@@ -1281,3 +1281,9 @@ def test_a_place_said_again_then_put_out(analyzer):
     # "pulling all crews out now" ends nothing
     assert claims(analyzer, "Watch commander: flashover risk in the clinic, pulling all crews out now.") == [
         ("clinic", "hazard")]
+
+
+def test_a_predicate_cut_by_a_pause_still_puts_the_fire_out(analyzer, kb_analyzers):
+    assert claims(analyzer, "the fire at the bakery is, er, out now") == []
+    assert claims(kb_analyzers["mountain_railway"], "okay so the fire at the summit restaurant is, er, out now, crews are "
+                                                    "just damping down") == []

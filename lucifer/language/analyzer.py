@@ -3159,6 +3159,8 @@ class ReportAnalyzer:
                 break
             k += 1
             steps += 1
+        # ("the fire at the bakery is, er, out now": the predicate goes on past the pause)
+        predicate_cut = 0 < k < len(norms) and norms[k - 1] in ("is", "are", "was", "s", "its")
         if cancelled_by is None and k < len(norms) and toks.clause_start[k] and k >= cue.end_tok \
                 and self.kb.category_by_name[cue.category].role != Role.DESIRABLE:
             # "the flooding at the cafe, it's, it's drained now": the next clause says it of the same thing
@@ -3186,7 +3188,7 @@ class ReportAnalyzer:
             while j < len(norms) and j - k < 6 and norms[j] in lx.BACK_REFERENCE_WORDS | lx.FILLERS:
                 j += 1
             h = self._cancel.match_at(norms, j) if j < len(norms) else None
-            if h is not None and j == k and h[1] not in lx.CANCEL_CLAUSES:
+            if h is not None and j == k and h[1] not in lx.CANCEL_CLAUSES and not predicate_cut:
                 h = None  # (a clause of its own, "no sign of him", needs no "it's" before it)
             if h is None and j > k and j < len(norms) and norms[j] == "out":
                 h = (j + 1, "out")
