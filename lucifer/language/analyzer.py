@@ -724,20 +724,15 @@ class ReportAnalyzer:
             out.append(self._mention(toks, i, i + 1, self._heads[w]))
         # "the car park" for "valley car park" / "the big car park": a two-word tail only one landmark's names end in
         if not hasattr(self, "_pair_heads"):
-            pairs: dict[tuple[str, ...], set[str]] = {}
-            for lm in self.kb.landmarks:
-                for form in lm.surface_forms:
-                    words = name_words(form)
-                    if len(words) >= 3:
-                        pairs.setdefault(words[-2:], set()).add(lm.name)
-                    elif len(words) == 2:
-                        pairs.setdefault(words, set()).add(lm.name)  # (a two-word name is its own tail)
             # (and no other landmark's name holds the pair anywhere: "the car park" is none of "car park level 1",
-            # "car park level 2" and "ground level car park")
+            # "car park level 2" and "ground level car park"; a two-word name is its own tail)
+            pairs: dict[tuple[str, ...], set[str]] = {}
             held: dict[tuple[str, ...], set[str]] = {}
             for lm in self.kb.landmarks:
                 for form in lm.surface_forms:
                     words = name_words(form)
+                    if len(words) >= 2:
+                        pairs.setdefault(words[-2:], set()).add(lm.name)
                     for n in range(len(words) - 1):
                         held.setdefault(words[n:n + 2], set()).add(lm.name)
             self._pair_heads = {k: next(iter(v)) for k, v in pairs.items() if len(v) == 1 and held.get(k, v) == v}
@@ -928,7 +923,7 @@ class ReportAnalyzer:
         if not hasattr(self, "_respellings"):
             words = {w for bucket in self._relations._by_first.values() for key, _ in bucket for w in key}
             words |= set(lx.GENERIC_HEADS)
-            named = {w for key, _ in self._name_keys() for w in [key]} | {
+            named = {key for key, _ in self._name_keys()} | {
                 w for lm in self.kb.landmarks for form in lm.surface_forms for w in name_words(form)}
             self._respellings = sorted(w for w in words - named if len(w) >= self.RESPELL_MIN_CHARS and w.isalpha())
             self._named_words = named
@@ -2133,8 +2128,8 @@ class ReportAnalyzer:
                 j -= 1
             if norms[j] != "and" or toks.clause_start[j] or not (p.end_tok >= len(norms) or toks.clause_start[p.end_tok]):
                 continue
-            prev = next((q for q in ex.places if q.end_tok == j and q.reason.startswith("in transit ('past")
-                         or q.end_tok == j and q.reason.startswith("in transit ('passing")), None)
+            prev = next((q for q in ex.places if q.end_tok == j
+                         and q.reason.startswith(("in transit ('past", "in transit ('passing"))), None)
             if prev is not None:
                 ex.places[idx] = replace(p, status="reference", reason=prev.reason)
 
@@ -2335,9 +2330,10 @@ class ReportAnalyzer:
             if first_after is not None and any(
                     (q.landmark == first_after.landmark and q.status in ("negated", "retracted")
                      or q.reason.startswith("then 'not")) and last.end_tok <= q.start_tok < a for q in ex.places):
-                # ("a man down at the bank — no, the man down's at the fire station, not the bank": the bank, said
-                # after the hardware store and denied, is what the repair is about)
-                continue  # "the corner shop is safe, and the rec - not the rec, hold on, the rec hasn't been checked"
+                # a place denied between the last place and the marker is what the repair is about: "the corner shop
+                # is safe, and the rec - not the rec, hold on, the rec hasn't been checked", "a man down at the bank
+                # — no, the man down's at the fire station, not the bank"
+                continue
             if any(q.landmark == last.landmark and q.status == "active" and b <= q.start_tok
                    and toks.sentence_of[q.start_tok] == toks.sentence_of[a]
                    and any(norms[i] in ("and", "plus") for i in range(b, q.start_tok))
@@ -2350,8 +2346,7 @@ class ReportAnalyzer:
                 # "fire at the hay barn and the cattle sheds, smoke, and, um, actually the fire at the barn's out
                 # now": news of a place said before the last one, which it does not replace
                 continue
-            marker_words = " ".join(norms[a:ex.markers[k][1]])
-            withdraw = any(marker_words == m or marker_words.startswith(m + " ") for m in _WITHDRAW_KEYS)
+            withdraw = _withdraws(norms[a:ex.markers[k][1]])
             if first_after is not None and any(
                     (h := self._cancel.match_at(norms, i)) is not None
                     and (withdraw or h[1] in lx.CANCEL_MISSING_ONLY) for i in range(b, first_after.start_tok)):
@@ -3115,6 +3110,7 @@ class ReportAnalyzer:
             j -= 1
             steps += 1
         cancelled_by = None
+        missing = " ".join(norms[cue.start_tok:cue.end_tok]) in lx.MISSING_CUES  # ("found him" ends only this)
         # cancellation after: "the fire is out", "gas leak fixed", "fire under control"
         k = cue.end_tok
         steps = 0
@@ -3140,7 +3136,7 @@ class ReportAnalyzer:
                     break  # "the evacuation point is no longer the town hall": the place is negated, not the cue
                 if h[1] in lx.CANCEL_PEOPLE_ONLY and self.kb.category_by_name[cue.category].role != Role.CRITICAL:
                     break  # "gas leak at the police post, they evacuated": people left, the leak stays
-                if h[1] in lx.CANCEL_MISSING_ONLY and " ".join(norms[cue.start_tok:cue.end_tok]) not in lx.MISSING_CUES:
+                if h[1] in lx.CANCEL_MISSING_ONLY and not missing:
                     break  # "casualty at the bank, we found him under the desk": found, not safe
                 cancelled_by = h[1]
                 break
@@ -3198,8 +3194,7 @@ class ReportAnalyzer:
             if h is not None and h[1] in lx.CANCEL_PEOPLE_ONLY \
                     and self.kb.category_by_name[cue.category].role != Role.CRITICAL:
                 h = None  # "gas in the winding house, we've pulled everyone out, all accounted for": the gas stays
-            if h is not None and h[1] in lx.CANCEL_MISSING_ONLY \
-                    and " ".join(norms[cue.start_tok:cue.end_tok]) not in lx.MISSING_CUES:
+            if h is not None and h[1] in lx.CANCEL_MISSING_ONLY and not missing:
                 h = None
             if h is not None and h[0] < len(norms) and norms[h[0]] in ("it", "them") \
                     and (h[0] + 1 >= len(norms) or toks.clause_start[h[0] + 1]):
@@ -3245,9 +3240,7 @@ class ReportAnalyzer:
             if kind == "place":
                 self._restated_category(ex, k, out, b_after, e_after, a)
                 continue
-            marker_words = " ".join(norms_all[a:_b])
-            withdraw = any(marker_words == m or marker_words.startswith(m + " ")  # "cancel that, cancel that"
-                           for m in _WITHDRAW_KEYS)
+            withdraw = _withdraws(norms_all[a:_b])
             just_said = [c for c in out if c.status == "active" and c.end_tok <= a
                          and all(w in lx.FILLERS for w in norms_all[c.end_tok:a])]
             taken_back = kind is None and strong and bool(just_said) and e_after > b_after \
@@ -3729,8 +3722,7 @@ class ReportAnalyzer:
             k = p.end_tok
             while k < len(norms) and k - p.end_tok < 8 and not any(q.start_tok == k for q in ex.places if q is not p):
                 h = self._cancel.match_at(norms, k)
-                if h is not None and h[1] not in lx.CANCEL_PEOPLE_ONLY and h[1] not in lx.CANCEL_MISSING_ONLY \
-                        and h[1] in lx.CANCEL_SAID_AGAIN:
+                if h is not None and h[1] in lx.CANCEL_SAID_AGAIN:
                     out.append((p.landmark, k))
                     break
                 k += 1
@@ -3918,9 +3910,9 @@ class ReportAnalyzer:
         here = sentence_of[segs[k][0]]
         for j in range(k + 1, len(segs)):
             n = sentence_of[segs[j][0]]
-            if n == here or n > here + 2:
-                if n > here + 2:
-                    return None
+            if n > here + 2:
+                return None
+            if n == here:
                 continue
             if seg_cues.get(j):
                 return None
@@ -3928,7 +3920,7 @@ class ReportAnalyzer:
                 start = next(i for i in range(segs[j][0], -1, -1) if i == 0 or sentence_of[i - 1] != n)
                 words = [w for w in norms[start:segs[j][1]] if w not in lx.FILLERS]
                 said_alone = sent_words.get(n, 99) <= 3
-                named = words[:2] in (["it", "is"], ["its"], ["thats"], ["this", "is"]) or words[:1] in (["its"], ["thats"])
+                named = words[:2] in (["it", "is"], ["this", "is"]) or words[:1] in (["its"], ["thats"])
                 return j if said_alone or named else None
         return None
 
@@ -3970,6 +3962,13 @@ _FALSE_ALARM_KEYS = [(p, norm_phrase(p)) for p in lx.FALSE_ALARM]
 
 # The withdrawal markers ("scratch that") as token keys joined by spaces.
 _WITHDRAW_KEYS = frozenset(" ".join(norm_phrase(m)) for m in lx.WITHDRAW_MARKERS)
+
+
+def _withdraws(marker: tuple[str, ...]) -> bool:
+    """Is a marker's wording a withdrawal ("scratch that"; said twice, "cancel that, cancel that")?"""
+    words = " ".join(marker)
+    return any(words == m or words.startswith(m + " ") for m in _WITHDRAW_KEYS)
+
 
 # Closed-class words that never head a description.
 _NOT_HEADS = lx.PREPOSITIONS | lx.COPULAS | lx.FILLERS | lx.PRONOUNS | lx.INVERSE_VERBS | lx.DETERMINERS
