@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev16) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev22) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -37,6 +37,8 @@ ESTATE = ROOT / "knowledge_bases" / "industrial_estate"
 FARM = ROOT / "knowledge_bases" / "farm_village"
 CAMPUS = ROOT / "knowledge_bases" / "university_campus"
 RAILWAY = ROOT / "knowledge_bases" / "mountain_railway"
+CANAL = ROOT / "knowledge_bases" / "canal_wharf"
+HOUSING = ROOT / "knowledge_bases" / "housing_estate"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -127,6 +129,12 @@ SETS = {
                                    {"standard": 20, "messy": 20, "advanced_messy": 20}),
     "dev17/hospital_campus": _set("dev17/hospital_campus.jsonl", HOSPITAL, "hc",
                                   THIRTY),
+    "dev22/market_square": _set("dev22/market_square.jsonl", MARKET_SQUARE, "d22",
+                                {"standard": 5, "messy": 70, "advanced_messy": 25}, sep=""),
+    "dev22/canal_wharf": _set("dev22/canal_wharf.jsonl", CANAL, "cw22",
+                              {"standard": 25, "messy": 30, "advanced_messy": 35}),
+    "dev22/housing_estate": _set("dev22/housing_estate.jsonl", HOUSING, "he",
+                                 {"standard": 20, "messy": 45, "advanced_messy": 25}),
 }
 
 
