@@ -1287,3 +1287,20 @@ def test_a_predicate_cut_by_a_pause_still_puts_the_fire_out(analyzer, kb_analyze
     assert claims(analyzer, "the fire at the bakery is, er, out now") == []
     assert claims(kb_analyzers["mountain_railway"], "okay so the fire at the summit restaurant is, er, out now, crews are "
                                                     "just damping down") == []
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    # a sentence that names its place after the danger talks about that place, not the one before it
+    ("Everyone's waiting in the town square, it's clear there. The smoke, it's pouring out of the hotel kitchen.",
+     [("hotel", "hazard"), ("market square", "safe_zone")]),
+    # "but" turns to a new matter, though the place it names has a danger of its own
+    ("The postman's missing — no, sorry, he's been found, he was at the cafe. But the cleaner, she's trapped up in the "
+     "vestry, the ceiling's come down in the church.", [("church", "hazard"), ("church", "victim")]),
+])
+def test_a_danger_named_before_its_place_in_the_next_sentence(analyzer, text, expected):
+    assert claims(analyzer, text) == expected
+
+
+def test_the_former_before_and(analyzer):
+    assert claims(analyzer, "we split up, she's at the bakery and I'm at the bank. she says someone's hurt in the former "
+                            "and we've got smoke in the latter") == [("bakery", "victim"), ("bank", "hazard")]

@@ -591,7 +591,8 @@ class ReportAnalyzer:
             elif nxt in ("one", "ones") or nxt in lx.GENERIC_HEADS and end not in taken and word != "other":
                 end += 1
             elif nxt and not toks.clause_start[end] and nxt not in lx.COPULAS | lx.ANAPHOR_VERBS \
-                    and not toks.tokens[i].text.lower().endswith(("'s", "’s")):
+                    and not toks.tokens[i].text.lower().endswith(("'s", "’s")) \
+                    and not (word in ("former", "latter") and nxt in lx.COORDINATORS):
                 continue  # "the first crew", "the other bore": a noun the ordinal counts, not a place
             earlier = [p for p in places + out if p.start_tok < start and p.status == "active"]
             spans = [(q.start_tok, q.end_tok) for q in places if q.via is not None]
@@ -3485,7 +3486,11 @@ class ReportAnalyzer:
                     q = next(iter(at.values()))
                     pairs.extend(Claim(replace(q, status="active"), c) for c in cs)
                     continue
-            target = self._target_for_cues(k, segs, seg_usable, seg_cues, sentence_of, transparent)
+            start = a
+            while start > 0 and sentence_of[start - 1] == sentence_of[a]:
+                start -= 1
+            opening = next((w for w in norms[start:b] if w not in lx.FILLERS), "")
+            target = self._target_for_cues(k, segs, seg_usable, seg_cues, sentence_of, transparent, opening)
             if target is None and not any(seg_usable.get(j) for j in range(k)):
                 target = self._named_after(k, segs, seg_usable, seg_cues, sentence_of, norms, sent_words)
             if target is not None and all(q.status == "negated" for q in seg_usable[target]):
@@ -3927,7 +3932,7 @@ class ReportAnalyzer:
     @staticmethod
     def _target_for_cues(k: int, segs: list[tuple[int, int]], seg_places: dict[int, list[PlaceMention]],
                          seg_cues: dict[int, list[CueMention]], sentence_of: list[int],
-                         transparent: set[int]) -> int | None:
+                         transparent: set[int], opening: str) -> int | None:
         # the nearest earlier segment with places ("the bakery — it's on fire", "Checked the school. All clear."),
         # over sentences that are transparent (questions, one-word answers, more about the same place)
         for j in range(k - 1, -1, -1):
@@ -3935,6 +3940,16 @@ class ReportAnalyzer:
                 between = range(sentence_of[segs[j][0]] + 1, sentence_of[segs[k][0]])
                 if len(between) > 3 or any(n not in transparent for n in between):
                     return None
+                here = sentence_of[segs[k][0]]
+                if sentence_of[segs[j][0]] != here:
+                    # "The smoke -- it's coming from the kitchen, the hotel kitchen": a sentence that names its
+                    # place after the danger talks about that place, not the one before it; so does one that
+                    # turns to a new matter with "but" ("But the organist, she's trapped ..., the stairs have
+                    # given way in the church"), though that place has a danger of its own
+                    later = next((i for i in range(k + 1, len(segs)) if sentence_of[segs[i][0]] == here
+                                  and seg_places.get(i)), None)
+                    if later is not None and (not seg_cues.get(later) or opening == "but"):
+                        return later
                 return j
         # else the next one in the same sentence ("on fire, the bakery"), over a short aside
         j = k + 1
