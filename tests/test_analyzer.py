@@ -1304,3 +1304,31 @@ def test_a_danger_named_before_its_place_in_the_next_sentence(analyzer, text, ex
 def test_the_former_before_and(analyzer):
     assert claims(analyzer, "we split up, she's at the bakery and I'm at the bank. she says someone's hurt in the former "
                             "and we've got smoke in the latter") == [("bakery", "victim"), ("bank", "hazard")]
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    # someone else's word, contradicted by the speaker in the same sentence
+    ("my brother says the bank's flooded but I'm looking at it now and it isn't. the cafe is, though, water up to the "
+     "tables.", [("cafe", "hazard")]),
+    ("the driver reckons the school's collapsed but I can see it from the bus, it's still standing.", []),
+    # the speaker's own word is not contradicted by a later "it's fine"
+    ("the bank's on fire but it's fine, we're handling it", [("bank", "hazard")]),
+])
+def test_hearsay_contradicted(analyzer, text, expected):
+    assert claims(analyzer, text) == expected
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    # a person hurt, placed in a later sentence
+    ("A woman's been knocked off her bike, she can't stand. She's lying just inside the door of the library now.",
+     [("library", "victim")]),
+    ("the paper boy was hit by a falling slate. he was doing his round. last I saw he was sitting in the bus station.",
+     [("bus station", "victim")]),
+    # a danger is not placed by where a person then is
+    ("Thick smoke everywhere. She's at the bank now.", []),
+    # "can't get down to him" is the caller's trouble, not a second casualty
+    ("the milkman's been knocked down in the place behind the warehouse. my neighbour saw it from the flats but she "
+     "can't get down to him.", [("park", "victim")]),
+])
+def test_a_person_hurt_then_placed(analyzer, text, expected):
+    assert claims(analyzer, text) == expected

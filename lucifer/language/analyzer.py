@@ -2000,8 +2000,8 @@ class ReportAnalyzer:
             if j < 0 and not_the_one:
                 ex.places[idx] = replace(p, status="negated", reason="negated by 'not the one'")
                 continue  # "the school isn't the one with people trapped, it's the library"
-            if j < 0:
-                continue
+            if j < 0 or any(toks.sentence_start[i] for i in range(j + 1, p.start_tok + 1)):
+                continue  # ("... and it isn't. The cafe is, though": the negation ends with its sentence)
             neg = norms[j] in ("not", "nt", "isnt", "wasnt") or norms[j] in lx.RETRACT_VERBS or (
                 norms[j] == "negative" and norms[j + 1] == "on"  # "negative on the quarry, it's the campsite"
             ) or (
@@ -3116,6 +3116,12 @@ class ReportAnalyzer:
         k = cue.end_tok
         steps = 0
         ends = {p.start_tok: p.end_tok for p in getattr(self, "_places_now", [])}
+        but = next((i for i in range(k, min(len(norms), k + 6)) if norms[i] == "but"), None)
+        if but is not None and toks.sentence_of[but] == toks.sentence_of[cue.start_tok] \
+                and self._hearsay_before(toks, norms, cue.start_tok) and self._contradicted_after(toks, norms, but + 1):
+            # "my wife says the coffee shop's collapsed but I can see it from here, it's still standing"
+            cancelled_by = "but it isn't"
+            k = len(norms)
         while k < len(norms) and steps < 7 and not toks.clause_start[k]:  # "the fire on the roof at the bakery is out"
             if norms[k] in lx.UNTIL_WORDS:
                 break  # "no entry till it's shored up": what will end it, not that it has
@@ -3228,6 +3234,30 @@ class ReportAnalyzer:
             if und is not None:
                 return replace(cue, category=und, source=cue.source, reason=f"'{negated_by}' + desirable cue means undesirable")
         return replace(cue, polarity="denied", reason=f"negated by '{why}'")
+
+    @staticmethod
+    def _hearsay_before(toks: Tokens, norms: tuple[str, ...], a: int) -> bool:
+        """Someone else's word opens the cue's sentence: "a woman here says the bakery's flooded"."""
+        j = a - 1
+        while j >= 0 and toks.sentence_of[j] == toks.sentence_of[a] and a - j <= 10:
+            if norms[j] in lx.HEARSAY_VERBS and not (j > 0 and norms[j - 1] in ("i", "we")):
+                return True
+            j -= 1
+        return False
+
+    @staticmethod
+    def _contradicted_after(toks: Tokens, norms: tuple[str, ...], k: int) -> bool:
+        """The speaker's own word against it, later in the sentence: "but I'm stood right outside it and it
+        isn't", "but I can see it from here, it's still standing"."""
+        n = toks.sentence_of[k - 1]
+        for j in range(k, min(len(norms), k + 14)):
+            if toks.sentence_of[j] != n:
+                return False
+            for form in lx.CONTRADICTIONS:
+                e = j + len(form)
+                if norms[j:e] == form and (e >= len(norms) or toks.clause_start[e]):
+                    return True
+        return False
 
     def _apply_cue_repairs(self, ex: Extraction, cues: list[CueMention]) -> list[CueMention]:
         """A marker followed by a cue (and no new place) retracts the last cue before it."""
@@ -3492,7 +3522,8 @@ class ReportAnalyzer:
             opening = next((w for w in norms[start:b] if w not in lx.FILLERS), "")
             target = self._target_for_cues(k, segs, seg_usable, seg_cues, sentence_of, transparent, opening)
             if target is None and not any(seg_usable.get(j) for j in range(k)):
-                target = self._named_after(k, segs, seg_usable, seg_cues, sentence_of, norms, sent_words)
+                person = all(self.kb.category_by_name[c.category].role == Role.CRITICAL for c in cs)
+                target = self._named_after(k, segs, seg_usable, seg_cues, sentence_of, norms, sent_words, person)
             if target is not None and all(q.status == "negated" for q in seg_usable[target]):
                 # "the harbour master's office, not the ice house, has got a gas leak": past the negated aside
                 # to the place it was contrasted with, in the same sentence
@@ -3908,10 +3939,12 @@ class ReportAnalyzer:
     @staticmethod
     def _named_after(k: int, segs: list[tuple[int, int]], seg_places: dict[int, list[PlaceMention]],
                      seg_cues: dict[int, list[CueMention]], sentence_of: list[int], norms: tuple[str, ...],
-                     sent_words: dict[int, int]) -> int | None:
+                     sent_words: dict[int, int], person: bool = False) -> int | None:
         """A report that opens with the danger and names the place after it: "There is fire! Big fire.
         It is the... the shop for medicine. The pharmacy." Up to two sentences on, none with a cue of
-        its own, the first place said alone or as "it's the X" is the one meant."""
+        its own, the first place said alone or as "it's the X" is the one meant; for people hurt, so is
+        the place the person is then said to be ("Someone's trapped under a shelf. She's in the back
+        of the hardware store.")."""
         here = sentence_of[segs[k][0]]
         for j in range(k + 1, len(segs)):
             n = sentence_of[segs[j][0]]
@@ -3926,7 +3959,10 @@ class ReportAnalyzer:
                 words = [w for w in norms[start:segs[j][1]] if w not in lx.FILLERS]
                 said_alone = sent_words.get(n, 99) <= 3
                 named = words[:2] in (["it", "is"], ["this", "is"]) or words[:1] in (["its"], ["thats"])
-                return j if said_alone or named else None
+                who = next((i for i, w in enumerate(words[:6]) if w in lx.PERSON_SUBJECTS), None)
+                placed = person and who is not None and any(
+                    w in lx.POSITION_PREPS or w in ("inside", "lying", "sitting", "lies") for w in words[who + 1:who + 5])
+                return j if said_alone or named or placed else None
         return None
 
     @staticmethod

@@ -127,6 +127,8 @@ live find|a live find|indicating a find|can't get down|cannot get down|can't get
 cut his hand|cut his head|cut her head|badly cut|bleeding heavily|can't get the doors open|can't get the door open|
 cannot stand up|can't stand up|can't walk|cannot walk|fell over|has fallen over|he fell|she fell|
 he fall|she fall|frostbite|frostbitten|frostbite case|is lost|he's lost|she's lost|got lost|lost child|lost kid|gone missing|has gone missing|is sick|are sick|sick inside|feeling sick|being sick|vomiting|throwing up|taken ill|feeling ill|
+been knocked down|got knocked down|knocked off her bike|knocked off his bike|was knocked down|knocked over by|been hit by|was hit by|got hit by|hit by a|
+struck by a|been run over|was run over|got run over|not conscious|isn't conscious|is not conscious|
 send a boat|please send a boat|need a boat|send help|please send help|come and get us|come get us|get us out|
 please come|please hurry|please help us|fire fighter down|fireman down|fire fighter injured|not answering|isn't answering|he's not answering|she's not answering|
 just lying there|lying there|lying on the floor|lying on the ground|fell off|fallen off|took a fall|fallen down a|fell down a|fallen down the|fell down the|
@@ -209,7 +211,7 @@ BACK_REFERENCE_WORDS = {"it", "its", "s", "is", "has", "been", "thats", "that", 
                         "ive"}
 
 # Phrases that contain cue words but claim nothing ("the smoke alarm went off", "fire crew on site").
-NEUTRAL_PHRASES = ["comes down to", "come down to", "coming down to", "goes down to", "runs down to", "keep clear", "stay clear", "keep everyone clear", "keep everybody clear", "keep people clear",
+NEUTRAL_PHRASES = ["can't get down to", "cannot get down to", "comes down to", "come down to", "coming down to", "goes down to", "runs down to", "keep clear", "stay clear", "keep everyone clear", "keep everybody clear", "keep people clear",
                    "keep them clear", "keep the public clear", "keep well clear", "clear the public", "keep it clear",
                    "keep that clear", "keep this clear",
                    "clear everyone away", "clear everybody away", "clear people away", "clear the crowd",
@@ -766,3 +768,15 @@ DANGER_KIND_PARTS = {"roof", "roofs", "wall", "walls", "ceiling", "floor", "chim
 for _phrases in DANGER_KINDS.values():
     for _p in _phrases:
         ROLE_CUES.setdefault(_p, UNDESIRABLE)
+
+# Verbs that give a claim as someone else's word, which the speaker may then contradict.
+HEARSAY_VERBS = {"say", "says", "said", "reckon", "reckons", "reckoned", "think", "thinks", "thought", "report", "reported",
+                 "reports", "tell", "told", "claim", "claims", "claimed", "insist", "insists", "swear", "swears"}
+
+# What a speaker says to contradict what they were told: "... but it isn't", "it's still standing".
+CONTRADICTIONS = [("it", "isnt"), ("its", "not"), ("it", "wasnt"), ("it", "is", "not"), ("its", "still", "standing"),
+                  ("its", "fine"), ("its", "ok"), ("its", "okay"), ("its", "not", "true"), ("thats", "wrong"),
+                  ("they", "arent"), ("theyre", "not")]
+
+# A person as the subject of a sentence that says where they are: "she's in the back of the shop".
+PERSON_SUBJECTS = {"he", "she", "hes", "shes", "they", "theyre"}
