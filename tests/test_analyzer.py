@@ -1332,3 +1332,16 @@ def test_hearsay_contradicted(analyzer, text, expected):
 ])
 def test_a_person_hurt_then_placed(analyzer, text, expected):
     assert claims(analyzer, text) == expected
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    # items said one to a sentence are a list an ordinal can count
+    ("two things. one, smoke at the bank. two, a man hurt at the school. the first one, I got that wrong, it's the "
+     "bakery that's smoking, not the bank.", [("bakery", "hazard"), ("school", "victim")]),
+    # "that second one ... X not Y": the item the ordinal names hands its claims to X
+    ("a fire at the library, someone trapped at the garage, and flooding at the park. that second one I gave you, that "
+     "was the cafe not the garage, so the trapped person's at the cafe.",
+     [("cafe", "victim"), ("library", "hazard"), ("park", "hazard")]),
+])
+def test_an_ordinal_names_an_item_of_a_list_said_over_sentences(analyzer, text, expected):
+    assert claims(analyzer, text) == expected

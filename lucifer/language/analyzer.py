@@ -574,8 +574,8 @@ class ReportAnalyzer:
                 i += 1  # (the mention starts at "both", as an ordinal's starts at its "the")
             elif i in taken or not (word in lx.ORDINAL_PLACES or word == "other"):
                 continue
-            elif i > 0 and norms[i - 1] == "the":
-                start = i - 1
+            elif i > 0 and (norms[i - 1] == "the" or norms[i - 1] == "that" and norms[i + 1:i + 2] == ("one",)):
+                start = i - 1  # ("that second one I gave you")
             elif not (toks.clause_start[i] and norms[i + 1:i + 2] == ("one",)):
                 continue  # (a bare "First one, empty" opens its clause)
             end = i + 1
@@ -607,6 +607,13 @@ class ReportAnalyzer:
                 if len(names) >= 2:
                     listed, members = names, [p.start_tok for p in said]
                     break
+            if not listed and word in lx.ORDINAL_PLACES and word not in ("former", "latter"):
+                # "One, flooding at the bus depot. Two, flooding at the sports hall. ... The second one, I got that
+                # wrong": items said one to a sentence count as a list too
+                names = list(dict.fromkeys(p.landmark for p in sorted(earlier, key=lambda p: p.start_tok)
+                                           if p.via is None))
+                if len(names) >= 2:
+                    listed, members = names, [p.start_tok for p in earlier]
             if not listed and word == "other" and earlier:
                 # "the west one is clear, and the other one's got a burning car": of two landmarks that share
                 # a head ("west portal", "east portal"), the one not just named
@@ -2057,6 +2064,13 @@ class ReportAnalyzer:
                                   key=lambda q: q.start_tok, default=None)
                     earlier = [q for q in ex.places if q.status == "active" and q.landmark == p.landmark
                                and q.start_tok < sent_start] if nxt is not None else []
+                for q in [q for q in earlier if q.anaphor == "ordinal"]:
+                    # "that second one I gave you, that was the clinic not the police station": the list item
+                    # the ordinal names is what the repair takes back
+                    item = max((r for r in ex.places if r.status == "active" and r.landmark == q.landmark
+                                and r.start_tok < q.start_tok and r.anaphor is None), key=lambda r: r.start_tok, default=None)
+                    if item is not None and item not in earlier:
+                        earlier.append(item)
                 for q in earlier:
                     ex.places[ex.places.index(q)] = replace(q, status="retracted", reason=f"then '{toks.tokens[j].text} {p.text}'")
                 # ("not the school, they moved it, it's the library now": the next place in the sentence)
