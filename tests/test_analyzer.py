@@ -1345,3 +1345,14 @@ def test_a_person_hurt_then_placed(analyzer, text, expected):
 ])
 def test_an_ordinal_names_an_item_of_a_list_said_over_sentences(analyzer, text, expected):
     assert claims(analyzer, text) == expected
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    ("someone said the bakery was on fire too but that was ages ago and the crews have put it out.", []),
+    ("the flooding at the cafe is sorted, they pumped it.", []),
+    # a put-out planned or tried is not done
+    ("fire at the bank, we need to put it out", [("bank", "hazard")]),
+    ("fire at the bank, crews are going to put it out", [("bank", "hazard")]),
+])
+def test_put_out_later_in_the_sentence_and_sorted(analyzer, text, expected):
+    assert claims(analyzer, text) == expected

@@ -3769,10 +3769,14 @@ class ReportAnalyzer:
                 continue
             # "fires at the garage, the warehouse and the supermarket, er, the warehouse, oh, they've put that out
             # now": the place said again, then its danger put out
+            # ("they said the hotel's on fire as well but that was an hour ago and the brigade have put it out":
+            # further on in the sentence, once the put-out is done, not planned)
             k = p.end_tok
-            while k < len(norms) and k - p.end_tok < 8 and not any(q.start_tok == k for q in ex.places if q is not p):
+            while k < len(norms) and (k - p.end_tok < 8 or k - p.end_tok < 18 and toks.sentence_of[k] == toks.sentence_of[p.start_tok]) \
+                    and not any(q.start_tok == k for q in ex.places if q is not p):
                 h = self._cancel.match_at(norms, k)
-                if h is not None and h[1] in lx.CANCEL_SAID_AGAIN:
+                if h is not None and h[1] in lx.CANCEL_SAID_AGAIN and norms[k - 1] not in lx.PLAN_WORDS and (
+                        k - p.end_tok < 8 or norms[k - 1] in ("have", "ve", "has", "had", "already", "now", "just")):
                     out.append((p.landmark, k))
                     break
                 k += 1

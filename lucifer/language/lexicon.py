@@ -164,13 +164,14 @@ CANCEL_AFTER = ["is out", "s out", "are out", "was out", "put out", "out now", "
                 "pumped out", "been pumped out", "no sign of him", "no sign of her", "no sign of them",
                 "no sign of anyone", "no sign of anybody", "no one there", "nobody there",
                 "off now", "s off now", "is off", "s off", "shut it off", "turned it off", "switched off",
-                "switched it off", "sealed", "been sealed", "plugged", "been plugged"] + [
+                "switched it off", "sealed", "been sealed", "plugged", "been plugged", "is sorted", "s sorted", "been sorted",
+                "all sorted", "sorted now"] + [
                 f"{verb} {who} out" for verb in ("got", "gotten", "taken", "took", "pulled", "brought")
                 for who in ("him", "her", "them", "everyone", "everybody", "all of them", "the casualty")] + [
                 "nobody was in", "no one was in", "nobody was inside", "no one was inside", "walked off",
                 "nobody in", "no one in", "found her", "found him", "found them", "found safe",
                 "not there yet", "hasn't reached", "has not reached", "not reached", "knocked that down",
-                "knocked it down", "put that out", "got that out",
+                "knocked it down", "put that out", "put it out", "got that out",
                 "he's been found", "she's been found", "they've been found",
                 "walked out", "she's out", "he's out", "they're out", "she's okay", "he's okay", "they're okay",
                 "carried away", "been carried away", "been moved", "moved away",
@@ -780,3 +781,6 @@ CONTRADICTIONS = [("it", "isnt"), ("its", "not"), ("it", "wasnt"), ("it", "is", 
 
 # A person as the subject of a sentence that says where they are: "she's in the back of the shop".
 PERSON_SUBJECTS = {"he", "she", "hes", "shes", "they", "theyre"}
+
+# Words before a verb that make it a plan or an attempt, not a thing done ("we need to put it out").
+PLAN_WORDS = {"to", "will", "ll", "cant", "cannot", "must", "should", "could", "can", "gonna", "would", "d", "might"}
