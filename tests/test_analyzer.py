@@ -1356,3 +1356,15 @@ def test_an_ordinal_names_an_item_of_a_list_said_over_sentences(analyzer, text, 
 ])
 def test_put_out_later_in_the_sentence_and_sorted(analyzer, text, expected):
     assert claims(analyzer, text) == expected
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    # a relation said again with "not" takes the description back; the place itself is meant
+    ("the shop attached to the bakery is flooded — no, scratch that, not attached to it, it's the bakery itself.",
+     [("bakery", "hazard")]),
+    # a place naming a group of people is no place of its own
+    ("a woman's trapped under a shelf in the place behind the hardware store, the hardware store guys are helping "
+     "her.", [("garage", "victim")]),
+])
+def test_a_relation_said_with_not_and_a_place_naming_people(analyzer, text, expected):
+    assert claims(analyzer, text) == expected

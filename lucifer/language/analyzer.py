@@ -1999,6 +1999,8 @@ class ReportAnalyzer:
             while j >= 0 and (norms[j] in lx.DETERMINERS or norms[j] in lx.PREPOSITIONS or norms[j] in lx.FILLERS) \
                     and p.start_tok - j <= 4 and not toks.clause_start[j + 1]:
                 j -= 1
+            if p.via is not None and norms[p.start_tok] == "not":
+                j = p.start_tok  # "the building across from the church -- no, scratch that, not across from it"
             tail = norms[p.end_tok : p.end_tok + 4]
             not_the_one = tail[:3] in (("isnt", "the", "one"), ("wasnt", "the", "one"), ("aint", "the", "one")) \
                 or tail[:4] in (("is", "not", "the", "one"), ("s", "not", "the", "one"), ("was", "not", "the", "one")) \

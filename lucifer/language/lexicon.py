@@ -430,7 +430,8 @@ INSTRUCTION_WORDS = {"instruction", "instructions", "previous", "every", "everyt
 # Nouns after a place name that make the name a modifier ("pharmacy team reports ...").
 MODIFIED_BY = {"team", "crew", "unit", "squad", "staff", "manager", "owner", "workers", "worker", "group", "cook",
                "chef", "caretaker", "porter", "receptionist", "warden", "supervisor", "foreman",
-               "side", "car", "truck", "van", "bus", "sign", "road", "street", "lane"}
+               "side", "car", "truck", "van", "bus", "sign", "road", "street", "lane",
+               "lads", "lad", "guys", "guy", "blokes", "bloke", "boys", "boy", "fellas", "fella", "chaps", "chap", "lot"}
 
 # Words after a place that name a part of it, not another thing ("the surgery car park").
 PART_OF_PLACE = {("car", "park"), ("car", "parks")}
