@@ -1368,3 +1368,16 @@ def test_put_out_later_in_the_sentence_and_sorted(analyzer, text, expected):
 ])
 def test_a_relation_said_with_not_and_a_place_naming_people(analyzer, text, expected):
     assert claims(analyzer, text) == expected
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    # an active verb for a relation named by its participle reads it backwards, though the verb is a cue word
+    ("Someone's hurt by the wall sheltering the towpath.", [("flood wall", "casualty")]),
+    ("Cracks all along the wall that shelters the towpath.", [("flood wall", "hazard")]),
+    # "we're sheltering the kids in ...": still a refuge
+    ("we're sheltering the kids in the marina office", [("marina office", "refuge")]),
+    # a noun of a relation name as a sentence's subject is no relation
+    ("Water's coming through whatever the keeper's cottage overlooks.", [("top lock", "hazard")]),
+])
+def test_active_verb_of_a_participle_relation(kb_analyzers, text, expected):
+    assert claims(kb_analyzers["canal_wharf"], text) == expected

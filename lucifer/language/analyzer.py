@@ -426,9 +426,16 @@ class ReportAnalyzer:
             return out
         taken = set(covered)
         for t in range(len(norms)):
-            if t in taken or t in cue_tokens or t in known or t + 1 in known:
+            if t in cue_tokens and t > 0 and (norms[t - 1] in ("that", "which")
+                                              or norms[t - 1] not in lx.COPULAS | lx.DETERMINERS | {"re", "ve"}) \
+                    and norms[t + 1:t + 2] and norms[t + 1] in lx.ARTICLES and t + 2 in covered \
+                    and not toks.clause_start[t] and self._keyword_relation(toks.tokens[t].text.lower()) is not None:
+                pass  # "the wall sheltering the towpath": a cue word ("shelter") used as the relation's verb
+            elif t in taken or t in cue_tokens or t in known or t + 1 in known:
                 continue  # (a word right before a listed phrase heads it: "the annexe tacked onto X")
             word = toks.tokens[t].text
+            if word.lower().endswith(("'s", "’s")) and toks.clause_start[t]:
+                continue  # "Water's pouring through ...": a subject, not "across_the_water_from"
             if t > 0 and word[:1].isupper() and not word.isupper() and toks.tokens[t - 1].text[:1].isupper() \
                     and not toks.sentence_start[t]:
                 continue  # "Red Watch to TCC": a word of a name, not a relation's verb
@@ -468,6 +475,10 @@ class ReportAnalyzer:
             word = toks.tokens[t].text.lower()
             passive_here = "by" in norms[t + 1 : b] or word.endswith(("ed", "en")) or word in lx.IRREGULAR_PARTICIPLES
             flipped = (voice == "passive" and not passive_here) or (voice == "active" and "by" in norms[t + 1 : b])
+            first = phrase.split()[0]
+            if voice == "other" and first.endswith("ed") and not passive_here \
+                    and word.endswith(("ing", "s")) and _same_stem(word.rstrip("s"), first):
+                flipped = not flipped  # "the wall sheltering the towpath" for ``towpath sheltered_behind flood wall``
             if any(lx.ANTONYMS.get(w) in phrase.split() for w in norms[a:b]):
                 flipped = not flipped
             out.append((a, b, (phrase, flipped)))

@@ -52,7 +52,7 @@ smell of gas|strong smell of gas|gas smell|water damage|waist deep|chest deep|el
 hot zone|exclusion zone|inner cordon|wall down|walls down|roof's in|roof is in|roof's gone|roof has gone|
 roof's off|shedding bricks|shedding slates|unstable masonry|masonry falling|falling masonry|flooded out|mud slide|
 slumping|waterlogged|water logged|halfway up|burst main|burst pipe|pipe burst|pipe's burst|water everywhere|
-bowing out|bowing|water coming over|coming over the|ripping through|smoke-logged|fully alight|jammed open|
+bowing out|bowing|bulging|bulge|water coming over|coming over the|ripping through|smoke-logged|fully alight|jammed open|
 floor's gone|floor has gone|floor's gone through|gone through the floor|sinking|subsiding|subsidence|cracked right across|
 a crack|crack right across|cracks|venting|hissing|gas bottles|leaking fuel|diesel slick|slick|fuel slick|
 jammed shut|jammed|locked|padlocked|chained|chained shut|can't get in|cannot get in|can't get into|cannot get into|
@@ -714,7 +714,7 @@ DANGER_KINDS: dict[str, list[str]] = {
                  "bowing out", "wall's bowing", "buckling", "buckled", "leaning", "could go any second",
                  "roof collapsed", "roof has come in", "roof's come in", "roof came in", "ceiling has come in",
                  "ceiling's come in", "ceiling collapsed", "given way", "gave way", "has given way",
-                 "unstable masonry", "falling in", "unstable chimney", "bulging", "bulging out", "could let go",
+                 "unstable masonry", "falling in", "unstable chimney", "bulging", "bulging out", "bulge", "could let go",
                  "might let go", "about to let go", "going to let go", "cracked open", "split in two", "split open", "pancaked", "spongy",
                  "floor's spongy", "sinking", "subsiding", "subsidence", "slumping", "floor's gone", "floor has gone",
                  "floor's gone through", "gone through the floor", "roof's going", "roof is going"],
