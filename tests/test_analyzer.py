@@ -1381,3 +1381,27 @@ def test_a_relation_said_with_not_and_a_place_naming_people(analyzer, text, expe
 ])
 def test_active_verb_of_a_participle_relation(kb_analyzers, text, expected):
     assert claims(kb_analyzers["canal_wharf"], text) == expected
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    # "underneath X" reads an "above" relation backwards where the KB's own "underneath" does not reach X
+    ("Gas smell in the shop underneath the estate office.", [("newsagent", "hazard")]),
+    ("Gas smell in the place underneath heron house.", [("boiler house", "hazard")]),
+    # "stuck onto the side of it" is the KB's built_onto_the_side_of, not someone stuck
+    ("Fire in the community centre; the little building stuck onto the side of it is clear.",
+     [("community centre", "hazard"), ("nursery", "safe_zone")]),
+    # "clear -- no, it's not clear": the word taken back, not a danger
+    ("kestrel house is clear — no, sorry, it's not clear, there's people still on the top floor waving out the window",
+     [("kestrel house", "victim")]),
+    # a place seen after someone else's claim was contradicted does not borrow the claim back
+    ("my mate says the chippy is on fire but i can see the chippy and its not its the launderette thats on fire",
+     [("launderette", "hazard")]),
+    ("Mr Patel went back into the newsagent for the till and he's not come out.", [("newsagent", "victim")]),
+])
+def test_housing_estate_relations_and_repairs(kb_analyzers, text, expected):
+    assert claims(kb_analyzers["housing_estate"], text) == expected
+
+
+def test_restated_state_negated_elsewhere_is_still_a_danger(analyzer):
+    # "not safe" alone still reads as unsafe
+    assert claims(analyzer, "the school is not safe") == [("school", "hazard")]

@@ -2008,7 +2008,8 @@ class ReportAnalyzer:
                 continue
             j = p.start_tok - 1
             while j >= 0 and (norms[j] in lx.DETERMINERS or norms[j] in lx.PREPOSITIONS or norms[j] in lx.FILLERS) \
-                    and p.start_tok - j <= 4 and not toks.clause_start[j + 1]:
+                    and p.start_tok - j <= 4 and not toks.clause_start[j + 1] \
+                    and not (norms[j] == "its" and norms[j + 1] in lx.ARTICLES):  # "it's not it's the X": a new clause
                 j -= 1
             if p.via is not None and norms[p.start_tok] == "not":
                 j = p.start_tok  # "the building across from the church -- no, scratch that, not across from it"
@@ -2020,8 +2021,10 @@ class ReportAnalyzer:
             if j < 0 and not_the_one:
                 ex.places[idx] = replace(p, status="negated", reason="negated by 'not the one'")
                 continue  # "the school isn't the one with people trapped, it's the library"
-            if j < 0 or any(toks.sentence_start[i] for i in range(j + 1, p.start_tok + 1)):
-                continue  # ("... and it isn't. The cafe is, though": the negation ends with its sentence)
+            if j < 0 or any(toks.sentence_start[i] for i in range(j + 1, p.start_tok + 1)) \
+                    or norms[p.start_tok] in ("its", "thats"):
+                continue  # ("... and it isn't. The cafe is, though": the negation ends with its sentence; "it's
+                # not it's the one next to it": a new clause)
             neg = norms[j] in ("not", "nt", "isnt", "wasnt") or norms[j] in lx.RETRACT_VERBS or (
                 norms[j] == "negative" and norms[j + 1] == "on"  # "negative on the quarry, it's the campsite"
             ) or (
@@ -3255,7 +3258,11 @@ class ReportAnalyzer:
             return cue
         why = negated_by or cancelled_by
         role = self.kb.category_by_name[cue.category].role
-        if role == Role.DESIRABLE and negated_by is not None and " ".join(norms[cue.start_tok:cue.end_tok]) in lx.NEGATABLE_STATES:
+        said = norms[cue.start_tok:cue.end_tok]
+        restated = any(norms[i:i + len(said)] == said for i in range(max(0, cue.start_tok - 10), cue.start_tok - len(said)))
+        if role == Role.DESIRABLE and negated_by is not None and " ".join(said) in lx.NEGATABLE_STATES and not restated:
+            # ("the block is clear -- no, sorry, it's not clear, there's people on the top floor": the word said
+            # again to take it back, not a danger)
             # "not safe" / "no longer safe" means unsafe: the place is undesirable now
             und = self._undesirable()
             if und is not None:
@@ -3282,7 +3289,7 @@ class ReportAnalyzer:
                 return False
             for form in lx.CONTRADICTIONS:
                 e = j + len(form)
-                if norms[j:e] == form and (e >= len(norms) or toks.clause_start[e]):
+                if norms[j:e] == form and (e >= len(norms) or toks.clause_start[e] or norms[e] in ("its", "thats")):
                     return True
         return False
 
@@ -3610,6 +3617,10 @@ class ReportAnalyzer:
                 for c in seg_cues[donor]:
                     if c.start_tok >= counted:
                         continue
+                    if c.polarity == "affirmed" and any(
+                            q.place.landmark == p.landmark and q.cue.category == c.category and q.cue.polarity == "denied"
+                           and q.cue.start_tok < p.start_tok for q in pairs):
+                        continue  # "says the chippy is on fire but i can see the chippy and it's not": denied, not lent
                     if c.polarity == "denied" and c.reason.lower().startswith(("negated by 'not'", "negated by 'n't'", "negated by 'isn't'",
                                                                           "negated by 's not'", "negated by 'nt'")):
                         # "the station is not flooded, the clinic is": the contrast takes the claim
@@ -4077,14 +4088,17 @@ def _relation_core(phrase: str) -> str:
     adverbs ("directly above" -> "above"), its final direction ("on the levee above" -> "above"), or the
     thing it crosses ("across the channel from" -> "across from").
 
-    >>> [_relation_core(p) for p in ("directly above", "on the levee above", "across the tracks from", "feeds")]
-    ['above', 'above', 'across from', 'feeds']
+    >>> [_relation_core(p) for p in ("directly above", "on the levee above", "across the tracks from", "feeds",
+    ...                              "built onto the side of")]
+    ['above', 'above', 'across from', 'feeds', 'built onto']
     """
     words = phrase.split()
     while len(words) > 1 and words[0] in lx.RELATION_ADVERBS:
         words = words[1:]
     if len(words) > 1 and words[-1] in _TRAILING_DIRECTIONS:
         return words[-1]
+    if len(words) > 3 and words[-3] == "the" and words[-2] in lx.PART_NOUNS and words[-1] == "of":
+        words = words[:-3]  # "built onto the side of" is an "attached to" relation
     core = " ".join(words)
     return "across from" if _ACROSS_THE.match(core) else core
 

@@ -34,7 +34,7 @@ flood|floods|flooded|flooding|underwater|under water|water rising|rising water|s
 strong current|fierce current|fast current|swift current|rip current|undertow|current's ripping|current is ripping|
 current ripping|fast flowing water|fast-flowing water|
 live wire|live wires|power line down|power lines down|downed lines|sparking|sparks|electrified|arcing|
-chemical|chemicals|toxic|spill|spilled|spilt|hazmat|contaminated|radiation|asbestos|
+chemical|chemicals|chlorine|chlorine gas|toxic|spill|spilled|spilt|hazmat|contaminated|radiation|asbestos|
 dangerous|danger|unsafe|hazard|hazardous|hazards|threat|no go|no-go|off limits|do not enter|keep out|stay away|
 avoid|blocked|impassable|sinkhole|landslide|mudslide|hot spot|hotspot|burning debris|roof down|roof collapsed|
 gunfire|shooter|armed|looters|riot|on fire again|reignited|spreading|spread|unsound|structurally unsound|
@@ -127,6 +127,8 @@ live find|a live find|indicating a find|can't get down|cannot get down|can't get
 cut his hand|cut his head|cut her head|badly cut|bleeding heavily|can't get the doors open|can't get the door open|
 cannot stand up|can't stand up|can't walk|cannot walk|fell over|has fallen over|he fell|she fell|
 he fall|she fall|frostbite|frostbitten|frostbite case|is lost|he's lost|she's lost|got lost|lost child|lost kid|gone missing|has gone missing|is sick|are sick|sick inside|feeling sick|being sick|vomiting|throwing up|taken ill|feeling ill|
+waving out the window|waving out of the window|waving out of windows|waving from the window|
+not come out|hasn't come out|has not come out|didn't come out|never came out|not come back out|hasn't come back out|
 been knocked down|got knocked down|knocked off her bike|knocked off his bike|was knocked down|knocked over by|been hit by|was hit by|got hit by|hit by a|
 struck by a|been run over|was run over|got run over|not conscious|isn't conscious|is not conscious|
 send a boat|please send a boat|need a boat|send help|please send help|come and get us|come get us|get us out|
@@ -355,7 +357,8 @@ SYMMETRIC_HINTS = ("next", "adjacent", "beside", "across", "opposite", "adjoin",
 # "X in front of Y" is "Y behind X": a report phrase read against the opposite KB relation.
 INVERSE_PHRASES = {"in front of": "behind", "behind": "in front of", "above": "below", "below": "above",
                    "north of": "south of", "south of": "north of", "east of": "west of", "west of": "east of",
-                   "upstream of": "downstream of", "downstream of": "upstream of"}
+                   "upstream of": "downstream of", "downstream of": "upstream of",
+                   "underneath": "above", "beneath": "above"}
 # Words between an anchor and a trailing relation: "the one the garage sits behind".
 INVERSE_VERBS = {"sits", "sit", "is", "s", "stands", "stand", "lies", "lie", "located", "situated", "are", "was",
                  "right", "directly", "just"}
@@ -699,7 +702,7 @@ DANGER_KINDS: dict[str, list[str]] = {
     "gas": ["gas", "gas leak", "leaking gas", "smell of gas", "smells of gas", "gas smell", "strong smell of gas",
             "stinks of gas", "reeks of gas", "reeking of gas", "gas main", "gas bottles", "venting", "hissing"],
     "chemical": ["petrol on the water", "fuel on the water", "oil on the water", "diesel on the water", "petrol",
-                 "diesel", "avgas", "kerosene", "fumes", "toxic fumes", "chemical", "chemicals", "toxic", "hazmat",
+                 "diesel", "avgas", "kerosene", "chlorine", "chlorine gas", "fumes", "toxic fumes", "chemical", "chemicals", "toxic", "hazmat",
                  "hazmat incident", "contaminated", "ammonia", "ammonia leak", "asbestos", "radiation", "spill",
                  "spilled", "spilt", "fuel leak", "oil spill", "fuel spill", "petrol spill", "diesel spill",
                  "petrol leak", "diesel leak", "leaking fuel", "fuel pouring", "pouring fuel", "diesel slick",
