@@ -1405,3 +1405,18 @@ def test_housing_estate_relations_and_repairs(kb_analyzers, text, expected):
 def test_restated_state_negated_elsewhere_is_still_a_danger(analyzer):
     # "not safe" alone still reads as unsafe
     assert claims(analyzer, "the school is not safe") == [("school", "hazard")]
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    # a one-word name after a modal is a verb
+    ("the wall of the bank has come down, please don't park anything near there.", [("bank", "hazard")]),
+    # where the caller rings from is no casualty
+    ("the cafe's where I'm calling from. it's the bakery that's flooded.", [("bakery", "hazard")]),
+    # a look that found nobody is no casualty
+    ("we looked in through the windows of the shop attached to the bakery, couldn't see anyone.", []),
+    # every mention a late negation takes back hands its claims to the place kept
+    ("casualty at the gardens, the park — no wait, the casualty's at the school, the actual school, not the park. "
+     "the park is where his dad's waiting.", [("school", "victim")]),
+])
+def test_verbs_callers_and_late_negations(analyzer, text, expected):
+    assert claims(analyzer, text) == expected

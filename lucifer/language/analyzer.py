@@ -527,6 +527,8 @@ class ReportAnalyzer:
                     and any(norm_phrase(f)[-1:] == norms[a:b] and f.lower().endswith("s") for f in
                             self.kb.landmark_by_name[landmark].surface_forms):
                 continue  # "it's flat and it's clear": a predicate, not the landmark the KB calls "flats"
+            if b - a == 1 and prev in lx.MODAL_BEFORE_VERB and not (a > 0 and toks.clause_start[a]):
+                continue  # "don't park anything round there": the word as a verb
             places.append(self._mention(toks, a, b, landmark))
         places.extend(self._partial_names(toks, norms, {i for p in places for i in range(p.start_tok, p.end_tok)}))
         places.extend(self._head_names(toks, norms, {i for p in places for i in range(p.start_tok, p.end_tok)},
@@ -2066,6 +2068,7 @@ class ReportAnalyzer:
                 corrects = not earlier and any(i in marker_toks or norms[i] in lx.CORRECTION_WORDS
                                                for i in range(min(sent_start, max(0, j - 6)), j))
                 nxt = min((q for q in ex.places if q.status == "active" and q.start_tok >= p.end_tok
+                           and q.landmark != p.landmark
                            and (q.start_tok - p.end_tok <= 3 or q.start_tok - p.end_tok <= 8 and not any(
                                toks.sentence_start[i] for i in range(p.end_tok, q.start_tok + 1)))),
                           key=lambda q: q.start_tok, default=None)
@@ -2729,7 +2732,7 @@ class ReportAnalyzer:
         all_cues = getattr(self, "_all_cues_now", [])
         kept = []
         norms = toks.norms(0, len(toks))
-        negated = {i for i, w in enumerate(norms) if w in lx.NEGATORS}
+        negated = {i for i, w in enumerate(norms) if w in lx.NEGATORS or w in ("couldnt", "wouldnt", "wont", "shouldnt")}
         for a, b, _ in self._negators.find_all(norms):
             negated.update(range(a, b))
         asking = self._question_sentences(toks)
@@ -3428,6 +3431,11 @@ class ReportAnalyzer:
                 nxt = successor.get(p.start_tok)
                 if nxt is None and p.reason.startswith("said again later"):
                     nxt = next((q for q in ex.places if q.landmark == p.landmark and q.start_tok > p.start_tok), None)
+                elif nxt is None and p.reason.startswith("then '"):
+                    # "injured kid at the gardens, the park -- no, ... the sports hall, not the park": every
+                    # mention the negation took back goes where the last one went
+                    nxt = next((q for q in ex.places if q.landmark == p.landmark and q.start_tok > p.start_tok
+                                and q.reason == p.reason), None)
                 elif nxt is None and p.reason.startswith(("false start", "restarted")):
                     # "fire at the hot-- / ... / hotel": a name cut off or said again is the same place, named
                     # in full later

@@ -214,7 +214,8 @@ BACK_REFERENCE_WORDS = {"it", "its", "s", "is", "has", "been", "thats", "that", 
                         "ive"}
 
 # Phrases that contain cue words but claim nothing ("the smoke alarm went off", "fire crew on site").
-NEUTRAL_PHRASES = ["can't get down to", "cannot get down to", "comes down to", "come down to", "coming down to", "goes down to", "runs down to", "keep clear", "stay clear", "keep everyone clear", "keep everybody clear", "keep people clear",
+NEUTRAL_PHRASES = ["i'm calling from", "im calling from", "i am calling from", "we're calling from",
+                   "i'm ringing from", "im ringing from", "we're ringing from", "where i'm calling from", "can't get down to", "cannot get down to", "comes down to", "come down to", "coming down to", "goes down to", "runs down to", "keep clear", "stay clear", "keep everyone clear", "keep everybody clear", "keep people clear",
                    "keep them clear", "keep the public clear", "keep well clear", "clear the public", "keep it clear",
                    "keep that clear", "keep this clear",
                    "clear everyone away", "clear everybody away", "clear people away", "clear the crowd",
@@ -788,3 +789,7 @@ PERSON_SUBJECTS = {"he", "she", "hes", "shes", "they", "theyre"}
 
 # Words before a verb that make it a plan or an attempt, not a thing done ("we need to put it out").
 PLAN_WORDS = {"to", "will", "ll", "cant", "cannot", "must", "should", "could", "can", "gonna", "would", "d", "might"}
+
+# Words after which a one-word landmark name is a verb: "don't park anything round there".
+MODAL_BEFORE_VERB = {"dont", "do", "cant", "cannot", "can", "will", "wont", "ll", "should", "must", "please", "didnt",
+                     "doesnt", "shouldnt", "couldnt", "could", "would", "wouldnt", "never"}
