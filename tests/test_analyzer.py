@@ -1420,3 +1420,15 @@ def test_restated_state_negated_elsewhere_is_still_a_danger(analyzer):
 ])
 def test_verbs_callers_and_late_negations(analyzer, text, expected):
     assert claims(analyzer, text) == expected
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    # "that building" takes up the place just spoken of as a relation's anchor
+    ("Smoke in the place behind the hardware store. And someone's trapped in the shop in front of that building.",
+     [("garage", "hazard"), ("hardware store", "victim")]),
+    # the head noun of a description said again is the place it reached
+    ("the strip of green across from the apartment block is our assembly point, no wait, change that, the flats are "
+     "where we're assembling, the green's flooded.", [("apartment block", "safe_zone"), ("park", "hazard")]),
+])
+def test_that_building_and_a_description_head_said_again(analyzer, text, expected):
+    assert claims(analyzer, text) == expected

@@ -553,6 +553,7 @@ class ReportAnalyzer:
         self._resolve_descriptions(ex)
         self._resolve_possessives(ex)
         self._resolve_relations(ex)
+        ex.places.extend(self._description_heads_again(ex, norms))
         self._resolve_itself(ex)
         self._resolve_containers(ex, norms)
         ex.places.extend(self._definite_heads(toks, norms, ex.places))  # again, after descriptions ("the portal with ...")
@@ -863,6 +864,33 @@ class ReportAnalyzer:
                                reason=f"the '{norms[i]}' named last, '{last.text}'"))
             taken.update(range(i - 1, end))
         return out
+
+    def _description_heads_again(self, ex: Extraction, norms: tuple[str, ...]) -> list[PlaceMention]:
+        """"the bit of green across from the apartment block ... the green's flooded": the head noun of a
+        relational description, said again with "the", is the place the description reached."""
+        toks = ex.tokens
+        out: list[PlaceMention] = []
+        taken = {i for p in ex.places for i in range(p.start_tok, p.end_tok)}
+        for p in ex.places:
+            head = norms[p.start_tok]
+            if p.via is None or head in lx.UNNAMING_HEADS or head in lx.DETERMINERS \
+                    or not head.isalpha() or len(head) < 4 or self._place_head_word(head):
+                continue
+            for i in range(p.end_tok + 1, len(norms)):
+                if i in taken or norms[i] != head or norms[i - 1] not in ("the", "that"):
+                    continue
+                if i + 1 < len(norms) and not toks.clause_start[i + 1] and norms[i + 1] not in lx.COPULAS \
+                        and not toks.tokens[i].text.lower().endswith(("'s", "’s")):
+                    continue  # "the green door": a longer noun phrase
+                out.append(replace(self._mention(toks, i - 1, i + 1, p.landmark),
+                                   reason=f"the '{head}' of '{p.text}'"))
+                taken.update(range(i - 1, i + 1))
+        return out
+
+    def _place_head_word(self, word: str) -> bool:
+        """Is the word the last word of a landmark's name or alias (so a name finder reads it already)?"""
+        return word in self._head_groups() or any(
+            name_words(f)[-1:] == (word,) for lm in self.kb.landmarks for f in lm.surface_forms)
 
     def _name_keys(self) -> list[tuple[str, str]]:
         """(letters of a name or alias run together, articles left out; landmark), for every surface form:
@@ -1782,6 +1810,14 @@ class ReportAnalyzer:
                 "side", "back", "wall", "rear", "front", "end", "corner", "left", "right", "north", "south", "east", "west"):
             # "the shop attached to its side": the possessive points back to the last place
             before = [p for p in ex.places if p.end_tok <= b]
+            if before:
+                return max(before, key=lambda p: p.end_tok), j + 1, True
+        if j > b and norms[j - 1] in ("that", "this", "same") and j < len(norms) and norms[j] in lx.UNNAMING_HEADS \
+                and not any(ex.tokens.clause_start[t] for t in range(b, j)) \
+                and (j + 1 >= len(norms) or ex.tokens.clause_start[j + 1] or norms[j + 1] in lx.COPULAS | lx.COORDINATORS):
+            # "smoke in the building behind the hardware store ... someone trapped in the shop in front of that
+            # building": the place just spoken of
+            before = [p for p in ex.places if p.end_tok <= b and p.status == "active"]
             if before:
                 return max(before, key=lambda p: p.end_tok), j + 1, True
         its = its and j == b
