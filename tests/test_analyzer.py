@@ -1432,3 +1432,14 @@ def test_verbs_callers_and_late_negations(analyzer, text, expected):
 ])
 def test_that_building_and_a_description_head_said_again(analyzer, text, expected):
     assert claims(analyzer, text) == expected
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    # "sorry, the X's empty" after X was repaired away says why not X; it repairs nothing
+    ("man hurt at the bank — no, the cafe, sorry, the bank's empty", [("cafe", "victim")]),
+    ("man hurt at the — at the bank — no, the cafe, at the coffee shop, sorry, the bank's empty", [("cafe", "victim")]),
+    # a double repair back to the first place stands
+    ("man hurt at the bank — no, the cafe — sorry, the bank", [("bank", "victim")]),
+])
+def test_sorry_the_place_repaired_away_is_empty(analyzer, text, expected):
+    assert claims(analyzer, text) == expected

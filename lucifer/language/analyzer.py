@@ -2397,6 +2397,10 @@ class ReportAnalyzer:
             first_after = min((p for p in after if p.status == "active"), key=lambda p: p.start_tok, default=None)
             if first_after is not None and first_after.landmark == last.landmark:
                 continue  # "I mean the chapel, st mary's, same place": a restatement, not a repair
+            if first_after is not None and not _strong and first_after.landmark in self._replaced_chain(ex, last) \
+                    and [w for w in norms[first_after.end_tok:first_after.end_tok + 2] if w not in ("s", "is")][:1] \
+                    in (["empty"], ["fine"], ["ok"], ["okay"], ["alright"]):
+                continue  # "at the pub -- no, the towpath cafe, sorry, the pub's empty": why not the pub, no repair
             if first_after is not None and any(
                     (q.landmark == first_after.landmark and q.status in ("negated", "retracted")
                      or q.reason.startswith("then 'not")) and last.end_tok <= q.start_tok < a for q in ex.places):
@@ -2485,6 +2489,24 @@ class ReportAnalyzer:
                     and self.kb.category_by_name[nxt.category].role == Role.DESIRABLE:
                 continue
             out.append(c)
+        return out
+
+    @staticmethod
+    def _replaced_chain(ex: Extraction, p: PlaceMention) -> set[str]:
+        """The landmarks a place was repaired from, back along its chain of repairs."""
+        at = {q.start_tok: q for q in ex.places}
+        out: set[str] = set()
+        seen = 0
+        while seen < 10:
+            # ("the cafe, at the towpath cafe": a name said again in full took over from the shorter one)
+            prev = at.get(p.replaces) if p.replaces is not None else max(
+                (q for q in ex.places if q.end_tok <= p.start_tok and q.landmark == p.landmark and q.replaces is not None),
+                key=lambda q: q.start_tok, default=None)
+            if prev is None:
+                break
+            p = prev
+            out.add(p.landmark)
+            seen += 1
         return out
 
     def _apply_trailing_repairs(self, ex: Extraction) -> None:
