@@ -1443,3 +1443,18 @@ def test_that_building_and_a_description_head_said_again(analyzer, text, expecte
 ])
 def test_sorry_the_place_repaired_away_is_empty(analyzer, text, expected):
     assert claims(analyzer, text) == expected
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    # people said to walk out of a place just taken back leave the other places' casualties standing
+    ("we've got injured at the bank, injured at the cafe, and at the clinic, oh, no, scrap the cafe, they've all "
+     "walked out of there. the clinic ones are bad.", [("bank", "victim"), ("clinic", "victim")]),
+    # a ladder that collapsed is a danger, not a ladder crew
+    ("the access ladder on the water tower's collapsed.", [("water tower", "hazard")]),
+    # the person spoken of, placed again
+    ("is there an injured man at the bank? -- no, the man's at the library.", [("library", "victim")]),
+    # whom a shelter is for is not where it is
+    ("they're using the bank as the shelter for the hotel guests.", [("bank", "safe_zone")]),
+])
+def test_discourse_people_and_things(analyzer, text, expected):
+    assert claims(analyzer, text) == expected

@@ -541,6 +541,10 @@ class ReportAnalyzer:
             if p.end_tok < len(norms) and norms[p.end_tok] in lx.MODIFIED_BY and not toks.clause_start[p.end_tok] \
                     and norms[p.end_tok : p.end_tok + 2] not in lx.PART_OF_PLACE:
                 places[idx] = replace(p, status="reference", reason=f"modifier of '{toks.tokens[p.end_tok].text}'")
+            elif p.end_tok < len(norms) and norms[p.end_tok] in lx.PEOPLE_OF_PLACE and p.start_tok >= 2 \
+                    and norms[p.start_tok - 2:p.start_tok] == ("for", "the"):
+                # "they're using the bank as the shelter for the hotel guests": whom it is for, not where
+                places[idx] = replace(p, status="reference", reason=f"modifier of '{toks.tokens[p.end_tok].text}'")
         starts = self._false_starts(toks, {i for p in places for i in range(p.start_tok, p.end_tok)})
         for fs in starts:
             nxt = min((p for p in places if p.start_tok >= fs.end_tok and p.start_tok - fs.end_tok <= 3),
@@ -2704,6 +2708,8 @@ class ReportAnalyzer:
         if j < 0:
             return False
         w = norms[j]
+        if w in lx.STRUCTURE_WORDS:
+            return False  # "the access ladder's collapsed": a ladder, not a ladder crew
         if w in lx.LAY_PERSONS or w in lx.WORKER_PERSONS or w in lx.PERSON_NOUNS or w in lx.CREW_NOUNS \
                 or w in ("we", "they", "i", "he", "she", "hes", "shes", "him", "her"):
             return True
@@ -2914,9 +2920,14 @@ class ReportAnalyzer:
                     and norms[j - 1] in lx.PERSON_INTRODUCERS:
                 j -= 1  # "a forklift driver", "one delivery driver"
             introduced = j >= 0 and (norms[j] in lx.PERSON_INTRODUCERS or norms[j].isdigit() or norms[j] in lx.NUMBER_WORDS)
+            k = i + 1
+            if not introduced and i > 0 and norms[i - 1] == "the" and w in norms[:i - 1] \
+                    and toks.tokens[i].text.lower().endswith(("'s", "’s")):
+                # "an injured man at the water tower? -- no, ... the man's at the water tower": the one spoken of,
+                # placed again
+                introduced = True
             if not introduced and w not in ("someone", "somebody"):
                 continue
-            k = i + 1
             if norms[k : k + 1] == ("of",) and k + 1 < len(norms) and (norms[k + 1].isdigit() or norms[k + 1] in lx.NUMBER_WORDS):
                 k += 2  # "a family of five up on the gantry"
             if norms[k : k + 1] == ("and",) and k + 3 < len(norms) and norms[k + 1] in lx.PERSON_INTRODUCERS | lx.NUMBER_WORDS \
@@ -2928,8 +2939,8 @@ class ReportAnalyzer:
             if k >= len(norms) or norms[k] not in lx.PERSON_SITUATIONS or toks.clause_start[k] \
                     or worker and norms[k] not in lx.PINNED_SITUATIONS:
                 continue
-            if any(norms[m] in lx.NEGATORS for m in range(max(0, j - 2), i)):
-                continue  # "no one at the window" is handled as a negation elsewhere
+            if any(norms[m] in lx.NEGATORS and not toks.clause_start[m + 1] for m in range(max(0, j - 2), i)):
+                continue  # "no one at the window" is handled as a negation elsewhere (not "no, the man's at ...")
             t0, t1 = toks.tokens[i], toks.tokens[k]
             out.append(CueMention(i, k + 1, t0.start, t1.end, toks.text[t0.start:t1.end], cat, "lexicon",
                                   reason="a person placed at the scene"))
@@ -3902,6 +3913,10 @@ class ReportAnalyzer:
                 # "Caller B said the gym was empty. Turns out nobody was in there": the place of the sentence before
                 before = [p for p in ex.places if p.status == "active" and p.end_tok <= i
                           and toks.sentence_of[p.start_tok] == toks.sentence_of[i] - 1]
+            said = [p for p in ex.places if p.end_tok <= i and toks.sentence_of[p.start_tok] == toks.sentence_of[i]]
+            if before and said and max(said, key=lambda p: p.end_tok).status in ("negated", "retracted") \
+                    and max(said, key=lambda p: p.end_tok).end_tok > max(before, key=lambda p: p.end_tok).end_tok:
+                continue  # "scrap the library, they've all walked out of there unhurt": of the place taken back
             if before:
                 out.append((max(before, key=lambda p: p.end_tok).landmark, i))
         return out

@@ -596,7 +596,8 @@ LOCK_CUES = {("locked",), ("padlocked",), ("chained",), ("chained", "shut"), ("l
 # Parts of a structure that can be the subject of "collapsed" (no person is).
 STRUCTURE_WORDS = {"stair", "stairs", "staircase", "stairwell", "scaffold", "scaffolding", "structure", "section",
                    "building", "fence", "canopy", "stand", "bridge", "balcony", "shelf", "shelving", "racking",
-                   "tunnel", "shaft", "mezzanine", "platform", "awning", "shed", "barn", "enclosure", "gantry"}
+                   "tunnel", "shaft", "mezzanine", "platform", "awning", "shed", "barn", "enclosure", "gantry",
+                   "ladder", "steps", "walkway", "roof", "ceiling", "floor", "wall", "chimney", "crane", "mast"}
 PERSON_STATE_CUES = {("collapsed",), ("collapse",), ("collapsing",), ("burned",), ("burnt",), ("burned", "out"),
                      ("fallen", "in"), ("fell", "in"), ("slipped", "in")}
 
@@ -793,3 +794,7 @@ PLAN_WORDS = {"to", "will", "ll", "cant", "cannot", "must", "should", "could", "
 # Words after which a one-word landmark name is a verb: "don't park anything round there".
 MODAL_BEFORE_VERB = {"dont", "do", "cant", "cannot", "can", "will", "wont", "ll", "should", "must", "please", "didnt",
                      "doesnt", "shouldnt", "couldnt", "could", "would", "wouldnt", "never"}
+
+# People named by the place they belong to ("the hotel guests"): after "for the", whom a place serves.
+PEOPLE_OF_PLACE = {"guests", "guest", "residents", "resident", "staff", "customers", "visitors", "tenants", "pupils",
+                   "kids", "children", "patients", "people", "folk", "lot", "families"}
