@@ -1458,3 +1458,15 @@ def test_sorry_the_place_repaired_away_is_empty(analyzer, text, expected):
 ])
 def test_discourse_people_and_things(analyzer, text, expected):
     assert claims(analyzer, text) == expected
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    # a read-back answered "no, no" item by item: the item said to be right stands
+    ("Control: so that's smoke at the cafe, a man hurt at the bank, and the school flooded, yeah? Caller: no, no, the "
+     "man's hurt at the credit union, that's right, but it's not the cafe with the smoke, it's the hotel. School's "
+     "right.", [("bank", "victim"), ("hotel", "hazard"), ("school", "hazard")]),
+    # "right next to it" confirms nothing
+    ("fire at the bank, no, the school. the bank is right next to it.", [("school", "hazard")]),
+])
+def test_a_read_back_item_confirmed(analyzer, text, expected):
+    assert claims(analyzer, text) == expected

@@ -566,6 +566,7 @@ class ReportAnalyzer:
         self._apply_restarts(ex)
         self._apply_place_repairs(ex)
         self._apply_trailing_repairs(ex)
+        self._apply_confirmations(ex, norms)
         self._apply_transit(ex)
         ex.places.sort(key=lambda p: p.start_tok)
         return ex
@@ -2494,6 +2495,25 @@ class ReportAnalyzer:
                 continue
             out.append(c)
         return out
+
+    @staticmethod
+    def _apply_confirmations(ex: Extraction, norms: tuple[str, ...]) -> None:
+        """"so that's ... and the police station flooded, yeah? -- no, no, the hurt one's at the grocer's ...
+        Police station's right.": a place said to be right, later, takes back the repair that retracted it."""
+        toks = ex.tokens
+        for p in list(ex.places):
+            if p.status != "active":
+                continue
+            i = p.end_tok
+            while i < len(norms) and i - p.end_tok < 2 and norms[i] in ("s", "is", "was"):
+                i += 1
+            if i >= len(norms) or norms[i] not in ("right", "correct") or i > p.end_tok and toks.clause_start[i] \
+                    or not (i + 1 >= len(norms) or toks.clause_start[i + 1]):
+                continue
+            earlier = [q for q in ex.places if q.landmark == p.landmark and q.start_tok < p.start_tok
+                       and q.status == "retracted" and q.reason.startswith("self-repair")]
+            for q in earlier:
+                ex.places[ex.places.index(q)] = replace(q, status="active", reason=f"confirmed by '{p.text} right'")
 
     @staticmethod
     def _replaced_chain(ex: Extraction, p: PlaceMention) -> set[str]:
