@@ -1470,3 +1470,14 @@ def test_discourse_people_and_things(analyzer, text, expected):
 ])
 def test_a_read_back_item_confirmed(analyzer, text, expected):
     assert claims(analyzer, text) == expected
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    # a casualty placed by the next sentence's "that's at the X"
+    ("there's a lady who can't get up off the floor, she's broken her hip. that's at the inn.", [("hotel", "victim")]),
+    # ... or by an "it's the X" after an aside in the sentence after
+    ("a man who can't get out of his car. um, sorry, I keep saying bus depot, it's the bus station, same place.",
+     [("bus station", "victim")]),
+])
+def test_a_casualty_placed_by_thats_at(analyzer, text, expected):
+    assert claims(analyzer, text) == expected

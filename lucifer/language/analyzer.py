@@ -4097,11 +4097,17 @@ class ReportAnalyzer:
                 continue
             if seg_cues.get(j):
                 return None
+            if seg_places.get(j) and all(q.status == "retracted" for q in seg_places[j]):
+                continue  # ("I keep saying bus depot, it's the bus station": past the name taken back)
             if seg_places.get(j):
                 start = next(i for i in range(segs[j][0], -1, -1) if i == 0 or sentence_of[i - 1] != n)
                 words = [w for w in norms[start:segs[j][1]] if w not in lx.FILLERS]
                 said_alone = sent_words.get(n, 99) <= 3
-                named = words[:2] in (["it", "is"], ["this", "is"]) or words[:1] in (["its"], ["thats"])
+                own = [w for w in norms[segs[j][0]:segs[j][1]] if w not in lx.FILLERS]
+                named = words[:2] in (["it", "is"], ["this", "is"]) or words[:1] in (["its"], ["thats"]) \
+                    or own[:2] == ["its", "the"] \
+                    or words[:2] in (["that", "at"], ["that", "in"], ["thats", "at"], ["thats", "in"])
+                # ("sorry, I keep saying guest house, it's the hotel"; "That's at the guest house.")
                 who = next((i for i, w in enumerate(words[:6]) if w in lx.PERSON_SUBJECTS), None)
                 placed = person and who is not None and any(
                     w in lx.POSITION_PREPS or w in ("inside", "lying", "sitting", "lies") for w in words[who + 1:who + 5])

@@ -127,6 +127,7 @@ live find|a live find|indicating a find|can't get down|cannot get down|can't get
 cut his hand|cut his head|cut her head|badly cut|bleeding heavily|can't get the doors open|can't get the door open|
 cannot stand up|can't stand up|can't walk|cannot walk|fell over|has fallen over|he fell|she fell|
 he fall|she fall|frostbite|frostbitten|frostbite case|is lost|he's lost|she's lost|got lost|lost child|lost kid|gone missing|has gone missing|is sick|are sick|sick inside|feeling sick|being sick|vomiting|throwing up|taken ill|feeling ill|
+broken his hip|broken her hip|broken his leg|broken her leg|broken his arm|broken her arm|broke his leg|broke her leg|
 waving out the window|waving out of the window|waving out of windows|waving from the window|
 not come out|hasn't come out|has not come out|didn't come out|never came out|not come back out|hasn't come back out|
 been knocked down|got knocked down|knocked off her bike|knocked off his bike|was knocked down|knocked over by|been hit by|was hit by|got hit by|hit by a|
