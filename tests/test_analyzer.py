@@ -1481,3 +1481,15 @@ def test_a_read_back_item_confirmed(analyzer, text, expected):
 ])
 def test_a_casualty_placed_by_thats_at(analyzer, text, expected):
     assert claims(analyzer, text) == expected
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    # "..., sorry." closing a repair apologises; the next sentence's place is no repair
+    ("smoke coming out of the bank, no wait, not the bank, it's the cafe, sorry. I walked past the bank earlier. the "
+     "smoke at the cafe's getting worse", [("cafe", "hazard")]),
+    # a casualty "in there" after a place just denied and one named is at the one named
+    ("the chemist's not flooded its the clinic next to it thats got water coming in and theres a woman on the floor in "
+     "there shes hurt", [("clinic", "hazard"), ("clinic", "victim")]),
+])
+def test_apology_closing_a_repair_and_in_there(analyzer, text, expected):
+    assert claims(analyzer, text) == expected

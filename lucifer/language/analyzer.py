@@ -2344,6 +2344,12 @@ class ReportAnalyzer:
                 continue
             if b < len(norms) and norms[b] in lx.COORDINATORS and any(p.end_tok == a for p in ex.places):
                 continue  # "in the coffee shop I mean, and the church ...": the marker closed its own repair
+            if not _strong and (b >= len(norms) or toks.sentence_start[b]) and any(
+                    p.end_tok == a and any(q.status in ("negated", "retracted") and q.landmark != p.landmark
+                                           and toks.sentence_of[q.start_tok] == toks.sentence_of[a] and q.end_tok <= p.start_tok
+                                           for q in ex.places) for p in ex.places):
+                continue  # "no wait, not the bank, it's the hotel, sorry. I did the bank ...": an apology that closes
+                # the repair before it
             b, end = self._after_clause(ex, k)
             after = [p for p in ex.places if b <= p.start_tok < end and p.status in ("active", "negated")]
             if not after:
@@ -3666,9 +3672,14 @@ class ReportAnalyzer:
                         and any(q.status == "active" for q in seg_usable.get(back, [])) and not seg_cues.get(back):
                     target = back
             if target is not None:
+                denied_at = {bound[c.start_tok].start_tok for c in cues if c.polarity == "denied" and c.start_tok in bound}
                 for q in seg_usable[target]:
                     if len(seg_usable[target]) > 1 and self._origin(norms, q):
                         continue
+                    if q.start_tok in denied_at and any(r.start_tok not in denied_at and r.status == "active"
+                                                        for r in seg_usable[target]):
+                        continue  # "the tool shop's not on fire it's the mechanics ... and there's a guy under a car in
+                        # there": the place just denied is not the one talked about
                     fq = forward(q)
                     if fq is not None:
                         pairs.extend(Claim(fq, c) for c in cs)
