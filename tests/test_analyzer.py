@@ -1493,3 +1493,18 @@ def test_a_casualty_placed_by_thats_at(analyzer, text, expected):
 ])
 def test_apology_closing_a_repair_and_in_there(analyzer, text, expected):
     assert claims(analyzer, text) == expected
+
+
+@pytest.mark.parametrize(("kb", "text", "expected"), [
+    # words for a relation the KB names otherwise, told apart by meaning among the anchor's relations
+    ("lakeside_campground", "Smoke from the row of cabins that carries on from the A row.",
+     [("cabin row B", "fire_and_smoke")]),
+    # a particle and its preposition belong to the relation ("looks down on")
+    ("seaside_pier", "the wall sheltering the walk the hotel looks down on has a breach in it",
+     [("sea wall", "surge_structural")]),
+    # "right under it" says only where: no relation is guessed
+    ("housing_estate", "a lad trapped under the fence at the ball court, his leg's stuck right under it",
+     [("ball court", "victim")]),
+])
+def test_relations_by_meaning(kb_analyzers, kb, text, expected):
+    assert claims(kb_analyzers[kb], text) == expected

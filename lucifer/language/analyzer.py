@@ -460,6 +460,9 @@ class ReportAnalyzer:
                     break
                 if norms[j] in lx.RELATION_ENDINGS | {"into", "by"}:
                     b = j + 1
+                    if b < len(norms) and norms[j] in ("on", "up", "down", "out", "off", "over") \
+                            and norms[b] in ("from", "to", "of", "onto", "with") and not toks.clause_start[b]:
+                        b += 1  # "carries on from", "looks out over", "climbs up to": the particle and its preposition
                     break
             a = t
             while a > 0 and t - a < 8 and not toks.clause_start[a] and (a - 1) not in taken | known | cue_tokens:
@@ -1504,6 +1507,17 @@ class ReportAnalyzer:
             if before:
                 anchor = max(before, key=lambda p: p.end_tok)
         if head_place is not None and anchor is not None and head_place.end_tok - head_place.start_tok == 1 \
+                and norms[head_place.start_tok] in self._head_groups() and not head_place.reason \
+                and head_place.landmark in self._head_groups()[norms[head_place.start_tok]]:
+            # "the row of cabins that carries on from the A row": a head word several names share heads the
+            # description; the relation, not a guess between the names, says which
+            tgt = self._follow(anchor.landmark, phrase, "", inverse=flipped)[0] \
+                or self._follow_by_meaning(anchor.landmark, toks, a, b, inverse=flipped)[0]
+            if tgt is not None and tgt in self._head_groups()[norms[head_place.start_tok]]:
+                ex.places.remove(head_place)
+                place_tokens.difference_update(range(head_place.start_tok, head_place.end_tok))
+                head_place = None
+        if head_place is not None and anchor is not None and head_place.end_tok - head_place.start_tok == 1 \
                 and norms[head_place.start_tok] in lx.GENERIC_HEADS \
                 and toks.tokens[head_place.start_tok].text.lower() not in {
                     f.lower() for f in self.kb.landmark_by_name[head_place.landmark].surface_forms} \
@@ -1548,6 +1562,8 @@ class ReportAnalyzer:
             head_words = " ".join(toks.tokens[j].text for j in range(hs, min(anchor_p.start_tok, a)))
             target, via = self._follow(anchor_p.landmark, phrase, head_words, inverse=not flipped)
             if target is None:
+                target, via = self._follow_by_meaning(anchor_p.landmark, toks, a, b, inverse=not flipped)
+            if target is None:
                 return
             if named != "pronoun":
                 ex.places[ex.places.index(anchor_p)] = replace(anchor_p, status="reference",
@@ -1576,6 +1592,8 @@ class ReportAnalyzer:
                 return
             head_start, head_text = a, ""
         target, via = self._follow(anchor.landmark, phrase, head_text, inverse=flipped)
+        if target is None and (generic or pronoun):
+            target, via = self._follow_by_meaning(anchor.landmark, toks, a, b, inverse=flipped)
         if not pronoun:
             idx = ex.places.index(anchor)
             if target is None:
@@ -1615,6 +1633,37 @@ class ReportAnalyzer:
                                 if not anchor.start_tok <= i < anchor.end_tok):
                 ex.places[ex.places.index(anchor)] = replace(anchor, status="reference",
                                                              reason=f"reference point: {via}")
+
+    RELATION_MEANING_MIN = 0.55
+    RELATION_MEANING_MARGIN = 0.1
+
+    def _follow_by_meaning(self, anchor: str, toks: Tokens, a: int, b: int,
+                           inverse: bool) -> tuple[str | None, str | None]:
+        """The words said for a relation found none of the KB's from ``anchor``: of the relations ``anchor``
+        takes part in, on the side the description reads, the one MiniLM puts closest to the words said
+        ("the row of cabins that carries on from the A row" for ``cabin row B runs_on_from cabin row A``),
+        if close enough and clearly closer than the next."""
+        if self.embedder is None:
+            return None, None
+        words = [t.text for t in toks.tokens[a:b]]
+        rel_start = max((i + 1 for i, w in enumerate(words) if w.lower() in ("that", "which", "where")), default=0)
+        said = " ".join(words[rel_start:])  # ("of cabins that carries on from": the relation's own words)
+        spatial = lx.PREPOSITIONS | set(lx.RELATION_ADVERBS) | lx.SPATIAL_WORDS | lx.PRONOUNS | lx.FILLERS
+        if not any(len(w) >= 4 and w.isalpha() and w.lower() not in spatial for w in words[rel_start:]):
+            return None, None  # ("right under it": only where, no verb for MiniLM to tell relations apart by)
+        cands = [(rel.subject if not inverse else rel.object, rel) for rel in self.kb.relations
+                 if (rel.object if not inverse else rel.subject) == anchor]
+        if not cands:
+            return None, None
+        vecs = self.embedder.embed([said] + [rel.phrase for _, rel in cands])
+        sims = vecs[1:] @ vecs[0]
+        order = np.argsort(-sims)
+        best = float(sims[order[0]])
+        runner = float(sims[order[1]]) if len(order) > 1 and cands[order[1]][0] != cands[order[0]][0] else 0.0
+        if best < self.RELATION_MEANING_MIN or best - runner < self.RELATION_MEANING_MARGIN:
+            return None, None
+        target, rel = cands[int(order[0])]
+        return target, f"{rel.subject} {rel.relation} {rel.object} (by meaning {best:.2f})"
 
     def _description_words(self) -> dict[str, set[str]]:
         """Per landmark, the content words of its description, name and aliases."""

@@ -799,3 +799,9 @@ MODAL_BEFORE_VERB = {"dont", "do", "cant", "cannot", "can", "will", "wont", "ll"
 # People named by the place they belong to ("the hotel guests"): after "for the", whom a place serves.
 PEOPLE_OF_PLACE = {"guests", "guest", "residents", "resident", "staff", "customers", "visitors", "tenants", "pupils",
                    "kids", "children", "patients", "people", "folk", "lot", "families"}
+
+# Words that say only where something is, no verb a relation could be told apart by ("right under it").
+SPATIAL_WORDS = {"under", "over", "behind", "beside", "besides", "across", "around", "along", "between", "beneath",
+                 "underneath", "above", "below", "next", "near", "nearby", "inside", "outside", "front", "back",
+                 "opposite", "round", "past", "beyond", "toward", "towards", "close", "side", "down", "up",
+                 "from", "onto", "into", "just", "right", "directly", "immediately", "straight"}
