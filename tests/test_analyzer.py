@@ -1508,3 +1508,13 @@ def test_apology_closing_a_repair_and_in_there(analyzer, text, expected):
 ])
 def test_relations_by_meaning(kb_analyzers, kb, text, expected):
     assert claims(kb_analyzers[kb], text) == expected
+
+
+@pytest.mark.parametrize(("kb", "text", "expected"), [
+    # "somebody's left a van ...": left something, nobody left behind
+    ("housing_estate", "at the lock-ups somebody's left a van across the way in and the engines can't get round.",
+     [("garages", "blocked")]),
+    ("road_tunnel", "the control room has two staff cut by flying glass.", [("control centre", "trapped_or_injured")]),
+])
+def test_left_a_van_and_cut_by_glass(kb_analyzers, kb, text, expected):
+    assert claims(kb_analyzers[kb], text) == expected

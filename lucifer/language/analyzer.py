@@ -3014,6 +3014,8 @@ class ReportAnalyzer:
             if k >= len(norms) or norms[k] not in lx.PERSON_SITUATIONS or toks.clause_start[k] \
                     or worker and norms[k] not in lx.PINNED_SITUATIONS:
                 continue
+            if norms[k] == "left" and k + 1 < len(norms) and norms[k + 1] in lx.ARTICLES | {"his", "her", "their", "it", "them"}:
+                continue  # "somebody's left a van right across the entrance": left something, not left behind
             if any(norms[m] in lx.NEGATORS and not toks.clause_start[m + 1] for m in range(max(0, j - 2), i)):
                 continue  # "no one at the window" is handled as a negation elsewhere (not "no, the man's at ...")
             t0, t1 = toks.tokens[i], toks.tokens[k]

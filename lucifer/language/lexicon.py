@@ -56,7 +56,7 @@ bowing out|bowing|bulging|bulge|water coming over|coming over the|ripping throug
 floor's gone|floor has gone|floor's gone through|gone through the floor|sinking|subsiding|subsidence|cracked right across|
 a crack|crack right across|cracks|venting|hissing|gas bottles|leaking fuel|diesel slick|slick|fuel slick|
 jammed shut|jammed|locked|padlocked|chained|chained shut|can't get in|cannot get in|can't get into|cannot get into|
-can't get through|cannot get through|can't get along|cannot get along|can't get at|can't be got at|
+can't get through|cannot get through|can't get round|cannot get round|can't get past|cannot get past|can't get along|cannot get along|can't get at|can't be got at|
 no access|no vehicle access|no way in|no way through|no way onto|no way out|inaccessible|not passable|
 no through route|piled across|right across it|lying across|come down across|came down across|
 blocking|blocks the|blocked off|cordoned off|shed its load|gridlocked|choked with|full of parked cars|
@@ -127,6 +127,7 @@ live find|a live find|indicating a find|can't get down|cannot get down|can't get
 cut his hand|cut his head|cut her head|badly cut|bleeding heavily|can't get the doors open|can't get the door open|
 cannot stand up|can't stand up|can't walk|cannot walk|fell over|has fallen over|he fell|she fell|
 he fall|she fall|frostbite|frostbitten|frostbite case|is lost|he's lost|she's lost|got lost|lost child|lost kid|gone missing|has gone missing|is sick|are sick|sick inside|feeling sick|being sick|vomiting|throwing up|taken ill|feeling ill|
+cut by flying glass|cut by glass|cut by falling glass|hit by flying glass|hit by debris|hit by falling debris|
 broken his hip|broken her hip|broken his leg|broken her leg|broken his arm|broken her arm|broke his leg|broke her leg|
 waving out the window|waving out of the window|waving out of windows|waving from the window|
 not come out|hasn't come out|has not come out|didn't come out|never came out|not come back out|hasn't come back out|
