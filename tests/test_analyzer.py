@@ -1518,3 +1518,8 @@ def test_relations_by_meaning(kb_analyzers, kb, text, expected):
 ])
 def test_left_a_van_and_cut_by_glass(kb_analyzers, kb, text, expected):
     assert claims(kb_analyzers[kb], text) == expected
+
+
+def test_an_adverb_between_a_cue_and_its_relation(analyzer):
+    assert claims(analyzer, "The injured lad's actually round the back of the hardware store, by the ramps.") == [
+        ("garage", "victim")]

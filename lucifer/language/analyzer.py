@@ -1587,6 +1587,11 @@ class ReportAnalyzer:
                 return
             participle = head_end > 1 and norms[head_end - 1].endswith(("ed", "ing")) \
                 and self._is_cue_end(norms, head_end - 1)  # "Live conductor exposed behind the medical centre"
+            cue_end = head_end
+            while cue_end > 0 and head_end - cue_end < 2 and norms[cue_end - 1] in lx.SENTENCE_ADVERBS:
+                cue_end -= 1  # "our casualty's actually round the back of the hardware store"
+            if cue_end < head_end and cue_end > 0 and self._is_cue_end(norms, cue_end):
+                words = []
             if norms[a:b] in lx.AMBIGUOUS_HEADLESS or (words and not self._is_cue_end(norms, head_end) and not participle
                                                        and not set(words) <= lx.HEADLESS_OK):
                 return

@@ -806,3 +806,7 @@ SPATIAL_WORDS = {"under", "over", "behind", "beside", "besides", "across", "arou
                  "underneath", "above", "below", "next", "near", "nearby", "inside", "outside", "front", "back",
                  "opposite", "round", "past", "beyond", "toward", "towards", "close", "side", "down", "up",
                  "from", "onto", "into", "just", "right", "directly", "immediately", "straight"}
+
+# Adverbs that may stand between a cue and the relation that places it ("casualty's actually round the back of").
+SENTENCE_ADVERBS = {"actually", "really", "still", "now", "definitely", "probably", "apparently", "honestly", "just",
+                    "also"}
