@@ -1521,5 +1521,6 @@ def test_left_a_van_and_cut_by_glass(kb_analyzers, kb, text, expected):
 
 
 def test_an_adverb_between_a_cue_and_its_relation(analyzer):
-    assert claims(analyzer, "The injured lad's actually round the back of the hardware store, by the ramps.") == [
+    assert claims(analyzer, "The casualty's actually round the back of the hardware store, by the ramps.") == [
         ("garage", "victim")]
+    assert claims(analyzer, "there's a casualty still round the back of the hardware store") == [("garage", "victim")]
