@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev22) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev23) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -39,6 +39,7 @@ CAMPUS = ROOT / "knowledge_bases" / "university_campus"
 RAILWAY = ROOT / "knowledge_bases" / "mountain_railway"
 CANAL = ROOT / "knowledge_bases" / "canal_wharf"
 HOUSING = ROOT / "knowledge_bases" / "housing_estate"
+COASTAL = ROOT / "knowledge_bases" / "coastal_village"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -135,6 +136,9 @@ SETS = {
                               {"standard": 25, "messy": 30, "advanced_messy": 35}),
     "dev22/housing_estate": _set("dev22/housing_estate.jsonl", HOUSING, "he",
                                  {"standard": 20, "messy": 45, "advanced_messy": 25}),
+    "dev23/market_square": _set("dev23/market_square.jsonl", MARKET_SQUARE, "d23",
+                                {"standard": 10, "messy": 50, "advanced_messy": 40}, sep=""),
+    "dev23/coastal_village": _set("dev23/coastal_village.jsonl", COASTAL, "cv", THIRTY),
 }
 
 
