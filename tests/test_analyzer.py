@@ -1524,3 +1524,14 @@ def test_an_adverb_between_a_cue_and_its_relation(analyzer):
     assert claims(analyzer, "The casualty's actually round the back of the hardware store, by the ramps.") == [
         ("garage", "victim")]
     assert claims(analyzer, "there's a casualty still round the back of the hardware store") == [("garage", "victim")]
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    ("The gardens are flooded, the pond's gone over its banks.", [("park", "hazard")]),
+    ("The casualty at the garage and the fire at the warehouse were both part of a drill.", []),
+    # the person spoken of before is fine now: the casualty at the place where he was is withdrawn
+    ("A lady fell in the library, she's hurt, and there's smoke at the cafe. Sorry, the lady's fine now, she's up and "
+     "walking.", [("cafe", "hazard")]),
+])
+def test_its_banks_drills_and_a_person_fine_now(analyzer, text, expected):
+    assert claims(analyzer, text) == expected

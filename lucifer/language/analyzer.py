@@ -532,6 +532,10 @@ class ReportAnalyzer:
                 continue  # "it's flat and it's clear": a predicate, not the landmark the KB calls "flats"
             if b - a == 1 and prev in lx.MODAL_BEFORE_VERB and not (a > 0 and toks.clause_start[a]):
                 continue  # "don't park anything round there": the word as a verb
+            if b - a == 1 and a > 0 and toks.tokens[a - 1].text.lower() in ("its", "their", "his", "her") \
+                    and toks.tokens[a].text.lower().endswith("s") and not any(
+                        f.lower().endswith("s") for f in self.kb.landmark_by_name[landmark].surface_forms):
+                continue  # "the pond's over its banks": a thing of its own, not the landmark
             places.append(self._mention(toks, a, b, landmark))
         places.extend(self._partial_names(toks, norms, {i for p in places for i in range(p.start_tok, p.end_tok)}))
         places.extend(self._head_names(toks, norms, {i for p in places for i in range(p.start_tok, p.end_tok)},
@@ -4000,6 +4004,17 @@ class ReportAnalyzer:
                 # "Caller B said the gym was empty. Turns out nobody was in there": the place of the sentence before
                 before = [p for p in ex.places if p.status == "active" and p.end_tok <= i
                           and toks.sentence_of[p.start_tok] == toks.sentence_of[i] - 1]
+            if not before:
+                # "We had a gentleman fall in the chapel, he's hurt ... the gentleman's fine now, he's up and walking":
+                # the person spoken of before, at the place of the sentence that spoke of him
+                sent = toks.sentence_of[i]
+                who = next((j for j in range(i - 1, -1, -1) if toks.sentence_of[j] == sent and j > 0
+                            and norms[j - 1] == "the" and (norms[j] in lx.LAY_PERSONS or norms[j] in lx.PERSON_NOUNS)
+                            and norms[j] in norms[:j - 1]), None)
+                if who is not None:
+                    first = norms.index(norms[who])
+                    before = [p for p in ex.places if p.status == "active" and p.start_tok > first
+                              and toks.sentence_of[p.start_tok] == toks.sentence_of[first]][:1]
             said = [p for p in ex.places if p.end_tok <= i and toks.sentence_of[p.start_tok] == toks.sentence_of[i]]
             if before and said and max(said, key=lambda p: p.end_tok).status in ("negated", "retracted") \
                     and max(said, key=lambda p: p.end_tok).end_tok > max(before, key=lambda p: p.end_tok).end_tok:

@@ -178,6 +178,8 @@ CANCEL_AFTER = ["is out", "s out", "are out", "was out", "put out", "out now", "
                 "knocked it down", "put that out", "put it out", "got that out",
                 "he's been found", "she's been found", "they've been found",
                 "walked out", "she's out", "he's out", "they're out", "she's okay", "he's okay", "they're okay",
+                "she's fine now", "he's fine now", "they're fine now", "up and walking", "back on his feet",
+                "back on her feet",
                 "carried away", "been carried away", "been moved", "moved away",
                 "empty"]
 # ... of which these, said a few words after a place named again, end its danger ("the warehouse, oh, they've
@@ -206,7 +208,9 @@ CANCEL_PEOPLE_ONLY = {"all rescued", "rescued", "evacuated", "got out", "out saf
                       "walked off", "empty", "nobody in", "no one in",
                       "nobody was inside", "no one was inside", "found her", "found him", "found them",
                       "found safe", "walked out", "she's out", "he's out", "they're out", "she's okay", "he's okay",
-                      "they're okay", "carried away", "been carried away", "been moved", "moved away"} | {
+                      "they're okay", "carried away", "been carried away", "been moved", "moved away",
+                      "she's fine now", "he's fine now", "they're fine now", "up and walking", "back on his feet",
+                      "back on her feet"} | {
                       f"{verb} {who} out" for verb in ("got", "gotten", "taken", "took", "pulled", "brought")
                       for who in ("him", "her", "them", "everyone", "everybody", "all of them", "the casualty")}
 
@@ -243,7 +247,9 @@ FALSE_ALARM = ["false alarm", "never mind", "nevermind", "disregard my last", "d
                "disregard my last message", "disregard previous", "disregard my earlier report",
                "ignore my earlier report", "disregard the earlier report", "were wrong", "were unfounded",
                "was unfounded", "were false", "are false", "are wrong", "are unfounded", "was false",
-               "is false", "are untrue", "were untrue", "turned out to be false", "turned out to be wrong"]
+               "is false", "are untrue", "were untrue", "turned out to be false", "turned out to be wrong",
+               "part of a drill", "part of the drill", "just a drill", "only a drill", "part of the exercise",
+               "part of an exercise", "just an exercise", "only an exercise"]
 # ... of which these withdraw an earlier report: only what comes before them in the sentence is denied
 PREVIOUS_REPORT_WITHDRAWN = {"disregard my last", "disregard the last report", "ignore my last", "cancel my last",
                              "disregard my last message", "disregard previous", "never mind", "nevermind"}
