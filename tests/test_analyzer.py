@@ -1535,3 +1535,8 @@ def test_an_adverb_between_a_cue_and_its_relation(analyzer):
 ])
 def test_its_banks_drills_and_a_person_fine_now(analyzer, text, expected):
     assert claims(analyzer, text) == expected
+
+
+def test_a_dropped_g_is_respelled(analyzer):
+    assert claims(analyzer, "the bakery's still burnin'.") == [("bakery", "hazard")]
+    assert analyzer.tokens("still burnin' hot").norms(0, 3) == ("still", "burning", "hot")

@@ -35,6 +35,13 @@ async def test_spec_examples():
         assert res.report[res.objects[0].span.start : res.objects[0].span.end] == "the shop attached to the bakery"
 
 
+async def test_the_classify_node_reads_the_respelled_tokens():
+    # the extract node respells slips ("burnin'" is "burning"); the classify node, rebuilding the extraction
+    # from the graph state, must read the same tokens, or the cue is lost between the nodes
+    async with Grounder(KB) as g:
+        assert _pairs(await g.ground("the church is fine but the bakery's still burnin'.")) == [("bakery", "hazard")]
+
+
 async def test_list_anaphora_survive_the_graph_state():
     # the extract node hands its places to the classify node through the (serialised) graph state:
     # what an anaphor names ("both of them", "the former") must come through it whole

@@ -489,6 +489,11 @@ class ReportAnalyzer:
         return out
 
     # ------------------------------------------------------------------ extract
+    def tokens(self, text: str) -> Tokens:
+        """The report's tokens as the analyzer reads them: slips of the words it knows respelled."""
+        with self._call_lock:
+            return self._respell(tokenize(text))
+
     def extract(self, text: str) -> Extraction:
         """Place mentions with their status, and the repair markers (thread-safe)."""
         with self._call_lock:
@@ -994,6 +999,10 @@ class ReportAnalyzer:
         fixed = list(toks.tokens)
         for t in toks.tokens:
             w = t.norm
+            if w.endswith("in") and len(w) >= 5 \
+                    and toks.text[t.end:t.end + 1] in ("'", "’") and not toks.text[t.end + 1:t.end + 2].isalpha():
+                fixed[t.i] = replace(t, norm=w + "g")  # "yon fuel store's still burnin'": a dropped g
+                continue
             if w == "too" and t.i > 0 and fixed[t.i - 1].norm in self._to_after and not toks.clause_start[t.i]:
                 fixed[t.i] = replace(t, norm="to")  # "the building next too the clinic"
                 continue

@@ -18,8 +18,8 @@ from lucifer.graphs.grounding.prompts import RETRY_PROMPT, SYSTEM_PROMPT, USER_P
 from lucifer.graphs.grounding.resources import GroundingResources
 from lucifer.graphs.grounding.state import GroundingState
 from lucifer.graphs.grounding.tools import TOOL_NAME, ReportObjects
-from lucifer.language.analyzer import CueMention, Extraction, PlaceMention
-from lucifer.language.text import name_words, tokenize
+from lucifer.language.analyzer import CueMention, Extraction, PlaceMention, ReportAnalyzer
+from lucifer.language.text import name_words
 from lucifer.types import Status
 
 LLM_CONTEXT_DOCS = 8  # retrieved KB documents shown to a chat model (small local models are slow readers)
@@ -35,12 +35,13 @@ def _step(node: str, t0: float, inp: dict[str, Any], out: dict[str, Any]) -> lis
     return [{"node": node, "ms": round((time.perf_counter() - t0) * 1000, 2), "input": inp, "output": out}]
 
 
-def _extraction(state: GroundingState) -> Extraction:
-    """Rebuild the analyzer's extraction from the (serialisable) state."""
+def _extraction(state: GroundingState, analyzer: ReportAnalyzer) -> Extraction:
+    """Rebuild the analyzer's extraction from the (serialisable) state, over the tokens the analyzer read
+    (slips respelled: "burnin'" is "burning" to the classifier too)."""
     places = [PlaceMention(**{k: tuple(v) if k == "also" else v for k, v in p.items() if k != "span"})
               for p in state.places]
     markers = [(int(a), int(b), bool(s)) for a, b, s in state.markers]
-    return Extraction(tokenize(state.report), places, markers)
+    return Extraction(analyzer.tokens(state.report), places, markers)
 
 
 # --------------------------------------------------------------------------- retrieve
@@ -173,7 +174,7 @@ async def classify_claims(state: GroundingState, runtime: Runtime[GroundingConte
     """Builtin: cues, negation, category repairs, cue-to-place attachment. LLM: map category names."""
     t0 = time.perf_counter()
     res = _res(runtime)
-    ex = _extraction(state)
+    ex = _extraction(state, res.analyzer)
     cl = res.analyzer.classify(ex)
     update: dict[str, Any] = {"cues": [_cue_dict(c) for c in cl.cues]}
     update["denied_candidates"] = [_claim_dict(c.place, c.cue, "builtin") for c in cl.denied]
@@ -286,7 +287,7 @@ async def fallback_builtin(state: GroundingState, runtime: Runtime[GroundingCont
     """The chat model failed or stayed invalid: return the builtin analysis, with a status."""
     t0 = time.perf_counter()
     res = _res(runtime)
-    cl = res.analyzer.classify(_extraction(state))  # extract_places already ran the builtin analysis
+    cl = res.analyzer.classify(_extraction(state, res.analyzer))  # extract_places already ran the builtin analysis
     objects: dict[tuple[str, str], dict[str, Any]] = {}
     for c in cl.claims:
         objects.setdefault(c.key, _claim_dict(c.place, c.cue, "builtin-fallback") | {"cells": res.kb.cells_of(c.place.landmark)})
