@@ -1540,3 +1540,14 @@ def test_its_banks_drills_and_a_person_fine_now(analyzer, text, expected):
 def test_a_dropped_g_is_respelled(analyzer):
     assert claims(analyzer, "the bakery's still burnin'.") == [("bakery", "hazard")]
     assert analyzer.tokens("still burnin' hot").norms(0, 3) == ("still", "burning", "hot")
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    # "scratch the X" in a later sentence corrects: the next place takes X's claims
+    ("A man's hurt at the bank. Actually, scratch the bank in that, he's at the library.", [("library", "victim")]),
+    # a transcribed sound and a one-word name split in two
+    ("smoke at the farmacy", [("pharmacy", "hazard")]),
+    ("someone collapsed in the super market", [("supermarket", "victim")]),
+])
+def test_scratch_in_a_later_sentence_and_transcribed_names(analyzer, text, expected):
+    assert claims(analyzer, text) == expected

@@ -945,6 +945,10 @@ class ReportAnalyzer:
                 word = "".join(norms[j] for j in span)  # ("hanger two's": the keys drop the "'s")
                 typo = self._typo_of(word, [norms[j] for j in span],
                                      raw=toks.tokens[i].text.lower() if n == 1 else None)
+                if typo is None and n > 1 and word in self._spellings and len(word) >= 8 \
+                        and not any(norms[j] in closed for j in span) and any(
+                            name_words(f) == (word,) for f in self.kb.landmark_by_name[self._spellings[word]].surface_forms):
+                    typo = self._spellings[word]  # "the super market": a one-word name split in two
                 if typo is not None and not all(j in cue_tokens for j in span):
                     # ("the fire staytion": one slipped word keeps the name, a cue word in it or not)
                     if best is None or 0.99 > best[0]:
@@ -1032,6 +1036,12 @@ class ReportAnalyzer:
         hits = {name for key, name in self._typo_spellings.items()
                 if key[0] == word[0] and abs(len(key) - len(word)) <= 1 and _one_edit(word, key)
                 and (raw is None or len(key) >= 5 or raw == word or _one_edit(raw, key))}
+        if not hits:
+            # a transcribed sound: "farmacy" for "pharmacy", "fone" for "phone"
+            sound = word.replace("ph", "f")
+            hits = {name for key, name in self._typo_spellings.items()
+                    if len(key) >= 5 and "ph" in key and (k := key.replace("ph", "f"))[0] == sound[0]
+                    and abs(len(k) - len(sound)) <= 1 and (k == sound or _one_edit(sound, k))}
         # (a short name is one letter from the stem of too many plurals: "sills" is no slip of "silo")
         return next(iter(hits)) if len(hits) == 1 else None
 
@@ -2173,8 +2183,9 @@ class ReportAnalyzer:
                     sent_start = max(t for t in range(0, sent_start) if toks.sentence_start[t])
                 earlier = [q for q in ex.places if q.status == "active" and q.landmark == p.landmark
                            and sent_start <= q.start_tok < p.start_tok]
-                corrects = not earlier and any(i in marker_toks or norms[i] in lx.CORRECTION_WORDS
-                                               for i in range(min(sent_start, max(0, j - 6)), j))
+                corrects = not earlier and (norms[j] in lx.RETRACT_VERBS or any(
+                    i in marker_toks or norms[i] in lx.CORRECTION_WORDS for i in range(min(sent_start, max(0, j - 6)), j)))
+                # ("scratch the clinic in what I said, she's at the police station": a retraction corrects too)
                 nxt = min((q for q in ex.places if q.status == "active" and q.start_tok >= p.end_tok
                            and q.landmark != p.landmark
                            and (q.start_tok - p.end_tok <= 3 or q.start_tok - p.end_tok <= 8 and not any(
