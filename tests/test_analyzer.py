@@ -1551,3 +1551,13 @@ def test_a_dropped_g_is_respelled(analyzer):
 ])
 def test_scratch_in_a_later_sentence_and_transcribed_names(analyzer, text, expected):
     assert claims(analyzer, text) == expected
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    ("The school is flooded. Library as well.", [("library", "hazard"), ("school", "hazard")]),
+    ("Cafe checked, it's safe. Bank too.", [("bank", "safe_zone"), ("cafe", "safe_zone")]),
+    # a place with a claim of its own borrows nothing
+    ("The school is flooded. Library is fine though.", [("school", "hazard")]),
+])
+def test_a_place_said_with_too_takes_the_sentence_before(analyzer, text, expected):
+    assert claims(analyzer, text) == expected

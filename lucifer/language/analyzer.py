@@ -3769,6 +3769,16 @@ class ReportAnalyzer:
         for p in sorted(active, key=lambda p: p.start_tok):
             if p.start_tok in claimed_places:
                 continue
+            n = sentence_of[p.start_tok]
+            rest = [w for i, w in enumerate(norms) if sentence_of[i] == n and not p.start_tok <= i < p.end_tok
+                    and (w not in lx.FILLERS or w == "well") and w not in lx.DETERMINERS]
+            if rest in (["too"], ["also"], ["as", "well"], ["aswell"], ["and", "all"], ["all"]) and n > 0:
+                # "Caravan park evacuated and checked, it's safe. Chapel too.": the sentence before, said of it
+                said = {c.cue.category: c.cue for c in pairs if sentence_of[c.place.start_tok] == n - 1
+                        and c.cue.polarity == "affirmed"}
+                pairs.extend(Claim(p, c) for c in said.values())
+                claimed_places.add(p.start_tok)
+                continue
             k = seg_index[p.start_tok]
             if seg_cues.get(k) and len(seg_places.get(k, [])) == 1 and not any(
                     q.status != "active" for q in seg_usable.get(k, [])):
