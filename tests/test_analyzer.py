@@ -1561,3 +1561,9 @@ def test_scratch_in_a_later_sentence_and_transcribed_names(analyzer, text, expec
 ])
 def test_a_place_said_with_too_takes_the_sentence_before(analyzer, text, expected):
     assert claims(analyzer, text) == expected
+
+
+def test_a_cue_that_goes_on_at_the_names_the_place_after_it(analyzer):
+    # no punctuation: "smoke" follows the bank but goes on "at the" school
+    assert claims(analyzer, "fire in the bank smoke at the school too and the park is safe") == [
+        ("bank", "hazard"), ("park", "safe_zone"), ("school", "hazard")]

@@ -4080,7 +4080,11 @@ class ReportAnalyzer:
             return len(between) - (2.5 if glue and any(w in lx.PREPOSITIONS for w in between) else 0)
         between = norms[p.end_tok : c.start_tok]  # place before cue: "the bakery is on fire"
         glue = all(w in lx.COPULAS or w in lx.FILLERS or w in lx.PREPOSITIONS or w in lx.DETERMINERS or w in lx.PRONOUNS for w in between)
-        return len(between) - (2.0 if glue else 0) + 0.25
+        # ("rockfall on the coast path live ground at the top car park": a cue that goes on "at the" names its
+        # own place after it)
+        onward = 2.0 if norms[c.end_tok:c.end_tok + 1] and norms[c.end_tok] in lx.POSITION_PREPS and not between \
+            and norms[c.end_tok + 1:c.end_tok + 2] in (("the",), ("a",)) else 0.0
+        return len(between) - (2.0 if glue else 0) + 0.25 + onward
 
     @staticmethod
     def _donor_for_places(k: int, segs: list[tuple[int, int]], seg_places: dict[int, list[PlaceMention]],
