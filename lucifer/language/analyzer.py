@@ -1685,12 +1685,13 @@ class ReportAnalyzer:
             return None, None
         vecs = self.embedder.embed([said] + [rel.phrase for _, rel in cands])
         sims = vecs[1:] @ vecs[0]
-        order = np.argsort(-sims)
-        best = float(sims[order[0]])
-        runner = float(sims[order[1]]) if len(order) > 1 and cands[order[1]][0] != cands[order[0]][0] else 0.0
+        top = int(np.argmax(sims))
+        best = float(sims[top])
+        target, rel = cands[top]
+        # the closest relation that leads somewhere else
+        runner = max((float(v) for (t, _), v in zip(cands, sims, strict=True) if t != target), default=0.0)
         if best < self.RELATION_MEANING_MIN or best - runner < self.RELATION_MEANING_MARGIN:
             return None, None
-        target, rel = cands[int(order[0])]
         return target, f"{rel.subject} {rel.relation} {rel.object} (by meaning {best:.2f})"
 
     def _description_words(self) -> dict[str, set[str]]:
