@@ -1662,15 +1662,13 @@ class ReportAnalyzer:
                 ex.places[ex.places.index(anchor)] = replace(anchor, status="reference",
                                                              reason=f"reference point: {via}")
 
-    RELATION_MEANING_MIN = 0.55
-    RELATION_MEANING_MARGIN = 0.1
-
     def _follow_by_meaning(self, anchor: str, toks: Tokens, a: int, b: int,
                            inverse: bool) -> tuple[str | None, str | None]:
         """The words said for a relation found none of the KB's from ``anchor``: of the relations ``anchor``
         takes part in, on the side the description reads, the one MiniLM puts closest to the words said
         ("the row of cabins that carries on from the A row" for ``cabin row B runs_on_from cabin row A``),
-        if close enough and clearly closer than the next."""
+        if close enough and clearly closer than the next, by the bounds ``_follow_link`` reads unlisted links by.
+        (``_follow_link`` ranks every relation form of the KB and would take "carries overflow from" here.)"""
         if self.embedder is None:
             return None, None
         words = [t.text for t in toks.tokens[a:b]]
@@ -1690,7 +1688,7 @@ class ReportAnalyzer:
         target, rel = cands[top]
         # the closest relation that leads somewhere else
         runner = max((float(v) for (t, _), v in zip(cands, sims, strict=True) if t != target), default=0.0)
-        if best < self.RELATION_MEANING_MIN or best - runner < self.RELATION_MEANING_MARGIN:
+        if best < self.OPEN_RELATION_MIN_SIM or best - runner < self.OPEN_RELATION_MARGIN:
             return None, None
         return target, f"{rel.subject} {rel.relation} {rel.object} (by meaning {best:.2f})"
 
@@ -3438,11 +3436,10 @@ class ReportAnalyzer:
         why = negated_by or cancelled_by
         role = self.kb.category_by_name[cue.category].role
         said = norms[cue.start_tok:cue.end_tok]
-        restated = any(norms[i:i + len(said)] == said for i in range(max(0, cue.start_tok - 10), cue.start_tok - len(said)))
-        if role == Role.DESIRABLE and negated_by is not None and " ".join(said) in lx.NEGATABLE_STATES and not restated:
-            # ("the block is clear -- no, sorry, it's not clear, there's people on the top floor": the word said
-            # again to take it back, not a danger)
-            # "not safe" / "no longer safe" means unsafe: the place is undesirable now
+        # "not safe" / "no longer safe" means unsafe: the place is undesirable now (but "the block is clear --
+        # no, sorry, it's not clear, there's people on the top floor" says the word again to take it back)
+        if role == Role.DESIRABLE and negated_by is not None and " ".join(said) in lx.NEGATABLE_STATES and not any(
+                norms[i:i + len(said)] == said for i in range(max(0, cue.start_tok - 10), cue.start_tok - len(said))):
             und = self._undesirable()
             if und is not None:
                 return replace(cue, category=und, source=cue.source, reason=f"'{negated_by}' + desirable cue means undesirable")
@@ -4047,8 +4044,9 @@ class ReportAnalyzer:
                     before = [p for p in ex.places if p.status == "active" and p.start_tok > first
                               and toks.sentence_of[p.start_tok] == toks.sentence_of[first]][:1]
             said = [p for p in ex.places if p.end_tok <= i and toks.sentence_of[p.start_tok] == toks.sentence_of[i]]
-            if before and said and max(said, key=lambda p: p.end_tok).status in ("negated", "retracted") \
-                    and max(said, key=lambda p: p.end_tok).end_tok > max(before, key=lambda p: p.end_tok).end_tok:
+            last_said = max(said, key=lambda p: p.end_tok, default=None)
+            if before and last_said is not None and last_said.status in ("negated", "retracted") \
+                    and last_said.end_tok > max(before, key=lambda p: p.end_tok).end_tok:
                 continue  # "scrap the library, they've all walked out of there unhurt": of the place taken back
             if before:
                 out.append((max(before, key=lambda p: p.end_tok).landmark, i))
