@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev23) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev24) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -40,6 +40,7 @@ RAILWAY = ROOT / "knowledge_bases" / "mountain_railway"
 CANAL = ROOT / "knowledge_bases" / "canal_wharf"
 HOUSING = ROOT / "knowledge_bases" / "housing_estate"
 COASTAL = ROOT / "knowledge_bases" / "coastal_village"
+RIVER_PORT = ROOT / "knowledge_bases" / "river_port_market"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -139,6 +140,10 @@ SETS = {
     "dev23/market_square": _set("dev23/market_square.jsonl", MARKET_SQUARE, "d23",
                                 {"standard": 10, "messy": 50, "advanced_messy": 40}, sep=""),
     "dev23/coastal_village": _set("dev23/coastal_village.jsonl", COASTAL, "cv", THIRTY),
+    "dev24/market_square": _set("dev24/market_square.jsonl", MARKET_SQUARE, "d24",
+                                {"standard": 15, "messy": 60, "advanced_messy": 35}, sep=""),
+    "dev24/market_square_b": _set("dev24/market_square_b.jsonl", MARKET_SQUARE, "d24b", EVEN, sep=""),
+    "dev24/river_port_market": _set("dev24/river_port_market.jsonl", RIVER_PORT, "rpm", THIRTY),
 }
 
 
