@@ -1567,3 +1567,70 @@ def test_a_cue_that_goes_on_at_the_names_the_place_after_it(analyzer):
     # no punctuation: "smoke" follows the bank but goes on "at the" school
     assert claims(analyzer, "fire in the bank smoke at the school too and the park is safe") == [
         ("bank", "hazard"), ("park", "safe_zone"), ("school", "hazard")]
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    # a caller's role of several words, said with where they are, claims nothing there
+    ("Security guard at the post office. Fire at the bakery.", [("bakery", "hazard")]),
+    # a danger named first in a list that a later place ends
+    ("A man fell over in the park. And there's sparks and smoke coming off the garage.",
+     [("garage", "hazard"), ("park", "victim")]),
+    # a false alarm followed by the place the repair puts instead
+    ("we heard someone was trapped in the bank but no, false alarm — it's the school, a kid's trapped in the school",
+     [("school", "victim")]),
+    # a negation runs on over "or"
+    ("no smoke or anyone injured at the library", []),
+    # a list passed "on the way"
+    ("drove past the bank and the church on the way, the hotel's on fire", [("hotel", "hazard")]),
+    # "sorry" said after the new place
+    ("the bank— the school sorry, the school has smoke pouring out", [("school", "hazard")]),
+    # a count said again, then repaired
+    ("three injured at the church, one at the bank — no, the library", [("church", "victim"), ("library", "victim")]),
+    # a vehicle stuck is no person
+    ("my car is stuck, the garage is flooded", [("garage", "hazard")]),
+    # a slip of a vocabulary word
+    ("a woman colapsed in the cafe", [("cafe", "victim")]),
+    # where the caller comes from
+    ("resident from the flats again, we're all standing in the park now, it's safe there", [("park", "safe_zone")]),
+    # an order to take people somewhere places nobody there
+    ("triage tent is up at the school, bring the walking wounded there", [("school", "safe_zone")]),
+    # "flat" as a word, not the singular of "flats"; "a baker" is a person
+    ("someone fainted in the cafe, flat on the floor", [("cafe", "victim")]),
+    ("there's a baker trapped in the school", [("school", "victim")]),
+    # a danger that has gone
+    ("the fire at the bakery is out and the smoke has cleared", []),
+    ("the park was flooded, water's gone down now", []),
+    ("we were told the library roof fell in but we're here and it hasn't", []),
+    # "not" inside a cue negates no cue after it
+    ("there's a man lying by the church not moving please come", [("church", "victim")]),
+    # the speaker moving
+    ("we came down past the bank, fire at the hotel", [("hotel", "hazard")]),
+    # vocabulary
+    ("the warehouse has just gone up, another bang", [("warehouse", "hazard")]),
+    ("the guy in the garage keeled over", [("garage", "victim")]),
+    ("the hotel is taking in families", [("hotel", "safe_zone")]),
+])
+def test_dev24_phenomena(analyzer, text, expected):
+    assert claims(analyzer, text) == expected
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    # a plural subject's relation verb, said as a participle
+    ("someone hurt at the stalls huddled under the eaves of the market hall", [("flower stalls", "needs_rescue")]),
+    # "they" as the anchor of an inverse description
+    ("the river stairs are flooded and there's a kid on whatever they lead down to",
+     [("ferry pontoon", "needs_rescue"), ("river stairs", "flood_and_spill")]),
+    # a report that opens on a name's bare head
+    ("Crane's leaning badly.", [("gantry crane", "blast_and_collapse")]),
+    # "the roof" is part of a building, not the landmark whose alias is "the glass roof"
+    ("the fish market roof has come down, the roof is sagging", [("fish market", "blast_and_collapse")]),
+    # said against the place just named: the other one of two names ending in "shed"
+    ("the girders came down in the transit shed, and the hurt porter, he's in the tea warehouse, not the shed",
+     [("tea warehouse", "needs_rescue"), ("transit shed", "blast_and_collapse")]),
+    # kinds of danger: an explosion, water over a place, oil
+    ("the bond's just gone up again", [("bonded warehouse", "blast_and_collapse")]),
+    ("water right over the ferry landing", [("ferry pontoon", "flood_and_spill")]),
+    ("the cart yard is swimming in oil", [("loading yard", "flood_and_spill")]),
+])
+def test_dev24_phenomena_on_an_unseen_kb(kb_analyzers, text, expected):
+    assert claims(kb_analyzers["river_port_market"], text) == expected

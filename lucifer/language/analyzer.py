@@ -535,6 +535,17 @@ class ReportAnalyzer:
                     and any(norm_phrase(f)[-1:] == norms[a:b] and f.lower().endswith("s") for f in
                             self.kb.landmark_by_name[landmark].surface_forms):
                 continue  # "it's flat and it's clear": a predicate, not the landmark the KB calls "flats"
+            raw = toks.tokens[a].text.lower()
+            if b - a == 1 and prev in ("a", "an") and not raw.endswith(("'s", "’s", "s")) and all(
+                    norm_phrase(f)[-1:] != norms[a:b] or f.lower().endswith(("'s", "’s")) for f in
+                    self.kb.landmark_by_name[landmark].surface_forms):
+                continue  # "there's a baker trapped": a person, not "the baker's"
+            if b - a == 1 and not raw.endswith("s") and (a == 0 or toks.clause_start[a] or prev not in
+                                                         lx.DETERMINERS | lx.PREPOSITIONS | {"my", "our", "your", "his", "her", "their"}) \
+                    and not (b < len(norms) and (norms[b].isdigit() or norms[b] in lx.NUMBER_WORDS | {"one"})) \
+                    and all(norm_phrase(f)[-1:] != norms[a:b] or f.lower().endswith("s") for f in
+                            self.kb.landmark_by_name[landmark].surface_forms):
+                continue  # "a customer's fainted in there, flat on the floor": the singular of "flats", no name
             if b - a == 1 and prev in lx.MODAL_BEFORE_VERB and not (a > 0 and toks.clause_start[a]):
                 continue  # "don't park anything round there": the word as a verb
             if b - a == 1 and a > 0 and toks.tokens[a - 1].text.lower() in ("its", "their", "his", "her") \
@@ -739,11 +750,19 @@ class ReportAnalyzer:
             rel_words = {w for rel in self.kb.relations for w in rel.phrase.split()}
             self._heads = {w: next(iter(names)) for w, names in owners.items()
                            if len(names) == 1 and words_elsewhere.get(w, set()) == names and len(w) >= 4 and w.isalpha()
-                           and w not in cue_words and w not in rel_words and w not in lx.DESCRIPTIVE_WORDS}
+                           and w not in cue_words and w not in rel_words and w not in lx.DESCRIPTIVE_WORDS
+                           and w not in lx.STOREY_WORDS and w not in lx.PART_NOUNS}  # ("the roof" of anything)
         out = []
-        for i in range(1, len(norms)):
+        for i in range(0, len(norms)):
             w = norms[i]
-            if w not in self._heads or i in taken or (i - 1) in taken or not (
+            opens = (i == 0 or toks.sentence_start[i]) and w in self._heads and i not in taken \
+                and w not in lx.UNNAMING_HEADS | lx.GENERIC_HEADS | lx.DESCRIPTION_HEADS and (
+                toks.tokens[i].text.lower().endswith(("'s", "’s")) or i + 1 < len(norms) and norms[i + 1] in ("is", "has"))
+            # ("crane's leaning badly": a report that opens on the bare head, said of it)
+            if opens:
+                out.append(self._mention(toks, i, i + 1, self._heads[w]))
+                continue
+            if i == 0 or w not in self._heads or i in taken or (i - 1) in taken or not (
                     norms[i - 1] == "the" or norms[i - 1] in ("my", "our") and (i - 1) in rel_ends):
                 # ("the hall right below my cottage": the speaker's own, as a relation's anchor; not "my kitchen")
                 continue
@@ -877,6 +896,11 @@ class ReportAnalyzer:
             exact = [p for p in before if any(f.lower().split()[-1:] == [raw]
                                               for f in self.kb.landmark_by_name[p.landmark].surface_forms)]
             last = max(exact or before, key=lambda p: p.end_tok)  # ("the sheds": the cattle sheds, not the hay shed)
+            if i >= 2 and norms[i - 2] in ("not", "no") and last.end_tok >= i - 6:
+                # "he's in the tea warehouse, not the shed": said against the one just named, the other one
+                other = [p for p in (exact or before) if p.landmark != last.landmark]
+                if other:
+                    last = max(other, key=lambda p: p.end_tok)
             out.append(replace(self._mention(toks, i - 1, end, last.landmark),
                                reason=f"the '{norms[i]}' named last, '{last.text}'"))
             taken.update(range(i - 1, end))
@@ -993,6 +1017,8 @@ class ReportAnalyzer:
         if not hasattr(self, "_respellings"):
             words = {w for bucket in self._relations._by_first.values() for key, _ in bucket for w in key}
             words |= set(lx.GENERIC_HEADS)
+            # and the danger and person words of the vocabulary ("an old man colapsed by the counter")
+            words |= {w for key in self._cue_keys() for w in key if len(w) >= 6}
             named = {key for key, _ in self._name_keys()} | {
                 w for lm in self.kb.landmarks for form in lm.surface_forms for w in name_words(form)}
             self._respellings = sorted(w for w in words - named if len(w) >= self.RESPELL_MIN_CHARS and w.isalpha())
@@ -1554,7 +1580,10 @@ class ReportAnalyzer:
             head_place = None
         if anchor is not None and head_place is not None:
             # "the pharmacy next to the bakery": the place is named; the anchor is only a reference
-            if not pronoun:
+            broken = anchor.via is not None and anchor.start_tok >= b and any(
+                m in toks.gaps[i] for i in range(b, anchor.start_tok + 1) for m in ("--", "—", "–"))
+            # ("the boxes the quay cranes feed -- er, the stack they feed": a repair, not the relation's anchor)
+            if not pronoun and not broken:
                 idx = ex.places.index(anchor)
                 ex.places[idx] = replace(anchor, status="reference", reason=f"reference point for '{head_place.text}'")
             return
@@ -1584,6 +1613,15 @@ class ReportAnalyzer:
                 return
             head_words = " ".join(toks.tokens[j].text for j in range(hs, min(anchor_p.start_tok, a)))
             target, via = self._follow(anchor_p.landmark, phrase, head_words, inverse=not flipped)
+            if target is None and named == "pronoun":
+                # "the crane on the quay. the shed it looms over": the pronoun takes up the place before the last
+                # one when only that one stands in the relation
+                for other in sorted((p for p in ex.places if p.end_tok <= hs and p is not anchor_p
+                                     and p.status != "retracted" and p.landmark != anchor_p.landmark),
+                                    key=lambda p: -p.end_tok)[:3]:
+                    target, via = self._follow(other.landmark, phrase, head_words, inverse=not flipped)
+                    if target is not None:
+                        break
             if target is None:
                 target, via = self._follow_by_meaning(anchor_p.landmark, toks, a, b, inverse=not flipped)
             if target is None:
@@ -1955,7 +1993,7 @@ class ReportAnalyzer:
         while j > 0 and norms[j - 1] in lx.INVERSE_VERBS | {"a", "an"} and a - j < 3:
             j -= 1
         anchor = next((p for p in ex.places if p.end_tok == j and p.status == "active"), None)
-        if anchor is None and j > 0 and norms[j - 1] in ("it", "its") and j - 1 > 0 \
+        if anchor is None and j > 0 and norms[j - 1] in ("it", "its", "they") and j - 1 > 0 \
                 and (norms[j - 2] in lx.GENERIC_HEADS | {"that", "which"} or self._plain_head(norms, j - 2)):
             # "the building it sits next to": the pronoun is the anchor
             hs = j - 2
@@ -2208,6 +2246,19 @@ class ReportAnalyzer:
                                 and r.start_tok < q.start_tok and r.anaphor is None), key=lambda r: r.start_tok, default=None)
                     if item is not None and item not in earlier:
                         earlier.append(item)
+                contrast = next((q for q in ex.places if q.status == "active" and j - 3 <= q.end_tok <= j
+                                 and q.landmark != p.landmark), None)
+                if contrast is not None and not corrects:
+                    # "girders down in the transit shed ..., and the injured porter, he's in the tea warehouse,
+                    # not the shed": said against the place just named, not a repair of an earlier claim
+                    def cats(a: int, b: int) -> set[str]:
+                        return {c for ca, _, (c, _) in self._cues.find_all(norms) if a <= ca < b}
+                    said_here = cats(max(0, contrast.start_tok - 6), j)
+                    # (a claim of another kind: "... the hotel is on fire, not the bank" repairs the bank's fire)
+                    earlier = [q for q in earlier if not (
+                        q.end_tok <= contrast.start_tok and said_here
+                        and not said_here & cats(max(0, q.start_tok - 6), min(q.end_tok + 4, contrast.start_tok - 6))
+                        and not any(q.end_tok <= i < j for i in marker_toks))]
                 for q in earlier:
                     ex.places[ex.places.index(q)] = replace(q, status="retracted", reason=f"then '{toks.tokens[j].text} {p.text}'")
                 # ("not the school, they moved it, it's the library now": the next place in the sentence)
@@ -2276,10 +2327,12 @@ class ReportAnalyzer:
             if p.status != "active" or p.via is not None or p.start_tok < 2:
                 continue
             j = p.start_tok - 1
-            while j > 0 and norms[j] in lx.DETERMINERS:
+            while j > 0 and norms[j] in lx.DETERMINERS | lx.FILLERS:
                 j -= 1
-            if norms[j] != "and" or toks.clause_start[j] or not (p.end_tok >= len(norms) or toks.clause_start[p.end_tok]):
-                continue
+            if norms[j] != "and" or toks.clause_start[j] or not (
+                    p.end_tok >= len(norms) or toks.clause_start[p.end_tok]
+                    or norms[p.end_tok:p.end_tok + 3] in (("on", "the", "way"), ("on", "our", "way"), ("on", "my", "way"))):
+                continue  # ("passing the bank and the church on the way")
             prev = next((q for q in ex.places if q.end_tok == j
                          and q.reason.startswith(("in transit ('past", "in transit ('passing"))), None)
             if prev is not None:
@@ -2552,10 +2605,14 @@ class ReportAnalyzer:
         while start > 0 and not toks.sentence_start[start]:
             start -= 1
         before = [w for w in norms[start:p.start_tok] if w not in lx.FILLERS and w not in lx.DETERMINERS]
-        if len(before) < 2 or before[1] not in lx.POSITION_PREPS or before[0] in lx.PRONOUNS | lx.LAY_PERSONS \
-                or before[0] in lx.MOVED_PEOPLE:
+        # the caller: one word ("Scaffolder at ...") or a head with its modifiers ("Security guard at ...")
+        k = next((i for i, w in enumerate(before[:4]) if w in lx.POSITION_PREPS), None)
+        if k is None or k == 0 or before[0] in lx.PRONOUNS | lx.LAY_PERSONS or before[0] in lx.MOVED_PEOPLE:
             return False
-        if not set(before[2:]) <= lx.PREPOSITIONS | lx.LOCATIVE_PARTS | {"roof", "of", "top", "up", "here"}:
+        head = before[k - 1]
+        if k > 1 and head not in lx.WORKER_PERSONS | lx.CREW_NOUNS | lx.CALLER_ROLES:
+            return False
+        if not set(before[k + 1:]) <= lx.PREPOSITIONS | lx.LOCATIVE_PARTS | {"roof", "of", "top", "up", "here"}:
             return False
         end = p.end_tok
         while end < len(norms) and not toks.sentence_start[end] and norms[end] not in lx.COORDINATORS:
@@ -2564,7 +2621,7 @@ class ReportAnalyzer:
         if not set(tail) <= {"over", "here", "now"}:
             return False
         # ("Water in the compartment." claims; "Scaffolder on the roof of the hotel, over." calls in)
-        return bool(tail) or before[0] in lx.WORKER_PERSONS or before[0] in lx.CREW_NOUNS
+        return bool(tail) or head in lx.WORKER_PERSONS | lx.CREW_NOUNS | lx.CALLER_ROLES
 
     def _sheltered_people(self, norms: tuple[str, ...], cues: list[CueMention]) -> list[CueMention]:
         """"twenty patients sheltering in there": people said with the shelter they have are no casualty claim."""
@@ -2623,11 +2680,18 @@ class ReportAnalyzer:
         norms = toks.norms(0, len(toks))
         cue_tokens = {i for a, b in self._cue_starts(ex) for i in range(a, b)}
         for a, b, _ in ex.markers:
-            if norms[a:b] not in (("i", "mean"), ("i", "meant")):
+            sorry = norms[a:b] == ("sorry",)
+            if norms[a:b] not in (("i", "mean"), ("i", "meant")) and not sorry:
                 continue
             new = next((p for p in ex.places if p.end_tok == a and p.status == "active"), None)
             if new is None or toks.clause_start[a]:
                 continue
+            if sorry:
+                # "the water tower— the tower block sorry, the tower block has cracks": "sorry" after the new
+                # place; a place said next that is another one is a repair of its own
+                then = next((p for p in ex.places if b <= p.start_tok <= b + 3), None)
+                if then is not None and then.landmark != new.landmark:
+                    continue
             sent = toks.sentence_of[a]
             old = max((p for p in ex.places if p.status == "active" and p.end_tok <= new.start_tok
                        and toks.sentence_of[p.start_tok] == sent), key=lambda p: p.end_tok, default=None)
@@ -2700,6 +2764,9 @@ class ReportAnalyzer:
             if norms[a:b] == ("clear",) and any(norms[k] in ("keep", "stay") for k in range(max(0, a - 4), a)) \
                     and not any(toks.clause_start[k] for k in range(max(1, a - 3), a + 1)):
                 continue  # "keep all boats clear of the lock", "stay well clear": an instruction, like "keep clear"
+            if norms[a:b] in (("cleared",), ("lifted",)) and a >= 2 and norms[a - 1] in ("has", "have", "s") \
+                    and any(self._cues.match_at(norms, k) is not None for k in range(max(0, a - 4), a - 1)):
+                continue  # "the smoke has cleared": the danger has gone, the place is not said to be cleared
             if norms[a:b] == ("clear",) and b < len(norms) and norms[b] == "of" and a > 0 \
                     and toks.tokens[a - 1].text.lower().replace("’", "'") in ("we're", "were", "i'm", "im", "they're",
                                                                                "we", "they", "everyone's"):
@@ -2738,6 +2805,23 @@ class ReportAnalyzer:
                 und = self._category_for_role(lx.UNDESIRABLE, "buried under snow and debris")
                 if und is not None:
                     cue = replace(cue, category=und, reason="a thing buried")  # "cars buried": no person
+            if cue.category == self._person_category and self._person_category is not None:
+                j = a - 1
+                while j >= 0 and norms[j] in lx.DETERMINERS | lx.FILLERS | {"all", "any", "your"}:
+                    j -= 1
+                if j >= 0 and norms[j] in lx.SEND_VERBS and not toks.clause_start[j + 1]:
+                    continue  # "bring the walking wounded there": where to take people, not people there
+            if norms[a] in ("come", "came", "coming") and a > 0 and (norms[a - 1] in ("we", "i", "you", "weve", "ive")
+                                                                  or norms[a - 1] in ("re", "m") and a > 1
+                                                                  and norms[a - 2] in ("we", "i", "you")):
+                continue  # "we come down past the fish market": the speaker moving, nothing fallen
+            if norms[a:b] == ("stuck",) and cue.category == self._person_category:
+                j = a - 1
+                while j >= 0 and (norms[j] in ("is", "s", "was", "got", "gets", "has", "been", "just", "now", "completely")
+                                  or norms[j] in lx.FILLERS):
+                    j -= 1
+                if j >= 0 and norms[j] in lx.THING_SUBJECTS - {"lift"}:
+                    continue  # "my bus is stuck in a flash flood": a vehicle stuck, no person said to be
             checked = self._apply_cue_negation(toks, norms, cue)
             cues.append(checked)
             if checked.category != cue.category:  # "no longer safe": unsafe now, and no longer safe
@@ -3270,6 +3354,13 @@ class ReportAnalyzer:
                                 and any(t in places for t in range(j + 1, min(len(norms), j + 8)))), None)
                     if but is not None and until == len(norms):
                         until = but
+                    # "someone trapped in the supermarket but no, false alarm — it's the gym, someone's trapped
+                    # in the gym": the place the repair puts in the retracted one's stead keeps its claims
+                    repaired = [p.start_tok for p in getattr(self, "_places_now", []) if p.replaces is not None
+                                and p.replaces < i < p.start_tok and sentence_of[p.start_tok] == sentence_of[i]
+                                and p.status == "active"]
+                    if repaired and until == len(norms):
+                        until = min(repaired)
                     alarms[sentence_of[i]] = max(alarms.get(sentence_of[i], 0), until)
         if not alarms:
             return cues
@@ -3288,12 +3379,18 @@ class ReportAnalyzer:
         place_toks = self._place_tokens | self._marker_tokens
         if norms[cue.start_tok] in lx.NEGATORS:
             j = -1  # "he's not, he's not breathing": a cue that is itself a negation is not negated again
-        while j >= 0 and steps < 4 and j not in place_toks:
+        saw_or = False  # "haven't seen any damage or anyone hurt": the negation runs on over "or"
+        while j >= 0 and steps < (8 if saw_or else 4) and j not in place_toks:
+            if norms[j] in ("or", "nor") and not toks.clause_start[j + 1]:
+                saw_or = True
             if j + 1 < cue.start_tok and toks.clause_start[j + 1]:
                 break  # "the place across from it isn't — there's a fire": another clause's negation
             if norms[j] in ("there", "theres") and (toks.tokens[j].text.lower().replace("’", "'") in ("theres", "there's")
                                                     or j + 1 < cue.start_tok and norms[j + 1] in ("s", "is", "are")):
                 break  # "wait no its not theres a gas smell": a new "there's" clause, past the negation
+            if norms[j] in lx.NEGATORS and (h := self._cues.match_at(norms, j)) is not None and h[0] <= cue.start_tok \
+                    and h[0] > j + 1:
+                break  # "a man lying in the doorway not moving please come": "not" is part of the cue before
             if norms[j] in lx.NEGATORS or norms[j].endswith("nt") and norms[j] in ("isnt", "arent", "wasnt", "werent", "dont", "doesnt", "didnt", "hasnt", "havent", "cant"):
                 if norms[j + 1 : j + 3] != ("the", "one") and not (
                         norms[j] == "no" and j + 1 < cue.start_tok
@@ -3313,7 +3410,7 @@ class ReportAnalyzer:
             if toks.clause_start[j + 1] and j + 1 <= cue.start_tok:
                 if j + 1 != cue.start_tok or toks.clause_start[cue.start_tok]:
                     break
-            if self._cues.match_at(norms, j) is not None:
+            if self._cues.match_at(norms, j) is not None and not (saw_or and norms[j] not in lx.NEGATORS):
                 break
             j -= 1
             steps += 1
@@ -3735,7 +3832,7 @@ class ReportAnalyzer:
             while start > 0 and sentence_of[start - 1] == sentence_of[a]:
                 start -= 1
             opening = next((w for w in norms[start:b] if w not in lx.FILLERS), "")
-            target = self._target_for_cues(k, segs, seg_usable, seg_cues, sentence_of, transparent, opening)
+            target = self._target_for_cues(k, segs, seg_usable, seg_cues, sentence_of, transparent, opening, norms)
             if target is None and not any(seg_usable.get(j) for j in range(k)):
                 person = all(self.kb.category_by_name[c.category].role == Role.CRITICAL for c in cs)
                 target = self._named_after(k, segs, seg_usable, seg_cues, sentence_of, norms, sent_words, person)
@@ -4060,14 +4157,17 @@ class ReportAnalyzer:
         q = next((x for x in ex.places if x.start_tok == p.replaces and x.status == "retracted"), None)
         if q is None:
             return []
-        glue = lx.DETERMINERS | lx.FILLERS | {"and", "or", "plus"}
+        # ("two casualties at the fire station, one at the bank — no, ... the hotel": a count said again)
+        counts = {"one", "another"} | lx.NUMBER_WORDS
+        glue = lx.DETERMINERS | lx.FILLERS | {"and", "or", "plus", "at", "in", "on", "inside"} | counts
         prev = [c for c in pairs if c.place.end_tok <= q.start_tok and c.cue.polarity == "affirmed"
                 and ex.tokens.sentence_of[c.place.start_tok] == ex.tokens.sentence_of[q.start_tok]]
         if not prev:
             return []
         last = max(c.place.end_tok for c in prev)
         between = norms[last : q.start_tok]
-        if not between or any(w not in glue for w in between) or not any(w in ("and", "or", "plus") for w in between):
+        if not between or any(w not in glue for w in between) \
+                or not any(w in ("and", "or", "plus") or w in counts for w in between):
             return []
         return [c.cue for c in prev if c.place.end_tok == last]
 
@@ -4183,6 +4283,11 @@ class ReportAnalyzer:
         while j >= 0 and norms[j] in lx.DETERMINERS:
             j -= 1
         after = [w for w in norms[p.end_tok:min(len(norms), p.end_tok + 4)] if w not in lx.FILLERS]
+        if j >= 1 and norms[j] == "from" and (norms[j - 1] in lx.CALLER_ROLES | lx.WORKER_PERSONS
+                                              or norms[j - 1] in _PERSON_WORDS) \
+                and (not after or after[0] in ("again", "here", "speaking", "calling") or after[0] in lx.PRONOUNS
+                     or after[0] in ("we", "were", "i", "im")):
+            return True  # "pensioner from the flats again, we're all out now standing in the park"
         return j >= 0 and norms[j] == "from" and bool(after) and (
             after[0] in ("here", "calling", "speaking")
             or bool(set(after) & {"walking", "coming", "heading", "moving", "going", "making"}))
@@ -4232,7 +4337,14 @@ class ReportAnalyzer:
     @staticmethod
     def _target_for_cues(k: int, segs: list[tuple[int, int]], seg_places: dict[int, list[PlaceMention]],
                          seg_cues: dict[int, list[CueMention]], sentence_of: list[int],
-                         transparent: set[int], opening: str) -> int | None:
+                         transparent: set[int], opening: str, norms: tuple[str, ...] | None = None) -> int | None:
+        nxt = k + 1
+        if norms is not None and nxt < len(segs) and sentence_of[segs[nxt][0]] == sentence_of[segs[k][0]] \
+                and seg_places.get(nxt) and not seg_cues.get(nxt):
+            words = [w for w in norms[segs[nxt][0]:segs[nxt][1]] if w not in lx.FILLERS]
+            if words[:1] and words[0] in lx.PERSON_SUBJECTS and any(
+                    w in lx.POSITION_PREPS or w == "inside" for w in words[1:4]):
+                return nxt  # "the injured porter, he's in the tea warehouse": where the person is said to be
         # the nearest earlier segment with places ("the bakery — it's on fire", "Checked the school. All clear."),
         # over sentences that are transparent (questions, one-word answers, more about the same place)
         for j in range(k - 1, -1, -1):
@@ -4250,6 +4362,8 @@ class ReportAnalyzer:
                                   and seg_places.get(i)), None)
                     if later is not None and (not seg_cues.get(later) or opening == "but"):
                         return later
+                    if later == k + 1 and norms is not None and _cue_list_into(k, later, segs, seg_cues, norms):
+                        return later  # "And there's sparks and smoke coming off the water tower."
                 return j
         # else the next one in the same sentence ("on fire, the bakery"), over a short aside
         j = k + 1
@@ -4260,6 +4374,29 @@ class ReportAnalyzer:
                 return None
             j += 1
         return None
+
+
+def _cue_list_into(k: int, later: int, segs: list[tuple[int, int]], seg_cues: dict[int, list[CueMention]],
+                   norms: tuple[str, ...]) -> bool:
+    """Segment ``k`` is only a danger named as the first of a list that segment ``later`` goes on with
+    ("sparks | and smoke coming off the water tower"): the list is said of the place it ends with."""
+    a, b = segs[k]
+    covered = {i for c in seg_cues.get(k, []) for i in range(c.start_tok, c.end_tok)}
+    if not covered or any(i not in covered and norms[i] not in lx.FILLERS | lx.DETERMINERS | _LIST_OPENERS
+                          for i in range(a, b)):
+        return False
+    a2 = segs[later][0]
+    if norms[a2] != "and":
+        return False
+    i = a2 + 1
+    while i < segs[later][1] and norms[i] in lx.FILLERS | lx.DETERMINERS:
+        i += 1
+    return any(c.start_tok == i for c in seg_cues.get(later, []))
+
+
+_PERSON_WORDS = frozenset(lx.PERSON_NOUNS) | {"pensioner", "residents", "neighbour", "neighbor", "tenant", "tenants",
+                                              "lady", "gentleman", "family"}
+_LIST_OPENERS = frozenset({"and", "there", "theres", "is", "are", "lots", "of", "loads", "some", "also", "got", "weve"})
 
 
 def _same_stem(a: str, b: str) -> bool:
@@ -4418,7 +4555,10 @@ def _relation_forms(phrase: str) -> list[tuple[str, bool]]:
         out.append((" ".join(swapped), True))
     verb = words[0]
     rest = " ".join(words[1:])
-    if not (len(words) == 1 or verb.endswith("s")) or _direction_word(verb) or verb.endswith("ss"):
+    # a plural subject's verb ("flower stalls | huddle under the eaves of"; "river stairs | lead down to")
+    plain_verb = len(words) >= 2 and verb.isalpha() and len(verb) >= 3 and verb not in lx.NOT_VERBS \
+        and not verb.endswith(("ed", "ing", "ly", "s")) and not _direction_word(verb)
+    if not (len(words) == 1 or verb.endswith("s") or plain_verb) or _direction_word(verb) or verb.endswith("ss"):
         return _with_group_inverses(phrase, out)
     stems = {verb[:-1]} if verb.endswith("s") and len(verb) > 3 else {verb}
     for stem in list(stems):
@@ -4434,6 +4574,10 @@ def _relation_forms(phrase: str) -> list[tuple[str, bool]]:
             out.append((f"that {v} {rest}".strip(), False))
         for v in (base + "ed", stem + "ed"):
             out.append((f"{v} by", True))
+        if plain_verb and len(words) >= 2:
+            # "the stalls huddled under the eaves of the market hall": the participle reads it forwards
+            for v in {base + "ed", *(k for k, val in lx.IRREGULAR_PARTICIPLES.items() if val == stem)}:
+                out.append((f"{v} {rest}", False))
     return _with_group_inverses(phrase, out)
 
 

@@ -86,6 +86,10 @@ opened as a rest centre|safe ground|dry and safe|bone dry|warming centre|warm an
 meeting point|the meeting point|empty and checked|checked and empty|evacuated and checked|searched and clear|
 is open|s open|are open|still open|open again|reopened|open and usable|open for landing|
 decon point|decon area|decon tent|decontamination point|where we're putting everyone|putting everyone|high and dry|can shelter there|can shelter here|people can shelter|can come and wait|opened up for|opened its doors|
+fine to walk through|fine to walk on|fine to cross|okay to walk through|ok to walk through|fine to pass through|
+fine for overflow|taking in families|taking in people|taking people in|can take people|we can take people|
+people are gathering there|people gathering there|everyone's gathering there|gathering there|taking in residents|
+taking in the evacuees|taking families|
 """.replace("\n", ""))
 
 _add(CRITICAL, """
@@ -99,7 +103,7 @@ missing person|missing persons|missing|man down|person down|woman down|people do
 medical emergency|medical help|needs a medic|needs medic|needs an ambulance|needs evacuation|
 can't get out|cannot get out|can't move|cannot move|burns victim|overcome by smoke|
 stranded|cut off|trapped people|trapped persons|people trapped|someone trapped|somebody trapped|
-hypothermic|drowning|bleeding out|critical condition|in shock|lost consciousness|passed out|fainted|collapsed inside|
+hypothermic|drowning|bleeding out|critical condition|in shock|lost consciousness|passed out|fainted|keeled over|keels over|has keeled over|collapsed inside|
 pinned under debris|pinned under rubble|trapped under debris|trapped under rubble|buried under rubble|buried under debris|
 trapped in rubble|under the rubble|needs medics|need medics|needs a doctor|requires evacuation|unaccounted for|
 people still inside|still inside|someone still inside|people stuck|people stuck inside|with people inside|
@@ -110,7 +114,9 @@ needs oxygen|need oxygen|having a heart attack|heart attack|seizure|having a sei
 asthma attack|asthma attacks|an asthma attack|having an asthma attack|shut in|locked in|
 stuck on the roof|stranded on the roof|on the roof waiting|waving from|trapped upstairs|trapped on|
 can't get up|cannot get up|can't get out|can't free|cannot free|waving for help|yelling for help|for help|
-head wound|head injury|hurt bad|badly hurt|walking wounded|screaming inside|kids screaming|someone in the water|
+cracked his head|cracked her head|cracked their head|cracked his skull|cracked her skull|banged his head|
+banged her head|hit his head|hit her head|split his head|split her head|cut his hand|cut her hand|cut his head|
+cut her head|cut his leg|cut her leg|head wound|head injury|hurt bad|badly hurt|walking wounded|screaming inside|kids screaming|someone in the water|
 smoke inhalation|persons reported|person reported|p1|p2|p3|p1s|p2s|p1 patient|p2 patient|priority one|cpr|
 cpr in progress|a body|body|bodies|non ambulatory|non-ambulatory|overcome|officer down|firefighter down|
 occupants unaccounted for|entrapment|trapped occupant|casualty pinned|
@@ -154,6 +160,9 @@ NEGATOR_PHRASES = ["no one", "no longer", "not any", "free of", "clear of", "no 
 
 # Phrases after a hazard cue that cancel it ("the fire is out").
 CANCEL_AFTER = ["is out", "s out", "are out", "was out", "put out", "out now", "been put out",
+                "has cleared", "have cleared", "s cleared", "has lifted", "s lifted", "has gone down", "s gone down",
+                "has receded", "s receded", "have receded", "gone down now", "water's gone down", "water has gone down",
+                "water's receded", "water has receded", "flood's gone down", "flooding's gone down",
                 "extinguished", "under control", "contained", "is over", "has stopped", "stopped",
                 "died down", "cleared up", "gone", "is gone", "has gone", "fixed", "repaired",
                 "turned off", "shut off", "capped", "receded", "drained", "false alarm",
@@ -184,7 +193,8 @@ CANCEL_AFTER = ["is out", "s out", "are out", "was out", "put out", "out now", "
                 "empty"]
 # ... of which these, said a few words after a place named again, end its danger ("the warehouse, oh, they've
 # put that out now")
-CANCEL_SAID_AGAIN = {"put that out", "put it out", "knocked that down", "knocked it down", "extinguished",
+CANCEL_SAID_AGAIN = {"water's gone down", "water has gone down", "water's receded", "water has receded",
+                     "flood's gone down", "flooding's gone down", "put that out", "put it out", "knocked that down", "knocked it down", "extinguished",
                      "been put out", "got that out"}
 # ... of which these revoke only a missing person ("lost child at the aviary, mum's found her")
 CANCEL_MISSING_ONLY = {"found her", "found him", "found them", "found safe", "he's been found", "she's been found",
@@ -342,6 +352,14 @@ OPPOSITE_DIRECTION = {"seaward": "landward", "landward": "seaward", "uphill": "d
 # Direction words that stand alone, without "of" / "from" ("the houses above the net loft").
 BARE_DIRECTIONS = {"above", "below", "beneath"}
 
+# First words of relation names that are not verbs ("next_to", "across_from", "part_of").
+NOT_VERBS = {"next", "across", "opposite", "adjacent", "near", "behind", "under", "over", "above", "below", "beside",
+             "inside", "outside", "part", "close", "directly", "just", "right", "round", "around", "along",
+             "alongside", "within", "between", "beyond", "against", "off", "onto", "into", "up", "down", "by", "to",
+             "from", "of", "the", "a", "an", "in", "on", "at", "upstream", "downstream", "uphill", "downhill", "north",
+             "south", "east", "west", "beneath", "underneath", "atop", "top", "front", "back", "facing", "same",
+             "nearest", "closest", "connected", "attached", "joined", "adjoining", "upriver", "downriver",
+             "left", "far", "other", "twin", "sister", "home", "main", "entrance", "exit", "via", "through", "past"}
 # Irregular past participles of verbs that name relations ("fed_by" is said "the mill that feeds ...").
 IRREGULAR_PARTICIPLES = {"fed": "feed", "built": "build", "held": "hold", "led": "lead", "lit": "light", "ran": "run",
                          "dug": "dig", "hung": "hang", "laid": "lay", "kept": "keep", "fitted": "fit", "shaded": "shade",
@@ -459,7 +477,7 @@ COORDINATOR_PHRASES = ["as well as", "along with", "together with", "and also", 
 RETRACT_VERBS = {"scratch", "strike", "forget", "cancel", "remove", "minus", "drop", "lose", "scrap", "scrub"}
 
 # Places in these phrases are being passed or travelled to: the report claims nothing about them.
-TRANSIT = ["evacuated from", "moved out of", "moved from", "relocated from", "decanted from", "brought out of",
+TRANSIT = ["anyone coming off", "anybody coming off", "everyone coming off", "people coming off", "evacuated from", "moved out of", "moved from", "relocated from", "decanted from", "brought out of",
            "heading to", "heading for", "heading towards", "heading toward", "headed to", "headed for", "head to",
            "passing", "passed", "moving past", "going past", "driving past", "walking past", "past",
            "on our way to", "on the way to", "our way to", "en route to", "enroute to", "going to", "driving to",
@@ -625,6 +643,13 @@ WORKER_PERSONS = {"driver", "worker", "workman", "lad", "labourer", "passenger",
                   "cleaner", "operator", "builder", "steward", "stewardess", "crewman", "deckhand", "fitter",
                   "engineer", "gardener", "fan", "punter", "marshal", "chemist", "resident", "technician", "keeper",
                   "porter", "nurse", "midwife", "tourist", "walker", "climber", "swimmer", "diver", "angler", "member"}
+# Who calls in, said before where they are ("Security guard at the savings bank."): a role, not a claim.
+CALLER_ROLES = {"guard", "warden", "officer", "patrol", "assistant", "attendant", "manager", "caretaker", "courier",
+                "inspector", "first-aider", "firstaider", "aider", "volunteer", "medic", "paramedic", "constable",
+                "firefighter", "watchman", "supervisor", "foreman", "receptionist", "janitor", "custodian"}
+# Verbs of an order to take people somewhere ("bring the walking wounded there"): no person placed.
+SEND_VERBS = {"bring", "send", "take", "direct", "ferry", "carry", "bringing", "sending", "taking", "directing",
+              "redirect", "route"}
 PINNED_SITUATIONS = {"under", "underneath", "beneath", "clinging", "lying", "hanging", "pinned", "trapped", "floating",
                      "caught"}
 PERSON_MODIFIERS = {"elderly", "old", "young", "little", "small", "older", "adult", "injured", "disabled", "more",
@@ -717,8 +742,12 @@ DANGER_KINDS: dict[str, list[str]] = {
                  "spilled", "spilt", "fuel leak", "oil spill", "fuel spill", "petrol spill", "diesel spill",
                  "petrol leak", "diesel leak", "leaking fuel", "fuel pouring", "pouring fuel", "diesel slick",
                  "slick", "fuel slick", "petrol all over", "fuel all over", "diesel all over", "oil all over",
-                 "petrol everywhere", "diesel everywhere", "fuel everywhere"],
-    "explosion": ["explosion", "exploded", "explosive", "blast", "exploding", "explode", "could explode"],
+                 "petrol everywhere", "diesel everywhere", "fuel everywhere", "swimming in oil", "swimming in diesel", "swimming in fuel",
+                 "swimming in petrol", "oil everywhere", "oil slick"],
+    "explosion": ["explosion", "exploded", "explosive", "blast", "exploding", "explode", "could explode", "just gone up", "just went up", "gone up again", "went up again", "gone up like", "went up like",
+                  "another bang", "loud bang", "big bang", "massive bang", "huge bang", "blown out", "blown apart",
+                  "blown in", "blew out", "blew up", "blown up", "bottles went up", "cylinders went up",
+                  "gas bottles went up", "gas cylinders went up", "gas bottles exploded", "gas bottle went up"],
     "collapse": ["collapse", "collapsed", "collapsing", "caved in", "cave in", "cave-in", "caving in", "caving",
                  "fell in", "falling down", "come down", "came down", "coming down", "about to collapse", "unstable",
                  "crumbling", "cracked", "cracking", "cracks", "a crack", "crack right across",
@@ -730,7 +759,8 @@ DANGER_KINDS: dict[str, list[str]] = {
                  "unstable masonry", "falling in", "unstable chimney", "bulging", "bulging out", "bulge", "could let go",
                  "might let go", "about to let go", "going to let go", "cracked open", "split in two", "split open", "pancaked", "spongy",
                  "floor's spongy", "sinking", "subsiding", "subsidence", "slumping", "floor's gone", "floor has gone",
-                 "floor's gone through", "gone through the floor", "roof's going", "roof is going"],
+                 "floor's gone through", "gone through the floor", "roof's going", "roof is going", "span down", "span's down",
+                 "span is down", "twisted", "leaning badly", "leaning over", "listing"],
     "fallen": ["has fallen into", "have fallen into", "fallen into the", "rubble", "wall down", "walls down",
                "roof's in", "roof is in", "roof's gone", "roof has gone", "roof's off", "shedding bricks",
                "shedding slates", "masonry falling", "falling masonry", "fallen masonry", "wall's fallen",
@@ -759,7 +789,10 @@ DANGER_KINDS: dict[str, list[str]] = {
               "burst its", "burst its bank", "burst its south bank", "burst its north bank", "washed out",
               "washed clean away", "waves breaking over", "waves going over", "waves coming over", "waves over",
               "going right over the top", "sea's come through", "sea's come right through", "sea's pouring through",
-              "sea pouring through", "pouring through"],
+              "sea pouring through", "pouring through", "water right over", "water over", "water is over", "water's over", "water s over",
+              "river's over", "river is over", "river's right over", "river s over", "river s right over",
+              "under the river", "shipping water", "swimming in water", "filling fast", "filling up fast",
+              "water still climbing", "water's climbing", "water is climbing", "water still rising"],
     "current": ["strong current", "fierce current", "fast current", "swift current", "rip current", "undertow",
                 "current's ripping", "current is ripping", "current ripping", "fast flowing water",
                 "fast-flowing water", "ripping through"],
@@ -791,7 +824,9 @@ HEARSAY_VERBS = {"say", "says", "said", "reckon", "reckons", "reckoned", "think"
 # What a speaker says to contradict what they were told: "... but it isn't", "it's still standing".
 CONTRADICTIONS = [("it", "isnt"), ("its", "not"), ("it", "wasnt"), ("it", "is", "not"), ("its", "still", "standing"),
                   ("its", "fine"), ("its", "ok"), ("its", "okay"), ("its", "not", "true"), ("thats", "wrong"),
-                  ("they", "arent"), ("theyre", "not")]
+                  ("they", "arent"), ("theyre", "not"), ("it", "hasnt"), ("it", "has", "not"), ("it", "didnt"),
+                  ("it", "hadnt"), ("they", "havent"), ("they", "didnt"), ("its", "intact"), ("its", "fine"),
+                  ("nothing", "wrong"), ("its", "all", "fine")]
 
 # A person as the subject of a sentence that says where they are: "she's in the back of the shop".
 PERSON_SUBJECTS = {"he", "she", "hes", "shes", "they", "theyre"}
