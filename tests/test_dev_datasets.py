@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev24) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev25) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -41,6 +41,7 @@ CANAL = ROOT / "knowledge_bases" / "canal_wharf"
 HOUSING = ROOT / "knowledge_bases" / "housing_estate"
 COASTAL = ROOT / "knowledge_bases" / "coastal_village"
 RIVER_PORT = ROOT / "knowledge_bases" / "river_port_market"
+CATHEDRAL = ROOT / "knowledge_bases" / "cathedral_close"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -144,6 +145,9 @@ SETS = {
                                 {"standard": 15, "messy": 60, "advanced_messy": 35}, sep=""),
     "dev24/market_square_b": _set("dev24/market_square_b.jsonl", MARKET_SQUARE, "d24b", EVEN, sep=""),
     "dev24/river_port_market": _set("dev24/river_port_market.jsonl", RIVER_PORT, "rpm", THIRTY),
+    "dev25/market_square": _set("dev25/market_square.jsonl", MARKET_SQUARE, "d25",
+                                {"standard": 30, "messy": 50, "advanced_messy": 40}, sep=""),
+    "dev25/cathedral_close": _set("dev25/cathedral_close.jsonl", CATHEDRAL, "cc", THIRTY),
 }
 
 
