@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev25) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev26) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -42,6 +42,8 @@ HOUSING = ROOT / "knowledge_bases" / "housing_estate"
 COASTAL = ROOT / "knowledge_bases" / "coastal_village"
 RIVER_PORT = ROOT / "knowledge_bases" / "river_port_market"
 CATHEDRAL = ROOT / "knowledge_bases" / "cathedral_close"
+THEME_PARK = ROOT / "knowledge_bases" / "theme_park"
+SERVICES = ROOT / "knowledge_bases" / "motorway_services"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -148,6 +150,10 @@ SETS = {
     "dev25/market_square": _set("dev25/market_square.jsonl", MARKET_SQUARE, "d25",
                                 {"standard": 30, "messy": 50, "advanced_messy": 40}, sep=""),
     "dev25/cathedral_close": _set("dev25/cathedral_close.jsonl", CATHEDRAL, "cc", THIRTY),
+    "dev26/market_square": _set("dev26/market_square.jsonl", MARKET_SQUARE, "d26",
+                                {"standard": 10, "messy": 60, "advanced_messy": 30}, sep=""),
+    "dev26/theme_park": _set("dev26/theme_park.jsonl", THEME_PARK, "tp", THIRTY),
+    "dev26/motorway_services": _set("dev26/motorway_services.jsonl", SERVICES, "ms26", THIRTY),
 }
 
 
