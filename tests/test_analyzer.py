@@ -1634,3 +1634,70 @@ def test_dev24_phenomena(analyzer, text, expected):
 ])
 def test_dev24_phenomena_on_an_unseen_kb(kb_analyzers, text, expected):
     assert claims(kb_analyzers["river_port_market"], text) == expected
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    # hearsay the speaker says is wrong
+    ("we heard the library was flooded but nah that's wrong", []),
+    # the same place said again, denied, lends no contrast
+    ("the bank is secure and the — actually no, strike that, the bank isn't secure, there's a gas leak in there",
+     [("bank", "hazard")]),
+    # evacuation points, people put somewhere
+    ("the school and the church, both of them, they're the evac points", [("church", "safe_zone"), ("school", "safe_zone")]),
+    ("There's smoke at the school, but the building next to it is dry, we're putting people there.",
+     [("post office", "safe_zone"), ("school", "hazard")]),
+    # the caller says where they are, with the person hurt
+    ("my wife has a broken leg. We are inside the hotel.", [("hotel", "victim")]),
+    # "the baker" before a person's state is a person
+    ("the pharmacy is on fire and the bakery it's attached to has the baker trapped",
+     [("bakery", "victim"), ("pharmacy", "hazard")]),
+    # "under" of "under water" is no relation
+    ("evac point's at the park — scratch that — evac point's the gym, the park's under water",
+     [("park", "hazard"), ("sports hall", "safe_zone")]),
+])
+def test_dev25_phenomena(analyzer, text, expected):
+    assert claims(analyzer, text) == expected
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    # "coming down" is a fall, whatever words the categories' descriptions share with it
+    ("bits are still coming down off the spire", [("spire", "unstable_structure")]),
+    ("The report of someone trapped in the gift shop is stood down.", []),
+    # a verb's particle before a new clause, a cue's own last word before an ellipsis
+    ("the porter's lodge, it's safe to stay in, and the north gate's flooded",
+     [("north gate", "water_ingress"), ("porter's lodge", "sanctuary")]),
+    ("the gift shop, that's where the water's coming in... the tea room's dry", [("gift shop", "water_ingress")]),
+    # a place not visited yet
+    ("it's the palace not the deanery, the palace kitchen's flooded, and the deanery, well, we haven't been to the "
+     "deanery yet", [("bishop's palace", "water_ingress")]),
+    ("the cook at the deanery has a burnt arm", [("deanery", "casualty")]),
+    # "no, nobody" answers; it repairs nothing
+    ("the spire's cracked and leaning, and we've got, er, no, nobody under it", [("spire", "unstable_structure")]),
+])
+def test_dev25_phenomena_on_an_unseen_kb(kb_analyzers, text, expected):
+    assert claims(kb_analyzers["cathedral_close"], text) == expected
+
+
+def test_in_there_is_the_place_fallen_into(kb_analyzers):
+    got = claims(kb_analyzers["cathedral_close"],
+                 "The spire has collapsed into the cathedral and a verger is trapped under the rubble in there.")
+    assert ("cathedral", "casualty") in got and ("spire", "casualty") not in got
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    # a word the KB's names end in, after "the", is that noun, not the verb of a relation ("stands_on_...", "stand")
+    ("someone trapped in the stand the fan zone is set up behind", [("north stand", "casualty")]),
+    ("someone trapped in the stand that the south concourse runs underneath", [("south stand", "casualty")]),
+    # "turnstiles A": a letter that labels the place is no article
+    ("someone trapped in the turnstiles that feeds into the north concourse", [("gate A turnstiles", "casualty")]),
+])
+def test_head_words_of_an_unseen_kb(kb_analyzers, text, expected):
+    assert claims(kb_analyzers["football_stadium"], text) == expected
+
+
+def test_a_label_letter_is_kept_in_a_name():
+    from lucifer.language.text import name_words
+
+    assert name_words("turnstiles A") == ("turnstile", "a")
+    assert name_words("The Baker's") == ("baker",)
+    assert name_words("a bank of the river") == ("bank", "of", "river")

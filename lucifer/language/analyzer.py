@@ -218,7 +218,8 @@ class ReportAnalyzer:
         if not cats:
             return None
         # words the descriptions themselves use decide first ("flooding" -> "... floodwater pouring over ...")
-        words = [w for w in norm_phrase(phrase) if len(w) >= 4]
+        # (not the words for parts and motion: "coming down" is no "water coming through floors")
+        words = [w for w in norm_phrase(phrase) if len(w) >= 4 and w not in lx.DANGER_KIND_PARTS]
         described = [self._affirmed_words(c.description) for c in cats]
         overlap = [sum(any(_same_stem(w, d) for d in ds) for w in words) for ds in described]
         if overlap and max(overlap) > 0 and overlap.count(max(overlap)) == 1:
@@ -454,6 +455,9 @@ class ReportAnalyzer:
             if voice == "active" and t > 0 and norms[t - 1] in lx.ARTICLES - {"that"} and phrase.split()[0] in (
                     norms[t], toks.tokens[t].text.lower()):
                 continue  # "the vents on the forecourt": the verb of ``vents_into`` said as a noun
+            if t > 0 and norms[t - 1] in lx.ARTICLES - {"that"} and self._place_head_word(norms[t]) \
+                    and _link_stems(phrase.split()[0], synonyms=False) & _link_stems(norms[t], synonyms=False):
+                continue  # "the stand the fan zone is set up behind": a word names end in, not "stands_on_..."
             b = t + 1
             for j in range(t + 1, min(t + 4, len(norms))):
                 if j in taken or toks.clause_start[j]:
@@ -536,10 +540,14 @@ class ReportAnalyzer:
                             self.kb.landmark_by_name[landmark].surface_forms):
                 continue  # "it's flat and it's clear": a predicate, not the landmark the KB calls "flats"
             raw = toks.tokens[a].text.lower()
-            if b - a == 1 and prev in ("a", "an") and not raw.endswith(("'s", "’s", "s")) and all(
+            person_next = b < len(norms) and (h := self._cues.match_at(norms, b)) is not None \
+                and h[1][0] in self.kb.category_by_name \
+                and self.kb.category_by_name[h[1][0]].role == Role.CRITICAL
+            if b - a == 1 and (prev in ("a", "an") or prev == "the" and person_next) \
+                    and not raw.endswith(("'s", "’s", "s")) and all(
                     norm_phrase(f)[-1:] != norms[a:b] or f.lower().endswith(("'s", "’s")) for f in
                     self.kb.landmark_by_name[landmark].surface_forms):
-                continue  # "there's a baker trapped": a person, not "the baker's"
+                continue  # "there's a baker trapped", "has the baker trapped": a person, not "the baker's"
             if b - a == 1 and not raw.endswith("s") and (a == 0 or toks.clause_start[a] or prev not in
                                                          lx.DETERMINERS | lx.PREPOSITIONS | {"my", "our", "your", "his", "her", "their"}) \
                     and not (b < len(norms) and (norms[b].isdigit() or norms[b] in lx.NUMBER_WORDS | {"one"})) \
@@ -1130,6 +1138,8 @@ class ReportAnalyzer:
                 # "the warehouse no the library" (no pause) is a repair when a place precedes
                 # ("trapped worker in unit 3 no unit 4": a place right after "no", one just before it, is a repair)
                 named_next = b in blocked and any(i in blocked for i in range(max(0, a - 3), a))
+                if nxt in ("nobody", "noone", "nothing", "none", "no") or norms[b:b + 2] == ("no", "one"):
+                    continue  # "we've got, er, no, nobody under it": an answer, not a repair
                 if not (pause_after or named_next or nxt in ("no", "wait", "sorry", "the", "its", "it", "i", "actually",
                                                              "make")):
                     continue
@@ -1175,6 +1185,9 @@ class ReportAnalyzer:
         marker_tokens = {i for ma, mb, _ in ex.markers for i in range(ma, mb)}
         self._marker_cache = marker_tokens
         rel_hits = self._relations.find_all(norms, place_tokens)
+        # "the park's under water": a word of a danger phrase, not a relation
+        rel_hits = [h for h in rel_hits if not (h[1] - h[0] == 1 and (m := self._cues.match_at(norms, h[0])) is not None
+                                                and m[0] > h[1])]
         if self.kb.relations:
             cue_tokens = self._claim_cue_tokens(norms, place_tokens | marker_tokens)
             covered = place_tokens | marker_tokens | {i for a, b, _ in rel_hits if b - a > 1 for i in range(a, b)}
@@ -2034,8 +2047,9 @@ class ReportAnalyzer:
         w = norms[i]
         if i > 1 and norms[i - 2] in lx.ARTICLES and w in self._place_nouns() and norms[i - 1].isalpha():
             return True
-        return i > 0 and norms[i - 1] in lx.ARTICLES and w.isalpha() and len(w) >= 3 and w not in _NOT_HEADS \
-            and self._cues.match_at(norms, i) is None
+        return i > 0 and norms[i - 1] in lx.ARTICLES and w.isalpha() and len(w) >= 3 and (
+            w not in _NOT_HEADS or w in lx.INVERSE_VERBS and self._place_head_word(w)) \
+            and self._cues.match_at(norms, i) is None  # ("the stand the fan zone is set up behind": the KB's noun)
 
     def _relation_matches(self, rel: Relation, phrase: str) -> bool:
         rp = rel.phrase
@@ -2322,6 +2336,23 @@ class ReportAnalyzer:
                         break  # "dont go to the bakery, theres a fire": a warning about the place, not a move
                     ex.places[idx] = replace(p, status="reference", reason=f"in transit ('{hit[1]}'): no claim")
                     break
+        # "and the deanery, well, we haven't been to the deanery yet": a place not visited yet, and the same
+        # place said just before as what the clause is about, claim nothing
+        for idx, p in enumerate(ex.places):
+            if p.status != "active" or p.via is not None:
+                continue
+            j = p.start_tok
+            while j > 0 and norms[j - 1] in lx.DETERMINERS:
+                j -= 1
+            if not any(norms[max(0, j - len(k)):j] == k for k in lx.NOT_VISITED):
+                continue
+            ex.places[idx] = replace(p, status="reference", reason="not been there yet: no claim")
+            for jdx, q in enumerate(ex.places):
+                if q.landmark == p.landmark and q.status == "active" and q.end_tok <= j \
+                        and toks.sentence_of[q.start_tok] == toks.sentence_of[p.start_tok] \
+                        and all(w in lx.FILLERS or w in ("we", "i", "they") or w in lx.NOT_VISITED_WORDS
+                                for w in norms[q.end_tok:j]):
+                    ex.places[jdx] = replace(q, status="reference", reason="not been there yet: no claim")
         # "walked past the cafe and the clinic, and at the police station ...": the list passed, every place of it
         for idx, p in enumerate(ex.places):
             if p.status != "active" or p.via is not None or p.start_tok < 2:
@@ -2761,6 +2792,9 @@ class ReportAnalyzer:
         for a, b, (cat, source) in self._cues.find_all(norms, blocked):
             if source == "neutral":
                 continue
+            if norms[a:b] == ("clear",) and toks.sentence_start[a] and b < len(norms) \
+                    and norms[b] in ("everyone", "everybody", "people", "all", "out", "the", "them"):
+                continue  # "Clear everyone out of the building": an order, not a place said to be clear
             if norms[a:b] == ("clear",) and any(norms[k] in ("keep", "stay") for k in range(max(0, a - 4), a)) \
                     and not any(toks.clause_start[k] for k in range(max(1, a - 3), a + 1)):
                 continue  # "keep all boats clear of the lock", "stay well clear": an instruction, like "keep clear"
@@ -2849,6 +2883,7 @@ class ReportAnalyzer:
             claims.extend(extra)
             cues.extend(c.cue for c in extra)
         return Classification(cues, claims, denied)
+
 
     RESTART_WORDS = frozenset({"there", "theres", "s", "is", "a", "an", "the", "its", "it", "some"})
 
@@ -3547,7 +3582,7 @@ class ReportAnalyzer:
         """Someone else's word opens the cue's sentence: "a woman here says the bakery's flooded"."""
         j = a - 1
         while j >= 0 and toks.sentence_of[j] == toks.sentence_of[a] and a - j <= 10:
-            if norms[j] in lx.HEARSAY_VERBS and not (j > 0 and norms[j - 1] in ("i", "we")):
+            if norms[j] in lx.HEARSAY_VERBS and not (j > 0 and norms[j - 1] in ("i", "we") and norms[j] not in ("heard", "hear")):
                 return True
             j -= 1
         return False
@@ -3784,9 +3819,19 @@ class ReportAnalyzer:
             a, b = segs[k]
             # "two people are unconscious inside. The coffee house ...": a preposition that ends a
             # sentence is an adverb, not a broken-off "at the" (which a dash or ellipsis marks)
-            closed = b < len(toks) and toks.sentence_start[b] and norms[b - 1] not in lx.DETERMINERS \
+            closed = b < len(toks) and (toks.sentence_start[b] or ";" in toks.gaps[b]) \
+                and norms[b - 1] not in lx.DETERMINERS \
                 and not any(m in toks.gaps[b] for m in ("-", "—", "–", "...", "…"))
-            if (norms[b - 1] in lx.PREPOSITIONS or norms[b - 1] in lx.DETERMINERS) and not closed:
+            # ("it's safe to stay in, and the high gate's flooded": a verb's particle before a new clause)
+            particle = b < len(norms) and norms[b] in lx.COORDINATORS and "," in toks.gaps[b] \
+                and norms[b - 1] not in lx.DETERMINERS
+            # ("that's where the water's coming in... the tea room's dry": the cue's own last word)
+            nq = min(seg_places.get(k + 1, []), key=lambda q: q.start_tok, default=None)
+            said_of_next = nq is not None and any(
+                norms[i] not in lx.FILLERS for i in range(nq.end_tok, segs[k + 1][1]))
+            particle = particle or any(c.end_tok == b and c.end_tok - c.start_tok >= 2 for c in cs) \
+                and said_of_next and b < len(norms) and not any(m in toks.gaps[b] for m in ("-", "—", "–"))
+            if (norms[b - 1] in lx.PREPOSITIONS or norms[b - 1] in lx.DETERMINERS) and not closed and not particle:
                 nxt = k + 1
                 skipped = 0
                 while nxt < len(segs) and (nxt in hollow or (not seg_places.get(nxt) and not seg_cues.get(nxt) and skipped < 2)):
@@ -3848,7 +3893,15 @@ class ReportAnalyzer:
                     target = back
             if target is not None:
                 denied_at = {bound[c.start_tok].start_tok for c in cues if c.polarity == "denied" and c.start_tok in bound}
-                for q in seg_usable[target]:
+                told = seg_usable[target]
+                inside = any(norms[i:i + 2] in (("in", "there"), ("in", "it")) for i in range(a, b))
+                if inside and len(told) > 1 and not any(
+                        norms[i] in lx.COORDINATORS or norms[i] == "or" or toks.clause_start[i]
+                        for i in range(min(q.end_tok for q in told), max(q.start_tok for q in told))):
+                    # "The steeple has collapsed into the minster ... a verger is trapped under the rubble in there":
+                    # the place the first one fell into
+                    told = [max(told, key=lambda q: q.start_tok)]
+                for q in told:
                     if len(seg_usable[target]) > 1 and self._origin(norms, q):
                         continue
                     if q.start_tok in denied_at and any(r.start_tok not in denied_at and r.status == "active"
@@ -3895,6 +3948,10 @@ class ReportAnalyzer:
             if self._origin(norms, p):
                 continue
             tail = [w for w in norms[p.end_tok:segs[k][1]] if w not in lx.FILLERS]
+            if (tail[:1] in (["dry"], ["untouched"], ["unaffected"]) or tail[:2] in (["is", "dry"], ["s", "dry"],
+                                                                                     ["still", "dry"])) \
+                    and len(seg_places.get(k, [])) == 1:
+                continue  # "the gift shop, that's where the water's coming in... the tea room's dry": its own word
             if tail[:1] == ["empty"] and len(seg_places.get(k, [])) == 1:
                 continue  # "the gas cage is on fire, reception's empty, we checked it": said of it, its own
             nxt_words = [w for w in norms[segs[k][1]:min(len(norms), segs[k][1] + 8)] if w not in lx.FILLERS]
@@ -3914,7 +3971,10 @@ class ReportAnalyzer:
                             q.place.landmark == p.landmark and q.cue.category == c.category and q.cue.polarity == "denied"
                            and q.cue.start_tok < p.start_tok for q in pairs):
                         continue  # "says the chippy is on fire but i can see the chippy and it's not": denied, not lent
-                    if c.polarity == "denied" and c.reason.lower().startswith(("negated by 'not'", "negated by 'n't'", "negated by 'isn't'",
+                    if c.polarity == "denied" and any(q.landmark == p.landmark for q in seg_places.get(donor, [])):
+                        pass  # "the warehouse is secure and the — strike that, the warehouse isn't secure": the same
+                        # place said again, denied, lends its denial, no contrast
+                    elif c.polarity == "denied" and c.reason.lower().startswith(("negated by 'not'", "negated by 'n't'", "negated by 'isn't'",
                                                                           "negated by 's not'", "negated by 'nt'")):
                         # "the station is not flooded, the clinic is": the contrast takes the claim
                         c = replace(c, polarity="affirmed", reason="contrast with a negated claim")
@@ -4328,7 +4388,8 @@ class ReportAnalyzer:
                     or own[:2] == ["its", "the"] \
                     or words[:2] in (["that", "at"], ["that", "in"], ["thats", "at"], ["thats", "in"])
                 # ("sorry, I keep saying guest house, it's the hotel"; "That's at the guest house.")
-                who = next((i for i, w in enumerate(words[:6]) if w in lx.PERSON_SUBJECTS), None)
+                who = next((i for i, w in enumerate(words[:6]) if w in lx.PERSON_SUBJECTS or w in ("we", "i")), None)
+                # ("my husband ... his leg is broken. We are inside the guest house": where the caller is with him)
                 placed = person and who is not None and any(
                     w in lx.POSITION_PREPS or w in ("inside", "lying", "sitting", "lies") for w in words[who + 1:who + 5])
                 return j if said_alone or named or placed else None

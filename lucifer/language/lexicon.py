@@ -89,7 +89,9 @@ decon point|decon area|decon tent|decontamination point|where we're putting ever
 fine to walk through|fine to walk on|fine to cross|okay to walk through|ok to walk through|fine to pass through|
 fine for overflow|taking in families|taking in people|taking people in|can take people|we can take people|
 people are gathering there|people gathering there|everyone's gathering there|gathering there|taking in residents|
-taking in the evacuees|taking families|
+taking in the evacuees|taking families|evac point|evac points|evac centre|evac center|evacuation points|
+putting people there|putting people in there|putting everyone there|moving people there|send people there|
+sending people there|moving evacuees there|send them there|
 """.replace("\n", ""))
 
 _add(CRITICAL, """
@@ -114,7 +116,9 @@ needs oxygen|need oxygen|having a heart attack|heart attack|seizure|having a sei
 asthma attack|asthma attacks|an asthma attack|having an asthma attack|shut in|locked in|
 stuck on the roof|stranded on the roof|on the roof waiting|waving from|trapped upstairs|trapped on|
 can't get up|cannot get up|can't get out|can't free|cannot free|waving for help|yelling for help|for help|
-cracked his head|cracked her head|cracked their head|cracked his skull|cracked her skull|banged his head|
+leg is broken|arm is broken|broken leg|broken arm|broken hip|broke his leg|broke her leg|broke his arm|
+broke her arm|broke his hip|broke her hip|broken ankle|broke his ankle|broke her ankle|burnt arm|burnt hand|burned arm|burned hand|burnt leg|burnt face|burned face|with burns|burns to his|
+burns to her|burnt his|burnt her|burned his|burned her|cracked his head|cracked her head|cracked their head|cracked his skull|cracked her skull|banged his head|
 banged her head|hit his head|hit her head|split his head|split her head|cut his hand|cut her hand|cut his head|
 cut her head|cut his leg|cut her leg|head wound|head injury|hurt bad|badly hurt|walking wounded|screaming inside|kids screaming|someone in the water|
 smoke inhalation|persons reported|person reported|p1|p2|p3|p1s|p2s|p1 patient|p2 patient|priority one|cpr|
@@ -259,7 +263,8 @@ FALSE_ALARM = ["false alarm", "never mind", "nevermind", "disregard my last", "d
                "was unfounded", "were false", "are false", "are wrong", "are unfounded", "was false",
                "is false", "are untrue", "were untrue", "turned out to be false", "turned out to be wrong",
                "part of a drill", "part of the drill", "just a drill", "only a drill", "part of the exercise",
-               "part of an exercise", "just an exercise", "only an exercise"]
+               "part of an exercise", "just an exercise", "only an exercise", "is stood down", "been stood down",
+               "was stood down", "are stood down", "was a mannequin", "was a dummy", "was a training dummy"]
 # ... of which these withdraw an earlier report: only what comes before them in the sentence is denied
 PREVIOUS_REPORT_WITHDRAWN = {"disregard my last", "disregard the last report", "ignore my last", "cancel my last",
                              "disregard my last message", "disregard previous", "never mind", "nevermind"}
@@ -647,6 +652,12 @@ WORKER_PERSONS = {"driver", "worker", "workman", "lad", "labourer", "passenger",
 CALLER_ROLES = {"guard", "warden", "officer", "patrol", "assistant", "attendant", "manager", "caretaker", "courier",
                 "inspector", "first-aider", "firstaider", "aider", "volunteer", "medic", "paramedic", "constable",
                 "firefighter", "watchman", "supervisor", "foreman", "receptionist", "janitor", "custodian"}
+# Said before a place nobody has been to yet ("we haven't been to the deanery yet"): no claim there.
+NOT_VISITED = [("havent", "been", "to"), ("not", "been", "to"), ("havent", "been", "in"), ("not", "been", "in"),
+               ("havent", "been", "into"), ("havent", "checked"), ("not", "checked"), ("havent", "reached"),
+               ("not", "reached"), ("yet", "to", "reach"), ("yet", "to", "check"), ("havent", "got", "to"),
+               ("not", "yet", "checked"), ("not", "yet", "reached")]
+NOT_VISITED_WORDS = {w for k in NOT_VISITED for w in k} | {"have", "we", "ve"}
 # Verbs of an order to take people somewhere ("bring the walking wounded there"): no person placed.
 SEND_VERBS = {"bring", "send", "take", "direct", "ferry", "carry", "bringing", "sending", "taking", "directing",
               "redirect", "route"}
@@ -760,7 +771,9 @@ DANGER_KINDS: dict[str, list[str]] = {
                  "might let go", "about to let go", "going to let go", "cracked open", "split in two", "split open", "pancaked", "spongy",
                  "floor's spongy", "sinking", "subsiding", "subsidence", "slumping", "floor's gone", "floor has gone",
                  "floor's gone through", "gone through the floor", "roof's going", "roof is going", "span down", "span's down",
-                 "span is down", "twisted", "leaning badly", "leaning over", "listing"],
+                 "span is down", "twisted", "leaning badly", "leaning over", "listing", "stones falling", "stone falling",
+                 "falling stones", "falling stone", "bits falling", "bits coming down", "chunks falling", "lumps falling",
+                 "stonework falling", "sheared off", "keystone's come out", "arch has dropped", "arch's dropped"],
     "fallen": ["has fallen into", "have fallen into", "fallen into the", "rubble", "wall down", "walls down",
                "roof's in", "roof is in", "roof's gone", "roof has gone", "roof's off", "shedding bricks",
                "shedding slates", "masonry falling", "falling masonry", "fallen masonry", "wall's fallen",
@@ -792,7 +805,10 @@ DANGER_KINDS: dict[str, list[str]] = {
               "sea pouring through", "pouring through", "water right over", "water over", "water is over", "water's over", "water s over",
               "river's over", "river is over", "river's right over", "river s over", "river s right over",
               "under the river", "shipping water", "swimming in water", "filling fast", "filling up fast",
-              "water still climbing", "water's climbing", "water is climbing", "water still rising"],
+              "water still climbing", "water's climbing", "water is climbing", "water still rising", "water pouring",
+              "water pouring down", "water pouring into", "water running", "inches deep", "inches of water",
+              "foot deep", "feet deep", "ankle-deep", "knee-deep", "waist-deep", "got the water in",
+              "water's in", "water is in", "water in there"],
     "current": ["strong current", "fierce current", "fast current", "swift current", "rip current", "undertow",
                 "current's ripping", "current is ripping", "current ripping", "fast flowing water",
                 "fast-flowing water", "ripping through"],
@@ -819,14 +835,16 @@ for _phrases in DANGER_KINDS.values():
 
 # Verbs that give a claim as someone else's word, which the speaker may then contradict.
 HEARSAY_VERBS = {"say", "says", "said", "reckon", "reckons", "reckoned", "think", "thinks", "thought", "report", "reported",
-                 "reports", "tell", "told", "claim", "claims", "claimed", "insist", "insists", "swear", "swears"}
+                 "reports", "tell", "told", "claim", "claims", "claimed", "insist", "insists", "swear", "swears", "heard",
+                 "hear"}
 
 # What a speaker says to contradict what they were told: "... but it isn't", "it's still standing".
 CONTRADICTIONS = [("it", "isnt"), ("its", "not"), ("it", "wasnt"), ("it", "is", "not"), ("its", "still", "standing"),
                   ("its", "fine"), ("its", "ok"), ("its", "okay"), ("its", "not", "true"), ("thats", "wrong"),
                   ("they", "arent"), ("theyre", "not"), ("it", "hasnt"), ("it", "has", "not"), ("it", "didnt"),
                   ("it", "hadnt"), ("they", "havent"), ("they", "didnt"), ("its", "intact"), ("its", "fine"),
-                  ("nothing", "wrong"), ("its", "all", "fine")]
+                  ("nothing", "wrong"), ("its", "all", "fine"), ("that", "wrong"), ("that", "not", "true"),
+                  ("thats", "not", "true"), ("that", "not", "right"), ("thats", "not", "right")]
 
 # A person as the subject of a sentence that says where they are: "she's in the back of the shop".
 PERSON_SUBJECTS = {"he", "she", "hes", "shes", "they", "theyre"}

@@ -57,7 +57,11 @@ def norm_phrase(phrase: str) -> tuple[str, ...]:
 def name_words(name: str) -> tuple[str, ...]:
     """Token keys of a place name without its articles: how names and aliases are compared.
     ``name_words("The Baker's")`` -> ``('baker',)``."""
-    return tuple(w for w in norm_phrase(name) if w not in ("the", "a", "an"))
+    words = list(norm_phrase(name))
+    while words and words[0] in ("the", "a", "an"):
+        words.pop(0)
+    # ("turnstiles A", "Block A": a letter that labels the place, not an article)
+    return tuple(w for i, w in enumerate(words) if w != "the" and not (w in ("a", "an") and i < len(words) - 1))
 
 
 @dataclass(frozen=True)
