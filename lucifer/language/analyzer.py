@@ -576,6 +576,13 @@ class ReportAnalyzer:
                     and norms[p.start_tok - 2:p.start_tok] == ("for", "the"):
                 # "they're using the bank as the shelter for the hotel guests": whom it is for, not where
                 places[idx] = replace(p, status="reference", reason=f"modifier of '{toks.tokens[p.end_tok].text}'")
+        for idx, p in enumerate(places):
+            # "the supermarket across the square": where the place is, seen from here, not a place of its own
+            if p.start_tok >= 3 and norms[p.start_tok - 1] in lx.ARTICLES and norms[p.start_tok - 2] in ("across", "over") \
+                    and any(q.end_tok == p.start_tok - 2 for q in places) \
+                    and (p.end_tok >= len(norms) or toks.clause_start[p.end_tok]) \
+                    and self._relations.match_at(norms, p.start_tok - 2) is None:
+                places[idx] = replace(p, status="reference", reason="where the place before it is")
         starts = self._false_starts(toks, {i for p in places for i in range(p.start_tok, p.end_tok)})
         for fs in starts:
             nxt = min((p for p in places if p.start_tok >= fs.end_tok and p.start_tok - fs.end_tok <= 3),
@@ -756,8 +763,23 @@ class ReportAnalyzer:
             # (a word of a longer cue still heads a name: "the well" is the town well, "well alight" aside)
             cue_words = {key[0] for key in self._cue_keys() if len(key) == 1}
             rel_words = {w for rel in self.kb.relations for w in rel.phrase.split()}
+            # (nor a word the KB's descriptions use of other landmarks too: "ride" of "splash ride", where the
+            # coaster and the ghost house are rides as well)
+            described: dict[str, set[str]] = {}
+            names = sorted({name_words(f) for other in self.kb.landmarks for f in other.surface_forms}, key=len,
+                           reverse=True)
+            for lm in self.kb.landmarks:
+                words = list(norm_phrase(lm.description or ""))
+                for key in names:  # (a landmark named in a description is not the word used of it: "by the main gate")
+                    n = len(key)
+                    for i in range(len(words) - n + 1):
+                        if n and tuple(words[i:i + n]) == key:
+                            words[i:i + n] = [""] * n
+                for w in words:
+                    described.setdefault(w, set()).add(lm.name)
             self._heads = {w: next(iter(names)) for w, names in owners.items()
                            if len(names) == 1 and words_elsewhere.get(w, set()) == names and len(w) >= 4 and w.isalpha()
+                           and len(described.get(w, set()) - names) < 3
                            and w not in cue_words and w not in rel_words and w not in lx.DESCRIPTIVE_WORDS
                            and w not in lx.STOREY_WORDS and w not in lx.PART_NOUNS}  # ("the roof" of anything)
         out = []
@@ -1129,6 +1151,8 @@ class ReportAnalyzer:
             words = norms[a:b]
             nxt = norms[b] if b < len(norms) else None
             pause_after = b >= len(norms) or toks.clause_start[b]
+            if words[-1:] == ("wrong",) and nxt in ("word", "words"):
+                continue  # "gas leak, sorry, gas leak, wrong word": said of the word already repaired
             if words == ("no", "no") and b < len(norms) and not pause_after and self._cues.match_at(norms, b) is not None:
                 b -= 1  # "No, no fire.": the second "no" negates the cue; the first answers
                 words, nxt, pause_after = words[:1], norms[b], True
@@ -1614,7 +1638,7 @@ class ReportAnalyzer:
                 and not any(self._cues.match_at(norms, j) is not None for j in range(head_start, head_end))
         if anchor is None:
             # inverse: "the one (that) the garage sits behind", "the row it shares a wall with"
-            if generic and not (words and words[-1] in ("it", "they")):
+            if generic and not (words and words[-1] in ("it", "they", "theyre")):
                 return
             found = self._inverse_anchor(ex, norms, a)
             if found is None:
@@ -1659,6 +1683,10 @@ class ReportAnalyzer:
                 # "a bloke lying unconscious at the foot of the ops tower", "pile-up at the front of stage one":
                 # where it is, unless the KB names a relation so ("at_the_foot_of")
                 return
+            at = a if norms[a] in lx.POSITION_VERBS else head_end - len(words)
+            if (norms[a] in lx.POSITION_VERBS or words and set(words) <= lx.POSITION_VERBS) and at > 0 \
+                    and self._cue_before(toks, norms, at) and (at - 1) not in place_tokens:
+                return  # "Vapour cloud sitting over the wagon park": where the danger is, not a description
             participle = head_end > 1 and norms[head_end - 1].endswith(("ed", "ing")) \
                 and self._is_cue_end(norms, head_end - 1)  # "Live conductor exposed behind the medical centre"
             cue_end = head_end
@@ -1927,7 +1955,9 @@ class ReportAnalyzer:
         while j < len(norms) and (norms[j] in lx.DETERMINERS or norms[j] in lx.FILLERS or norms[j] in ("my", "your"))\
                 and j - b < 3:
             if norms[j] in ("that", "this") and (j + 1 >= len(norms) or ex.tokens.clause_start[j + 1]
-                                                 or norms[j + 1] in lx.COPULAS):
+                                                 or norms[j + 1] in lx.COPULAS
+                                                 or norms[j + 1] in ("there", "theres", "someone", "somebody")):
+                # ("in the building across from that there's a woman on a balcony")
                 break  # "the building across from that has people trapped": the pronoun is the anchor
             if j == b and its:
                 break
@@ -1956,7 +1986,8 @@ class ReportAnalyzer:
         if j < len(norms) and (norms[j] in ("it", "them", "that", "there") + lx.SPEAKER_ANCHORS or its) \
                 and not ex.tokens.clause_start[j]:
             if norms[j] in ("that", "there") and j + 1 < len(norms) and not ex.tokens.clause_start[j + 1] \
-                    and norms[j + 1] not in lx.COPULAS:
+                    and norms[j + 1] not in lx.COPULAS \
+                    and not (norms[j] == "that" and norms[j + 1] in ("there", "theres", "someone", "somebody")):
                 return None, b, False
             before = [p for p in ex.places if p.end_tok <= b]
             if norms[j] in lx.SPEAKER_ANCHORS:  # the speaker's own position ("across the street from here", "from mine")
@@ -2003,10 +2034,11 @@ class ReportAnalyzer:
     def _inverse_anchor(self, ex: Extraction, norms: tuple[str, ...], a: int) -> tuple[PlaceMention, int, bool] | None:
         """"the one (that) the garage sits behind": (anchor, start of the description, head is a named place)."""
         j = a
-        while j > 0 and norms[j - 1] in lx.INVERSE_VERBS | {"a", "an"} and a - j < 3:
-            j -= 1
+        while j > 0 and norms[j - 1] in lx.INVERSE_VERBS | {"a", "an"} and a - j < 3 \
+                and not any(p.end_tok == j and p.status == "active" for p in ex.places):
+            j -= 1  # (not past a name's own last word: "car park A lies downhill of")
         anchor = next((p for p in ex.places if p.end_tok == j and p.status == "active"), None)
-        if anchor is None and j > 0 and norms[j - 1] in ("it", "its", "they") and j - 1 > 0 \
+        if anchor is None and j > 0 and norms[j - 1] in ("it", "its", "they", "theyre") and j - 1 > 0 \
                 and (norms[j - 2] in lx.GENERIC_HEADS | {"that", "which"} or self._plain_head(norms, j - 2)):
             # "the building it sits next to": the pronoun is the anchor
             hs = j - 2
@@ -2789,8 +2821,10 @@ class ReportAnalyzer:
         cues: list[CueMention] = []
         shut: set[int] = set()
         self._shut_tokens = shut
+        neutral: set[int] = set()
         for a, b, (cat, source) in self._cues.find_all(norms, blocked):
             if source == "neutral":
+                neutral.update(range(a, b))  # ("people sitting in here out of the smoke": no person, no smoke)
                 continue
             if norms[a:b] == ("clear",) and toks.sentence_start[a] and b < len(norms) \
                     and norms[b] in ("everyone", "everybody", "people", "all", "out", "the", "them"):
@@ -2863,7 +2897,7 @@ class ReportAnalyzer:
         cues = self._read_cue_pairs(toks, norms, cues)
         cues = self._sheltered_people(norms, cues)
         cues.extend(self._predicative_cues(ex, norms, blocked | {i for c in cues for i in range(c.start_tok, c.end_tok)}))
-        cues.extend(self._person_cues(ex, norms, blocked | {i for c in cues for i in range(c.start_tok, c.end_tok)}))
+        cues.extend(self._person_cues(ex, norms, blocked | neutral | {i for c in cues for i in range(c.start_tok, c.end_tok)}))
         cues.extend(self._another_one_cues(toks, norms, cues, blocked))
         cues = self._evacuation_destinations(ex, norms, cues)
         cues.sort(key=lambda c: c.start_tok)
@@ -3165,6 +3199,9 @@ class ReportAnalyzer:
                 continue  # "somebody's left a van right across the entrance": left something, not left behind
             if any(norms[m] in lx.NEGATORS and not toks.clause_start[m + 1] for m in range(max(0, j - 2), i)):
                 continue  # "no one at the window" is handled as a negation elsewhere (not "no, the man's at ...")
+            if j >= 1 and norms[j] in ("a", "an") and (norms[j - 1] in ("were", "im") or norms[max(0, j - 2):j] in (
+                    ("we", "are"), ("i", "am"), ("we", "re"))):
+                continue  # "We're a family in a car, parked in visitor parking": who is calling
             t0, t1 = toks.tokens[i], toks.tokens[k]
             out.append(CueMention(i, k + 1, t0.start, t1.end, toks.text[t0.start:t1.end], cat, "lexicon",
                                   reason="a person placed at the scene"))
@@ -3241,8 +3278,9 @@ class ReportAnalyzer:
             if after in lx.GENERIC_HEADS or after in ("light", "zone", "tag", "line", "team", "of"):
                 continue
             if not (norms[i - 1] in ("is", "s", "are", "was", "now", "still", "as", "looks", "seems", "be", "completely",
-                                     "structurally", "totally", "all", "thats", "its", "theyre", "whos") or i in ends):
-                continue
+                                     "structurally", "totally", "all", "thats", "its", "theyre", "whos")
+                    or i in ends and (i + 1 >= len(norms) or toks.clause_start[i + 1] or after in lx.COORDINATORS)):
+                continue  # ("in the HGV park, green liquid running": an adjective of what follows)
             cat = self._category_for_role(role, w)
             if cat:
                 t = toks.tokens[i]
@@ -3372,6 +3410,7 @@ class ReportAnalyzer:
         """"... the smoke was a false alarm": every claim of that sentence is denied."""
         sentence_of = toks.sentence_of
         alarms: dict[int, int] = {}  # sentence -> the token before which its claims are denied
+        places_now = getattr(self, "_places_now", [])
         for phrase, key in _FALSE_ALARM_KEYS:
             for i in range(len(norms) - len(key) + 1):
                 if norms[i] != key[0]:
@@ -3381,6 +3420,8 @@ class ReportAnalyzer:
                     # "disregard my last, the spill is at the store": an earlier report is withdrawn and
                     # what follows replaces it
                     until = i if phrase in lx.PREVIOUS_REPORT_WITHDRAWN else len(norms)
+                    if phrase in lx.DISMISSED_BEFORE:
+                        until = i + len(key)  # ("'supermarket smoke was a barbecue' ...; 'water tower leaking'")
                     # "no fire at the chip shop, it's just steam, but the hotel's got a proper fire going": a
                     # contrast that names another place afterwards is not part of the false alarm
                     places = {p.start_tok for p in getattr(self, "_places_now", [])}
@@ -3397,6 +3438,15 @@ class ReportAnalyzer:
                     if repaired and until == len(norms):
                         until = min(repaired)
                     alarms[sentence_of[i]] = max(alarms.get(sentence_of[i], 0), until)
+                    n = sentence_of[i]
+                    if n > 0 and phrase not in lx.PREVIOUS_REPORT_WITHDRAWN and not any(
+                            sentence_of[p.start_tok] == n and p.start_tok < i for p in places_now) \
+                            and not any(c.start_tok < i and sentence_of[c.start_tok] == n and c.polarity == "affirmed"
+                                        for c in cues) \
+                            and any(norms[j] in ("no", "sorry", "oh", "actually", "wait", "its", "just")
+                                    for j in range(i) if sentence_of[j] == n):
+                        # "Fire at the bakery! ... oh, no, sorry, it's just steam off their ovens, false alarm."
+                        alarms[n - 1] = len(norms)
         if not alarms:
             return cues
         return [replace(c, polarity="denied", reason="false alarm")
@@ -3937,6 +3987,20 @@ class ReportAnalyzer:
                 continue  # "that should be the town hall, the library's shut": no claim revives the library
             # "the lodge and the car park, the first one's got smoke": a list member borrows nothing said
             # after an ordinal names one of the list
+            beside = next((q for q in active if p.replaces is None and q.anaphor is None and p.anaphor is None
+                           and not q.also and q.landmark == p.landmark and q is not p and q.start_tok in claimed_places
+                           and (seg_index[q.start_tok] == k
+                                or 0 <= q.start_tok - p.end_tok <= 3 and not any(
+                                    norms[i] in lx.COORDINATORS for i in range(p.end_tok, q.start_tok)))), None)
+            if beside is not None:
+                # "across from there, the block of flats, ... it's clear", "two of the mechanics are hurt in the
+                # garage": the place is said again beside it, with its own word, which is this one's too
+                got = [c.cue for c in pairs if c.place is beside]
+                if seg_index[beside.start_tok] == k:
+                    got += [c for c in seg_cues.get(k, []) if all(c is not g for g in got)]
+                pairs.extend(Claim(p, c) for c in got)
+                claimed_places.add(p.start_tok)
+                continue
             counted = len(norms) if p.counted_by is None else p.counted_by
             listed = self._list_share(ex, norms, p, pairs)
             if listed:
@@ -3947,6 +4011,12 @@ class ReportAnalyzer:
                 continue
             if self._origin(norms, p):
                 continue
+            if any(norms[i] in ("nobody", "noone") or norms[i:i + 2] == ("no", "one")
+                   for i in range(max(0, p.start_tok - 4), p.start_tok)):
+                continue  # "there's nobody in the queue line": said of its people, and none there
+            if self._speaker_at(norms, p) and any(q.landmark == p.landmark and q.start_tok > p.start_tok
+                                                  and q.status == "active" for q in ex.places):
+                continue  # "im outside the school the school yard is the assembly point ...": where the caller stands
             tail = [w for w in norms[p.end_tok:segs[k][1]] if w not in lx.FILLERS]
             if (tail[:1] in (["dry"], ["untouched"], ["unaffected"]) or tail[:2] in (["is", "dry"], ["s", "dry"],
                                                                                      ["still", "dry"])) \
@@ -4252,6 +4322,15 @@ class ReportAnalyzer:
         sent = sentence_of[segs[k][0]]
         if first_norm[k] in ("we", "i", "im", "were", "you", "youre"):
             return None  # "...full of smoke; we are shifting to emergency steering in the tiller flat": no list item
+
+        def own(j: int) -> bool:
+            """The donor's place is one said before it ("I can see the park, the sports hall and the water tower,
+            and the water tower's leaning"), or it opens a new event ("..., and then when I got to the
+            warehouse ..."): its predicate is that place's own."""
+            first = min(seg_places[j], key=lambda p: p.start_tok)
+            said = any(q.landmark == first.landmark for i in range(0, j) for q in seg_places.get(i, [])
+                       if sentence_of[q.start_tok] == sent)
+            return said or any(w in ("then", "when") for w in first_norm[j].split())
         # a list closed by "and": "the hotel and the market square are all clear"
         j = k + 1
         while j < len(segs) and sentence_of[segs[j][0]] == sent and (j in hollow or (seg_places.get(j) and not seg_cues.get(j))):
@@ -4259,7 +4338,8 @@ class ReportAnalyzer:
         if j < len(segs) and sentence_of[segs[j][0]] == sent and seg_cues.get(j) and seg_places.get(j) \
                 and first_norm[j] in ("and", "or", "plus") \
                 and min(p.start_tok for p in seg_places[j]) < min(c.start_tok for c in seg_cues[j]) \
-                and not min(seg_places[j], key=lambda p: p.start_tok).text.lower().endswith(("'s", "’s")):
+                and not min(seg_places[j], key=lambda p: p.start_tok).text.lower().endswith(("'s", "’s")) \
+                and not own(j):
             return j  # ("..., and the fire hall's secure": a singular predicate is that place's own)
         # backward: "fire at the bakery and the school", "people trapped in the, um, school, no, the library"
         j = k - 1
@@ -4279,6 +4359,8 @@ class ReportAnalyzer:
                 if ps and min(ps, key=lambda p: p.start_tok).text.lower().endswith(("'s", "’s")) \
                         and not any(seg_places.get(i) for i in range(k + 1, j)):
                     break  # "not the gym, the library — the gym's got exposed wiring": that place's own predicate
+                if ps and own(j):
+                    break
                 if not ps or min(p.start_tok for p in ps) <= min(c.start_tok for c in seg_cues[j]):
                     return j
                 break

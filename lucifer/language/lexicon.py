@@ -116,7 +116,7 @@ needs oxygen|need oxygen|having a heart attack|heart attack|seizure|having a sei
 asthma attack|asthma attacks|an asthma attack|having an asthma attack|shut in|locked in|
 stuck on the roof|stranded on the roof|on the roof waiting|waving from|trapped upstairs|trapped on|
 can't get up|cannot get up|can't get out|can't free|cannot free|waving for help|yelling for help|for help|
-leg is broken|arm is broken|broken leg|broken arm|broken hip|broke his leg|broke her leg|broke his arm|
+still on board|riders still on board|stuck at the top|stranded at the top|leg is broken|arm is broken|broken leg|broken arm|broken hip|broke his leg|broke her leg|broke his arm|
 broke her arm|broke his hip|broke her hip|broken ankle|broke his ankle|broke her ankle|burnt arm|burnt hand|burned arm|burned hand|burnt leg|burnt face|burned face|with burns|burns to his|
 burns to her|burnt his|burnt her|burned his|burned her|cracked his head|cracked her head|cracked their head|cracked his skull|cracked her skull|banged his head|
 banged her head|hit his head|hit her head|split his head|split her head|cut his hand|cut her hand|cut his head|
@@ -160,12 +160,14 @@ NEGATORS = {
     "nt",
 }
 NEGATOR_PHRASES = ["no one", "no longer", "not any", "free of", "clear of", "no sign of", "no signs of",
-                   "no more", "not anymore", "any more", "no trace of", "no evidence of", "ruled out"]
+                   "no more", "not anymore", "any more", "no trace of", "no evidence of", "ruled out", "well away from",
+                   "away from the", "far from the", "out of the way of", "upwind of the", "safe from the"]
 
 # Phrases after a hazard cue that cancel it ("the fire is out").
 CANCEL_AFTER = ["is out", "s out", "are out", "was out", "put out", "out now", "been put out",
                 "has cleared", "have cleared", "s cleared", "has lifted", "s lifted", "has gone down", "s gone down",
-                "has receded", "s receded", "have receded", "gone down now", "water's gone down", "water has gone down",
+                "has receded", "s receded", "have receded", "gone down now", "brought down", "been brought down",
+                "all been brought down", "got them down", "nobody left", "water's gone down", "water has gone down",
                 "water's receded", "water has receded", "flood's gone down", "flooding's gone down",
                 "extinguished", "under control", "contained", "is over", "has stopped", "stopped",
                 "died down", "cleared up", "gone", "is gone", "has gone", "fixed", "repaired",
@@ -214,7 +216,8 @@ ABILITY_NEGATIONS = ("negated by 'can't'", "negated by 'cant'", "negated by 'can
 CANCEL_CLAUSES = {"no sign of him", "no sign of her", "no sign of them", "no sign of anyone", "no sign of anybody",
                   "no one there", "nobody there"}
 # ... of which these revoke only a person in need ("gas leak at the police post, they evacuated" stands)
-CANCEL_PEOPLE_ONLY = {"all rescued", "rescued", "evacuated", "got out", "out safely", "accounted for",
+CANCEL_PEOPLE_ONLY = {"brought down", "been brought down", "all been brought down", "got them down", "nobody left",
+                      "all rescued", "rescued", "evacuated", "got out", "out safely", "accounted for",
                       "taken to hospital", "been taken to hospital", "been extracted", "been brought out",
                       "lifted off", "been lifted off", "winched up", "been winched up", "taken off", "been taken off",
                       "picked up", "been picked up", "handed to the ambulance crew", "handed over to the ambulance",
@@ -234,7 +237,9 @@ BACK_REFERENCE_WORDS = {"it", "its", "s", "is", "has", "been", "thats", "that", 
                         "ive"}
 
 # Phrases that contain cue words but claim nothing ("the smoke alarm went off", "fire crew on site").
-NEUTRAL_PHRASES = ["i'm calling from", "im calling from", "i am calling from", "we're calling from",
+NEUTRAL_PHRASES = ["out of the smoke", "away from the smoke", "out of the rain", "out of the water", "out of the fumes",
+                   "people sitting in here", "people sitting in there", "sitting in here", "waiting in here",
+                   "i'm calling from", "im calling from", "i am calling from", "we're calling from",
                    "i'm ringing from", "im ringing from", "we're ringing from", "where i'm calling from", "can't get down to", "cannot get down to", "comes down to", "come down to", "coming down to", "goes down to", "runs down to", "keep clear", "stay clear", "keep everyone clear", "keep everybody clear", "keep people clear",
                    "keep them clear", "keep the public clear", "keep well clear", "clear the public", "keep it clear",
                    "keep that clear", "keep this clear",
@@ -264,7 +269,12 @@ FALSE_ALARM = ["false alarm", "never mind", "nevermind", "disregard my last", "d
                "is false", "are untrue", "were untrue", "turned out to be false", "turned out to be wrong",
                "part of a drill", "part of the drill", "just a drill", "only a drill", "part of the exercise",
                "part of an exercise", "just an exercise", "only an exercise", "is stood down", "been stood down",
-               "was stood down", "are stood down", "was a mannequin", "was a dummy", "was a training dummy"]
+               "was stood down", "are stood down", "was a mannequin", "was a dummy", "was a training dummy",
+               "was a barbecue", "was a bbq", "was a bonfire", "was someone's barbecue"]
+# ... of which these say what the thing said before them was: what follows them is not denied
+DISMISSED_BEFORE = {"is stood down", "been stood down", "was stood down", "are stood down", "was a mannequin",
+                    "was a dummy", "was a training dummy", "was a barbecue", "was a bbq", "was a bonfire",
+                    "was someone's barbecue"}
 # ... of which these withdraw an earlier report: only what comes before them in the sentence is denied
 PREVIOUS_REPORT_WITHDRAWN = {"disregard my last", "disregard the last report", "ignore my last", "cancel my last",
                              "disregard my last message", "disregard previous", "never mind", "nevermind"}
@@ -482,7 +492,8 @@ COORDINATOR_PHRASES = ["as well as", "along with", "together with", "and also", 
 RETRACT_VERBS = {"scratch", "strike", "forget", "cancel", "remove", "minus", "drop", "lose", "scrap", "scrub"}
 
 # Places in these phrases are being passed or travelled to: the report claims nothing about them.
-TRANSIT = ["anyone coming off", "anybody coming off", "everyone coming off", "people coming off", "evacuated from", "moved out of", "moved from", "relocated from", "decanted from", "brought out of",
+TRANSIT = ["walked up from", "walked down from", "walked over from", "walked from", "drove from", "drove up from",
+           "driven from", "ran from", "run from", "cycled from", "anyone coming off", "anybody coming off", "everyone coming off", "people coming off", "evacuated from", "moved out of", "moved from", "relocated from", "decanted from", "brought out of",
            "heading to", "heading for", "heading towards", "heading toward", "headed to", "headed for", "head to",
            "passing", "passed", "moving past", "going past", "driving past", "walking past", "past",
            "on our way to", "on the way to", "our way to", "en route to", "enroute to", "going to", "driving to",
@@ -700,6 +711,8 @@ WITHDRAW_MARKERS = {"cancel that", "scratch that", "disregard that", "strike tha
 COMPOUND_MODIFIERS = {"car", "ball", "theme", "trailer", "business", "retail", "industrial", "skate", "amusement",
                       "safari", "bell", "clock", "cell", "radio", "signal", "phone"}
 # Words that may stand between a correction or report verb and a headless relation ("she says across from ...").
+# Verbs of where a danger is ("a vapour cloud sitting over the lorry park"), not of a place described.
+POSITION_VERBS = {"sitting", "hanging", "lying", "drifting", "hovering", "spreading", "settling", "pooling", "sat", "hung"}
 HEADLESS_OK = {"she", "he", "they", "says", "said", "reports", "reported", "say", "thinks", "think", "its", "it",
                "is", "was", "actually", "rather", "now", "maybe", "probably", "definitely", "but", "and", "while", "whereas", "plus"}
 # Relation groups close enough to stand in for each other when the exact one finds nothing.
@@ -754,11 +767,13 @@ DANGER_KINDS: dict[str, list[str]] = {
                  "petrol leak", "diesel leak", "leaking fuel", "fuel pouring", "pouring fuel", "diesel slick",
                  "slick", "fuel slick", "petrol all over", "fuel all over", "diesel all over", "oil all over",
                  "petrol everywhere", "diesel everywhere", "fuel everywhere", "swimming in oil", "swimming in diesel", "swimming in fuel",
-                 "swimming in petrol", "oil everywhere", "oil slick"],
+                 "swimming in petrol", "oil everywhere", "oil slick", "chemical leak", "chemical leaks", "chemical spill",
+                 "chemical fumes", "tanker leak", "hazchem spill", "seeping in"],
     "explosion": ["explosion", "exploded", "explosive", "blast", "exploding", "explode", "could explode", "just gone up", "just went up", "gone up again", "went up again", "gone up like", "went up like",
                   "another bang", "loud bang", "big bang", "massive bang", "huge bang", "blown out", "blown apart",
                   "blown in", "blew out", "blew up", "blown up", "bottles went up", "cylinders went up",
-                  "gas bottles went up", "gas cylinders went up", "gas bottles exploded", "gas bottle went up"],
+                  "gas bottles went up", "gas cylinders went up", "gas bottles exploded", "gas bottle went up", "gas bottles went off",
+                  "bottles went off", "cylinders went off", "went off like a bomb"],
     "collapse": ["collapse", "collapsed", "collapsing", "caved in", "cave in", "cave-in", "caving in", "caving",
                  "fell in", "falling down", "come down", "came down", "coming down", "about to collapse", "unstable",
                  "crumbling", "cracked", "cracking", "cracks", "a crack", "crack right across",
@@ -771,7 +786,8 @@ DANGER_KINDS: dict[str, list[str]] = {
                  "might let go", "about to let go", "going to let go", "cracked open", "split in two", "split open", "pancaked", "spongy",
                  "floor's spongy", "sinking", "subsiding", "subsidence", "slumping", "floor's gone", "floor has gone",
                  "floor's gone through", "gone through the floor", "roof's going", "roof is going", "span down", "span's down",
-                 "span is down", "twisted", "leaning badly", "leaning over", "listing", "stones falling", "stone falling",
+                 "span is down", "twisted", "leaning badly", "leaning over", "listing", "sagged", "sagged down",
+                 "has sagged", "roof's sagged", "stones falling", "stone falling",
                  "falling stones", "falling stone", "bits falling", "bits coming down", "chunks falling", "lumps falling",
                  "stonework falling", "sheared off", "keystone's come out", "arch has dropped", "arch's dropped"],
     "fallen": ["has fallen into", "have fallen into", "fallen into the", "rubble", "wall down", "walls down",
@@ -805,14 +821,15 @@ DANGER_KINDS: dict[str, list[str]] = {
               "sea pouring through", "pouring through", "water right over", "water over", "water is over", "water's over", "water s over",
               "river's over", "river is over", "river's right over", "river s over", "river s right over",
               "under the river", "shipping water", "swimming in water", "filling fast", "filling up fast",
-              "water still climbing", "water's climbing", "water is climbing", "water still rising", "water pouring",
+              "water still climbing", "water's climbing", "water is climbing", "water still rising", "floodwater", "floodwaters", "flood water", "flood waters", "risen", "has risen", "lake's risen", "river's risen", "water's risen", "halfway up", "right up to the", "is up to the", "up to the gutters", "up to the windows",
+              "up to the second-floor windows", "water is rising", "water is still rising", "water's still rising", "still rising fast", "rising fast", "water's come up", "water has come up", "water came up", "water pouring",
               "water pouring down", "water pouring into", "water running", "inches deep", "inches of water",
               "foot deep", "feet deep", "ankle-deep", "knee-deep", "waist-deep", "got the water in",
               "water's in", "water is in", "water in there"],
     "current": ["strong current", "fierce current", "fast current", "swift current", "rip current", "undertow",
                 "current's ripping", "current is ripping", "current ripping", "fast flowing water",
                 "fast-flowing water", "ripping through"],
-    "electric": ["live wire", "live wires", "power line down", "power lines down", "downed lines", "sparking",
+    "electric": ["live cabling", "live cable", "live cables", "floor's live", "floor is live", "live wire", "live wires", "power line down", "power lines down", "downed lines", "sparking",
                  "sparks", "sparks everywhere", "electrified", "arcing", "electrical hazard", "exposed wiring"],
     "access": ["impassable", "blocked off", "no access", "no vehicle access", "no way in", "no way through",
                "no way onto", "inaccessible", "not passable", "no through route", "can't get in", "cannot get in",
