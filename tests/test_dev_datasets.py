@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev26) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev27) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -44,6 +44,7 @@ RIVER_PORT = ROOT / "knowledge_bases" / "river_port_market"
 CATHEDRAL = ROOT / "knowledge_bases" / "cathedral_close"
 THEME_PARK = ROOT / "knowledge_bases" / "theme_park"
 SERVICES = ROOT / "knowledge_bases" / "motorway_services"
+RESERVOIR = ROOT / "knowledge_bases" / "reservoir_valley"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -154,6 +155,8 @@ SETS = {
                                 {"standard": 10, "messy": 60, "advanced_messy": 30}, sep=""),
     "dev26/theme_park": _set("dev26/theme_park.jsonl", THEME_PARK, "tp", THIRTY),
     "dev26/motorway_services": _set("dev26/motorway_services.jsonl", SERVICES, "ms26", THIRTY),
+    "dev27/market_square": _set("dev27/market_square.jsonl", MARKET_SQUARE, "d27", EVEN, sep=""),
+    "dev27/reservoir_valley": _set("dev27/reservoir_valley.jsonl", RESERVOIR, "rv", THIRTY),
 }
 
 
