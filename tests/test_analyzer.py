@@ -1782,3 +1782,33 @@ def test_dev26_phenomena_motorway_services(kb_analyzers, text, expected):
 ])
 def test_dev26_phenomena_more(analyzer, text, expected):
     assert claims(analyzer, text) == expected
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    # "as can the X", "and the X too": what the place before it in the sentence has
+    ("City hall has been secured and can take evacuees, as can the post office.",
+     [("post office", "safe_zone"), ("town hall", "safe_zone")]),
+    ("the police post is being used for shelter and um the grocer's too, the grocery store yeah",
+     [("police station", "safe_zone"), ("supermarket", "safe_zone")]),
+    # hearsay contradicted past a relational description
+    ("they said someone was trapped in the shop attached to the bakery but the search team found nobody there", []),
+])
+def test_dev27_phenomena(analyzer, text, expected):
+    assert claims(analyzer, text) == expected
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    # a place gone under is flooded; "not safe" after a fall takes the fall's category
+    ("whatever the Fleece looks out over has gone under, you can't see the deck any more",
+     [("packhorse bridge", "floodwater")]),
+    ("the shop, Hendry's, the ceiling's come down in the back and it's not safe to go in", [("village shop", "no_go")]),
+    # evacuated is no guess for MiniLM; lanes buried are no person; old news pumped out
+    ("Water company: filter beds overtopping, the water treatment works has been evacuated.",
+     [("water treatment works", "floodwater")]),
+    ("landslip across the hairpin, both lanes buried under rock and soil", [("hairpin bend", "no_go")]),
+    ("the mill row flooding, that's old news, it's gone down, they've pumped it all out", []),
+    ("the dam's cracking along the crest and the lake it holds back is still rising",
+     [("dam wall", "no_go"), ("reservoir", "floodwater")]),
+])
+def test_dev27_phenomena_on_an_unseen_kb(kb_analyzers, text, expected):
+    assert claims(kb_analyzers["reservoir_valley"], text) == expected

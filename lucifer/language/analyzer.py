@@ -219,7 +219,8 @@ class ReportAnalyzer:
             return None
         # words the descriptions themselves use decide first ("flooding" -> "... floodwater pouring over ...")
         # (not the words for parts and motion: "coming down" is no "water coming through floors")
-        words = [w for w in norm_phrase(phrase) if len(w) >= 4 and w not in lx.DANGER_KIND_PARTS]
+        words = [w for w in norm_phrase(phrase) if len(w) >= 4 and w not in lx.DANGER_KIND_PARTS
+                 and w not in ("come", "came", "comes")]
         described = [self._affirmed_words(c.description) for c in cats]
         overlap = [sum(any(_same_stem(w, d) for d in ds) for w in words) for ds in described]
         if overlap and max(overlap) > 0 and overlap.count(max(overlap)) == 1:
@@ -1511,6 +1512,10 @@ class ReportAnalyzer:
                 if not after or after[0] in lx.COPULAS | lx.PREPOSITIONS \
                         or not any(w.endswith("s") or w.endswith("ed") or w in lx.RELATION_ENDINGS for w in after):
                     continue  # ("a tank wagon on the loading siding is leaking": the anchor's own predicate)
+            outer = next((q for q in ex.places if q is not anchor and q.via is not None and q.status == "active"
+                          and q.start_tok <= anchor.start_tok and anchor.end_tok <= q.end_tok), None)
+            if outer is not None:
+                anchor = outer  # "the house overlooking the lawn the north gate opens onto": the lawn so described
             related: dict[str, str] = {}
             phrases: dict[str, str] = {}
             for rel in self.kb.relations:
@@ -2822,6 +2827,7 @@ class ReportAnalyzer:
         shut: set[int] = set()
         self._shut_tokens = shut
         neutral: set[int] = set()
+        self._neutral_tokens = neutral
         for a, b, (cat, source) in self._cues.find_all(norms, blocked):
             if source == "neutral":
                 neutral.update(range(a, b))  # ("people sitting in here out of the smoke": no person, no smoke)
@@ -2868,7 +2874,8 @@ class ReportAnalyzer:
                     cue = replace(cue, category=und, source="lexicon", reason=f"a thing {norms[a]}")
             if source in ("lexicon", "category") and norms[a:b] == ("buried",) and a > 0 and (
                     norms[a - 1] in lx.THING_SUBJECTS or self._thing_before(norms, a, self._place_tokens)
-                    or next((w for w in reversed(norms[max(0, a - 4):a]) if w not in lx.FILLERS), "") in ("its", "it")) \
+                    or next((w for w in reversed(norms[max(0, a - 4):a]) if w not in lx.FILLERS and w != "all"), "")
+                    in ("its", "it")) \
                     and self.kb.category_by_name[cat].role == Role.CRITICAL:
                 und = self._category_for_role(lx.UNDESIRABLE, "buried under snow and debris")
                 if und is not None:
@@ -2883,6 +2890,21 @@ class ReportAnalyzer:
                                                                   or norms[a - 1] in ("re", "m") and a > 1
                                                                   and norms[a - 2] in ("we", "i", "you")):
                 continue  # "we come down past the fish market": the speaker moving, nothing fallen
+            if cue.category == self._person_category and norms[a:b] in (("gone", "under"), ("going", "under"),
+                                                                         ("went", "under")) \
+                    and any(i in self._place_tokens for i in range(max(0, a - 3), a)) \
+                    and not any(norms[i] in lx.PERSON_SUBJECTS for i in range(max(0, a - 3), a)):
+                und = self._category_for_role(lx.UNDESIRABLE, "flooded, under water")
+                if und is not None:  # "whatever the Fleece looks out over has gone under": the place, flooded
+                    cue = replace(cue, category=und, reason="a place gone under")
+            if cue.category == self._person_category and norms[a] == "in" and any(
+                    norms[j] in ("it", "its") for j in range(max(0, a - 3), a)) \
+                    and not any(norms[j] in lx.PERSON_SUBJECTS for j in range(max(0, a - 3), a)):
+                continue  # "it's got a span down, it's hanging in the water": a thing in the water, no person
+            if norms[a:b] in (("spreading",), ("spread",)) and any(
+                    c.end_tok in (a, a - 1) and c.polarity == "affirmed" for c in cues) and (
+                    cues and cues[-1].end_tok == a or a >= 1 and norms[a - 1] in ("is", "s", "now", "still")):
+                continue  # "Tanker leak spreading in the park": the leak's own verb, no other danger
             if norms[a:b] == ("stuck",) and cue.category == self._person_category:
                 j = a - 1
                 while j >= 0 and (norms[j] in ("is", "s", "was", "got", "gets", "has", "been", "just", "now", "completely")
@@ -3052,7 +3074,8 @@ class ReportAnalyzer:
         all_cues = getattr(self, "_all_cues_now", [])
         kept = []
         norms = toks.norms(0, len(toks))
-        negated = {i for i, w in enumerate(norms) if w in lx.NEGATORS or w in ("couldnt", "wouldnt", "wont", "shouldnt")}
+        negated = {i for i, w in enumerate(norms) if w in lx.NEGATORS or w in ("couldnt", "wouldnt", "wont", "shouldnt")
+                   or w in ("evacuated", "evacuating")}  # ("the water treatment works has been evacuated": no guess)
         for a, b, _ in self._negators.find_all(norms):
             negated.update(range(a, b))
         asking = self._question_sentences(toks)
@@ -3065,7 +3088,8 @@ class ReportAnalyzer:
                     continue  # "Port Control, uh, all stations, ...": the station called, no claim to guess at
             a, b = self._predicate_region(ex, p)
             if any(a <= c.start_tok < b for c in all_cues) or any(a <= ma < b for ma, _, _ in ex.markers) \
-                    or any(a <= i < b for i in getattr(self, "_shut_tokens", ())):
+                    or any(a <= i < b for i in getattr(self, "_shut_tokens", ())) \
+                    or any(a <= i < b for i in getattr(self, "_neutral_tokens", ())):
                 continue  # the vocabulary (or a repair) already spoke here; the fallback stays silent
             if any(a <= i < b for i in negated):
                 continue  # "nobody home at the flats": a negated predicate is no claim to guess at
@@ -3505,7 +3529,14 @@ class ReportAnalyzer:
         k = cue.end_tok
         steps = 0
         ends = {p.start_tok: p.end_tok for p in getattr(self, "_places_now", [])}
-        but = next((i for i in range(k, min(len(norms), k + 6)) if norms[i] == "but"), None)
+        but, steps_ = None, 0
+        for i in range(k, len(norms)):  # (a place, or a whole relational description, counts as one word)
+            if norms[i] == "but":
+                but = i
+                break
+            steps_ += i not in self._place_tokens
+            if steps_ >= 6:
+                break
         if but is not None and toks.sentence_of[but] == toks.sentence_of[cue.start_tok] \
                 and self._hearsay_before(toks, norms, cue.start_tok) and self._contradicted_after(toks, norms, but + 1):
             # "my wife says the coffee shop's collapsed but I can see it from here, it's still standing"
@@ -3623,6 +3654,15 @@ class ReportAnalyzer:
         if role == Role.DESIRABLE and negated_by is not None and " ".join(said) in lx.NEGATABLE_STATES and not any(
                 norms[i:i + len(said)] == said for i in range(max(0, cue.start_tok - 10), cue.start_tok - len(said))):
             und = self._undesirable()
+            if self._role_category.get("undesirable") is None:
+                # (where the KB splits the undesirable role, the danger said before it in the sentence: "the ceiling's
+                # come down in the back and it's not safe to go in")
+                sent = toks.sentence_of[cue.start_tok]
+                before = [c for a, _, (c, src) in self._cues.find_all(norms) if a < cue.start_tok
+                          and toks.sentence_of[a] == sent and src != "neutral" and c in self.kb.category_by_name
+                          and self.kb.category_by_name[c].role == Role.UNDESIRABLE]
+                if before:
+                    und = before[-1]
             if und is not None:
                 return replace(cue, category=und, source=cue.source, reason=f"'{negated_by}' + desirable cue means undesirable")
         return replace(cue, polarity="denied", reason=f"negated by '{why}'")
@@ -3977,6 +4017,23 @@ class ReportAnalyzer:
                 pairs.extend(Claim(p, c) for c in said.values())
                 claimed_places.add(p.start_tok)
                 continue
+            first = next((q for q in ex.places if q.landmark == p.landmark and q.reason.startswith("restarted")
+                          and 0 <= p.start_tok - q.end_tok <= 4), p)  # ("the grocer's too, the grocery store")
+            before = [w for w in norms[max(0, first.start_tok - 4):first.start_tok] if w not in lx.DETERMINERS | lx.FILLERS]
+            after = [w for w in norms[first.end_tok:first.end_tok + 3] if w not in lx.FILLERS]
+            also = before[-2:] in (["as", "can"], ["as", "is"], ["as", "does"], ["as", "has"], ["as", "are"],
+                                   ["as", "will"]) or before[-1:] == ["and"] and (
+                after[:1] == ["too"] or after[:2] == ["as", "well"])
+            if also:
+                # "City hall has been secured and can take evacuees, as can the post office"; "the police post is
+                # being used for shelter and um the grocer's too": what the place before it in the sentence has
+                prior = [c for c in pairs if c.place.end_tok <= p.start_tok and sentence_of[c.place.start_tok] == n
+                         and c.cue.polarity == "affirmed" and c.place.landmark != p.landmark]
+                if prior:
+                    last = max(c.place.end_tok for c in prior)
+                    pairs.extend(Claim(p, c.cue) for c in prior if c.place.end_tok == last)
+                    claimed_places.add(p.start_tok)
+                    continue
             k = seg_index[p.start_tok]
             if seg_cues.get(k) and len(seg_places.get(k, [])) == 1 and not any(
                     q.status != "active" for q in seg_usable.get(k, [])):

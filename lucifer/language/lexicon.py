@@ -166,7 +166,8 @@ NEGATOR_PHRASES = ["no one", "no longer", "not any", "free of", "clear of", "no 
 # Phrases after a hazard cue that cancel it ("the fire is out").
 CANCEL_AFTER = ["is out", "s out", "are out", "was out", "put out", "out now", "been put out",
                 "has cleared", "have cleared", "s cleared", "has lifted", "s lifted", "has gone down", "s gone down",
-                "has receded", "s receded", "have receded", "gone down now", "brought down", "been brought down",
+                "has receded", "s receded", "have receded", "gone down now", "old news", "pumped it out",
+                "pumped it all out", "pumped out", "brought down", "been brought down",
                 "all been brought down", "got them down", "nobody left", "water's gone down", "water has gone down",
                 "water's receded", "water has receded", "flood's gone down", "flooding's gone down",
                 "extinguished", "under control", "contained", "is over", "has stopped", "stopped",
@@ -199,7 +200,7 @@ CANCEL_AFTER = ["is out", "s out", "are out", "was out", "put out", "out now", "
                 "empty"]
 # ... of which these, said a few words after a place named again, end its danger ("the warehouse, oh, they've
 # put that out now")
-CANCEL_SAID_AGAIN = {"water's gone down", "water has gone down", "water's receded", "water has receded",
+CANCEL_SAID_AGAIN = {"old news", "pumped it out", "pumped it all out", "pumped out", "water's gone down", "water has gone down", "water's receded", "water has receded",
                      "flood's gone down", "flooding's gone down", "put that out", "put it out", "knocked that down", "knocked it down", "extinguished",
                      "been put out", "got that out"}
 # ... of which these revoke only a missing person ("lost child at the aviary, mum's found her")
@@ -492,7 +493,7 @@ COORDINATOR_PHRASES = ["as well as", "along with", "together with", "and also", 
 RETRACT_VERBS = {"scratch", "strike", "forget", "cancel", "remove", "minus", "drop", "lose", "scrap", "scrub"}
 
 # Places in these phrases are being passed or travelled to: the report claims nothing about them.
-TRANSIT = ["walked up from", "walked down from", "walked over from", "walked from", "drove from", "drove up from",
+TRANSIT = ["people in off", "taking people in off", "in off the", "walked up from", "walked down from", "walked over from", "walked from", "drove from", "drove up from",
            "driven from", "ran from", "run from", "cycled from", "anyone coming off", "anybody coming off", "everyone coming off", "people coming off", "evacuated from", "moved out of", "moved from", "relocated from", "decanted from", "brought out of",
            "heading to", "heading for", "heading towards", "heading toward", "headed to", "headed for", "head to",
            "passing", "passed", "moving past", "going past", "driving past", "walking past", "past",
@@ -627,6 +628,7 @@ for _p in PERSON_NOUNS:
 # collapsed", "one of our crew is burned very bad").
 # Person words that say what happened to a thing when a thing is their subject ("cars buried").
 THING_SUBJECTS = {"car", "vehicle", "van", "truck", "lorry", "bus", "road", "track", "path", "lift", "entrance",
+                  "lane", "lanes", "roads", "cars", "vehicles", "tracks", "paths",
                   "door", "gate", "bike", "tent", "hut"}
 # Words that carry a danger said before on to the place after them ("the leak has reached the fuel island").
 SPREAD_PHRASES = [("has", "reached"), ("have", "reached"), ("reached",), ("spread", "to"), ("spreading", "to"),
@@ -786,7 +788,7 @@ DANGER_KINDS: dict[str, list[str]] = {
                  "might let go", "about to let go", "going to let go", "cracked open", "split in two", "split open", "pancaked", "spongy",
                  "floor's spongy", "sinking", "subsiding", "subsidence", "slumping", "floor's gone", "floor has gone",
                  "floor's gone through", "gone through the floor", "roof's going", "roof is going", "span down", "span's down",
-                 "span is down", "twisted", "leaning badly", "leaning over", "listing", "sagged", "sagged down",
+                 "span is down", "come through the roof", "came through the roof", "twisted", "leaning badly", "leaning over", "listing", "sagged", "sagged down",
                  "has sagged", "roof's sagged", "stones falling", "stone falling",
                  "falling stones", "falling stone", "bits falling", "bits coming down", "chunks falling", "lumps falling",
                  "stonework falling", "sheared off", "keystone's come out", "arch has dropped", "arch's dropped"],
@@ -821,7 +823,8 @@ DANGER_KINDS: dict[str, list[str]] = {
               "sea pouring through", "pouring through", "water right over", "water over", "water is over", "water's over", "water s over",
               "river's over", "river is over", "river's right over", "river s over", "river s right over",
               "under the river", "shipping water", "swimming in water", "filling fast", "filling up fast",
-              "water still climbing", "water's climbing", "water is climbing", "water still rising", "floodwater", "floodwaters", "flood water", "flood waters", "risen", "has risen", "lake's risen", "river's risen", "water's risen", "halfway up", "right up to the", "is up to the", "up to the gutters", "up to the windows",
+              "water still climbing", "water's climbing", "water is climbing", "water still rising", "still rising",
+              "is still rising", "water is pouring", "water's pouring", "pouring straight through", "floodwater", "floodwaters", "flood water", "flood waters", "risen", "has risen", "lake's risen", "river's risen", "water's risen", "halfway up", "right up to the", "is up to the", "up to the gutters", "up to the windows",
               "up to the second-floor windows", "water is rising", "water is still rising", "water's still rising", "still rising fast", "rising fast", "water's come up", "water has come up", "water came up", "water pouring",
               "water pouring down", "water pouring into", "water running", "inches deep", "inches of water",
               "foot deep", "feet deep", "ankle-deep", "knee-deep", "waist-deep", "got the water in",
@@ -861,7 +864,9 @@ CONTRADICTIONS = [("it", "isnt"), ("its", "not"), ("it", "wasnt"), ("it", "is", 
                   ("they", "arent"), ("theyre", "not"), ("it", "hasnt"), ("it", "has", "not"), ("it", "didnt"),
                   ("it", "hadnt"), ("they", "havent"), ("they", "didnt"), ("its", "intact"), ("its", "fine"),
                   ("nothing", "wrong"), ("its", "all", "fine"), ("that", "wrong"), ("that", "not", "true"),
-                  ("thats", "not", "true"), ("that", "not", "right"), ("thats", "not", "right")]
+                  ("thats", "not", "true"), ("that", "not", "right"), ("thats", "not", "right"),
+                  ("found", "nobody", "there"), ("found", "no", "one"), ("found", "nobody"), ("nobody", "there"),
+                  ("theres", "nothing"), ("there", "nothing"), ("no", "smell"), ("nothing", "at", "all")]
 
 # A person as the subject of a sentence that says where they are: "she's in the back of the shop".
 PERSON_SUBJECTS = {"he", "she", "hes", "shes", "they", "theyre"}
