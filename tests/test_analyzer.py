@@ -1812,3 +1812,14 @@ def test_dev27_phenomena(analyzer, text, expected):
 ])
 def test_dev27_phenomena_on_an_unseen_kb(kb_analyzers, text, expected):
     assert claims(kb_analyzers["reservoir_valley"], text) == expected
+
+
+def test_a_double_repair_that_comes_back_past_a_cut_off_name(analyzer):
+    assert claims(analyzer, "the hotel's on fire, well, not the hotel, it's the ware— no, hotel, it is the hotel, sorry") == [
+        ("hotel", "hazard")]
+
+
+def test_broken_up_is_a_fall_but_a_radio_breaking_up_is_not(kb_analyzers):
+    an = kb_analyzers["reservoir_valley"]
+    assert claims(an, "the channel built into the dam has broken up even more, keep everyone back") == [("spillway", "no_go")]
+    assert claims(an, "control, you're breaking up, say again, we're at the spillway") == []

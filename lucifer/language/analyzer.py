@@ -3831,6 +3831,13 @@ class ReportAnalyzer:
                     # mention the negation took back goes where the last one went
                     nxt = next((q for q in ex.places if q.landmark == p.landmark and q.start_tok > p.start_tok
                                 and q.reason == p.reason), None)
+                    if nxt is None:
+                        # "the hotel's on fire, well, not the hotel, it's the ware— no, hotel, it is the hotel": the
+                        # place the speaker comes back to, past the one put in its stead and taken back
+                        nxt = next((q for q in ex.places if q.landmark == p.landmark and q.start_tok > p.start_tok
+                                    and q.status == "active" and any(
+                                        r.landmark != p.landmark and p.start_tok < r.start_tok < q.start_tok
+                                        and r.status == "retracted" for r in ex.places)), None)
                 elif nxt is None and p.reason.startswith(("false start", "restarted")):
                     # "fire at the hot-- / ... / hotel": a name cut off or said again is the same place, named
                     # in full later

@@ -788,7 +788,7 @@ DANGER_KINDS: dict[str, list[str]] = {
                  "might let go", "about to let go", "going to let go", "cracked open", "split in two", "split open", "pancaked", "spongy",
                  "floor's spongy", "sinking", "subsiding", "subsidence", "slumping", "floor's gone", "floor has gone",
                  "floor's gone through", "gone through the floor", "roof's going", "roof is going", "span down", "span's down",
-                 "span is down", "come through the roof", "came through the roof", "twisted", "leaning badly", "leaning over", "listing", "sagged", "sagged down",
+                 "span is down", "broken up", "has broken up", "broken away", "broke away", "come through the roof", "came through the roof", "twisted", "leaning badly", "leaning over", "listing", "sagged", "sagged down",
                  "has sagged", "roof's sagged", "stones falling", "stone falling",
                  "falling stones", "falling stone", "bits falling", "bits coming down", "chunks falling", "lumps falling",
                  "stonework falling", "sheared off", "keystone's come out", "arch has dropped", "arch's dropped"],
