@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev27) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev28) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -45,6 +45,7 @@ CATHEDRAL = ROOT / "knowledge_bases" / "cathedral_close"
 THEME_PARK = ROOT / "knowledge_bases" / "theme_park"
 SERVICES = ROOT / "knowledge_bases" / "motorway_services"
 RESERVOIR = ROOT / "knowledge_bases" / "reservoir_valley"
+AIRPORT = ROOT / "knowledge_bases" / "airport_terminal"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -157,6 +158,10 @@ SETS = {
     "dev26/motorway_services": _set("dev26/motorway_services.jsonl", SERVICES, "ms26", THIRTY),
     "dev27/market_square": _set("dev27/market_square.jsonl", MARKET_SQUARE, "d27", EVEN, sep=""),
     "dev27/reservoir_valley": _set("dev27/reservoir_valley.jsonl", RESERVOIR, "rv", THIRTY),
+    "dev28/market_square": _set("dev28/market_square.jsonl", MARKET_SQUARE, "d28",
+                                {"standard": 30, "messy": 30, "advanced_messy": 30}, sep=""),
+    "dev28/airport_terminal": _set("dev28/airport_terminal.jsonl", AIRPORT, "at",
+                                   {"standard": 20, "messy": 20, "advanced_messy": 20}),
 }
 
 
