@@ -1823,3 +1823,25 @@ def test_broken_up_is_a_fall_but_a_radio_breaking_up_is_not(kb_analyzers):
     an = kb_analyzers["reservoir_valley"]
     assert claims(an, "the channel built into the dam has broken up even more, keep everyone back") == [("spillway", "no_go")]
     assert claims(an, "control, you're breaking up, say again, we're at the spillway") == []
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    # a marker after a cut-off name repairs that name, not the place claimed before it
+    ("the bus sta-- bus depot has a live wire down and the supermar-- sorry the marketplace is the assembly point",
+     [("bus station", "hazard"), ("market square", "safe_zone")]),
+    # "X and Y both clear"
+    ("we checked the post office and the fire hall both clear", [("fire station", "safe_zone"), ("post office", "safe_zone")]),
+    ("Triage tent is up in the marketplace, and the health centre is taking the overflow.",
+     [("clinic", "safe_zone"), ("market square", "safe_zone")]),
+])
+def test_dev28_phenomena(analyzer, text, expected):
+    assert claims(analyzer, text) == expected
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    # a fire "knocked down" is put out; hearsay of a casualty "but turns out nobody was"
+    ("We're up in the tower; the station it overlooks had a fire earlier but that's been knocked down, nobody inside.", []),
+    ("the security lanes, we heard someone was hurt there but turns out nobody was", []),
+])
+def test_dev28_phenomena_on_an_unseen_kb(kb_analyzers, text, expected):
+    assert claims(kb_analyzers["airport_terminal"], text) == expected

@@ -1111,7 +1111,7 @@ class ReportAnalyzer:
         norms = toks.norms(0, len(toks))
         for t in toks.tokens:
             nxt_gap = toks.gaps[t.i + 1] if t.i + 1 < len(toks) else toks.text[t.end:]
-            if t.i in taken or nxt_gap[:1] not in ("-", "—", "–") or len(t.text) > 6:
+            if t.i in taken or nxt_gap[:1] not in ("-", "—", "–") or len(t.text) > 9:
                 continue
             frag = t.text.lower()
             if frag in lx.FUNCTION_WORDS or frag in ("he", "she", "we", "i", "me", "you", "him", "her", "my"):
@@ -2592,6 +2592,11 @@ class ReportAnalyzer:
             if not before:
                 continue
             last = max(before, key=lambda p: p.end_tok)
+            if any(p.reason.startswith("false start") and last.end_tok <= p.start_tok and a - 2 <= p.end_tok <= a
+                   and p.landmark != last.landmark for p in ex.places) \
+                    and self._cue_between(norms, last.end_tok, a):
+                continue  # "the library has a live wire down and the supermar-- sorry the marketplace": the cut-off
+                # name is what the marker repairs
             if min(after, key=lambda p: p.start_tok).status == "negated":
                 # "hold that, not the school": the negation already retracted it; the place said after the
                 # negated one takes over what was said of it ("the gym is where we're putting everyone — sorry,
@@ -2901,6 +2906,9 @@ class ReportAnalyzer:
                     norms[j] in ("it", "its") for j in range(max(0, a - 3), a)) \
                     and not any(norms[j] in lx.PERSON_SUBJECTS for j in range(max(0, a - 3), a)):
                 continue  # "it's got a span down, it's hanging in the water": a thing in the water, no person
+            if "knocked" in norms[a:b] and any(norms[j] in ("that", "it", "its", "thats", "fire", "flames")
+                                               for j in range(max(0, a - 3), a)):
+                continue  # "the station had a fire earlier but that's been knocked down": the fire put out
             if norms[a:b] in (("spreading",), ("spread",)) and any(
                     c.end_tok in (a, a - 1) and c.polarity == "affirmed" for c in cues) and (
                     cues and cues[-1].end_tok == a or a >= 1 and norms[a - 1] in ("is", "s", "now", "still")):
@@ -4206,8 +4214,9 @@ class ReportAnalyzer:
         for idx, last in enumerate(places):
             e = last.end_tok
             if norms[e:e + 2] not in (("are", "both"), ("are", "all"), ("were", "both"), ("were", "all"),
-                                      ("re", "both"), ("re", "all")):
-                continue
+                                      ("re", "both"), ("re", "all")) \
+                    and not (norms[e:e + 1] == ("both",) and not toks.clause_start[e]):
+                continue  # (and "we checked the post office and the fire hall both clear")
             listed = [last]
             k = idx - 1
             while k >= 0:

@@ -89,7 +89,7 @@ decon point|decon area|decon tent|decontamination point|where we're putting ever
 fine to walk through|fine to walk on|fine to cross|okay to walk through|ok to walk through|fine to pass through|
 fine for overflow|taking in families|taking in people|taking people in|can take people|we can take people|
 people are gathering there|people gathering there|everyone's gathering there|gathering there|taking in residents|
-taking in the evacuees|taking families|evac point|evac points|evac centre|evac center|evacuation points|
+taking in the evacuees|taking families|taking the overflow|taking overflow|taking the overspill|evac point|evac points|evac centre|evac center|evacuation points|
 putting people there|putting people in there|putting everyone there|moving people there|send people there|
 sending people there|moving evacuees there|send them there|
 """.replace("\n", ""))
@@ -866,7 +866,8 @@ CONTRADICTIONS = [("it", "isnt"), ("its", "not"), ("it", "wasnt"), ("it", "is", 
                   ("nothing", "wrong"), ("its", "all", "fine"), ("that", "wrong"), ("that", "not", "true"),
                   ("thats", "not", "true"), ("that", "not", "right"), ("thats", "not", "right"),
                   ("found", "nobody", "there"), ("found", "no", "one"), ("found", "nobody"), ("nobody", "there"),
-                  ("theres", "nothing"), ("there", "nothing"), ("no", "smell"), ("nothing", "at", "all")]
+                  ("theres", "nothing"), ("there", "nothing"), ("no", "smell"), ("nothing", "at", "all"),
+                  ("nobody", "was"), ("no", "one", "was"), ("nobody", "is"), ("nobody", "hurt")]
 
 # A person as the subject of a sentence that says where they are: "she's in the back of the shop".
 PERSON_SUBJECTS = {"he", "she", "hes", "shes", "they", "theyre"}
