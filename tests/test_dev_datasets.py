@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev28) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev29) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -46,6 +46,7 @@ THEME_PARK = ROOT / "knowledge_bases" / "theme_park"
 SERVICES = ROOT / "knowledge_bases" / "motorway_services"
 RESERVOIR = ROOT / "knowledge_bases" / "reservoir_valley"
 AIRPORT = ROOT / "knowledge_bases" / "airport_terminal"
+SKI_TOWN = ROOT / "knowledge_bases" / "ski_town"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -162,6 +163,10 @@ SETS = {
                                 {"standard": 30, "messy": 30, "advanced_messy": 30}, sep=""),
     "dev28/airport_terminal": _set("dev28/airport_terminal.jsonl", AIRPORT, "at",
                                    {"standard": 20, "messy": 20, "advanced_messy": 20}),
+    "dev29/market_square": _set("dev29/market_square.jsonl", MARKET_SQUARE, "d29",
+                                {"standard": 10, "messy": 50, "advanced_messy": 10}, sep=""),
+    "dev29/ski_town": _set("dev29/ski_town.jsonl", SKI_TOWN, "st",
+                           {"standard": 20, "messy": 20, "advanced_messy": 20}),
 }
 
 
