@@ -1845,3 +1845,23 @@ def test_dev28_phenomena(analyzer, text, expected):
 ])
 def test_dev28_phenomena_on_an_unseen_kb(kb_analyzers, text, expected):
     assert claims(kb_analyzers["airport_terminal"], text) == expected
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    # a cleft without punctuation: "it's not X that's ..., it's Y"
+    ("it's not the library that's flooding it's the town hall basement", [("town hall", "hazard")]),
+    # a cut-off word said again whole keeps the phrase it is in
+    ("downed power lin— line on the roof of the, um, the credit union", [("bank", "hazard")]),
+    # "did I say X? I meant Y" takes back every earlier X
+    ("someone's injured at the grocery store, wait, did I say grocery store? I meant the hotel", [("hotel", "victim")]),
+    # hearsay the speaker checked: "it's just scaffolding, nothing there"
+    ("we were told there was a collapse at the place next to the clinic, but we've checked and it's just scaffolding, "
+     "nothing there", []),
+])
+def test_dev29_phenomena(analyzer, text, expected):
+    assert claims(analyzer, text) == expected
+
+
+def test_dev29_a_bridge_that_could_go(kb_analyzers):
+    assert claims(kb_analyzers["ski_town"], "The torrent has undercut the wooden bridge and it could go at any minute.") == [
+        ("torrent footbridge", "peril")]

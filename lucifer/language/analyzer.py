@@ -1064,6 +1064,10 @@ class ReportAnalyzer:
                     and toks.text[t.end:t.end + 1] in ("'", "’") and not toks.text[t.end + 1:t.end + 2].isalpha():
                 fixed[t.i] = replace(t, norm=w + "g")  # "yon fuel store's still burnin'": a dropped g
                 continue
+            if t.i + 1 < len(toks) and toks.gaps[t.i + 1][:1] in ("-", "—", "–") and len(w) >= 2 \
+                    and toks.tokens[t.i + 1].norm.startswith(w) and toks.tokens[t.i + 1].norm != w:
+                fixed[t.i] = replace(t, norm="uh")  # "downed power lin— line": the cut-off word said again whole
+                continue
             if w == "too" and t.i > 0 and fixed[t.i - 1].norm in self._to_after and not toks.clause_start[t.i]:
                 fixed[t.i] = replace(t, norm="to")  # "the building next too the clinic"
                 continue
@@ -2652,7 +2656,7 @@ class ReportAnalyzer:
             # every earlier mention of the retracted place in the window goes too ("I said the bank"); after
             # "I said", every earlier one in the report ("A man collapsed in the library. ... Sorry, I said the
             # library, I meant the school."), its claims going to the place that replaces it
-            quoted = any(norms[i] == "said" for i in range(max(0, last.start_tok - 3), last.start_tok))
+            quoted = any(norms[i] in ("said", "say") for i in range(max(0, last.start_tok - 3), last.start_tok))
             if k > 0 and 0 <= last.start_tok - ex.markers[k - 1][1] <= 2:
                 # "one at the church — sorry, the chapel — I mean the hardware store": the name it restated goes too
                 pa = ex.markers[k - 1][0]
@@ -3846,6 +3850,12 @@ class ReportAnalyzer:
                                     and q.status == "active" and any(
                                         r.landmark != p.landmark and p.start_tok < r.start_tok < q.start_tok
                                         and r.status == "retracted" for r in ex.places)), None)
+                elif nxt is None and p.status == "negated" and p.reason.startswith("negated by 'not"):
+                    # "it's not the library that's flooding it's the town hall basement": the place the cleft names
+                    nxt = next((q for q in ex.places if q.status == "active" and q.landmark != p.landmark
+                                and q.start_tok > p.end_tok and toks.sentence_of[q.start_tok] == toks.sentence_of[p.start_tok]
+                                and [w for w in norms[max(0, q.start_tok - 3):q.start_tok] if w not in lx.ARTICLES][-1:]
+                                in (["its"], ["is"])), None)
                 elif nxt is None and p.reason.startswith(("false start", "restarted")):
                     # "fire at the hot-- / ... / hotel": a name cut off or said again is the same place, named
                     # in full later

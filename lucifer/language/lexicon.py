@@ -788,7 +788,7 @@ DANGER_KINDS: dict[str, list[str]] = {
                  "might let go", "about to let go", "going to let go", "cracked open", "split in two", "split open", "pancaked", "spongy",
                  "floor's spongy", "sinking", "subsiding", "subsidence", "slumping", "floor's gone", "floor has gone",
                  "floor's gone through", "gone through the floor", "roof's going", "roof is going", "span down", "span's down",
-                 "span is down", "broken up", "has broken up", "broken away", "broke away", "come through the roof", "came through the roof", "twisted", "leaning badly", "leaning over", "listing", "sagged", "sagged down",
+                 "span is down", "could go at any minute", "could go any minute", "broken up", "has broken up", "broken away", "broke away", "come through the roof", "came through the roof", "twisted", "leaning badly", "leaning over", "listing", "sagged", "sagged down",
                  "has sagged", "roof's sagged", "stones falling", "stone falling",
                  "falling stones", "falling stone", "bits falling", "bits coming down", "chunks falling", "lumps falling",
                  "stonework falling", "sheared off", "keystone's come out", "arch has dropped", "arch's dropped"],
@@ -823,7 +823,7 @@ DANGER_KINDS: dict[str, list[str]] = {
               "sea pouring through", "pouring through", "water right over", "water over", "water is over", "water's over", "water s over",
               "river's over", "river is over", "river's right over", "river s over", "river s right over",
               "under the river", "shipping water", "swimming in water", "filling fast", "filling up fast",
-              "water still climbing", "water's climbing", "water is climbing", "water still rising", "still rising",
+              "water still climbing", "water's climbing", "water is climbing", "water still rising", "washed off", "still rising",
               "is still rising", "water is pouring", "water's pouring", "pouring straight through", "floodwater", "floodwaters", "flood water", "flood waters", "risen", "has risen", "lake's risen", "river's risen", "water's risen", "halfway up", "right up to the", "is up to the", "up to the gutters", "up to the windows",
               "up to the second-floor windows", "water is rising", "water is still rising", "water's still rising", "still rising fast", "rising fast", "water's come up", "water has come up", "water came up", "water pouring",
               "water pouring down", "water pouring into", "water running", "inches deep", "inches of water",
@@ -867,7 +867,8 @@ CONTRADICTIONS = [("it", "isnt"), ("its", "not"), ("it", "wasnt"), ("it", "is", 
                   ("thats", "not", "true"), ("that", "not", "right"), ("thats", "not", "right"),
                   ("found", "nobody", "there"), ("found", "no", "one"), ("found", "nobody"), ("nobody", "there"),
                   ("theres", "nothing"), ("there", "nothing"), ("no", "smell"), ("nothing", "at", "all"),
-                  ("nobody", "was"), ("no", "one", "was"), ("nobody", "is"), ("nobody", "hurt")]
+                  ("nobody", "was"), ("no", "one", "was"), ("nobody", "is"), ("nobody", "hurt"),
+                  ("nothing", "there"), ("its", "just")]
 
 # A person as the subject of a sentence that says where they are: "she's in the back of the shop".
 PERSON_SUBJECTS = {"he", "she", "hes", "shes", "they", "theyre"}
