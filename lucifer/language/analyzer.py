@@ -183,6 +183,12 @@ class ReportAnalyzer:
         self._rel_keyword_items = sorted(self._rel_keywords.items())  # fixed order for compound matches
 
     # ------------------------------------------------------------------ vocabulary
+    def _person_cue_at(self, norms: tuple[str, ...], i: int) -> bool:
+        """Does a cue of the critical role start at token ``i`` ("the baker | trapped")?"""
+        h = self._cues.match_at(norms, i) if i < len(norms) else None
+        return h is not None and h[1][0] in self.kb.category_by_name \
+            and self.kb.category_by_name[h[1][0]].role == Role.CRITICAL
+
     def _compound_forms(self) -> list[tuple[tuple[str, ...], str]]:
         """Names recombined from a landmark's own forms: "bus terminal" from "bus station" and "the terminal".
 
@@ -541,10 +547,7 @@ class ReportAnalyzer:
                             self.kb.landmark_by_name[landmark].surface_forms):
                 continue  # "it's flat and it's clear": a predicate, not the landmark the KB calls "flats"
             raw = toks.tokens[a].text.lower()
-            person_next = b < len(norms) and (h := self._cues.match_at(norms, b)) is not None \
-                and h[1][0] in self.kb.category_by_name \
-                and self.kb.category_by_name[h[1][0]].role == Role.CRITICAL
-            if b - a == 1 and (prev in ("a", "an") or prev == "the" and person_next) \
+            if b - a == 1 and (prev in ("a", "an") or prev == "the" and self._person_cue_at(norms, b)) \
                     and not raw.endswith(("'s", "’s", "s")) and all(
                     norm_phrase(f)[-1:] != norms[a:b] or f.lower().endswith(("'s", "’s")) for f in
                     self.kb.landmark_by_name[landmark].surface_forms):
@@ -767,11 +770,11 @@ class ReportAnalyzer:
             # (nor a word the KB's descriptions use of other landmarks too: "ride" of "splash ride", where the
             # coaster and the ghost house are rides as well)
             described: dict[str, set[str]] = {}
-            names = sorted({name_words(f) for other in self.kb.landmarks for f in other.surface_forms}, key=len,
-                           reverse=True)
+            name_keys = sorted({name_words(f) for other in self.kb.landmarks for f in other.surface_forms}, key=len,
+                               reverse=True)
             for lm in self.kb.landmarks:
                 words = list(norm_phrase(lm.description or ""))
-                for key in names:  # (a landmark named in a description is not the word used of it: "by the main gate")
+                for key in name_keys:  # (a landmark named in a description is not the word used of it: "by the main gate")
                     n = len(key)
                     for i in range(len(words) - n + 1):
                         if n and tuple(words[i:i + n]) == key:
@@ -2306,8 +2309,10 @@ class ReportAnalyzer:
                 if contrast is not None and not corrects:
                     # "girders down in the transit shed ..., and the injured porter, he's in the tea warehouse,
                     # not the shed": said against the place just named, not a repair of an earlier claim
-                    def cats(a: int, b: int) -> set[str]:
-                        return {c for ca, _, (c, _) in self._cues.find_all(norms) if a <= ca < b}
+                    hits = [(ca, c) for ca, _, (c, _) in self._cues.find_all(norms)]
+
+                    def cats(a: int, b: int, hits: list[tuple[int, str]] = hits) -> set[str]:
+                        return {c for ca, c in hits if a <= ca < b}
                     said_here = cats(max(0, contrast.start_tok - 6), j)
                     # (a claim of another kind: "... the hotel is on fire, not the bank" repairs the bank's fire)
                     earlier = [q for q in earlier if not (
@@ -2952,7 +2957,6 @@ class ReportAnalyzer:
             cues.extend(c.cue for c in extra)
         return Classification(cues, claims, denied)
 
-
     RESTART_WORDS = frozenset({"there", "theres", "s", "is", "a", "an", "the", "its", "it", "some"})
 
     @staticmethod
@@ -3460,7 +3464,7 @@ class ReportAnalyzer:
                         until = i + len(key)  # ("'supermarket smoke was a barbecue' ...; 'water tower leaking'")
                     # "no fire at the chip shop, it's just steam, but the hotel's got a proper fire going": a
                     # contrast that names another place afterwards is not part of the false alarm
-                    places = {p.start_tok for p in getattr(self, "_places_now", [])}
+                    places = {p.start_tok for p in places_now}
                     but = next((j for j in range(i + len(key), len(norms)) if sentence_of[j] == sentence_of[i]
                                 and norms[j] in ("but", "however", "whereas")
                                 and any(t in places for t in range(j + 1, min(len(norms), j + 8)))), None)
@@ -3468,7 +3472,7 @@ class ReportAnalyzer:
                         until = but
                     # "someone trapped in the supermarket but no, false alarm — it's the gym, someone's trapped
                     # in the gym": the place the repair puts in the retracted one's stead keeps its claims
-                    repaired = [p.start_tok for p in getattr(self, "_places_now", []) if p.replaces is not None
+                    repaired = [p.start_tok for p in places_now if p.replaces is not None
                                 and p.replaces < i < p.start_tok and sentence_of[p.start_tok] == sentence_of[i]
                                 and p.status == "active"]
                     if repaired and until == len(norms):
@@ -3937,16 +3941,8 @@ class ReportAnalyzer:
             closed = b < len(toks) and (toks.sentence_start[b] or ";" in toks.gaps[b]) \
                 and norms[b - 1] not in lx.DETERMINERS \
                 and not any(m in toks.gaps[b] for m in ("-", "—", "–", "...", "…"))
-            # ("it's safe to stay in, and the high gate's flooded": a verb's particle before a new clause)
-            particle = b < len(norms) and norms[b] in lx.COORDINATORS and "," in toks.gaps[b] \
-                and norms[b - 1] not in lx.DETERMINERS
-            # ("that's where the water's coming in... the tea room's dry": the cue's own last word)
-            nq = min(seg_places.get(k + 1, []), key=lambda q: q.start_tok, default=None)
-            said_of_next = nq is not None and any(
-                norms[i] not in lx.FILLERS for i in range(nq.end_tok, segs[k + 1][1]))
-            particle = particle or any(c.end_tok == b and c.end_tok - c.start_tok >= 2 for c in cs) \
-                and said_of_next and b < len(norms) and not any(m in toks.gaps[b] for m in ("-", "—", "–"))
-            if (norms[b - 1] in lx.PREPOSITIONS or norms[b - 1] in lx.DETERMINERS) and not closed and not particle:
+            if (norms[b - 1] in lx.PREPOSITIONS or norms[b - 1] in lx.DETERMINERS) and not closed \
+                    and not self._particle_end(toks, norms, segs, seg_places, k, cs):
                 nxt = k + 1
                 skipped = 0
                 while nxt < len(segs) and (nxt in hollow or (not seg_places.get(nxt) and not seg_cues.get(nxt) and skipped < 2)):
@@ -4525,6 +4521,20 @@ class ReportAnalyzer:
         return norms[a]
 
     @staticmethod
+    def _particle_end(toks: Tokens, norms: tuple[str, ...], segs: list[tuple[int, int]],
+                      seg_places: dict[int, list[PlaceMention]], k: int, cs: list[CueMention]) -> bool:
+        """Is the preposition that ends cue-only segment ``k`` a verb's particle, not a broken-off "at the"?
+        Before ", and" ("it's safe to stay in, and the high gate's flooded"), or as a cue's own last word before
+        a place with a word of its own ("that's where the water's coming in... the tea room's dry")."""
+        b = segs[k][1]
+        if b < len(norms) and norms[b] in lx.COORDINATORS and "," in toks.gaps[b] and norms[b - 1] not in lx.DETERMINERS:
+            return True
+        nq = min(seg_places.get(k + 1, []), key=lambda q: q.start_tok, default=None)
+        said_of_next = nq is not None and any(norms[i] not in lx.FILLERS for i in range(nq.end_tok, segs[k + 1][1]))
+        return any(c.end_tok == b and c.end_tok - c.start_tok >= 2 for c in cs) and said_of_next \
+            and b < len(norms) and not any(m in toks.gaps[b] for m in ("-", "—", "–"))
+
+    @staticmethod
     def _named_after(k: int, segs: list[tuple[int, int]], seg_places: dict[int, list[PlaceMention]],
                      seg_cues: dict[int, list[CueMention]], sentence_of: list[int], norms: tuple[str, ...],
                      sent_words: dict[int, int], person: bool = False) -> int | None:
@@ -4563,9 +4573,9 @@ class ReportAnalyzer:
     @staticmethod
     def _target_for_cues(k: int, segs: list[tuple[int, int]], seg_places: dict[int, list[PlaceMention]],
                          seg_cues: dict[int, list[CueMention]], sentence_of: list[int],
-                         transparent: set[int], opening: str, norms: tuple[str, ...] | None = None) -> int | None:
+                         transparent: set[int], opening: str, norms: tuple[str, ...]) -> int | None:
         nxt = k + 1
-        if norms is not None and nxt < len(segs) and sentence_of[segs[nxt][0]] == sentence_of[segs[k][0]] \
+        if nxt < len(segs) and sentence_of[segs[nxt][0]] == sentence_of[segs[k][0]] \
                 and seg_places.get(nxt) and not seg_cues.get(nxt):
             words = [w for w in norms[segs[nxt][0]:segs[nxt][1]] if w not in lx.FILLERS]
             if words[:1] and words[0] in lx.PERSON_SUBJECTS and any(
@@ -4588,7 +4598,7 @@ class ReportAnalyzer:
                                   and seg_places.get(i)), None)
                     if later is not None and (not seg_cues.get(later) or opening == "but"):
                         return later
-                    if later == k + 1 and norms is not None and _cue_list_into(k, later, segs, seg_cues, norms):
+                    if later == k + 1 and _cue_list_into(k, later, segs, seg_cues, norms):
                         return later  # "And there's sparks and smoke coming off the water tower."
                 return j
         # else the next one in the same sentence ("on fire, the bakery"), over a short aside
