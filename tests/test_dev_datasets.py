@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev29) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev30) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -47,6 +47,7 @@ SERVICES = ROOT / "knowledge_bases" / "motorway_services"
 RESERVOIR = ROOT / "knowledge_bases" / "reservoir_valley"
 AIRPORT = ROOT / "knowledge_bases" / "airport_terminal"
 SKI_TOWN = ROOT / "knowledge_bases" / "ski_town"
+SPA_TOWN = ROOT / "knowledge_bases" / "spa_town"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -167,6 +168,12 @@ SETS = {
                                 {"standard": 10, "messy": 50, "advanced_messy": 10}, sep=""),
     "dev29/ski_town": _set("dev29/ski_town.jsonl", SKI_TOWN, "st",
                            {"standard": 20, "messy": 20, "advanced_messy": 20}),
+    "dev30/market_square": _set("dev30/market_square.jsonl", MARKET_SQUARE, "d30",
+                                {"standard": 10, "messy": 70, "advanced_messy": 20}, sep=""),
+    "dev30/market_square_b": _set("dev30/market_square_b.jsonl", MARKET_SQUARE, "d30b",
+                                  {"standard": 10, "messy": 30, "advanced_messy": 50}, sep=""),
+    "dev30/spa_town": _set("dev30/spa_town.jsonl", SPA_TOWN, "sp30",
+                           {"standard": 20, "messy": 40, "advanced_messy": 30}),
 }
 
 
