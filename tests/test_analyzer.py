@@ -1865,3 +1865,73 @@ def test_dev29_phenomena(analyzer, text, expected):
 def test_dev29_a_bridge_that_could_go(kb_analyzers):
     assert claims(kb_analyzers["ski_town"], "The torrent has undercut the wooden bridge and it could go at any minute.") == [
         ("torrent footbridge", "peril")]
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    # a withdrawal followed by the same place, with nothing new said of it, takes the claim back
+    ("Rescue 1, we've got, um, structural collapse at the water tower, and -- disregard, the tower is standing, "
+     "the collapse is the warehouse roof.", [("warehouse", "hazard")]),
+    ("Engine 3: smoke at the church -- belay that, belay that, it's just fog round the bell tower. We do have real "
+     "smoke at the cafe across the road though.", [("cafe", "hazard")]),
+    # ... but a withdrawal that names another place repairs the place, and the claim stays
+    ("Unit Bravo, uh, negative on the casualty at the hotel, the casualty is at the bank -- strike that, she's at "
+     "the hotel after all, they carried her back in.", [("hotel", "victim")]),
+    ("Casualties at the place next to the school, er, scratch that, at the school itself.", [("school", "victim")]),
+    # a relation with an object of its own is no description of the place just said
+    ("Rescue 1: not the garage -- the gar-- the warehouse, the warehouse, people trapped behind the shelving.",
+     [("warehouse", "victim")]),
+    # a place whose predicate was cut off borrows nothing
+    ("Unit Bravo: er, the marketplace is, is secured, assembly point's set up there, and, uh, the bakery's-- [garbled]",
+     [("market square", "safe_zone")]),
+    ("people trapped in the bakery's--", [("bakery", "victim")]),
+    # routing orders are no claims; a route said to be clear is
+    ("Control to Medic 12, route via the police station, the east road is open. The casualties are in the sports "
+     "hall, round the back.", [("sports hall", "victim")]),
+    ("Evacuation route through the marketplace is clear, and the fire station is secured as a shelter.",
+     [("fire station", "safe_zone"), ("market square", "safe_zone")]),
+    # a question started again without a question mark
+    ("is the, uh, is the marketplace free for the triage tent or, or not, can someone tell me", []),
+    # people who got out are no casualties to guess at
+    ("kids from the schoolhouse are all out and um they've gone to the town hall, town hall's the safe spot for them",
+     [("town hall", "safe_zone")]),
+    # "not at it" takes the place before back; the place after takes its claim
+    ("Gas leak at the school - well, not at it, at the place next door to it.", [("post office", "hazard")]),
+    # a plural possessive, and "looks across at" with a pronoun anchor
+    ("The flats' opposite number, the green bit with the pond, is safe; we're moving residents into it.",
+     [("park", "safe_zone")]),
+    ("The church has been checked and is clear; the building it looks across at is being used as a warm room for "
+     "evacuees.", [("cafe", "safe_zone"), ("church", "safe_zone")]),
+    # a repair of the preposition, not of the place
+    ("three things: gas leak at the garage; the park is safe -- correction -- the park's flooded, the pond's burst; "
+     "and two casualties outside-- no, inside the supermarket",
+     [("garage", "hazard"), ("park", "hazard"), ("supermarket", "victim")]),
+])
+def test_dev30_radio_phenomena(analyzer, text, expected):
+    assert claims(analyzer, text) == expected
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    # smoke goes where fire goes when no category description names smoke
+    ("fire at the Imperial — no, sorry, the Hydro, it's the Hydro with smoke pouring out the top floor",
+     [("hydro hotel", "peril")]),
+    ("sewage coming up through the floor at the Turkish — no, the pump room — sorry, sorry, it was the Turkish baths "
+     "after all", [("turkish baths", "tainted")]),
+    # "just steam" is no false alarm where the KB's glossary calls steam a danger
+    ("chlorine— correction, it's not chlorine, it's just steam, live steam blasting out of the thermal baths vents",
+     [("thermal baths", "peril")]),
+    # the car of a funicular is part of it
+    ("The funicular car has come off its rails just above the bottom station and it's hanging there. Do not approach.",
+     [("cliff railway", "peril")]),
+    # a description's verb matched against the related places' descriptions ("heats" / "heating the thermal baths")
+    ("Stoker with burns to both arms in the building that heats the Thermae — need a crew with a stretcher.",
+     [("boiler house", "casualty")]),
+    ("Burns casualty in, um, the place built against the back of the building that heats the thermal baths.",
+     [("steam laundry", "casualty")]),
+    # a relative clause with a stranded preposition: its subject only leads to the place
+    ("The spring the bottling works takes its water from has gone rusty red and smells of oil.",
+     [("st anne's well", "tainted")]),
+    ("we're, um, keeping everyone clear of the valley gardens while the engineers look at the slope, and er, the "
+     "bandstand's got a casualty, a bandsman with a crushed foot", [("bandstand", "casualty")]),
+])
+def test_dev30_phenomena_on_an_unseen_kb(kb_analyzers, text, expected):
+    assert claims(kb_analyzers["spa_town"], text) == expected

@@ -255,8 +255,11 @@ class ReportAnalyzer:
                      if len(w) >= 4 and w not in lx.DANGER_KIND_PARTS}
             # how many of its description's words the kind's words name
             votes = [sum(any(_same_stem(w, d) for w in words) for d in ds) for ds in described]
+            near = lx.KIND_FALLBACK.get(kind)
             if max(votes) > 0 and votes.count(max(votes)) == 1:
                 cache[kind] = cats[votes.index(max(votes))].name
+            elif max(votes) == 0 and near is not None and (cat := self._kind_category(near, cats)) is not None:
+                cache[kind] = cat  # "smoke" where no description names it: where fire goes
             elif self.embedder is not None:
                 text = ", ".join(lx.DANGER_KINDS[kind][:12])
                 vecs = self.embedder.embed([text] + [f"{c.name.replace('_', ' ')}: {c.description}" for c in cats])
@@ -574,7 +577,9 @@ class ReportAnalyzer:
         places.extend(self._modifier_ones(toks, norms, places))
         for idx, p in enumerate(places):
             if p.end_tok < len(norms) and norms[p.end_tok] in lx.MODIFIED_BY and not toks.clause_start[p.end_tok] \
-                    and norms[p.end_tok : p.end_tok + 2] not in lx.PART_OF_PLACE:
+                    and norms[p.end_tok : p.end_tok + 2] not in lx.PART_OF_PLACE \
+                    and not (norms[p.end_tok] in lx.CARRIAGE_WORDS and self._is_conveyance(p.landmark)):
+                # ("the funicular car has come off its rails": the car is part of the railway)
                 places[idx] = replace(p, status="reference", reason=f"modifier of '{toks.tokens[p.end_tok].text}'")
             elif p.end_tok < len(norms) and norms[p.end_tok] in lx.PEOPLE_OF_PLACE and p.start_tok >= 2 \
                     and norms[p.start_tok - 2:p.start_tok] == ("for", "the"):
@@ -601,17 +606,77 @@ class ReportAnalyzer:
         self._resolve_relations(ex)
         ex.places.extend(self._description_heads_again(ex, norms))
         self._resolve_itself(ex)
+        self._relative_clause_anchors(ex, norms)
         self._resolve_containers(ex, norms)
         ex.places.extend(self._definite_heads(toks, norms, ex.places))  # again, after descriptions ("the portal with ...")
         self._ordinal_anaphora(toks, norms, ex)
         self._apply_place_negation(ex)
+        self._apply_pronoun_negation(ex, norms)
         self._apply_restarts(ex)
         self._apply_place_repairs(ex)
         self._apply_trailing_repairs(ex)
         self._apply_confirmations(ex, norms)
         self._apply_transit(ex)
+        self._apply_cut_off(ex, norms)
         ex.places.sort(key=lambda p: p.start_tok)
         return ex
+
+    @staticmethod
+    def _apply_cut_off(ex: Extraction, norms: tuple[str, ...]) -> None:
+        """"... and, uh, the bakery's-- [garbled]": what was being said of the place was lost; it has no claim."""
+        toks = ex.tokens
+        for i, p in enumerate(ex.places):
+            if p.status != "active":
+                continue
+            j = p.start_tok
+            while j > 0 and not toks.clause_start[j] and norms[j - 1] in lx.DETERMINERS | lx.FILLERS | {"and", "then", "also"}:
+                j -= 1
+            if j > 0 and not toks.clause_start[j] and norms[j] not in ("and", "then", "also"):
+                continue  # ("people trapped in the bakery's--": the place ends a claim, it does not open one)
+            end = p.end_tok
+            raw = toks.tokens[end - 1].text.lower().replace("’", "'")
+            if not raw.endswith("'s"):
+                if end < len(norms) and norms[end] in ("is", "has", "was") and not toks.clause_start[end]:
+                    end += 1
+                else:
+                    continue
+            gap = toks.gaps[end] if end < len(norms) else toks.text[toks.tokens[-1].end:]
+            if not any(d in gap for d in ("--", "—", "–", "...", "…")):
+                continue
+            rest = [w for w in norms[end:] if w not in lx.FILLERS]
+            if all(w in lx.LOST_WORDS for w in rest):
+                ex.places[i] = replace(p, status="retracted", reason="cut off before anything was said of it")
+
+    def _relative_clause_anchors(self, ex: Extraction, norms: tuple[str, ...]) -> None:
+        """"the spring the bottling works takes its water from has gone rusty": a place named, then a related
+        place that only leads to it through a relative clause ending in a stranded preposition."""
+        toks = ex.tokens
+        related = {(r.subject, r.object) for r in self.kb.relations} | {(r.object, r.subject) for r in self.kb.relations}
+        active = sorted((p for p in ex.places if p.status == "active" and p.via is None), key=lambda p: p.start_tok)
+        for p1, p2 in zip(active, active[1:], strict=False):
+            gap = norms[p1.end_tok:p2.start_tok]
+            if (p1.landmark, p2.landmark) not in related or len(gap) > 2 \
+                    or not all(w in lx.ARTICLES or w in ("that", "which") for w in gap) \
+                    or any(toks.clause_start[i] for i in range(p1.end_tok, p2.start_tok + 1)):
+                continue
+            end = p2.end_tok
+            while end < len(norms) and end - p2.end_tok < 7 and not toks.clause_start[end] \
+                    and norms[end] not in lx.RELATION_ENDINGS:
+                end += 1
+            if end >= len(norms) or norms[end] not in lx.RELATION_ENDINGS or end == p2.end_tok:
+                continue
+            verb = norms[p2.end_tok]
+            nxt = end + 1
+            closed = nxt >= len(norms) or toks.clause_start[nxt] or norms[nxt] in lx.COPULAS | {"has", "have", "had"}
+            if closed and (verb.endswith(("s", "ed")) or verb in ("look", "take", "draw", "feed", "face")) \
+                    and verb not in lx.COPULAS:
+                ex.places[ex.places.index(p2)] = replace(p2, status="reference",
+                                                         reason=f"reference point of a relative clause describing '{p1.text}'")
+
+    def _is_conveyance(self, landmark: str) -> bool:
+        """A railway, lift or ride, whose cars are part of it."""
+        lm = self.kb.landmark_by_name[landmark]
+        return any(set(norm_phrase(f)) & lx.CONVEYANCE_WORDS for f in lm.surface_forms)
 
     def _ordinal_anaphora(self, toks: Tokens, norms: tuple[str, ...], ex: Extraction) -> None:
         """"the chemist's and the coffee shop. The first one -- a woman on the floor": an ordinal, "the
@@ -1161,6 +1226,9 @@ class ReportAnalyzer:
             pause_after = b >= len(norms) or toks.clause_start[b]
             if words[-1:] == ("wrong",) and nxt in ("word", "words"):
                 continue  # "gas leak, sorry, gas leak, wrong word": said of the word already repaired
+            if words == ("disregard",) and (b >= len(norms) or toks.sentence_start[b]
+                                            or not pause_after and nxt in lx.FALSE_ALARM_OBJECTS):
+                continue  # "that's not smoke, it's steam, disregard. The tower's still leaking": it closes its sentence
             if words == ("no", "no") and b < len(norms) and not pause_after and self._cues.match_at(norms, b) is not None:
                 b -= 1  # "No, no fire.": the second "no" negates the cue; the first answers
                 words, nxt, pause_after = words[:1], norms[b], True
@@ -1537,8 +1605,17 @@ class ReportAnalyzer:
                      or any(norms[head] in name_words(f) for f in self.kb.landmark_by_name[n].surface_forms)}
             pool = named or related
             target = None
+            linking = [norms[i] for i in range(head + 1, end) if not anchor.start_tok <= i < anchor.end_tok
+                       and len(norms[i]) >= 4 and norms[i].isalpha() and norms[i] not in lx.FUNCTION_WORDS
+                       and norms[i] not in lx.DESCRIPTION_STOPWORDS]
+            described = {n: sum(any(_same_stem(w, d) for d in self._description_words()[n]) for w in linking)
+                         for n in pool} if len(pool) > 1 else {}
+            best = max(described.values(), default=0)
             if len(pool) == 1:
                 target = next(iter(pool))
+            elif best > 0 and list(described.values()).count(best) == 1:
+                # "the building that heats the Thermae": the boiler house's description says it heats them
+                target = next(n for n, v in described.items() if v == best)
             elif self.embedder is not None:
                 # the linking words against the relation names, the anchor said as "it": names in both would
                 # only measure how alike the places' names are ("the boat jetty" and "the boathouse")
@@ -1566,13 +1643,20 @@ class ReportAnalyzer:
             found = True
         return found
 
+    @staticmethod
+    def _names_other_object(toks: Tokens, norms: tuple[str, ...], b: int) -> bool:
+        """"people trapped behind the shelving": the relation has an object of its own, no place of the KB."""
+        return b + 1 < len(norms) and not toks.clause_start[b] and norms[b] in lx.DETERMINERS \
+            and norms[b + 1].isalpha() and norms[b + 1] not in lx.FILLERS and not toks.clause_start[b + 1]
+
     def _resolve_one(self, ex: Extraction, toks: Tokens, norms: tuple[str, ...], a: int, b: int, phrase: str,
                      flipped: bool, place_tokens: set[int], marker_tokens: set[int], inverse_pass: bool) -> None:
         if any(i in place_tokens for i in range(a, b)):
             return  # already inside a resolved description
         anchor, anchor_end, pronoun = self._anchor_after(ex, norms, b)
         if anchor is None and norms[a:b] in lx.IMPLICIT_ANCHOR and (b >= len(norms) or ex.tokens.clause_start[b]
-                                                                    or not any(p.start_tok == b for p in ex.places)):
+                                                                    or not any(p.start_tok == b for p in ex.places)) \
+                and not self._names_other_object(toks, norms, b):
             # "the building next door": the anchor is the place last spoken of
             before = [p for p in ex.places if p.end_tok <= a and p.status != "retracted"]
             if before and not self._inverse_anchor(ex, norms, a):
@@ -1874,7 +1958,8 @@ class ReportAnalyzer:
                     self._possessive_keyword(ex, -1, max(before, key=lambda p: p.end_tok), k)
         for idx, p in enumerate(list(ex.places)):
             last = toks.tokens[p.end_tok - 1].text.lower()
-            if p.status != "active" or not last.endswith(("'s", "’s")):
+            plural = last.endswith("s") and p.end_tok < len(norms) and toks.gaps[p.end_tok].startswith(("'", "’"))
+            if p.status != "active" or not (last.endswith(("'s", "’s")) or plural):  # ("the flats' opposite number")
                 continue
             for key, phrase in sorted(lx.POSSESSIVE_RELATIONS.items(), key=lambda kv: -len(kv[0])):
                 if norms[p.end_tok : p.end_tok + len(key)] == key:
@@ -2329,6 +2414,32 @@ class ReportAnalyzer:
                 if earlier and nxt is not None and nxt.replaces is None:
                     ex.places[ex.places.index(nxt)] = replace(nxt, replaces=earlier[-1].start_tok)
 
+    @staticmethod
+    def _apply_pronoun_negation(ex: Extraction, norms: tuple[str, ...]) -> None:
+        """"gas leak at the school - well, not at it, at the place next door to it": the place said before
+        "not (at) it" is taken back, and the place said next takes its claims."""
+        toks = ex.tokens
+        for j in range(len(norms) - 1):
+            if norms[j] not in ("not", "nt"):
+                continue
+            k = j + 1
+            if norms[k] in lx.PREPOSITIONS and k + 1 < len(norms):
+                k += 1
+            if norms[k] not in ("it", "there") or not (k + 1 >= len(norms) or toks.clause_start[k + 1]):
+                continue
+            n = toks.sentence_of[j]
+            before = [q for q in ex.places if q.status == "active" and q.end_tok <= j and toks.sentence_of[q.start_tok] == n]
+            after = [r for r in ex.places if r.status == "active" and k < r.start_tok <= k + 8
+                     and toks.sentence_of[r.start_tok] == n]
+            if not before or not after:
+                continue
+            q, r = max(before, key=lambda q: q.end_tok), min(after, key=lambda r: r.start_tok)
+            if r.landmark == q.landmark:
+                continue
+            ex.places[ex.places.index(q)] = replace(q, status="retracted", reason=f"then '{toks.span_text(j, k + 1)}'")
+            if r.replaces is None:
+                ex.places[ex.places.index(r)] = replace(r, replaces=q.start_tok)
+
     def _cue_between(self, norms: tuple[str, ...], a: int, b: int) -> bool:
         return any(self._cues.match_at(norms, k) is not None for k in range(a, b))
 
@@ -2372,6 +2483,8 @@ class ReportAnalyzer:
                 if hit is not None and norms[k] == "were" and "'" not in toks.tokens[k].text.replace("’", "'") \
                         and not toks.sentence_start[k] and norms[k - 1] != "we":
                     continue  # "my son and his friend were at the gym": "were", not "we're"
+                if hit is not None and hit[1].startswith("route ") and k > 0 and not toks.clause_start[k]:
+                    continue  # "evacuation route through the square is clear": a route said to be safe; "route via" orders
                 if hit is not None and j <= hit[0] <= p.start_tok and not any(toks.clause_start[i] for i in range(k + 1, min(hit[0], p.start_tok) + 1) if i < p.start_tok):
                     if norms[k] in ("passing", "past", "going", "driving", "walking", "passed") \
                             and (norms[p.end_tok:p.end_tok + 2] in lx.SEEN_THERE
@@ -2551,6 +2664,9 @@ class ReportAnalyzer:
                 continue
             if b < len(norms) and norms[b] in lx.COORDINATORS and any(p.end_tok == a for p in ex.places):
                 continue  # "in the coffee shop I mean, and the church ...": the marker closed its own repair
+            if a > 0 and b < len(norms) and norms[a - 1] in lx.PREPOSITIONS and norms[b] in lx.PREPOSITIONS \
+                    and not any(p.start_tok <= a - 1 < p.end_tok for p in ex.places):
+                continue  # "two casualties outside-- no, inside the supermarket": where, not which place, repaired
             if not _strong and (b >= len(norms) or toks.sentence_start[b]) and any(
                     p.end_tok == a and any(q.status in ("negated", "retracted") and q.landmark != p.landmark
                                            and toks.sentence_of[q.start_tok] == toks.sentence_of[a] and q.end_tok <= p.start_tok
@@ -3094,6 +3210,8 @@ class ReportAnalyzer:
                    or w in ("evacuated", "evacuating")}  # ("the water treatment works has been evacuated": no guess)
         for a, b, _ in self._negators.find_all(norms):
             negated.update(range(a, b))
+        # "the kids from the school are all out": got out, nobody left to guess a claim for
+        negated.update(i for i in range(len(norms) - 1) if norms[i + 1] == "out" and norms[i] in lx.GOT_OUT_BEFORE)
         asking = self._question_sentences(toks)
         for p in todo:
             if toks.sentence_of[p.start_tok] in asking:
@@ -3109,6 +3227,8 @@ class ReportAnalyzer:
                 continue  # the vocabulary (or a repair) already spoke here; the fallback stays silent
             if any(a <= i < b for i in negated):
                 continue  # "nobody home at the flats": a negated predicate is no claim to guess at
+            if any(norms[i:i + len(key)] == key for _, key in _FALSE_ALARM_KEYS for i in range(a, b)):
+                continue  # "it's just fog round the bell tower": a dismissal is no claim to guess at
             if self._says_who_and_where(toks, norms, p):
                 continue  # "Scaffolder on the roof of the hotel, over.": who is calling and from where
             after = norms[p.end_tok:min(len(norms), p.end_tok + 6)]
@@ -3381,6 +3501,11 @@ class ReportAnalyzer:
                     and opener not in marker_starts:
                 # "is the is the square safe can anyone confirm": speech without a question mark still asks
                 end = next((i for i in range(opener + 1, b) if toks.clause_start[i]), b)
+                while end < b:  # "is the, uh, is the marketplace free ...": the question started again
+                    again = next((i for i in range(end, b) if norms[i] not in lx.FILLERS), b)
+                    if again >= b or norms[again] != norms[opener]:
+                        break
+                    end = next((i for i in range(again + 1, b) if toks.clause_start[i]), b)
                 asked.update(range(a, end))
                 continue
             first = norms[opener] if opener < b else ""
@@ -3420,9 +3545,11 @@ class ReportAnalyzer:
             out.update(range(i, j))
         return out
 
-    def _restated_category(self, ex: Extraction, k: int, out: list[CueMention], b: int, end: int, a: int) -> None:
+    def _restated_category(self, ex: Extraction, k: int, out: list[CueMention], b: int, end: int, a: int,
+                           withdraw: bool = False) -> None:
         """"the hotel's sound — hold that — hotel's got a cracked stairwell": same place, new category;
-        the cues said about the earlier mention are retracted."""
+        the cues said about the earlier mention are retracted. After a withdrawal ("collapse at the tower —
+        disregard, the tower is standing") they are retracted even when nothing new is said of it."""
         first = min((p for p in ex.places if b <= p.start_tok < end and p.status not in ("reference", "negated")),
                     key=lambda p: p.start_tok, default=None)
         if first is None:
@@ -3431,27 +3558,43 @@ class ReportAnalyzer:
         same = [p for p in ex.places if lo <= p.start_tok < a and p.landmark == first.landmark]
         if not same:
             return
+        last = max((p for p in ex.places if lo <= p.start_tok < a), key=lambda p: p.start_tok)
+        if withdraw and (max(same, key=lambda p: p.start_tok).status != "active" or last.landmark != first.landmark):
+            # ("casualties at the place next to the school, scratch that, at the school itself"; "the casualty is at
+            # the bank -- strike that, she's at the hotel": a place repaired, not a claim withdrawn)
+            withdraw = False
         since = max(p.start_tok for p in same)
         if not any(b <= c.start_tok < end and c.status == "active" for c in out):
             # "the apron is clear, correction, the apron's got fuel all over it": no listed word says the
             # new category; MiniLM reads the restated predicate
             earlier = [c for c in out if since < c.start_tok < a and c.status == "active"]
-            if not earlier:
+            if not earlier and not withdraw:
                 return
-            new = self._repaired_by_meaning(ex, first.end_tok, end, earlier[-1])
-            if new is None:
+            new = self._repaired_by_meaning(ex, first.end_tok, end, earlier[-1]) if earlier else None
+            if new is None and not withdraw:
                 return
-            out.append(new)
+            if new is not None:
+                out.append(new)
+        if withdraw and not any(since < c.start_tok < a and c.status == "active" for c in out):
+            # the cue said of it may stand before it ("collapse at the tower"): back to the last other place
+            since = max([p.end_tok - 1 for p in ex.places if lo <= p.end_tok <= since and p.landmark != first.landmark
+                         and p.status != "reference"], default=lo - 1)
         for i, c in enumerate(out):
             if since < c.start_tok < a and c.status == "active":
-                out[i] = replace(c, status="retracted", reason=f"category restated after '{ex.tokens.span_text(a, ex.markers[k][1])}'")
+                said = ex.tokens.span_text(a, ex.markers[k][1])
+                out[i] = replace(c, status="retracted",
+                                 reason=f"withdrawn by '{said}'" if withdraw else f"category restated after '{said}'")
 
     def _apply_false_alarms(self, toks: Tokens, norms: tuple[str, ...], cues: list[CueMention]) -> list[CueMention]:
         """"... the smoke was a false alarm": every claim of that sentence is denied."""
         sentence_of = toks.sentence_of
         alarms: dict[int, int] = {}  # sentence -> the token before which its claims are denied
         places_now = getattr(self, "_places_now", [])
+        dangerous = {w for t in self.kb.glossary for w in norm_phrase(t.term)
+                     if self.kb.category_by_name[t.category].role == Role.UNDESIRABLE}
         for phrase, key in _FALSE_ALARM_KEYS:
+            if key[0] in ("just", "only") and key[-1] in dangerous:
+                continue  # "it's not chlorine, it's just steam, live steam blasting out": the KB says steam is a danger
             for i in range(len(norms) - len(key) + 1):
                 if norms[i] != key[0]:
                     continue
@@ -3716,10 +3859,10 @@ class ReportAnalyzer:
         for k, (a, _b, strong) in enumerate(ex.markers):
             kind = self._repair_kind(ex, k, cue_spans)
             b_after, e_after = self._after_clause(ex, k)
-            if kind == "place":
-                self._restated_category(ex, k, out, b_after, e_after, a)
-                continue
             withdraw = _withdraws(norms_all[a:_b])
+            if kind == "place":
+                self._restated_category(ex, k, out, b_after, e_after, a, withdraw)
+                continue
             just_said = [c for c in out if c.status == "active" and c.end_tok <= a
                          and all(w in lx.FILLERS for w in norms_all[c.end_tok:a])]
             taken_back = kind is None and strong and bool(just_said) and e_after > b_after \
@@ -4029,6 +4172,9 @@ class ReportAnalyzer:
             if p.start_tok in claimed_places:
                 continue
             n = sentence_of[p.start_tok]
+            if any(c.status == "retracted" and c.reason.startswith("withdrawn")
+                   and p.end_tok <= c.start_tok <= p.end_tok + 3 and sentence_of[c.start_tok] == n for c in cues):
+                continue  # "... and the helipad's usable... Scratch that last bit": its own word was taken back
             rest = [w for i, w in enumerate(norms) if sentence_of[i] == n and not p.start_tok <= i < p.end_tok
                     and (w not in lx.FILLERS or w == "well") and w not in lx.DETERMINERS]
             if rest in (["too"], ["also"], ["as", "well"], ["aswell"], ["and", "all"], ["all"]) and n > 0:

@@ -95,6 +95,8 @@ sending people there|moving evacuees there|send them there|
 """.replace("\n", ""))
 
 _add(CRITICAL, """
+with cuts|cuts from|cuts to his|cuts to her|cuts to their|cuts and bruises|nasty cuts|bad cuts|with a cut|
+scalded|scalds|scalding burns|badly scalded|with scalds|
 trapped|trapped inside|stuck|stuck inside|pinned|pinned down|buried|injured|injuries|injury|hurt|
 wounded|bleeding|unconscious|unresponsive|not breathing|not moving|cardiac arrest|broken leg|broken arm|
 casualty|casualties|victim|victims|survivor|survivors|patient|patients|
@@ -242,6 +244,8 @@ NEUTRAL_PHRASES = ["out of the smoke", "away from the smoke", "out of the rain",
                    "people sitting in here", "people sitting in there", "sitting in here", "waiting in here",
                    "i'm calling from", "im calling from", "i am calling from", "we're calling from",
                    "i'm ringing from", "im ringing from", "we're ringing from", "where i'm calling from", "can't get down to", "cannot get down to", "comes down to", "come down to", "coming down to", "goes down to", "runs down to", "keep clear", "stay clear", "keep everyone clear", "keep everybody clear", "keep people clear",
+                   "keeping clear", "staying clear", "keeping everyone clear", "keeping everybody clear",
+                   "keeping people clear", "keeping them clear", "keeping the public clear", "keeping well clear",
                    "keep them clear", "keep the public clear", "keep well clear", "clear the public", "keep it clear",
                    "keep that clear", "keep this clear",
                    "clear everyone away", "clear everybody away", "clear people away", "clear the crowd",
@@ -262,7 +266,7 @@ NEUTRAL_PHRASES = ["out of the smoke", "away from the smoke", "out of the rain",
 
 # Whole-report "nothing to see" markers that cancel every claim in their sentence.
 FALSE_ALARM = ["false alarm", "never mind", "nevermind", "disregard my last", "disregard the last report",
-               "nothing in it", "nothing to it", "just steam", "only steam", "extractor fan", "was just a", "was only a",
+               "nothing in it", "nothing to it", "just steam", "only steam", "just fog", "only fog", "just mist", "only mist", "extractor fan", "was just a", "was only a",
                "was just their", "was just the", "its just their", "is just their", "its only their", "nothing to worry about", "ignore my last", "cancel my last",
                "disregard my last message", "disregard previous", "disregard my earlier report",
                "ignore my earlier report", "disregard the earlier report", "were wrong", "were unfounded",
@@ -289,7 +293,7 @@ STRONG_REPAIR = [
     "wrong one", "not that one", "wrong building", "wrong place", "as you were", "amend that", "hold that", "hold on that", "let me correct that", "let me correct myself",
     "let me correct my last", "that should be", "that should have been", "should be", "scrub that", "i misspoke",
     "ah i misspoke", "or is it", "take that back", "strike that last", "correction on my last", "correct that",
-    "scrap that", "bin that", "ignore that", "delete that", "rewind", "back up", "start again", "let me start again",
+    "scrap that", "bin that", "ignore that", "delete that", "disregard", "rewind", "back up", "start again", "let me start again",
 ]
 WEAK_REPAIR = ["sorry", "actually", "or rather", "rather", "wait", "no", "nope", "er no", "uh no", "well no",
                "oops", "whoops", "hang on", "hold on"]
@@ -312,14 +316,17 @@ RELATION_SYNONYMS: dict[str, list[str]] = {
                     "facing", "over the road from", "across the square from", "across the way from",
                     "over the street from", "directly across from", "straight across from", "that faces",
                     "faces", "opposite of", "over the way from", "across the way", "on the other side of the road from",
-                    "on the opposite side of the street from", "that looks across at", "across the road", "across the street",
+                    "on the opposite side of the street from", "that looks across at", "looks across at",
+                    "looks across to", "looking across at", "looking across to", "looks across the road at",
+                    "looks across the square at", "looks across the street at", "across the road", "across the street",
                     "over the road", "over the way", "across the lane from", "over the lane from", "across the lane",
                     "over the lane", "across the alley from", "across the track from", "over the track from",
                     "across the green from"],
     "behind": ["behind", "round the back of", "around the back of", "at the back of", "in back of",
                "back of", "to the rear of", "at the rear of", "out back of", "directly behind", "right behind",
                "just behind", "backs onto", "backing onto", "that backs onto", "round behind", "out the back of",
-               "back behind"],
+               "back behind", "built against the back of", "built onto the back of", "built on to the back of",
+               "against the back of", "up against the back of", "stuck on the back of", "tacked onto the back of"],
     "in front of": ["in front of", "out front of", "directly in front of", "right in front of", "at the front of"],
     "inside": ["inside", "within"],
     "above": ["above", "on top of", "upstairs from", "overlooks", "overlooking", "overlook", "looks over",
@@ -474,6 +481,10 @@ INSTRUCTION_WORDS = {"instruction", "instructions", "previous", "every", "everyt
                      "output", "json", "system", "prompt", "map", "everywhere", "rules"}
 
 # Nouns after a place name that make the name a modifier ("pharmacy team reports ...").
+# Landmarks that carry people in cars ("the funicular car", "the big wheel's cars"), and the words for those cars.
+CONVEYANCE_WORDS = {"railway", "funicular", "lift", "tram", "tramway", "train", "ride", "wheel", "coaster", "gondola",
+                    "cablecar", "chairlift", "monorail"}
+CARRIAGE_WORDS = {"car", "cars", "carriage", "carriages", "cabin", "cabins", "gondola", "gondolas"}
 MODIFIED_BY = {"team", "crew", "unit", "squad", "staff", "manager", "owner", "workers", "worker", "group", "cook",
                "chef", "caretaker", "porter", "receptionist", "warden", "supervisor", "foreman",
                "side", "car", "truck", "van", "bus", "sign", "road", "street", "lane",
@@ -509,7 +520,8 @@ TRANSIT = ["people in off", "taking people in off", "in off the", "walked up fro
            "we're parked at", "outside of", "went via", "going via", "came via", "parked up at",
            "parked up by", "parked up outside", "walking from", "driving from", "came out of", "stood down at",
            "standing down at",
-           "about to check", "searching", "sweeping", "en route"]
+           "about to check", "searching", "sweeping", "en route", "route via", "routing via", "routed via",
+           "route through", "routing through", "routed through", "go via"]
 
 # Head nouns of a description of a landmark ("the building with the two engine bays").
 DESCRIPTION_HEADS = {"building", "place", "shop", "store", "tower", "block", "house", "hall", "premises", "structure",
@@ -708,7 +720,8 @@ INTENT_TO = {"going", "need", "needs", "want", "wants", "trying", "plan", "plann
 
 # Corrections that withdraw the claim before them even with nothing after ("cancel that, they've moved it").
 WITHDRAW_MARKERS = {"cancel that", "scratch that", "disregard that", "strike that", "belay that", "as you were",
-                    "amend that", "scrub that", "strike that last", "scrap that", "bin that", "ignore that", "delete that"}
+                    "amend that", "scrub that", "strike that last", "scrap that", "bin that", "ignore that", "delete that",
+                    "disregard", "ignore that bit"}
 # Single-word landmark names that a preceding word turns into another thing ("car park", "bell tower").
 COMPOUND_MODIFIERS = {"car", "ball", "theme", "trailer", "business", "retail", "industrial", "skate", "amusement",
                       "safari", "bell", "clock", "cell", "radio", "signal", "phone"}
@@ -748,6 +761,8 @@ RELATIVE_COPULAS = {("that", "is"), ("which", "is"), ("that", "s"), ("which", "s
 # description names is given the category its kind of danger reads as, decided once per KB over
 # all the kind's words: "split open" is a collapse like "collapsed" and "cracked", whatever MiniLM
 # makes of the two words alone. Ambiguous words ("leak", "danger", "blocked") belong to no kind.
+# A kind of danger no category description names goes where its nearest kind goes.
+KIND_FALLBACK = {"smoke": "fire"}
 DANGER_KINDS: dict[str, list[str]] = {
     "crowd": ["crowd crush", "crowd surge", "surge at", "surge in", "surging", "crammed", "packed solid", "pressed flat",
               "pressed against", "pushed up against", "crushing", "pile-up", "pile up", "overcrowded", "stampede",
@@ -770,7 +785,9 @@ DANGER_KINDS: dict[str, list[str]] = {
                  "slick", "fuel slick", "petrol all over", "fuel all over", "diesel all over", "oil all over",
                  "petrol everywhere", "diesel everywhere", "fuel everywhere", "swimming in oil", "swimming in diesel", "swimming in fuel",
                  "swimming in petrol", "oil everywhere", "oil slick", "chemical leak", "chemical leaks", "chemical spill",
-                 "chemical fumes", "tanker leak", "hazchem spill", "seeping in"],
+                 "chemical fumes", "tanker leak", "hazchem spill", "seeping in", "smells of oil", "smell of oil",
+                 "smells of diesel", "smell of diesel", "smells of petrol", "smell of petrol", "smells of chemicals",
+                 "chemical smell"],
     "explosion": ["explosion", "exploded", "explosive", "blast", "exploding", "explode", "could explode", "just gone up", "just went up", "gone up again", "went up again", "gone up like", "went up like",
                   "another bang", "loud bang", "big bang", "massive bang", "huge bang", "blown out", "blown apart",
                   "blown in", "blew out", "blew up", "blown up", "bottles went up", "cylinders went up",
@@ -791,19 +808,22 @@ DANGER_KINDS: dict[str, list[str]] = {
                  "span is down", "could go at any minute", "could go any minute", "broken up", "has broken up", "broken away", "broke away", "come through the roof", "came through the roof", "twisted", "leaning badly", "leaning over", "listing", "sagged", "sagged down",
                  "has sagged", "roof's sagged", "stones falling", "stone falling",
                  "falling stones", "falling stone", "bits falling", "bits coming down", "chunks falling", "lumps falling",
-                 "stonework falling", "sheared off", "keystone's come out", "arch has dropped", "arch's dropped"],
+                 "stonework falling", "frayed", "fraying", "cable's frayed", "derailed", "come off its rails",
+                 "came off its rails", "come off the rails", "came off the rails", "off its rails", "sheared off", "keystone's come out", "arch has dropped", "arch's dropped"],
     "fallen": ["has fallen into", "have fallen into", "fallen into the", "rubble", "wall down", "walls down",
                "roof's in", "roof is in", "roof's gone", "roof has gone", "roof's off", "shedding bricks",
                "shedding slates", "masonry falling", "falling masonry", "fallen masonry", "wall's fallen",
                "wall has fallen", "walls have fallen", "roof's fallen", "roof has fallen", "ceiling's fallen",
-               "ceiling has fallen", "chimney's fallen", "chimney has fallen", "roof down", "ceiling's down",
+               "ceiling has fallen", "chimney's fallen", "chimney has fallen", "lost half its roof", "lost its roof", "lost the roof",
+               "lost half the roof", "lost part of its roof", "lost part of the roof", "roof down", "roof is down", "roof's down", "ceiling's down",
                "ceiling down", "tree through the roof", "tree on it", "the tree on it", "tree on the roof",
                "roof fell on", "fell on them", "came down on them", "come down on them", "collapsed on them",
                "smashed", "smashed up", "smashed to pieces", "smashed to matchwood", "full of wreckage", "wreckage",
                "a breach in it", "breach in the"],
     "ground": ["is shifting", "s shifting", "its shifting", "keeps shifting", "started shifting", "sliding",
                "landslide", "mudslide", "mud slide", "landslip", "slipping", "sinkhole", "come away", "came away",
-               "subsided into", "subsiding into", "subsidence"],
+               "subsided into", "subsiding into", "subsidence", "mud", "mud and rocks", "mud everywhere",
+               "full of mud", "rocks came down", "rocks have come down", "rockfall", "rock fall", "boulders"],
     "water": ["flood", "floods", "flooded", "flooding", "underwater", "under water", "water rising", "rising water",
               "submerged", "knee deep", "waist deep", "chest deep", "ankle deep", "water's up", "water up to",
               "up to the windowsills", "overtopping", "burst its banks", "waterlogged", "water logged", "flooded out",
@@ -841,6 +861,9 @@ DANGER_KINDS: dict[str, list[str]] = {
                "lying across", "come down across", "came down across", "gridlocked", "choked with",
                "full of parked cars", "cordoned off", "shed its load", "fallen tree", "tree's fallen",
                "tree has fallen", "tree down", "trees down"],
+    "sewage": ["sewage", "raw sewage", "sewage backing up", "backing up with sewage", "sewer overflow",
+               "sewer backing up", "foul water", "contaminated water", "polluted water", "dirty water coming up",
+               "sewage everywhere", "sewage coming up"],
 }
 # Words of the kinds' phrases that name the thing, not the danger: they do not vote ("roof down").
 DANGER_KIND_PARTS = {"roof", "roofs", "wall", "walls", "ceiling", "floor", "chimney", "tree", "trees", "door", "doors",
@@ -893,3 +916,11 @@ SPATIAL_WORDS = {"under", "over", "behind", "beside", "besides", "across", "arou
 # Adverbs that may stand between a cue and the relation that places it ("casualty's actually round the back of").
 SENTENCE_ADVERBS = {"actually", "really", "still", "now", "definitely", "probably", "apparently", "honestly", "just",
                     "also"}
+
+# What a transcript puts where speech was lost ("the bakery's-- [garbled]").
+LOST_WORDS = {"garbled", "inaudible", "unintelligible", "unreadable", "static", "unclear", "crackle", "crackles",
+              "breaking", "up", "transmission", "lost", "cut", "off", "signal", "over"}
+# Words before "out" that say people got out ("they're all out", "everyone got out safely").
+GOT_OUT_BEFORE = {"all", "everyone", "everybody", "got", "safely", "are", "re", "been", "gotten"}
+# What a bare "disregard" may take as its object, when it is no repair marker ("disregard my last").
+FALSE_ALARM_OBJECTS = {"my", "the", "previous", "last", "earlier", "all", "everything", "this", "that"}
