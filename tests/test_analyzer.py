@@ -1935,3 +1935,25 @@ def test_dev30_radio_phenomena(analyzer, text, expected):
 ])
 def test_dev30_phenomena_on_an_unseen_kb(kb_analyzers, text, expected):
     assert claims(kb_analyzers["spa_town"], text) == expected
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    # a facility moved to another place: the new place has it, the old one no longer does
+    ("police station is the staging area... er, was, they've moved it to the clinic, the police station's out of use now",
+     [("clinic", "safe_zone")]),
+    ("We were going to put the triage tent at the sports hall but it's got no power, so it's going in the bus station "
+     "instead.", [("bus station", "safe_zone")]),
+    ("triage tent going up at the school — no, the school's got a gas leak, we're putting it at the park instead",
+     [("park", "safe_zone"), ("school", "hazard")]),
+    # a person moved: at the new place too, and those left behind stay
+    ("Alpha to control, casualties at the hotel, three walking wounded, one on a stretcher. Bravo: the stretcher case "
+     "isn't at the hotel any more, we've moved her to the bank. Alpha: copy, three walking wounded still at the hotel.",
+     [("bank", "victim"), ("hotel", "victim")]),
+    # a list said again after a repair: the new member has what the old one has
+    ("we've got people hurt at the library, the school, and, hold that, not the school, just the library and the "
+     "post office", [("library", "victim"), ("post office", "victim")]),
+    ("flooding at the garage, flooding at the hardware store, flooding at the — no, take the hardware store back out — "
+     "garage and warehouse", [("garage", "hazard"), ("warehouse", "hazard")]),
+])
+def test_claims_moved_and_lists_restated(analyzer, text, expected):
+    assert claims(analyzer, text) == expected

@@ -3061,7 +3061,9 @@ class ReportAnalyzer:
         cues = self._apply_false_alarms(toks, norms, cues)
         self._markers_now = ex.markers
         cues = self._apply_non_reports(toks, norms, cues)
+        cues, moved = self._relocations(ex, norms, cues)
         claims, denied = self._associate(ex, cues)
+        claims.extend(moved)
         spread = self._spread_claims(ex, norms, cues, claims, denied)
         claims.extend(spread)
         cues.extend(c.cue for c in spread)
@@ -3072,6 +3074,76 @@ class ReportAnalyzer:
             claims.extend(extra)
             cues.extend(c.cue for c in extra)
         return Classification(cues, claims, denied)
+
+    @staticmethod
+    def _restated_list_mate(ex: Extraction, norms: tuple[str, ...], p: PlaceMention, active: list[PlaceMention],
+                            pairs: list[Claim]) -> list[CueMention]:
+        """The cues of a place coordinated with ``p`` ("the library and the post office") that says again a place
+        claimed earlier in the sentence, after a place of that list was taken back."""
+        toks = ex.tokens
+        n = toks.sentence_of[p.start_tok]
+        glue = lx.DETERMINERS | lx.FILLERS | {"and", "just", "only"}
+        for q in active:
+            if q is p or q.landmark == p.landmark or toks.sentence_of[q.start_tok] != n:
+                continue
+            lo, hi = (q.end_tok, p.start_tok) if q.end_tok <= p.start_tok else (p.end_tok, q.start_tok)
+            if hi - lo > 4 or "and" not in norms[lo:hi] or not all(w in glue for w in norms[lo:hi]):
+                continue
+            own = [c for c in pairs if c.place is q]
+            earlier = own or [c for c in pairs if c.place.landmark == q.landmark
+                              and c.place.end_tok <= min(p.start_tok, q.start_tok) and toks.sentence_of[c.place.start_tok] == n]
+            dropped = any(r.status in ("retracted", "negated") and r.landmark not in (p.landmark, q.landmark)
+                          and toks.sentence_of[r.start_tok] == n and r.start_tok < min(p.start_tok, q.start_tok)
+                          for r in ex.places)
+            if earlier and dropped:
+                return [c.cue for c in earlier]
+        return []
+
+    def _relocations(self, ex: Extraction, norms: tuple[str, ...],
+                     cues: list[CueMention]) -> tuple[list[CueMention], list[Claim]]:
+        """"police station is the staging area... er, was, they've moved it to the clinic"; "we're putting it at
+        the park instead": a facility said to be at one place is moved to another; the new place has it, the old
+        one no longer does. People moved ("we've moved her to the bank") are at the new place too."""
+        toks = ex.tokens
+        moved: list[Claim] = []
+        active = [p for p in ex.places if p.status == "active"]
+        for i, w in enumerate(norms):
+            if w not in lx.RELOCATE_VERBS:
+                continue
+            j = i + 1
+            obj = norms[j] if j < len(norms) else ""
+            if obj in lx.RELOCATED_OBJECTS:
+                j += 1
+            elif not (w in ("going", "gone") and i >= 1 and norms[i - 1] in ("its", "s", "is") and i >= 2
+                      and norms[i - 2] in ("it", "its", "that", "thats") or norms[i - 1] in ("its", "thats")):
+                continue  # ("it's going in the bus station instead")
+            while j < len(norms) and norms[j] in ("over", "across", "up", "down", "back"):
+                j += 1
+            if j >= len(norms) or norms[j] not in ("to", "at", "in", "into", "inside", "over"):
+                continue
+            target = next((p for p in active if j < p.start_tok <= j + 3
+                           and all(norms[t] in lx.DETERMINERS for t in range(j + 1, p.start_tok))), None)
+            if target is None:
+                continue
+            instead = "instead" in norms[target.end_tok:target.end_tok + 4]
+            person = obj in ("her", "him", "them") and self._person_category is not None
+            if not (instead or w in lx.RELOCATE_EXPLICIT):
+                continue
+            n = toks.sentence_of[i]
+            before = [c for c in cues if c.status == "active" and c.polarity == "affirmed" and c.end_tok <= i
+                      and n - 1 <= toks.sentence_of[c.start_tok] <= n]
+            if person:
+                before = [c for c in before if c.category == self._person_category]
+            else:
+                before = [c for c in before if self.kb.category_by_name[c.category].role == Role.DESIRABLE]
+            if not before:
+                continue
+            last = max(before, key=lambda c: c.start_tok)
+            if not person:
+                cues = [replace(c, status="retracted", reason=f"moved to {target.text}") if c is last else c
+                        for c in cues]
+            moved.append(Claim(target, replace(last, reason=f"moved to {target.text}")))
+        return cues, moved
 
     RESTART_WORDS = frozenset({"there", "theres", "s", "is", "a", "an", "the", "its", "it", "some"})
 
@@ -4223,6 +4295,13 @@ class ReportAnalyzer:
                 if seg_index[beside.start_tok] == k:
                     got += [c for c in seg_cues.get(k, []) if all(c is not g for g in got)]
                 pairs.extend(Claim(p, c) for c in got)
+                claimed_places.add(p.start_tok)
+                continue
+            mate = self._restated_list_mate(ex, norms, p, active, pairs)
+            if mate:
+                # "people hurt at the library, the school, and, hold that, not the school, just the library and the
+                # post office": a list said again after a repair; the new member has what the old one has
+                pairs.extend(Claim(p, c) for c in mate)
                 claimed_places.add(p.start_tok)
                 continue
             counted = len(norms) if p.counted_by is None else p.counted_by

@@ -240,7 +240,7 @@ BACK_REFERENCE_WORDS = {"it", "its", "s", "is", "has", "been", "thats", "that", 
                         "ive"}
 
 # Phrases that contain cue words but claim nothing ("the smoke alarm went off", "fire crew on site").
-NEUTRAL_PHRASES = ["out of the smoke", "away from the smoke", "out of the rain", "out of the water", "out of the fumes",
+NEUTRAL_PHRASES = ["out of use", "out of action", "out of service", "out of the smoke", "away from the smoke", "out of the rain", "out of the water", "out of the fumes",
                    "people sitting in here", "people sitting in there", "sitting in here", "waiting in here",
                    "i'm calling from", "im calling from", "i am calling from", "we're calling from",
                    "i'm ringing from", "im ringing from", "we're ringing from", "where i'm calling from", "can't get down to", "cannot get down to", "comes down to", "come down to", "coming down to", "goes down to", "runs down to", "keep clear", "stay clear", "keep everyone clear", "keep everybody clear", "keep people clear",
@@ -924,3 +924,9 @@ LOST_WORDS = {"garbled", "inaudible", "unintelligible", "unreadable", "static", 
 GOT_OUT_BEFORE = {"all", "everyone", "everybody", "got", "safely", "are", "re", "been", "gotten"}
 # What a bare "disregard" may take as its object, when it is no repair marker ("disregard my last").
 FALSE_ALARM_OBJECTS = {"my", "the", "previous", "last", "earlier", "all", "everything", "this", "that"}
+# "they've moved it to the clinic", "we're putting it at the park instead": a facility or a person moved.
+RELOCATE_VERBS = {"moved", "move", "moving", "put", "putting", "going", "gone", "relocated", "relocating", "relocate",
+                  "shifted", "shifting", "shift", "transferred", "transferring", "setting", "set", "taken", "taking"}
+RELOCATE_EXPLICIT = {"moved", "moving", "move", "relocated", "relocating", "relocate", "shifted", "shifting", "shift",
+                     "transferred", "transferring"}
+RELOCATED_OBJECTS = {"it", "them", "her", "him", "that", "everything", "everyone", "everybody"}
