@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev30) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev31) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -48,6 +48,7 @@ RESERVOIR = ROOT / "knowledge_bases" / "reservoir_valley"
 AIRPORT = ROOT / "knowledge_bases" / "airport_terminal"
 SKI_TOWN = ROOT / "knowledge_bases" / "ski_town"
 SPA_TOWN = ROOT / "knowledge_bases" / "spa_town"
+MARKET_TOWN = ROOT / "knowledge_bases" / "market_town"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -174,6 +175,12 @@ SETS = {
                                   {"standard": 10, "messy": 30, "advanced_messy": 50}, sep=""),
     "dev30/spa_town": _set("dev30/spa_town.jsonl", SPA_TOWN, "sp30",
                            {"standard": 20, "messy": 40, "advanced_messy": 30}),
+    "dev31/market_square": _set("dev31/market_square.jsonl", MARKET_SQUARE, "d31",
+                                {"standard": 10, "messy": 70, "advanced_messy": 20}, sep=""),
+    "dev31/market_square_b": _set("dev31/market_square_b.jsonl", MARKET_SQUARE, "d31b",
+                                  {"standard": 50, "messy": 50, "advanced_messy": 50}, sep=""),
+    "dev31/market_town": _set("dev31/market_town.jsonl", MARKET_TOWN, "mt31",
+                              {"standard": 20, "messy": 45, "advanced_messy": 25}),
 }
 
 
