@@ -1957,3 +1957,48 @@ def test_dev30_phenomena_on_an_unseen_kb(kb_analyzers, text, expected):
 ])
 def test_claims_moved_and_lists_restated(analyzer, text, expected):
     assert claims(analyzer, text) == expected
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    # call-takers' repair words and other repair words with no fixed marker
+    ("Caller (male, 40s) states smoke from the school — corrects to the post office. Says the kids have been moved over "
+     "to the church for shelter.", [("church", "safe_zone"), ("post office", "hazard")]),
+    ("Builder here, we've nicked a gas pipe and it's leaking into the bank, er, what am I saying, the fire station, the "
+     "fire hall — the bank's over the road — it's the fire station that's filling up with gas.", [("fire station", "hazard")]),
+    # "X isn't affected" and "X itself unaffected" claim nothing; "source identified as" moves the danger
+    ("I'm in the cafe. Right, the bakery's got smoke pouring out the back, the chemist's is fine — sorry, I mean the "
+     "chemist's isn't affected, it's just the bakery.", [("bakery", "hazard")]),
+    ("Multiple calls re smoke over the square. Source identified as the bus depot. Square itself unaffected.",
+     [("bus station", "hazard")]),
+    # a cancellation denied is no cancellation
+    ("Pump one: fire at the bakery is knocked down — negative, negative, fire at the bakery is NOT knocked down, it's "
+     "got into the loft, request second pump.", [("bakery", "hazard")]),
+    # the speaker does not know where it is
+    ("is it the school? is the school on fire?? my daughter's there, I can see smoke from the top of the road but I "
+     "don't know where it's coming from", []),
+    # a position, then the pronoun in the next clause or sentence
+    ("we're at the bank and it's on fire", [("bank", "hazard")]),
+    ("We're at the bank. It's on fire.", [("bank", "hazard")]),
+    # a question after a word that only opens the turn
+    ("wait was it the bank or the library that had the gas? I I honestly can't remember, can someone check", []),
+    # "both are" names the two places just said
+    ("Tool shop and garage have been vented and tested; both are marked safe.",
+     [("garage", "safe_zone"), ("hardware store", "safe_zone")]),
+    ("the post office is on fire, no, the school is on fire, no wait, both are", [("post office", "hazard"), ("school", "hazard")]),
+    # "the other one" the speaker goes on to name; a place not reached yet; where people are being sent
+    ("theres smoke coming from the post office no the other one, the one next to it, the school, its the school",
+     [("school", "hazard")]),
+    ("okay so like the hotel we checked and it's all clear and um the bank has got, er, a gas leak, and er the church "
+     "we didn't get to", [("bank", "hazard"), ("hotel", "safe_zone")]),
+    ("er the flats and the, the park... flats have got water in the basement, the park's where we're sending everyone",
+     [("apartment block", "hazard"), ("park", "safe_zone")]),
+    # a relation negated takes its description back; the anchor itself is then meant
+    ("the building across from the park has collapsed — no wait, not across from the park, the park itself, a big "
+     "tree's come down and there's a kid pinned under it", [("park", "hazard"), ("park", "victim")]),
+    # a place said alone gets no guess; people still up there are casualties
+    ("Oh it's terrible, terrible. All the flats. All the windows blown out of the flats, and my neighbour, Mrs Ellis, "
+     "she's still up there on the fourth floor, she doesn't walk well.", [("apartment block", "hazard"),
+                                                                         ("apartment block", "victim")]),
+])
+def test_dev31_phenomena(analyzer, text, expected):
+    assert claims(analyzer, text) == expected

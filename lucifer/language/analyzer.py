@@ -694,10 +694,16 @@ class ReportAnalyzer:
         taken = {i for p in places for i in range(p.start_tok, p.end_tok)}
         for i in range(len(norms)):
             word = norms[i]
-            every = word in ("both", "neither") and norms[i + 1:i + 3] in (("of", "them"), ("of", "those"), ("of", "these"))
+            # "...; both are marked safe": "both" opening its clause before its verb
+            bare = word == "both" and i not in taken and toks.clause_start[i] and i > 0 \
+                and norms[i + 1:i + 2] in (("are",), ("were",), ("have",), ("had",), ("need",), ("look",), ("re",))
+            every = bare or word in ("both", "neither") and norms[i + 1:i + 3] in (("of", "them"), ("of", "those"),
+                                                                                    ("of", "these"))
             start = i
-            if every:
+            if every and not bare:
                 i += 1  # (the mention starts at "both", as an ordinal's starts at its "the")
+            elif bare:
+                pass
             elif i in taken or not (word in lx.ORDINAL_PLACES or word == "other"):
                 continue
             elif i > 0 and (norms[i - 1] == "the" or norms[i - 1] == "that" and norms[i + 1:i + 2] == ("one",)):
@@ -706,8 +712,10 @@ class ReportAnalyzer:
                 continue  # (a bare "First one, empty" opens its clause)
             end = i + 1
             nxt = norms[end] if end < len(norms) else ""
-            if every:
+            if every and not bare:
                 end += 1
+            elif bare:
+                pass
             elif nxt == "of" and norms[end + 1:end + 2] in (("them",), ("those",), ("these",), ("the",)):
                 after = end + 2
                 if norms[end + 1] == "the" or after < len(norms) and not toks.clause_start[after] \
@@ -748,13 +756,16 @@ class ReportAnalyzer:
                              if last.landmark in names and len(names) == 2), None)
                 if pair is not None:
                     listed = [last.landmark, next(n for n in pair if n != last.landmark)]
-            if not listed:
+            if not listed or bare and len(listed) != 2:
                 continue
             if every:
                 landmark = listed[-1]
             elif word == "other":
                 if len(listed) != 2:
                     continue
+                if any(end < p.start_tok <= end + 8 and toks.sentence_of[p.start_tok] == toks.sentence_of[start]
+                       for p in places):
+                    continue  # "no the other one, the one next to it, the school": the speaker goes on to name it
                 last = max((p for p in earlier if p.landmark in listed), key=lambda p: p.start_tok)
                 landmark = listed[1 - listed.index(last.landmark)]
             else:
@@ -2314,10 +2325,14 @@ class ReportAnalyzer:
             if p.via is not None and norms[p.start_tok] == "not":
                 j = p.start_tok  # "the building across from the church -- no, scratch that, not across from it"
             tail = norms[p.end_tok : p.end_tok + 4]
+            if tail[:1] == ("itself",):  # "Square itself unaffected."
+                tail = norms[p.end_tok + 1 : p.end_tok + 5]
             not_the_one = tail[:3] in (("isnt", "the", "one"), ("wasnt", "the", "one"), ("aint", "the", "one")) \
                 or tail[:4] in (("is", "not", "the", "one"), ("s", "not", "the", "one"), ("was", "not", "the", "one")) \
                 or tail[:1] in (("untouched",), ("unaffected",)) \
-                or tail[:2] in ((v, w) for v in ("is", "was", "s") for w in ("untouched", "unaffected"))
+                or tail[:2] in ((v, w) for v in ("is", "was", "s") for w in ("untouched", "unaffected")) \
+                or tail[:2] in ((v, w) for v in ("isnt", "wasnt", "not") for w in ("affected", "involved")) \
+                or tail[:3] in ((v, "not", w) for v in ("is", "was", "s") for w in ("affected", "involved"))
             if j < 0 and not_the_one:
                 ex.places[idx] = replace(p, status="negated", reason="negated by 'not the one'")
                 continue  # "the school isn't the one with people trapped, it's the library"
@@ -2354,6 +2369,21 @@ class ReportAnalyzer:
                 neg = False  # "scratch that its the physics block": the marker repairs, it does not negate the place
             if neg and not self._cue_between(norms, j + 1, p.start_tok):
                 ex.places[idx] = replace(p, status="negated", reason=f"negated by '{toks.tokens[j].text}'")
+                if norms[j] == "not" and self._relations.match_at(norms, j + 1) is not None:
+                    # "the building across from the park has collapsed — no wait, not across from the park, the park
+                    # itself": the description is taken back, and the place said next takes its claims
+                    n = toks.sentence_of[j]
+                    described = [q for q in ex.places if q.status == "active" and q.via is not None and q.end_tok <= j
+                                 and f" {p.landmark}" in f" {q.via}" and toks.sentence_of[q.start_tok] >= n - 1]
+                    nxt = next((r for r in sorted(ex.places, key=lambda r: r.start_tok) if r.status == "active"
+                                and p.end_tok <= r.start_tok <= p.end_tok + 6), None)
+                    if described and nxt is not None:
+                        q = max(described, key=lambda q: q.start_tok)
+                        ex.places[ex.places.index(q)] = replace(q, status="retracted",
+                                                                reason=f"then 'not {toks.span_text(j + 1, p.end_tok)}'")
+                        if nxt.replaces is None:
+                            ex.places[ex.places.index(nxt)] = replace(nxt, replaces=q.start_tok)
+                    continue
                 # "the clinic ... no, not the clinic, the police station": the earlier mention is retracted
                 sent_start = max(t for t in range(0, p.start_tok + 1) if toks.sentence_start[t])
                 marker_toks = {i for a, b, _ in ex.markers for i in range(a, b)}
@@ -2512,6 +2542,17 @@ class ReportAnalyzer:
                         and all(w in lx.FILLERS or w in ("we", "i", "they") or w in lx.NOT_VISITED_WORDS
                                 for w in norms[q.end_tok:j]):
                     ex.places[jdx] = replace(q, status="reference", reason="not been there yet: no claim")
+        # "and er the church we didn't get to": the place, then that it was not reached
+        for idx, p in enumerate(ex.places):
+            if p.status != "active" or p.via is not None:
+                continue
+            k = p.end_tok
+            if k < len(norms) and norms[k] in ("we", "i", "they", "crews", "nobody", "noone"):
+                tail = norms[k + 1:k + 4]
+                if any(tail[:len(t)] == t for t in lx.NOT_REACHED) and (
+                        k + 1 + 3 >= len(norms) or any(toks.clause_start[t] for t in range(k + 2, min(len(norms), k + 5)))
+                        or "yet" in norms[k + 1:k + 5]):
+                    ex.places[idx] = replace(p, status="reference", reason="not been there yet: no claim")
         # "walked past the cafe and the clinic, and at the police station ...": the list passed, every place of it
         for idx, p in enumerate(ex.places):
             if p.status != "active" or p.via is not None or p.start_tok < 2:
@@ -3061,6 +3102,7 @@ class ReportAnalyzer:
         cues = self._apply_false_alarms(toks, norms, cues)
         self._markers_now = ex.markers
         cues = self._apply_non_reports(toks, norms, cues)
+        cues = self._unknown_source(ex, norms, cues)
         cues, moved = self._relocations(ex, norms, cues)
         claims, denied = self._associate(ex, cues)
         claims.extend(moved)
@@ -3074,6 +3116,24 @@ class ReportAnalyzer:
             claims.extend(extra)
             cues.extend(c.cue for c in extra)
         return Classification(cues, claims, denied)
+
+    @staticmethod
+    def _unknown_source(ex: Extraction, norms: tuple[str, ...], cues: list[CueMention]) -> list[CueMention]:
+        """"I can see smoke from the top of the road but I don't know where it's coming from": the speaker says
+        they do not know where it is; what they saw since the last place they named is claimed of no place."""
+        toks = ex.tokens
+        for key in _UNKNOWN_SOURCE_KEYS:
+            for i in range(len(norms) - len(key) + 1):
+                if norms[i:i + len(key)] != key:
+                    continue
+                n = toks.sentence_of[i]
+                named = [p.end_tok for p in ex.places if p.status == "active" and p.end_tok <= i
+                         and toks.sentence_of[p.start_tok] == n]
+                lo = max(named, default=min(t for t in range(i + 1) if toks.sentence_of[t] == n))
+                cues = [replace(c, status="retracted", reason="where it is, the speaker does not know")
+                        if c.status == "active" and lo <= c.start_tok < i and c.polarity == "affirmed" else c
+                        for c in cues]
+        return cues
 
     @staticmethod
     def _restated_list_mate(ex: Extraction, norms: tuple[str, ...], p: PlaceMention, active: list[PlaceMention],
@@ -3107,6 +3167,23 @@ class ReportAnalyzer:
         toks = ex.tokens
         moved: list[Claim] = []
         active = [p for p in ex.places if p.status == "active"]
+        for key in _SOURCE_KEYS:  # "smoke over the square. Source identified as the bus depot."
+            for i in range(len(norms) - len(key) + 1):
+                if norms[i:i + len(key)] != key:
+                    continue
+                j = i + len(key)
+                target = next((p for p in active if j <= p.start_tok <= j + 2
+                               and all(norms[t] in lx.DETERMINERS for t in range(j, p.start_tok))), None)
+                n = toks.sentence_of[i]
+                before = [c for c in cues if c.status == "active" and c.polarity == "affirmed" and c.end_tok <= i
+                          and n - 1 <= toks.sentence_of[c.start_tok] <= n
+                          and self.kb.category_by_name[c.category].role == Role.UNDESIRABLE]
+                if target is None or not before:
+                    continue
+                last = max(before, key=lambda c: c.start_tok)
+                cues = [replace(c, status="retracted", reason=f"its source is {target.text}") if c is last else c
+                        for c in cues]
+                moved.append(Claim(target, replace(last, reason=f"its source is {target.text}")))
         for i, w in enumerate(norms):
             if w not in lx.RELOCATE_VERBS:
                 continue
@@ -3303,6 +3380,9 @@ class ReportAnalyzer:
                 continue  # "it's just fog round the bell tower": a dismissal is no claim to guess at
             if self._says_who_and_where(toks, norms, p):
                 continue  # "Scaffolder on the roof of the hotel, over.": who is calling and from where
+            if all(norms[i] in lx.FILLERS or norms[i] in lx.DETERMINERS or norms[i] in ("all", "whole", "every", "both", "of")
+                   for i in range(a, b) if not p.start_tok <= i < p.end_tok):
+                continue  # "All the flats.": a place said alone, nothing said of it to guess at
             after = norms[p.end_tok:min(len(norms), p.end_tok + 6)]
             if any((h := self._cancel.match_at(norms, i)) is not None and h[1] in lx.CANCEL_MISSING_ONLY
                    for i in range(max(0, p.start_tok - 10), p.start_tok)) \
@@ -3557,11 +3637,13 @@ class ReportAnalyzer:
             if n in questions:
                 # only the clause that asks: "Control, is the church still open?"; "or is it the flats?" repairs;
                 # a sentence that opens with the question word asks all through ("Which is the rest centre, ...?")
-                opener = next((i for i in range(a, b) if norms[i] not in lx.FILLERS), a)
-                start = a if norms[opener] in lx.WH_OPENERS and not any(a <= m < b for m in marker_starts) \
+                # ("wait was it the bank or the library that had the gas?": a word that only opens the turn)
+                opener = next((i for i in range(a, b) if norms[i] not in lx.FILLERS and norms[i] not in lx.TURN_OPENERS), a)
+                start = a if norms[opener] in lx.WH_OPENERS and not any(a <= m < b and m != a for m in marker_starts) \
                     else max((i for i in range(a, b) if toks.clause_start[i] and toks.gaps[i] != "-"), default=a)
                 # (a hyphen inside a word, "walk-in", does not open the asking clause)
-                first = next((i for i in range(start, b) if norms[i] not in lx.FILLERS), start)
+                first = opener if start == a and opener > a \
+                    else next((i for i in range(start, b) if norms[i] not in lx.FILLERS), start)
                 if norms[first] in lx.QUESTION_OPENERS and first not in marker_starts:
                     if not (n + 1 < len(sentences) and self._answered(toks, norms, sentences[n + 1], lx.YES_WORDS)):
                         asked.update(range(start, b))  # (answered "Yes.", the question says what is so)
@@ -3796,6 +3878,9 @@ class ReportAnalyzer:
                     break  # "gas leak at the police post, they evacuated": people left, the leak stays
                 if h[1] in lx.CANCEL_MISSING_ONLY and not missing:
                     break  # "casualty at the bank, we found him under the desk": found, not safe
+                if k > 0 and (norms[k - 1] in ("not", "nt", "isnt", "hasnt", "wasnt", "never")
+                              or norms[k - 1] == "been" and k > 1 and norms[k - 2] in ("not", "hasnt", "havent")):
+                    break  # "fire at the bakery is NOT knocked down": the cancellation denied
                 cancelled_by = h[1]
                 break
             undesirable = self.kb.category_by_name[cue.category].role == Role.UNDESIRABLE
@@ -4180,11 +4265,15 @@ class ReportAnalyzer:
                 pairs.extend(Claim(p, c) for p in seg_places[nxt][:1] for c in cs)
                 claimed_places.add(seg_places[nxt][0].start_tok)
                 continue
-            first = next((norms[i] for i in range(a, b) if norms[i] not in lx.FILLERS), "")
+            first_at = next((i for i in range(a, b) if norms[i] not in lx.FILLERS and norms[i] not in ("and", "so")), b)
+            first = norms[first_at] if first_at < b else ""
             if first in ("it", "its", "there", "thats", "theres") and k > 0:
                 # "standing by at the garage, it is safe": a position names the place the pronoun claims
+                # ("we're at the bank and it's on fire"; "We're at the bank. It's on fire.")
+                opens = toks.sentence_start[first_at] if first_at < b else False
                 here = [p for p in ex.places if p.reason.startswith("in transit") and segs[k - 1][0] <= p.start_tok < a
-                        and sentence_of[p.start_tok] == sentence_of[a]]
+                        and (sentence_of[p.start_tok] == sentence_of[a]
+                             or opens and sentence_of[p.start_tok] == sentence_of[a] - 1)]
                 if here and not seg_usable.get(k - 1):
                     pairs.extend(Claim(here[-1], c) for c in cs)
                     continue
@@ -4869,6 +4958,8 @@ def _same_stem(a: str, b: str) -> bool:
     return a[:k] == b[:k] and (a.startswith(b[: len(b) - 3]) or b.startswith(a[: len(a) - 3]) or a[:5] == b[:5])
 
 
+_UNKNOWN_SOURCE_KEYS = [norm_phrase(p) for p in lx.UNKNOWN_SOURCE]
+_SOURCE_KEYS = [norm_phrase(p) for p in lx.SOURCE_IS]
 # Coordinating phrases and false-alarm markers as token keys, computed once.
 _COORDINATOR_KEYS = [norm_phrase(p) for p in lx.COORDINATOR_PHRASES]
 _FALSE_ALARM_KEYS = [(p, norm_phrase(p)) for p in lx.FALSE_ALARM]

@@ -90,12 +90,16 @@ fine to walk through|fine to walk on|fine to cross|okay to walk through|ok to wa
 fine for overflow|taking in families|taking in people|taking people in|can take people|we can take people|
 people are gathering there|people gathering there|everyone's gathering there|gathering there|taking in residents|
 taking in the evacuees|taking families|taking the overflow|taking overflow|taking the overspill|evac point|evac points|evac centre|evac center|evacuation points|
-putting people there|putting people in there|putting everyone there|moving people there|send people there|
+where we're sending everyone|where we're sending people|where we're sending them|where we're taking everyone|
+where we're taking people|where we're putting people|where we're putting everyone|where everyone's going|
+where everyone is going|putting people there|putting people in there|putting everyone there|moving people there|send people there|
 sending people there|moving evacuees there|send them there|
 """.replace("\n", ""))
 
 _add(CRITICAL, """
-with cuts|cuts from|cuts to his|cuts to her|cuts to their|cuts and bruises|nasty cuts|bad cuts|with a cut|
+she's still up there|he's still up there|they're still up there|still up there|doesn't walk well|can't walk well|arm deformed|leg deformed|query spinal|spinal injury|suspected fracture|query fracture|fractured|lady gone down|
+woman gone down|man gone down|bloke gone down|someone gone down|somebody gone down|person gone down|gone very grey|gone grey|gone a funny colour|slid off her chair|slid off his chair|slumped|feeling unwell|feeling ill|
+feeling sick|taken ill|been taken ill|can't manage the stairs|cannot manage the stairs|carry chair|with cuts|cuts from|cuts to his|cuts to her|cuts to their|cuts and bruises|nasty cuts|bad cuts|with a cut|
 scalded|scalds|scalding burns|badly scalded|with scalds|
 trapped|trapped inside|stuck|stuck inside|pinned|pinned down|buried|injured|injuries|injury|hurt|
 wounded|bleeding|unconscious|unresponsive|not breathing|not moving|cardiac arrest|broken leg|broken arm|
@@ -275,9 +279,11 @@ FALSE_ALARM = ["false alarm", "never mind", "nevermind", "disregard my last", "d
                "part of a drill", "part of the drill", "just a drill", "only a drill", "part of the exercise",
                "part of an exercise", "just an exercise", "only an exercise", "is stood down", "been stood down",
                "was stood down", "are stood down", "was a mannequin", "was a dummy", "was a training dummy",
-               "was a barbecue", "was a bbq", "was a bonfire", "was someone's barbecue"]
+               "was a barbecue", "was a bbq", "was a bonfire", "was someone's barbecue", "it's a bonfire",
+               "its a bonfire", "it's just a bonfire", "it's only a bonfire", "it's a barbecue", "its a barbecue"]
 # ... of which these say what the thing said before them was: what follows them is not denied
-DISMISSED_BEFORE = {"is stood down", "been stood down", "was stood down", "are stood down", "was a mannequin",
+DISMISSED_BEFORE = {"it's a bonfire", "its a bonfire", "it's just a bonfire", "it's only a bonfire", "it's a barbecue",
+                    "its a barbecue", "is stood down", "been stood down", "was stood down", "are stood down", "was a mannequin",
                     "was a dummy", "was a training dummy", "was a barbecue", "was a bbq", "was a bonfire",
                     "was someone's barbecue"}
 # ... of which these withdraw an earlier report: only what comes before them in the sentence is denied
@@ -293,7 +299,10 @@ STRONG_REPAIR = [
     "wrong one", "not that one", "wrong building", "wrong place", "as you were", "amend that", "hold that", "hold on that", "let me correct that", "let me correct myself",
     "let me correct my last", "that should be", "that should have been", "should be", "scrub that", "i misspoke",
     "ah i misspoke", "or is it", "take that back", "strike that last", "correction on my last", "correct that",
-    "scrap that", "bin that", "ignore that", "delete that", "disregard", "rewind", "back up", "start again", "let me start again",
+    "scrap that", "bin that", "ignore that", "delete that", "disregard", "corrects to", "corrected to",
+    "correcting to", "changed to", "then changed to", "changes it to", "changed it to", "what am i saying",
+    "what am i on about", "i'm getting mixed up", "im getting mixed up", "getting mixed up", "i've got that wrong",
+    "ive got that wrong", "got that wrong", "hold up", "rewind", "back up", "start again", "let me start again",
 ]
 WEAK_REPAIR = ["sorry", "actually", "or rather", "rather", "wait", "no", "nope", "er no", "uh no", "well no",
                "oops", "whoops", "hang on", "hold on"]
@@ -307,7 +316,8 @@ RELATION_SYNONYMS: dict[str, list[str]] = {
                     "abutting", "abuts", "butting onto", "bolted onto", "tacked onto", "stuck on to",
                     "built up against", "fixed onto", "part of the same building as", "joined up with",
                     "sharing a party wall with", "shares a party wall with", "that shares a party wall with",
-                    "party wall with", "built hard against", "built against", "backing on to"],
+                    "party wall with", "built hard against", "built against", "backing on to", "built on the side of",
+                    "built onto the side of", "built on to the side of", "stuck on the side of"],
     "next to": ["next to", "next door to", "next door", "beside", "next building over from", "next one over from",
                 "next along from", "next one along from", "the next building over from", "next door along from", "besides", "alongside", "adjacent to", "right by",
                 "right next to", "just next to", "by", "neighbouring", "neighboring", "next door from",
@@ -682,6 +692,10 @@ NOT_VISITED = [("havent", "been", "to"), ("not", "been", "to"), ("havent", "been
                ("havent", "been", "into"), ("havent", "checked"), ("not", "checked"), ("havent", "reached"),
                ("not", "reached"), ("yet", "to", "reach"), ("yet", "to", "check"), ("havent", "got", "to"),
                ("not", "yet", "checked"), ("not", "yet", "reached")]
+# After a place and its subject: "the church we didn't get to", "the library we haven't checked yet".
+NOT_REACHED = [("didnt", "get", "to"), ("havent", "got", "to"), ("havent", "been", "to"), ("didnt", "check"),
+               ("havent", "checked"), ("didnt", "reach"), ("havent", "reached"), ("couldnt", "get", "to"),
+               ("couldnt", "reach"), ("never", "got", "to"), ("got", "nowhere", "near")]
 NOT_VISITED_WORDS = {w for k in NOT_VISITED for w in k} | {"have", "we", "ve"}
 # Verbs of an order to take people somewhere ("bring the walking wounded there"): no person placed.
 SEND_VERBS = {"bring", "send", "take", "direct", "ferry", "carry", "bringing", "sending", "taking", "directing",
@@ -824,7 +838,8 @@ DANGER_KINDS: dict[str, list[str]] = {
                "landslide", "mudslide", "mud slide", "landslip", "slipping", "sinkhole", "come away", "came away",
                "subsided into", "subsiding into", "subsidence", "mud", "mud and rocks", "mud everywhere",
                "full of mud", "rocks came down", "rocks have come down", "rockfall", "rock fall", "boulders"],
-    "water": ["flood", "floods", "flooded", "flooding", "underwater", "under water", "water rising", "rising water",
+    "water": ["river's come up", "river has come up", "river came up", "river's up", "river's risen", "river has risen",
+              "flood", "floods", "flooded", "flooding", "underwater", "under water", "water rising", "rising water",
               "submerged", "knee deep", "waist deep", "chest deep", "ankle deep", "water's up", "water up to",
               "up to the windowsills", "overtopping", "burst its banks", "waterlogged", "water logged", "flooded out",
               "water everywhere", "water coming over", "taking on water", "taking water", "foot of water",
@@ -930,3 +945,13 @@ RELOCATE_VERBS = {"moved", "move", "moving", "put", "putting", "going", "gone", 
 RELOCATE_EXPLICIT = {"moved", "moving", "move", "relocated", "relocating", "relocate", "shifted", "shifting", "shift",
                      "transferred", "transferring"}
 RELOCATED_OBJECTS = {"it", "them", "her", "him", "that", "everything", "everyone", "everybody"}
+# The speaker does not know where what they saw is ("I can see smoke but I don't know where it's coming from").
+UNKNOWN_SOURCE = ["don't know where it's coming from", "dont know where its coming from", "not sure where it's coming from",
+                  "not sure where its coming from", "can't tell where it's coming from", "cant tell where its coming from",
+                  "no idea where it's coming from", "no idea where its coming from", "don't know where it is",
+                  "dont know where it is", "can't see where it's coming from", "cant see where its coming from"]
+# Words that only open a turn before a question ("wait, was it the bank or the library?").
+TURN_OPENERS = {"wait", "so", "oh", "ok", "okay", "right", "and", "but", "sorry", "hang", "hold", "on", "hey", "hi"}
+# Where a danger seen somewhere really comes from ("smoke over the square. Source identified as the bus depot.").
+SOURCE_IS = ["source identified as", "source identified at", "source traced to", "source located at", "source found at",
+             "source is", "the source is", "source's", "traced it to", "traced to"]
