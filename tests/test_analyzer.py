@@ -2002,3 +2002,37 @@ def test_claims_moved_and_lists_restated(analyzer, text, expected):
 ])
 def test_dev31_phenomena(analyzer, text, expected):
     assert claims(analyzer, text) == expected
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    # where the speaker's own place is said, no landmark has it
+    ("is the park safe?? my mum says go to the park but theres smoke everywhere on our road", []),
+    # people brought out of a place: where they leave
+    ("The evacuation route through the gardens is open; use it to bring the residents out of the flats.",
+     [("park", "safe_zone")]),
+    # a place asked about is not where the asker's own people are ...
+    ("is anyone at the bank? we've got walking wounded and need to know if it's safe to bring them up", []),
+    # ... but a question answered or followed by "there" / a description is
+    ("is anyone at the bank? there's a fire there", [("bank", "hazard")]),
+    ("so um were at the gardens yeah and like the fire station is flooded?? like actual water everywhere",
+     [("fire station", "hazard")]),
+])
+def test_places_of_the_caller_and_of_questions(analyzer, text, expected):
+    assert claims(analyzer, text) == expected
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    # "the floor above X" where the KB puts a place above X; a pronoun-anchored neighbour after a claimed description
+    ("People trapped on the floor above the corn exchange, we can see them at the windows.",
+     [("mechanics institute", "victim")]),
+    ("Water's come right through the yard downstream of the old mill, and the building next to it is going under too",
+     [("maltings", "hazard"), ("tannery", "hazard")]),
+    ("river's come up at the lido -- sorry, at the mill, the old mill, not the lido -- the lido's nowhere near it",
+     [("bridge mill", "hazard")]),
+])
+def test_dev31_phenomena_on_an_unseen_kb(kb_analyzers, text, expected):
+    assert claims(kb_analyzers["market_town"], text) == expected
+
+
+def test_the_floor_above_a_place_with_nothing_above_it_is_that_place(analyzer):
+    assert claims(analyzer, "people trapped on the floor above the bakery") == [("bakery", "victim")]

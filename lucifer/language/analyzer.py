@@ -1743,6 +1743,9 @@ class ReportAnalyzer:
             closed = lx.PREPOSITIONS | lx.COPULAS | lx.FILLERS | lx.PRONOUNS | lx.INVERSE_VERBS
             generic = all(w.isalpha() and w not in closed for w in words) and len(words[-1]) >= 3 \
                 and not any(self._cues.match_at(norms, j) is not None for j in range(head_start, head_end))
+        if not generic and anchor is not None and words and words[-1] in lx.STOREY_WORDS | {"rooms", "room", "storeys"} \
+                and self._follow(anchor.landmark, phrase, head_text, inverse=flipped)[0] is not None:
+            generic = True  # "people trapped on the floor above the corn exchange", where the KB puts a place above it
         if anchor is None:
             # inverse: "the one (that) the garage sits behind", "the row it shares a wall with"
             if generic and not (words and words[-1] in ("it", "they", "theyre")):
@@ -3133,6 +3136,16 @@ class ReportAnalyzer:
                 cues = [replace(c, status="retracted", reason="where it is, the speaker does not know")
                         if c.status == "active" and lo <= c.start_tok < i and c.polarity == "affirmed" else c
                         for c in cues]
+        # "theres smoke everywhere on our road": where it is, said, and no place of the KB
+        place_tokens = {t for p in ex.places for t in range(p.start_tok, p.end_tok)}
+        for idx, c in enumerate(cues):
+            if c.status != "active" or c.polarity != "affirmed":
+                continue
+            for k in range(c.end_tok, min(len(norms) - 2, c.end_tok + 3)):
+                if norms[k] in ("on", "in", "at", "down", "along", "up") and norms[k + 1] in ("our", "my") \
+                        and norms[k + 2] in lx.OWN_PLACES and not (place_tokens & set(range(k, k + 6))):
+                    cues[idx] = replace(c, status="retracted", reason=f"said of '{toks.span_text(k + 1, k + 3)}'")
+                    break
         return cues
 
     @staticmethod
@@ -4306,6 +4319,12 @@ class ReportAnalyzer:
                 if back >= 0 and sentence_of[segs[back][0]] == sentence_of[segs[target][0]] \
                         and any(q.status == "active" for q in seg_usable.get(back, [])) and not seg_cues.get(back):
                     target = back
+            silent = getattr(self, "_non_report_tokens", set())
+            if target is not None and all(q.start_tok in silent and sentence_of[q.start_tok] != sentence_of[a]
+                                          for q in seg_usable[target]) \
+                    and not {"there", "it", "its", "inside", "theres"} & set(norms[a:b]) \
+                    and {"we", "weve", "i", "ive", "us", "our"} & set(norms[max(0, a - 3):b]):
+                target = None  # "is anyone at the cottage hospital? we've got walking wounded": asked about, not told of
             if target is not None:
                 denied_at = {bound[c.start_tok].start_tok for c in cues if c.polarity == "denied" and c.start_tok in bound}
                 told = seg_usable[target]
@@ -4823,6 +4842,9 @@ class ReportAnalyzer:
                 and (not after or after[0] in ("again", "here", "speaking", "calling") or after[0] in lx.PRONOUNS
                      or after[0] in ("we", "were", "i", "im")):
             return True  # "pensioner from the flats again, we're all out now standing in the park"
+        if j >= 1 and norms[j] == "of" and norms[j - 1] == "out" and any(
+                norms[t] in lx.SEND_VERBS or norms[t] in lx.OUT_OF_VERBS for t in range(max(0, j - 6), j - 1)):
+            return True  # "use it to bring the residents out of the flats": where they leave
         return j >= 0 and norms[j] == "from" and bool(after) and (
             after[0] in ("here", "calling", "speaking")
             or bool(set(after) & {"walking", "coming", "heading", "moving", "going", "making"}))

@@ -244,7 +244,8 @@ BACK_REFERENCE_WORDS = {"it", "its", "s", "is", "has", "been", "thats", "that", 
                         "ive"}
 
 # Phrases that contain cue words but claim nothing ("the smoke alarm went off", "fire crew on site").
-NEUTRAL_PHRASES = ["out of use", "out of action", "out of service", "out of the smoke", "away from the smoke", "out of the rain", "out of the water", "out of the fumes",
+NEUTRAL_PHRASES = ["use it to bring", "use it to get", "use it to take", "use it to move", "use it to evacuate",
+                   "use that to bring", "use that to get", "out of use", "out of action", "out of service", "out of the smoke", "away from the smoke", "out of the rain", "out of the water", "out of the fumes",
                    "people sitting in here", "people sitting in there", "sitting in here", "waiting in here",
                    "i'm calling from", "im calling from", "i am calling from", "we're calling from",
                    "i'm ringing from", "im ringing from", "we're ringing from", "where i'm calling from", "can't get down to", "cannot get down to", "comes down to", "come down to", "coming down to", "goes down to", "runs down to", "keep clear", "stay clear", "keep everyone clear", "keep everybody clear", "keep people clear",
@@ -838,7 +839,8 @@ DANGER_KINDS: dict[str, list[str]] = {
                "landslide", "mudslide", "mud slide", "landslip", "slipping", "sinkhole", "come away", "came away",
                "subsided into", "subsiding into", "subsidence", "mud", "mud and rocks", "mud everywhere",
                "full of mud", "rocks came down", "rocks have come down", "rockfall", "rock fall", "boulders"],
-    "water": ["river's come up", "river has come up", "river came up", "river's up", "river's risen", "river has risen",
+    "water": ["water's come through", "water's come right through", "water has come through", "water came through",
+              "water's come up", "water has come up", "water's come in", "water has come in", "river's come up", "river has come up", "river came up", "river's up", "river's risen", "river has risen",
               "flood", "floods", "flooded", "flooding", "underwater", "under water", "water rising", "rising water",
               "submerged", "knee deep", "waist deep", "chest deep", "ankle deep", "water's up", "water up to",
               "up to the windowsills", "overtopping", "burst its banks", "waterlogged", "water logged", "flooded out",
@@ -955,3 +957,7 @@ TURN_OPENERS = {"wait", "so", "oh", "ok", "okay", "right", "and", "but", "sorry"
 # Where a danger seen somewhere really comes from ("smoke over the square. Source identified as the bus depot.").
 SOURCE_IS = ["source identified as", "source identified at", "source traced to", "source located at", "source found at",
              "source is", "the source is", "source's", "traced it to", "traced to"]
+# Verbs that take people "out of" a place they leave ("get everyone out of the flats").
+OUT_OF_VERBS = {"get", "getting", "evacuate", "evacuating", "lead", "leading", "walk", "walking", "help", "helping"}
+# A caller's own places, never a landmark ("smoke everywhere on our road").
+OWN_PLACES = {"road", "street", "lane", "avenue", "close", "drive", "house", "garden", "home", "estate", "crescent"}
