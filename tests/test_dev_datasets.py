@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev31) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev32) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -49,6 +49,7 @@ AIRPORT = ROOT / "knowledge_bases" / "airport_terminal"
 SKI_TOWN = ROOT / "knowledge_bases" / "ski_town"
 SPA_TOWN = ROOT / "knowledge_bases" / "spa_town"
 MARKET_TOWN = ROOT / "knowledge_bases" / "market_town"
+ISLAND = ROOT / "knowledge_bases" / "island_harbour"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -181,6 +182,10 @@ SETS = {
                                   {"standard": 50, "messy": 50, "advanced_messy": 50}, sep=""),
     "dev31/market_town": _set("dev31/market_town.jsonl", MARKET_TOWN, "mt31",
                               {"standard": 20, "messy": 45, "advanced_messy": 25}),
+    "dev32/market_square": _set("dev32/market_square.jsonl", MARKET_SQUARE, "d32",
+                                {"standard": 10, "messy": 70, "advanced_messy": 20}, sep=""),
+    "dev32/island_harbour": _set("dev32/island_harbour.jsonl", ISLAND, "ih32",
+                                 {"standard": 20, "messy": 40, "advanced_messy": 30}),
 }
 
 
