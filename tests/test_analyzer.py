@@ -2036,3 +2036,45 @@ def test_dev31_phenomena_on_an_unseen_kb(kb_analyzers, text, expected):
 
 def test_the_floor_above_a_place_with_nothing_above_it_is_that_place(analyzer):
     assert claims(analyzer, "people trapped on the floor above the bakery") == [("bakery", "victim")]
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    # "the bank's the brick one" says which building, no claim; "nah" repairs; a place said alone then begun again
+    ("uh yeah I'm sat in the cab, not moving, been here twenty minutes... there's smoke pouring out the, the bank — no "
+     "hang on, that's the hotel, the bank's the brick one. Yeah. Smoke from the hotel.", [("hotel", "hazard")]),
+    ("there's a fire at the... at the thingy. where they sell the... the medicine. chemist. chemist's on fire. nah. the "
+     "cafe. the cafe's on fire. coffee. definitely the cafe", [("cafe", "hazard")]),
+    # at a building's doors is at the building; what others keep saying is no claim to guess at
+    ("CCTV room. Camera six, uh, shows a person lying on the ground by the bus station doors, not moving.",
+     [("bus station", "victim")]),
+    ("Fire's in the hardware store — not the garage, the hardware store, people keep saying garage. Paint tins going "
+     "off like fireworks in there.", [("hardware store", "hazard")]),
+    # "the problem's the flats across the way": the flats, seen across the way; a rest stop is a shelter
+    ("We're parked up at the bus station, um, the depot's been opened as a rest stop, they're letting people wait "
+     "inside safely. The problem's the flats across the way, there's, er, I'd say smoke? Yeah, definitely smoke from "
+     "the flats.", [("apartment block", "hazard"), ("bus station", "safe_zone")]),
+    # "I correct: ... not from the school. From the library!"
+    ("sorry, I correct: the smoke is not from the school. From the library! And one person, old man, he fall in the "
+     "library, he is hurt, he is bleeding", [("library", "hazard"), ("library", "victim")]),
+    ("I do the cleaning at the police station. Next door to it there's smoke in the waiting room and people coming out "
+     "coughing, one's collapsed just inside the door.", [("clinic", "hazard"), ("clinic", "victim")]),
+    # "keep clear of X and Y" warns; a pronoun after it still claims
+    ("keep clear of the bank and the school, I repeat keep clear, we don't know what's in that smoke yet", []),
+    ("keep away from the bakery, it's on fire", [("bakery", "hazard")]),
+])
+def test_dev32_phenomena(analyzer, text, expected):
+    assert claims(analyzer, text) == expected
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    ("Sea's come right over the fish quay and into the harbour office. Knee deep on both, and the ice bins are floating.",
+     [("fish quay", "inundation"), ("harbour master's office", "inundation")]),
+    ("so we went past the power station and the co-op and um the only real problem is at the harbour cottages where "
+     "there's a lady with a, a broken hip", [("harbour row", "casualty")]),
+    ("Skerra Lifeboat, Coastguard, what's your status over. -- Coastguard, Lifeboat, we're, uh, alongside the east quay "
+     "with two survivors, both hypothermic, ambulance to the quay please", [("east quay", "casualty")]),
+    ("the fire at the tank farm is- no it's not out, it's flaring again, and the ice house has caught as well",
+     [("fuel depot", "blaze"), ("ice plant", "blaze")]),
+])
+def test_dev32_phenomena_on_an_unseen_kb(kb_analyzers, text, expected):
+    assert claims(kb_analyzers["island_harbour"], text) == expected

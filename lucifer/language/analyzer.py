@@ -1670,6 +1670,9 @@ class ReportAnalyzer:
                 and not self._names_other_object(toks, norms, b):
             # "the building next door": the anchor is the place last spoken of
             before = [p for p in ex.places if p.end_tok <= a and p.status != "retracted"]
+            if before and max(before, key=lambda p: p.end_tok).end_tok == a and not ex.tokens.clause_start[a] \
+                    and norms[a:b] != ("next", "door"):
+                return  # "the problem's the flats across the way": the place named, where it is from the speaker
             if before and not self._inverse_anchor(ex, norms, a):
                 anchor, anchor_end, pronoun = max(before, key=lambda p: p.end_tok), b, True
                 earlier = [p for p in before if p.end_tok <= anchor.start_tok and p.landmark != anchor.landmark]
@@ -1820,6 +1823,14 @@ class ReportAnalyzer:
                     return  # "a man lying at the foot of the water tower": where he lies, when nothing lies below it
                 if norms[a:b] in (("inside",), ("inside", "of"), ("within",)) and generic:
                     return  # "trapped under a fallen stall inside the corn exchange": in it, when nothing is built into it
+                if anchor.end_tok < len(norms) and norms[anchor.end_tok] in lx.ENTRANCE_PARTS:
+                    return  # "a person lying on the ground by the bus station doors": at its doors
+                k = a - 1
+                while k >= 0 and norms[k] in lx.FILLERS:
+                    k -= 1
+                if k >= 0 and (norms[k] in ("were", "im") and "'" in toks.tokens[k].text.replace("’", "'")
+                               or norms[k] in ("re", "m") or norms[k - 1:k + 1] in (("we", "are"), ("i", "am"))):
+                    return  # "we're, uh, alongside the east quay with two survivors": where the crew is
                 if norms[b - 1] == "of" and set(norms[a:b]) & (lx.PART_NOUNS | lx.LOCATIVE_PARTS | lx.STOREY_WORDS):
                     return  # "acid spill on the ground floor of the chemistry annexe": a part of it, so in it
                 ex.places[idx] = replace(anchor, status="reference",
@@ -2176,7 +2187,9 @@ class ReportAnalyzer:
         if k < anchor.start_tok and norms[k] == "where" and (k == 0 or norms[k - 1] not in lx.PREPOSITIONS):
             return anchor, k, False  # "where the back lane runs down to, that's a raging torrent"
         hs = k
-        while hs > 0 and k - hs < 3 and norms[hs - 1] not in lx.PREPOSITIONS | lx.COPULAS and not ex.tokens.clause_start[hs]:
+        while hs > 0 and k - hs < 3 and norms[hs - 1] not in lx.PREPOSITIONS | lx.COPULAS and not ex.tokens.clause_start[hs] \
+                and not (hs == k and ex.tokens.tokens[hs - 1].text.lower().replace("’", "'").endswith("'s")):
+            # ("the problem's the flats across the way": "'s" is a verb, "problem" heads nothing)
             hs -= 1
             if norms[hs] in lx.GENERIC_HEADS or (hs == k - 1 and self._plain_head(norms, hs)):
                 while hs > 0 and norms[hs - 1] in lx.DETERMINERS and (hs - 1) not in self._marker_cache:
@@ -2446,6 +2459,13 @@ class ReportAnalyzer:
                                 and q.landmark != p.landmark and q.start_tok > earlier[-1].start_tok), None)
                 if earlier and nxt is not None and nxt.replaces is None:
                     ex.places[ex.places.index(nxt)] = replace(nxt, replaces=earlier[-1].start_tok)
+                elif corrects and nxt is not None and nxt.replaces is None \
+                        and (f := next((t for t in range(nxt.start_tok - 1, max(-1, nxt.start_tok - 4), -1)
+                                        if norms[t] not in lx.DETERMINERS), None)) is not None \
+                        and toks.sentence_start[f] and norms[f] == "from":
+                    # "I correct: the smoke is not from the school. From the library!": what was said of the
+                    # place denied is said of the one given instead
+                    ex.places[ex.places.index(nxt)] = replace(nxt, replaces=p.start_tok)
 
     @staticmethod
     def _apply_pronoun_negation(ex: Extraction, norms: tuple[str, ...]) -> None:
@@ -2564,11 +2584,12 @@ class ReportAnalyzer:
             while j > 0 and norms[j] in lx.DETERMINERS | lx.FILLERS:
                 j -= 1
             if norms[j] != "and" or toks.clause_start[j] or not (
-                    p.end_tok >= len(norms) or toks.clause_start[p.end_tok]
+                    p.end_tok >= len(norms) or toks.clause_start[p.end_tok] or norms[p.end_tok] in ("and", "but")
                     or norms[p.end_tok:p.end_tok + 3] in (("on", "the", "way"), ("on", "our", "way"), ("on", "my", "way"))):
                 continue  # ("passing the bank and the church on the way")
             prev = next((q for q in ex.places if q.end_tok == j
-                         and q.reason.startswith(("in transit ('past", "in transit ('passing"))), None)
+                         and q.reason.startswith(("in transit ('past", "in transit ('passing", "in transit ('keep",
+                                                  "in transit ('stay"))), None)
             if prev is not None:
                 ex.places[idx] = replace(p, status="reference", reason=prev.reason)
 
@@ -2615,6 +2636,15 @@ class ReportAnalyzer:
             if p.landmark != q.landmark:
                 continue
             between = norms[p.end_tok : q.start_tok]
+            toks = ex.tokens
+            alone = not between and toks.sentence_start[q.start_tok] and all(
+                norms[k] in lx.DETERMINERS | lx.FILLERS for k in range(
+                    max(t for t in range(p.start_tok + 1) if toks.sentence_start[t]), p.start_tok))
+            if alone and not self._cue_at(norms, p.start_tok):
+                # "chemist. chemist's on fire.": a place said alone, then its sentence begun with it
+                ex.places[i] = replace(p, status="retracted", reason="restarted: the speaker repeats the place")
+                ex.places[j] = replace(q, replaces=p.start_tok)
+                continue
             if between and len(between) <= 4 and all(w in lx.COPULAS | lx.FILLERS | lx.DETERMINERS | lx.PRONOUNS for w in between) \
                     and any(ex.tokens.clause_start[k] for k in range(p.end_tok, q.start_tok + 1)) \
                     and not any(";" in ex.tokens.gaps[k] for k in range(p.end_tok, q.start_tok + 1)) \
@@ -3396,6 +3426,13 @@ class ReportAnalyzer:
             if all(norms[i] in lx.FILLERS or norms[i] in lx.DETERMINERS or norms[i] in ("all", "whole", "every", "both", "of")
                    for i in range(a, b) if not p.start_tok <= i < p.end_tok):
                 continue  # "All the flats.": a place said alone, nothing said of it to guess at
+            if {"saying", "says", "said"} & set(norms[a:b]):
+                continue  # "people keep saying garage": what others say, no claim to guess at
+            said = [w for w in norms[p.end_tok:b] if w not in lx.FILLERS]
+            if toks.tokens[p.end_tok - 1].text.lower().replace("’", "'").endswith("'s"):
+                said = ["s", *said]
+            if said[:2] in (["s", "the"], ["is", "the"]) and "one" in said[2:6]:
+                continue  # "the bank's the brick one": which building it is, nothing said of it
             after = norms[p.end_tok:min(len(norms), p.end_tok + 6)]
             if any((h := self._cancel.match_at(norms, i)) is not None and h[1] in lx.CANCEL_MISSING_ONLY
                    for i in range(max(0, p.start_tok - 10), p.start_tok)) \

@@ -90,6 +90,7 @@ fine to walk through|fine to walk on|fine to cross|okay to walk through|ok to wa
 fine for overflow|taking in families|taking in people|taking people in|can take people|we can take people|
 people are gathering there|people gathering there|everyone's gathering there|gathering there|taking in residents|
 taking in the evacuees|taking families|taking the overflow|taking overflow|taking the overspill|evac point|evac points|evac centre|evac center|evacuation points|
+anyone cold can go|can go up there|soup on|hot food|hot drinks|warm drinks|rest stop|wait inside safely|letting people wait inside|letting people shelter|letting people in to shelter|
 where we're sending everyone|where we're sending people|where we're sending them|where we're taking everyone|
 where we're taking people|where we're putting people|where we're putting everyone|where everyone's going|
 where everyone is going|putting people there|putting people in there|putting everyone there|moving people there|send people there|
@@ -97,7 +98,7 @@ sending people there|moving evacuees there|send them there|
 """.replace("\n", ""))
 
 _add(CRITICAL, """
-she's still up there|he's still up there|they're still up there|still up there|doesn't walk well|can't walk well|arm deformed|leg deformed|query spinal|spinal injury|suspected fracture|query fracture|fractured|lady gone down|
+one's collapsed|one has collapsed|one of them's collapsed|one of them has collapsed|coming out coughing|she's still up there|he's still up there|they're still up there|still up there|doesn't walk well|can't walk well|arm deformed|leg deformed|query spinal|spinal injury|suspected fracture|query fracture|fractured|lady gone down|
 woman gone down|man gone down|bloke gone down|someone gone down|somebody gone down|person gone down|gone very grey|gone grey|gone a funny colour|slid off her chair|slid off his chair|slumped|feeling unwell|feeling ill|
 feeling sick|taken ill|been taken ill|can't manage the stairs|cannot manage the stairs|carry chair|with cuts|cuts from|cuts to his|cuts to her|cuts to their|cuts and bruises|nasty cuts|bad cuts|with a cut|
 scalded|scalds|scalding burns|badly scalded|with scalds|
@@ -170,7 +171,7 @@ NEGATOR_PHRASES = ["no one", "no longer", "not any", "free of", "clear of", "no 
                    "away from the", "far from the", "out of the way of", "upwind of the", "safe from the"]
 
 # Phrases after a hazard cue that cancel it ("the fire is out").
-CANCEL_AFTER = ["is out", "s out", "are out", "was out", "put out", "out now", "been put out",
+CANCEL_AFTER = ["turned up", "has turned up", "s turned up", "turned up safe", "is out", "s out", "are out", "was out", "put out", "out now", "been put out",
                 "has cleared", "have cleared", "s cleared", "has lifted", "s lifted", "has gone down", "s gone down",
                 "has receded", "s receded", "have receded", "gone down now", "old news", "pumped it out",
                 "pumped it all out", "brought down", "been brought down",
@@ -211,7 +212,7 @@ CANCEL_SAID_AGAIN = {"old news", "pumped it out", "pumped it all out", "pumped o
                      "been put out", "got that out"}
 # ... of which these revoke only a missing person ("lost child at the aviary, mum's found her")
 CANCEL_MISSING_ONLY = {"found her", "found him", "found them", "found safe", "he's been found", "she's been found",
-                       "they've been found"}
+                       "they've been found", "turned up", "has turned up", "s turned up", "turned up safe"}
 MISSING_CUES = {"missing", "lost", "lost child", "last seen", "unaccounted for", "missing person", "missing persons",
                 "not accounted for", "can't find", "cannot find", "lost contact with"}
 # Words after which a cancelling phrase says what will end a danger, not that it has ended.
@@ -305,7 +306,7 @@ STRONG_REPAIR = [
     "what am i on about", "i'm getting mixed up", "im getting mixed up", "getting mixed up", "i've got that wrong",
     "ive got that wrong", "got that wrong", "hold up", "rewind", "back up", "start again", "let me start again",
 ]
-WEAK_REPAIR = ["sorry", "actually", "or rather", "rather", "wait", "no", "nope", "er no", "uh no", "well no",
+WEAK_REPAIR = ["sorry", "actually", "or rather", "rather", "wait", "no", "nope", "nah", "naw", "er no", "uh no", "well no",
                "oops", "whoops", "hang on", "hold on"]
 
 # Spatial phrases that link a described place to a landmark; relation names in the KB are
@@ -532,7 +533,8 @@ TRANSIT = ["people in off", "taking people in off", "in off the", "walked up fro
            "parked up by", "parked up outside", "walking from", "driving from", "came out of", "stood down at",
            "standing down at",
            "about to check", "searching", "sweeping", "en route", "route via", "routing via", "routed via",
-           "route through", "routing through", "routed through", "go via"]
+           "route through", "routing through", "routed through", "go via", "keep clear of", "stay clear of",
+           "keep away from", "stay away from", "keep everyone away from", "keep people away from"]
 
 # Head nouns of a description of a landmark ("the building with the two engine bays").
 DESCRIPTION_HEADS = {"building", "place", "shop", "store", "tower", "block", "house", "hall", "premises", "structure",
@@ -783,7 +785,7 @@ DANGER_KINDS: dict[str, list[str]] = {
               "pressed against", "pushed up against", "crushing", "pile-up", "pile up", "overcrowded", "stampede",
               "people pushing", "everyone pushing", "crushed against", "being crushed against", "crush in there",
               "it's a crush"],
-    "fire": ["fire", "fires", "on fire", "getting very hot", "getting hot", "red hot", "glowing red", "heavy heat", "burning", "burnt", "burned", "burned out", "burnt out", "blaze", "blazing",
+    "fire": ["has caught", "s caught", "caught fire", "caught light", "fire", "fires", "on fire", "getting very hot", "getting hot", "red hot", "glowing red", "heavy heat", "burning", "burnt", "burned", "burned out", "burnt out", "blaze", "blazing",
              "ablaze", "flames", "flame", "in flames", "engulfed", "inferno", "alight", "well alight", "fully alight",
              "fully involved", "going up in flames", "gone up in flames", "smouldering", "smoldering", "charred",
              "gutted", "flashover", "flashover risk", "backdraft", "backdraft risk", "heavy fire", "fire showing",
@@ -839,7 +841,10 @@ DANGER_KINDS: dict[str, list[str]] = {
                "landslide", "mudslide", "mud slide", "landslip", "slipping", "sinkhole", "come away", "came away",
                "subsided into", "subsiding into", "subsidence", "mud", "mud and rocks", "mud everywhere",
                "full of mud", "rocks came down", "rocks have come down", "rockfall", "rock fall", "boulders"],
-    "water": ["water's come through", "water's come right through", "water has come through", "water came through",
+    "water": ["sea's come over", "sea's come right over", "sea has come over", "sea came over", "sea's pouring in",
+              "sea pouring in", "sea's coming in", "sea coming in", "sea's come in", "sea has come in", "under a metre of water",
+              "a metre of water", "metres of water", "full of seawater", "seawater", "awash", "washout", "washed over",
+              "water's come through", "water's come right through", "water has come through", "water came through",
               "water's come up", "water has come up", "water's come in", "water has come in", "river's come up", "river has come up", "river came up", "river's up", "river's risen", "river has risen",
               "flood", "floods", "flooded", "flooding", "underwater", "under water", "water rising", "rising water",
               "submerged", "knee deep", "waist deep", "chest deep", "ankle deep", "water's up", "water up to",
@@ -961,3 +966,5 @@ SOURCE_IS = ["source identified as", "source identified at", "source traced to",
 OUT_OF_VERBS = {"get", "getting", "evacuate", "evacuating", "lead", "leading", "walk", "walking", "help", "helping"}
 # A caller's own places, never a landmark ("smoke everywhere on our road").
 OWN_PLACES = {"road", "street", "lane", "avenue", "close", "drive", "house", "garden", "home", "estate", "crescent"}
+# Parts of a building a relation may be said of ("by the bus station doors"): at the building itself.
+ENTRANCE_PARTS = {"door", "doors", "entrance", "entrances", "gate", "gates", "steps", "forecourt", "porch", "windows"}
