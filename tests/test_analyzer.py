@@ -2078,3 +2078,17 @@ def test_dev32_phenomena(analyzer, text, expected):
 ])
 def test_dev32_phenomena_on_an_unseen_kb(kb_analyzers, text, expected):
     assert claims(kb_analyzers["island_harbour"], text) == expected
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    # a danger that spreads from one place to another is at both
+    ("fire's spread from the bank to the bakery", [("bakery", "hazard"), ("bank", "hazard")]),
+    # "no he's in the park" repairs the place he was said to be in
+    ("officer. officer. my mate's in the park. no. garage. he's in the garage, no he's in the park, he's in the park "
+     "and he's bleedin', he fell over the bench", [("park", "victim")]),
+    # a crew called out to a place is there on another errand
+    ("Called out to the park for a dog, but the real problem's the block across from it — half the balconies have come "
+     "down onto the pavement.", [("apartment block", "hazard")]),
+])
+def test_spreads_pronoun_repairs_and_call_outs(analyzer, text, expected):
+    assert claims(analyzer, text) == expected

@@ -1252,7 +1252,7 @@ class ReportAnalyzer:
                 if nxt in ("nobody", "noone", "nothing", "none", "no") or norms[b:b + 2] == ("no", "one"):
                     continue  # "we've got, er, no, nobody under it": an answer, not a repair
                 if not (pause_after or named_next or nxt in ("no", "wait", "sorry", "the", "its", "it", "i", "actually",
-                                                             "make")):
+                                                             "make", "he", "hes", "she", "shes", "they", "theyre")):
                     continue
                 if nxt == "the" and not (a > 0 and toks.clause_start[a]):
                     ahead = [i for i in (b + 1, b + 2) if i < len(norms)]
@@ -3227,6 +3227,19 @@ class ReportAnalyzer:
                 cues = [replace(c, status="retracted", reason=f"its source is {target.text}") if c is last else c
                         for c in cues]
                 moved.append(Claim(target, replace(last, reason=f"its source is {target.text}")))
+        for i, w in enumerate(norms):  # "fire's jumped from the tank farm to the station it feeds": both burn
+            if w not in lx.SPREAD_VERBS or norms[i + 1:i + 2] != ("from",):
+                continue
+            src = next((p for p in active if i + 1 < p.start_tok <= i + 3), None)
+            if src is None or src.end_tok >= len(norms) or norms[src.end_tok] not in ("to", "into", "onto"):
+                continue
+            dst = next((p for p in ex.places if p.status == "active" and src.end_tok < p.start_tok <= src.end_tok + 3), None)
+            n = toks.sentence_of[i]
+            before = [c for c in cues if c.status == "active" and c.polarity == "affirmed" and c.end_tok <= i
+                      and toks.sentence_of[c.start_tok] == n
+                      and self.kb.category_by_name[c.category].role == Role.UNDESIRABLE]
+            if dst is not None and before:
+                moved.append(Claim(dst, replace(max(before, key=lambda c: c.start_tok), reason=f"spread to {dst.text}")))
         for i, w in enumerate(norms):
             if w not in lx.RELOCATE_VERBS:
                 continue
@@ -4325,7 +4338,7 @@ class ReportAnalyzer:
                         and (sentence_of[p.start_tok] == sentence_of[a]
                              or opens and sentence_of[p.start_tok] == sentence_of[a] - 1)]
                 if here and not seg_usable.get(k - 1):
-                    pairs.extend(Claim(here[-1], c) for c in cs)
+                    pairs.extend(Claim(replace(here[-1], status="active"), c) for c in cs)
                     continue
             if "here" in norms[a:b]:
                 # "we're at the east portal, RVP established here": where the speaker said they are

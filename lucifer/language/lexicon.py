@@ -533,7 +533,7 @@ TRANSIT = ["people in off", "taking people in off", "in off the", "walked up fro
            "parked up by", "parked up outside", "walking from", "driving from", "came out of", "stood down at",
            "standing down at",
            "about to check", "searching", "sweeping", "en route", "route via", "routing via", "routed via",
-           "route through", "routing through", "routed through", "go via", "keep clear of", "stay clear of",
+           "route through", "routing through", "routed through", "go via", "called out to", "been called out to", "got called out to", "keep clear of", "stay clear of",
            "keep away from", "stay away from", "keep everyone away from", "keep people away from"]
 
 # Head nouns of a description of a landmark ("the building with the two engine bays").
@@ -844,7 +844,7 @@ DANGER_KINDS: dict[str, list[str]] = {
     "water": ["sea's come over", "sea's come right over", "sea has come over", "sea came over", "sea's pouring in",
               "sea pouring in", "sea's coming in", "sea coming in", "sea's come in", "sea has come in", "under a metre of water",
               "a metre of water", "metres of water", "full of seawater", "seawater", "awash", "washout", "washed over",
-              "water's come through", "water's come right through", "water has come through", "water came through",
+              "water's come through", "water's come right through", "water's right through", "water right through", "water has come through", "water came through",
               "water's come up", "water has come up", "water's come in", "water has come in", "river's come up", "river has come up", "river came up", "river's up", "river's risen", "river has risen",
               "flood", "floods", "flooded", "flooding", "underwater", "under water", "water rising", "rising water",
               "submerged", "knee deep", "waist deep", "chest deep", "ankle deep", "water's up", "water up to",
@@ -968,3 +968,6 @@ OUT_OF_VERBS = {"get", "getting", "evacuate", "evacuating", "lead", "leading", "
 OWN_PLACES = {"road", "street", "lane", "avenue", "close", "drive", "house", "garden", "home", "estate", "crescent"}
 # Parts of a building a relation may be said of ("by the bus station doors"): at the building itself.
 ENTRANCE_PARTS = {"door", "doors", "entrance", "entrances", "gate", "gates", "steps", "forecourt", "porch", "windows"}
+# "the fire's spread from the bank to the bakery": a danger that reaches a second place.
+SPREAD_VERBS = {"spread", "spreading", "jumped", "jumping", "moved", "moving", "travelled", "traveled", "gone", "got",
+                "spilled", "spilling", "run", "running", "crept", "creeping"}
