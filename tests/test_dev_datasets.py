@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev32) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev33) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -186,6 +186,10 @@ SETS = {
                                 {"standard": 10, "messy": 70, "advanced_messy": 20}, sep=""),
     "dev32/island_harbour": _set("dev32/island_harbour.jsonl", ISLAND, "ih32",
                                  {"standard": 20, "messy": 40, "advanced_messy": 30}),
+    "dev33/market_square": _set("dev33/market_square.jsonl", MARKET_SQUARE, "d33",
+                                {"standard": 20, "messy": 50, "advanced_messy": 30}, sep=""),
+    "dev33/riverbend": _set("dev33/riverbend.jsonl", RIVERBEND, "d33r",
+                            {"standard": 20, "messy": 40, "advanced_messy": 30}),
 }
 
 
