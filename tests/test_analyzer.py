@@ -2092,3 +2092,32 @@ def test_dev32_phenomena_on_an_unseen_kb(kb_analyzers, text, expected):
 ])
 def test_spreads_pronoun_repairs_and_call_outs(analyzer, text, expected):
     assert claims(analyzer, text) == expected
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    # corrections typed, not spoken: an asterisk before the right word, a word struck through, "edit:"
+    ("fire at the bank *bakery sorry autocorrect", [("bakery", "hazard")]),
+    ("casualty at the cafe *clinic *police station ffs autocorrect. POLICE STATION", [("police station", "victim")]),
+    ("Massive fire at the ~~bank~~ bakery, avoid the area", [("bakery", "hazard")]),
+    ("survivor found in ~~church~~ ~~cafe~~ bakery basement", [("bakery", "victim")]),
+    ("Drone footage shows the bus station roof gone. EDIT: it was the supermarket roof, my mistake",
+     [("supermarket", "hazard")]),
+    # someone else corrects the caller
+    ("Caller says fire at the bank. Caller's son corrects her - it's the fire station, not the bank.",
+     [("fire station", "hazard")]),
+])
+def test_written_corrections(analyzer, text, expected):
+    assert claims(analyzer, text) == expected
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    ("This is Tom Hartley from Top Farm. The face of the quarry has slipped and there's a lad trapped under the spoil "
+     "in the pit.", [("quarry", "casualty"), ("quarry", "threat")]),
+    ("Publican at the Red Lion. Brewery and tannery have both lost their roofs, slates everywhere. The rowing club lads "
+     "are fine, they're sheltering in the boat shed, it's dry.",
+     [("boathouse", "shelter"), ("brewery", "threat"), ("tannery", "threat")]),
+    ("Control to all: rendezvous point is now the ferry landing— belay that— rendezvous point is the village green, "
+     "the landing's being undercut by the current", [("ferry landing", "threat"), ("village green", "shelter")]),
+])
+def test_dev33_riverbend_phenomena(kb_analyzers, text, expected):
+    assert claims(kb_analyzers["riverbend"], text) == expected

@@ -615,6 +615,7 @@ class ReportAnalyzer:
         self._apply_restarts(ex)
         self._apply_place_repairs(ex)
         self._apply_trailing_repairs(ex)
+        self._apply_written_corrections(ex)
         self._apply_confirmations(ex, norms)
         self._apply_transit(ex)
         self._apply_cut_off(ex, norms)
@@ -2466,6 +2467,43 @@ class ReportAnalyzer:
                     # "I correct: the smoke is not from the school. From the library!": what was said of the
                     # place denied is said of the one given instead
                     ex.places[ex.places.index(nxt)] = replace(nxt, replaces=p.start_tok)
+
+    @staticmethod
+    def _apply_written_corrections(ex: Extraction) -> None:
+        """Corrections typed rather than spoken: "fire at the bank *bakery" (an asterisk before the right word),
+        "fire at the ~~bank~~ bakery" (a word struck through): the place corrected is taken back and the
+        place after it takes its claims."""
+        toks = ex.tokens
+        def at(start: int) -> int:
+            return next(i for i, r in enumerate(ex.places) if r.start_tok == start and r.status == "active")
+
+        struck = []
+        for p in sorted((p for p in ex.places if p.status == "active"), key=lambda p: p.start_tok):
+            after = toks.gaps[p.end_tok] if p.end_tok < len(toks) else toks.text[toks.tokens[-1].end:]
+            if "~~" in toks.gaps[p.start_tok] and "~~" in after:
+                struck.append(p.start_tok)
+        for start in struck:
+            i = at(start)
+            p = ex.places[i]
+            ex.places[i] = replace(p, status="retracted", reason="struck through")
+            nxt = min((q for q in ex.places if q.status == "active" and q.start_tok >= p.end_tok), key=lambda q: q.start_tok,
+                      default=None)
+            if nxt is not None and nxt.replaces is None:
+                ex.places[at(nxt.start_tok)] = replace(nxt, replaces=p.start_tok)
+        order = sorted((p for p in ex.places if p.status == "active"), key=lambda p: p.start_tok)
+        for q in order:
+            if "*" not in toks.gaps[q.start_tok] or q.start_tok == 0:
+                continue
+            prev = [p for p in order if p.end_tok <= q.start_tok and p.status == "active" and p.landmark != q.landmark
+                    and toks.sentence_of[p.start_tok] == toks.sentence_of[q.start_tok]]
+            if not prev:
+                continue
+            p = max(prev, key=lambda p: p.start_tok)
+            if p not in ex.places or q not in ex.places:
+                continue
+            ex.places[ex.places.index(p)] = replace(p, status="retracted", reason=f"corrected by '*{q.text}'")
+            ex.places[ex.places.index(q)] = replace(q, replaces=p.start_tok)
+            order = sorted((r for r in ex.places if r.status == "active"), key=lambda r: r.start_tok)
 
     @staticmethod
     def _apply_pronoun_negation(ex: Extraction, norms: tuple[str, ...]) -> None:

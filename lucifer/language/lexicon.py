@@ -98,7 +98,7 @@ sending people there|moving evacuees there|send them there|
 """.replace("\n", ""))
 
 _add(CRITICAL, """
-one's collapsed|one has collapsed|one of them's collapsed|one of them has collapsed|coming out coughing|she's still up there|he's still up there|they're still up there|still up there|doesn't walk well|can't walk well|arm deformed|leg deformed|query spinal|spinal injury|suspected fracture|query fracture|fractured|lady gone down|
+need carrying out|needs carrying out|by stretcher|stretcher case|one's collapsed|one has collapsed|one of them's collapsed|one of them has collapsed|coming out coughing|she's still up there|he's still up there|they're still up there|still up there|doesn't walk well|can't walk well|arm deformed|leg deformed|query spinal|spinal injury|suspected fracture|query fracture|fractured|lady gone down|
 woman gone down|man gone down|bloke gone down|someone gone down|somebody gone down|person gone down|gone very grey|gone grey|gone a funny colour|slid off her chair|slid off his chair|slumped|feeling unwell|feeling ill|
 feeling sick|taken ill|been taken ill|can't manage the stairs|cannot manage the stairs|carry chair|with cuts|cuts from|cuts to his|cuts to her|cuts to their|cuts and bruises|nasty cuts|bad cuts|with a cut|
 scalded|scalds|scalding burns|badly scalded|with scalds|
@@ -281,7 +281,8 @@ FALSE_ALARM = ["false alarm", "never mind", "nevermind", "disregard my last", "d
                "part of a drill", "part of the drill", "just a drill", "only a drill", "part of the exercise",
                "part of an exercise", "just an exercise", "only an exercise", "is stood down", "been stood down",
                "was stood down", "are stood down", "was a mannequin", "was a dummy", "was a training dummy",
-               "was a barbecue", "was a bbq", "was a bonfire", "was someone's barbecue", "it's a bonfire",
+               "was a barbecue", "was a bbq", "was a bonfire", "was someone's barbecue", "job closed", "incident closed",
+               "it's a bonfire",
                "its a bonfire", "it's just a bonfire", "it's only a bonfire", "it's a barbecue", "its a barbecue"]
 # ... of which these say what the thing said before them was: what follows them is not denied
 DISMISSED_BEFORE = {"it's a bonfire", "its a bonfire", "it's just a bonfire", "it's only a bonfire", "it's a barbecue",
@@ -304,7 +305,8 @@ STRONG_REPAIR = [
     "scrap that", "bin that", "ignore that", "delete that", "disregard", "corrects to", "corrected to",
     "correcting to", "changed to", "then changed to", "changes it to", "changed it to", "what am i saying",
     "what am i on about", "i'm getting mixed up", "im getting mixed up", "getting mixed up", "i've got that wrong",
-    "ive got that wrong", "got that wrong", "hold up", "rewind", "back up", "start again", "let me start again",
+    "ive got that wrong", "got that wrong", "hold up", "edit", "corrects her", "corrects him", "corrected her",
+    "corrected him", "corrects me", "corrected me", "rewind", "back up", "start again", "let me start again",
 ]
 WEAK_REPAIR = ["sorry", "actually", "or rather", "rather", "wait", "no", "nope", "nah", "naw", "er no", "uh no", "well no",
                "oops", "whoops", "hang on", "hold on"]
@@ -831,7 +833,7 @@ DANGER_KINDS: dict[str, list[str]] = {
                "roof's in", "roof is in", "roof's gone", "roof has gone", "roof's off", "shedding bricks",
                "shedding slates", "masonry falling", "falling masonry", "fallen masonry", "wall's fallen",
                "wall has fallen", "walls have fallen", "roof's fallen", "roof has fallen", "ceiling's fallen",
-               "ceiling has fallen", "chimney's fallen", "chimney has fallen", "lost half its roof", "lost its roof", "lost the roof",
+               "ceiling has fallen", "chimney's fallen", "chimney has fallen", "lost their roofs", "lost their roof", "lost half its roof", "lost its roof", "lost the roof",
                "lost half the roof", "lost part of its roof", "lost part of the roof", "roof down", "roof is down", "roof's down", "ceiling's down",
                "ceiling down", "tree through the roof", "tree on it", "the tree on it", "tree on the roof",
                "roof fell on", "fell on them", "came down on them", "come down on them", "collapsed on them",
@@ -839,7 +841,8 @@ DANGER_KINDS: dict[str, list[str]] = {
                "a breach in it", "breach in the"],
     "ground": ["is shifting", "s shifting", "its shifting", "keeps shifting", "started shifting", "sliding",
                "landslide", "mudslide", "mud slide", "landslip", "slipping", "sinkhole", "come away", "came away",
-               "subsided into", "subsiding into", "subsidence", "mud", "mud and rocks", "mud everywhere",
+               "subsided into", "subsiding into", "subsidence", "has slipped", "face has slipped", "being undercut",
+               "undercut", "being undermined", "undermined", "mud", "mud and rocks", "mud everywhere",
                "full of mud", "rocks came down", "rocks have come down", "rockfall", "rock fall", "boulders"],
     "water": ["sea's come over", "sea's come right over", "sea has come over", "sea came over", "sea's pouring in",
               "sea pouring in", "sea's coming in", "sea coming in", "sea's come in", "sea has come in", "under a metre of water",
