@@ -2121,3 +2121,12 @@ def test_written_corrections(analyzer, text, expected):
 ])
 def test_dev33_riverbend_phenomena(kb_analyzers, text, expected):
     assert claims(kb_analyzers["riverbend"], text) == expected
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    ("ceiling came down in the bldg nxt to town hall", [("library", "hazard")]),
+    ("15:22 Casualty rptd in bldg behind mkt sq. 15:24 A1 on scene, casualty confirmed.", [("bus station", "victim")]),
+    ("fire in bldg opp church", [("cafe", "hazard")]),
+])
+def test_written_abbreviations(analyzer, text, expected):
+    assert claims(analyzer, text) == expected

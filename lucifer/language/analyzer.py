@@ -1148,6 +1148,9 @@ class ReportAnalyzer:
                     and toks.tokens[t.i + 1].norm.startswith(w) and toks.tokens[t.i + 1].norm != w:
                 fixed[t.i] = replace(t, norm="uh")  # "downed power lin— line": the cut-off word said again whole
                 continue
+            if w in lx.ABBREVIATIONS and w not in self._named_words:
+                fixed[t.i] = replace(t, norm=lx.ABBREVIATIONS[w])  # "the bldg nxt to town hall", "mkt sq"
+                continue
             if w == "too" and t.i > 0 and fixed[t.i - 1].norm in self._to_after and not toks.clause_start[t.i]:
                 fixed[t.i] = replace(t, norm="to")  # "the building next too the clinic"
                 continue

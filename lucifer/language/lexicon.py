@@ -974,3 +974,6 @@ ENTRANCE_PARTS = {"door", "doors", "entrance", "entrances", "gate", "gates", "st
 # "the fire's spread from the bank to the bakery": a danger that reaches a second place.
 SPREAD_VERBS = {"spread", "spreading", "jumped", "jumping", "moved", "moving", "travelled", "traveled", "gone", "got",
                 "spilled", "spilling", "run", "running", "crept", "creeping"}
+# Written abbreviations of the words descriptions and names are built from ("the bldg nxt to town hall").
+ABBREVIATIONS = {"bldg": "building", "bldgs": "building", "nxt": "next", "opp": "opposite", "mkt": "market",
+                 "sq": "square", "rptd": "reported", "ppl": "people", "bhd": "behind", "adj": "adjacent"}
