@@ -22,6 +22,8 @@ DATASETS = {
     "heldout/standard.jsonl": ("knowledge_base", 50),
     "heldout/messy.jsonl": ("knowledge_base", 50),
     "heldout/advanced_messy.jsonl": ("knowledge_base", 50),
+    "heldout_b/market_square.jsonl": ("knowledge_base", 50),
+    "heldout_b/riverbend.jsonl": ("knowledge_bases/riverbend", 20),
 }
 
 
