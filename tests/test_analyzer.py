@@ -2130,3 +2130,17 @@ def test_dev33_riverbend_phenomena(kb_analyzers, text, expected):
 ])
 def test_written_abbreviations(analyzer, text, expected):
     assert claims(analyzer, text) == expected
+
+
+def test_a_question_of_where_answered_by_a_place(analyzer):
+    text = ("Control: Engine 3, Medic 12 asks, say again location of your casualty? Engine 3: pharmacy, I say again, the "
+            "pharmacy, she's behind the counter.")
+    assert claims(analyzer, text) == [("pharmacy", "victim")]
+    assert claims(analyzer, "where is the casualty? we don't know yet") == []
+
+
+def test_a_log_heading_names_a_place_without_its_article(kb_analyzers):
+    text = ("Control summary 03:40. Mill: flooding to first floor. Boathouse: roof collapsed. Almshouses: two residents "
+            "need carrying out by stretcher. Green: holding area established.")
+    assert claims(kb_analyzers["riverbend"], text) == [("almshouses", "casualty"), ("boathouse", "threat"),
+                                                       ("mill", "threat"), ("village green", "shelter")]

@@ -533,8 +533,9 @@ class ReportAnalyzer:
                 prev = norms[k]
             acronym = b == a + 1 and a > 0 and len(toks.tokens[a].text) >= 2 and toks.tokens[a].text.isupper()
             # (not the first word: "ECR to bridge" is who calls)
+            heading = (a == 0 or toks.sentence_start[a]) and b < len(norms) and toks.gaps[b].strip().startswith(":")
             if norms[a:b] in self._needs_article and prev not in lx.DETERMINERS | {"our", "your", "my", "his", "her"} \
-                    and not acronym and not self._telegraphic_subject(toks, norms, a, b) \
+                    and not acronym and not heading and not self._telegraphic_subject(toks, norms, a, b) \
                     and not (log and (b - a >= 2 or prev in lx.PREPOSITIONS and len(norms[a]) >= 5)):
                 # the KB wrote "the tower": "bell tower" is not it (a log drops articles: "fire LPG plant",
                 # "leak at bldg at mouth of galleria")
@@ -3180,6 +3181,7 @@ class ReportAnalyzer:
         cues, moved = self._relocations(ex, norms, cues)
         claims, denied = self._associate(ex, cues)
         claims.extend(moved)
+        claims.extend(self._answered_locations(ex, norms, cues, claims))
         spread = self._spread_claims(ex, norms, cues, claims, denied)
         claims.extend(spread)
         cues.extend(c.cue for c in spread)
@@ -3190,6 +3192,38 @@ class ReportAnalyzer:
             claims.extend(extra)
             cues.extend(c.cue for c in extra)
         return Classification(cues, claims, denied)
+
+    def _answered_locations(self, ex: Extraction, norms: tuple[str, ...], cues: list[CueMention],
+                            claims: list[Claim]) -> list[Claim]:
+        """"say again location of your casualty? — pharmacy, I say again, the pharmacy": a question that asks
+        where something is, answered by naming a place, says the thing is there."""
+        toks = ex.tokens
+        out: list[Claim] = []
+        asking = self._question_sentences(toks)
+        for c in cues:
+            if c.polarity != "affirmed" or toks.sentence_of[c.start_tok] not in asking \
+                    or c.status != "active" and c.reason != "a question, not a report" \
+                    or any(cl.cue is c for cl in claims):
+                continue
+            n = toks.sentence_of[c.start_tok]
+            sent = [i for i in range(len(norms)) if toks.sentence_of[i] == n]
+            words = [norms[i] for i in sent]
+            if not any(words[k:k + 2] == ["location", "of"] for k in range(len(words))) and "where" not in words:
+                continue
+            if any(p.status == "active" and toks.sentence_of[p.start_tok] == n for p in ex.places):
+                continue  # ("where's the casualty at the bank?": the place is in the question)
+            nxt = [i for i in range(len(norms)) if toks.sentence_of[i] == n + 1]
+            if not nxt:
+                continue
+            k = next((j + 1 for j in nxt[:4] if j + 1 < len(norms) and toks.gaps[j + 1].strip().startswith(":")),
+                     nxt[0])  # past a speaker label, "Engine 3:"
+            while k < nxt[-1] and (norms[k] in lx.FILLERS or norms[k] in lx.DETERMINERS):
+                k += 1
+            answer = next((p for p in ex.places if p.status == "active" and p.start_tok == k), None)
+            if answer is not None and not any(cl.place.landmark == answer.landmark and cl.cue.category == c.category
+                                              for cl in claims):
+                out.append(Claim(answer, replace(c, status="active", reason="the place given in answer to where")))
+        return out
 
     @staticmethod
     def _unknown_source(ex: Extraction, norms: tuple[str, ...], cues: list[CueMention]) -> list[CueMention]:
