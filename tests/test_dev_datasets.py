@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev33) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev34) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -190,6 +190,9 @@ SETS = {
                                 {"standard": 20, "messy": 50, "advanced_messy": 30}, sep=""),
     "dev33/riverbend": _set("dev33/riverbend.jsonl", RIVERBEND, "d33r",
                             {"standard": 20, "messy": 40, "advanced_messy": 30}),
+    "dev34/market_square": _set("dev34/market_square.jsonl", MARKET_SQUARE, "d34", EVEN, sep=""),
+    "dev34/riverbend": _set("dev34/riverbend.jsonl", RIVERBEND, "d34r",
+                            {"standard": 20, "messy": 20, "advanced_messy": 20}),
 }
 
 
