@@ -2144,3 +2144,24 @@ def test_a_log_heading_names_a_place_without_its_article(kb_analyzers):
             "need carrying out by stretcher. Green: holding area established.")
     assert claims(kb_analyzers["riverbend"], text) == [("almshouses", "casualty"), ("boathouse", "threat"),
                                                        ("mill", "threat"), ("village green", "shelter")]
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    ("All units, keep the road in front of the supermarket clear, the heavy rescue truck is coming through in five "
+     "minutes.", []),
+    ("A woman went into labour in the place opposite st mary's, she needs a midwife.", [("cafe", "victim")]),
+    ("Fire station reporting, the bakery is on fire", [("bakery", "hazard")]),
+])
+def test_dev34_phenomena(analyzer, text, expected):
+    assert claims(analyzer, text) == expected
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    ("Bank breach at the caravan park, water pouring across the field, two families sitting on caravan roofs.",
+     [("caravan park", "casualty"), ("caravan park", "threat")]),
+    ("Lock keeper reports water through the ground floor of the keeper's cottage; he's gone upstairs and he's okay.",
+     [("lock keeper's cottage", "threat")]),
+    ("old lady fallen at the alms— the almshouses, not the ambulance depot, the almshouses", [("almshouses", "casualty")]),
+])
+def test_dev34_riverbend_phenomena(kb_analyzers, text, expected):
+    assert claims(kb_analyzers["riverbend"], text) == expected

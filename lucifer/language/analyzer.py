@@ -2562,6 +2562,10 @@ class ReportAnalyzer:
             if self._called_station(toks, norms, p):
                 ex.places[idx] = replace(p, status="reference", reason="the station called ('X to Y,'): no claim")
                 continue
+            if toks.sentence_start[p.start_tok] and p.end_tok + 1 < len(norms) \
+                    and norms[p.end_tok] in ("reporting", "calling", "speaking") and toks.clause_start[p.end_tok + 1]:
+                ex.places[idx] = replace(p, status="reference", reason="who is calling ('X reporting,'): no claim")
+                continue
             j = p.start_tok
             while j > 0 and norms[j - 1] in lx.DETERMINERS | lx.FILLERS | {"at", "to", "by", "the", "from"} \
                     and p.start_tok - j < 5 and (not toks.clause_start[j] or norms[j - 1] in lx.ARTICLES | lx.FILLERS
@@ -3161,6 +3165,9 @@ class ReportAnalyzer:
                     j -= 1
                 if j >= 0 and norms[j] in lx.THING_SUBJECTS - {"lift"}:
                     continue  # "my bus is stuck in a flash flood": a vehicle stuck, no person said to be
+            if norms[a:b] == ("clear",) and any(norms[j] in ("keep", "keeping") and not any(
+                    toks.clause_start[t] for t in range(j + 1, a + 1)) for j in range(max(0, a - 8), a)):
+                continue  # "keep the road in front of the supermarket clear": an order, not a safe place
             checked = self._apply_cue_negation(toks, norms, cue)
             cues.append(checked)
             if checked.category != cue.category:  # "no longer safe": unsafe now, and no longer safe

@@ -98,6 +98,8 @@ sending people there|moving evacuees there|send them there|
 """.replace("\n", ""))
 
 _add(CRITICAL, """
+went into labour|gone into labour|in labour|needs a midwife|sitting on the roof|sitting on roofs|sitting on caravan roofs|
+on their roofs|lady fallen|old lady fallen|woman fallen|man fallen|old man fallen|someone's fallen|she's fallen|he's fallen|
 need carrying out|needs carrying out|by stretcher|stretcher case|one's collapsed|one has collapsed|one of them's collapsed|one of them has collapsed|coming out coughing|she's still up there|he's still up there|they're still up there|still up there|doesn't walk well|can't walk well|arm deformed|leg deformed|query spinal|spinal injury|suspected fracture|query fracture|fractured|lady gone down|
 woman gone down|man gone down|bloke gone down|someone gone down|somebody gone down|person gone down|gone very grey|gone grey|gone a funny colour|slid off her chair|slid off his chair|slumped|feeling unwell|feeling ill|
 feeling sick|taken ill|been taken ill|can't manage the stairs|cannot manage the stairs|carry chair|with cuts|cuts from|cuts to his|cuts to her|cuts to their|cuts and bruises|nasty cuts|bad cuts|with a cut|
@@ -847,7 +849,8 @@ DANGER_KINDS: dict[str, list[str]] = {
     "water": ["sea's come over", "sea's come right over", "sea has come over", "sea came over", "sea's pouring in",
               "sea pouring in", "sea's coming in", "sea coming in", "sea's come in", "sea has come in", "under a metre of water",
               "a metre of water", "metres of water", "full of seawater", "seawater", "awash", "washout", "washed over",
-              "water's come through", "water's come right through", "water's right through", "water right through", "water has come through", "water came through",
+              "water's come through", "water's come right through", "water's right through", "water right through",
+              "water through the", "water has come through", "water came through",
               "water's come up", "water has come up", "water's come in", "water has come in", "river's come up", "river has come up", "river came up", "river's up", "river's risen", "river has risen",
               "flood", "floods", "flooded", "flooding", "underwater", "under water", "water rising", "rising water",
               "submerged", "knee deep", "waist deep", "chest deep", "ankle deep", "water's up", "water up to",
