@@ -181,6 +181,13 @@ class ReportAnalyzer:
         self._build_relations()
         self._rel_keywords = self._relation_keywords()
         self._rel_keyword_items = sorted(self._rel_keywords.items())  # fixed order for compound matches
+        # landmark pairs a KB relation links, either way round; glossary words that name a danger ("live steam");
+        # landmarks that carry people in cars ("the funicular car")
+        self._related_pairs = {(r.subject, r.object) for r in kb.relations} | {(r.object, r.subject) for r in kb.relations}
+        self._danger_words = {w for t in kb.glossary for w in norm_phrase(t.term)
+                              if kb.category_by_name[t.category].role == Role.UNDESIRABLE}
+        self._conveyances = {lm.name for lm in kb.landmarks
+                             if any(set(norm_phrase(f)) & lx.CONVEYANCE_WORDS for f in lm.surface_forms)}
 
     # ------------------------------------------------------------------ vocabulary
     def _person_cue_at(self, norms: tuple[str, ...], i: int) -> bool:
@@ -579,7 +586,7 @@ class ReportAnalyzer:
         for idx, p in enumerate(places):
             if p.end_tok < len(norms) and norms[p.end_tok] in lx.MODIFIED_BY and not toks.clause_start[p.end_tok] \
                     and norms[p.end_tok : p.end_tok + 2] not in lx.PART_OF_PLACE \
-                    and not (norms[p.end_tok] in lx.CARRIAGE_WORDS and self._is_conveyance(p.landmark)):
+                    and not (norms[p.end_tok] in lx.CARRIAGE_WORDS and p.landmark in self._conveyances):
                 # ("the funicular car has come off its rails": the car is part of the railway)
                 places[idx] = replace(p, status="reference", reason=f"modifier of '{toks.tokens[p.end_tok].text}'")
             elif p.end_tok < len(norms) and norms[p.end_tok] in lx.PEOPLE_OF_PLACE and p.start_tok >= 2 \
@@ -653,7 +660,7 @@ class ReportAnalyzer:
         """"the spring the bottling works takes its water from has gone rusty": a place named, then a related
         place that only leads to it through a relative clause ending in a stranded preposition."""
         toks = ex.tokens
-        related = {(r.subject, r.object) for r in self.kb.relations} | {(r.object, r.subject) for r in self.kb.relations}
+        related = self._related_pairs
         active = sorted((p for p in ex.places if p.status == "active" and p.via is None), key=lambda p: p.start_tok)
         for p1, p2 in zip(active, active[1:], strict=False):
             gap = norms[p1.end_tok:p2.start_tok]
@@ -675,11 +682,6 @@ class ReportAnalyzer:
                 ex.places[ex.places.index(p2)] = replace(p2, status="reference",
                                                          reason=f"reference point of a relative clause describing '{p1.text}'")
 
-    def _is_conveyance(self, landmark: str) -> bool:
-        """A railway, lift or ride, whose cars are part of it."""
-        lm = self.kb.landmark_by_name[landmark]
-        return any(set(norm_phrase(f)) & lx.CONVEYANCE_WORDS for f in lm.surface_forms)
-
     def _ordinal_anaphora(self, toks: Tokens, norms: tuple[str, ...], ex: Extraction) -> None:
         """"the chemist's and the coffee shop. The first one -- a woman on the floor": an ordinal, "the
         former" / "the latter" or "the other one" names a place of the last list of places said before it.
@@ -699,13 +701,14 @@ class ReportAnalyzer:
             # "...; both are marked safe": "both" opening its clause before its verb
             bare = word == "both" and i not in taken and toks.clause_start[i] and i > 0 \
                 and norms[i + 1:i + 2] in (("are",), ("were",), ("have",), ("had",), ("need",), ("look",), ("re",))
-            every = bare or word in ("both", "neither") and norms[i + 1:i + 3] in (("of", "them"), ("of", "those"),
-                                                                                    ("of", "these"))
+            of_them = word in ("both", "neither") and norms[i + 1:i + 3] in (("of", "them"), ("of", "those"),
+                                                                              ("of", "these"))
+            every = bare or of_them
             start = i
-            if every and not bare:
+            if of_them:
                 i += 1  # (the mention starts at "both", as an ordinal's starts at its "the")
             elif bare:
-                pass
+                pass  # (the mention is the word itself)
             elif i in taken or not (word in lx.ORDINAL_PLACES or word == "other"):
                 continue
             elif i > 0 and (norms[i - 1] == "the" or norms[i - 1] == "that" and norms[i + 1:i + 2] == ("one",)):
@@ -714,7 +717,7 @@ class ReportAnalyzer:
                 continue  # (a bare "First one, empty" opens its clause)
             end = i + 1
             nxt = norms[end] if end < len(norms) else ""
-            if every and not bare:
+            if of_them:
                 end += 1
             elif bare:
                 pass
@@ -2399,11 +2402,8 @@ class ReportAnalyzer:
                     nxt = next((r for r in sorted(ex.places, key=lambda r: r.start_tok) if r.status == "active"
                                 and p.end_tok <= r.start_tok <= p.end_tok + 6), None)
                     if described and nxt is not None:
-                        q = max(described, key=lambda q: q.start_tok)
-                        ex.places[ex.places.index(q)] = replace(q, status="retracted",
-                                                                reason=f"then 'not {toks.span_text(j + 1, p.end_tok)}'")
-                        if nxt.replaces is None:
-                            ex.places[ex.places.index(nxt)] = replace(nxt, replaces=q.start_tok)
+                        self._take_back(ex, max(described, key=lambda q: q.start_tok), nxt,
+                                        f"then 'not {toks.span_text(j + 1, p.end_tok)}'")
                     continue
                 # "the clinic ... no, not the clinic, the police station": the earlier mention is retracted
                 sent_start = max(t for t in range(0, p.start_tok + 1) if toks.sentence_start[t])
@@ -2473,41 +2473,40 @@ class ReportAnalyzer:
                     ex.places[ex.places.index(nxt)] = replace(nxt, replaces=p.start_tok)
 
     @staticmethod
+    def _take_back(ex: Extraction, old: PlaceMention, new: PlaceMention | None, reason: str) -> None:
+        """``old`` is retracted for ``reason``; ``new``, said in its stead, takes its claims (unless it already
+        repairs another place). Both are found by their span, so a copy made earlier still finds them."""
+        def same(a: PlaceMention, b: PlaceMention) -> bool:
+            return (a.start_tok, a.end_tok, a.landmark, a.via) == (b.start_tok, b.end_tok, b.landmark, b.via)
+
+        for i, r in enumerate(ex.places):
+            if same(r, old):
+                ex.places[i] = replace(r, status="retracted", reason=reason)
+            elif new is not None and same(r, new) and r.replaces is None:
+                ex.places[i] = replace(r, replaces=old.start_tok)
+
+    @staticmethod
     def _apply_written_corrections(ex: Extraction) -> None:
         """Corrections typed rather than spoken: "fire at the bank *bakery" (an asterisk before the right word),
         "fire at the ~~bank~~ bakery" (a word struck through): the place corrected is taken back and the
         place after it takes its claims."""
         toks = ex.tokens
-        def at(start: int) -> int:
-            return next(i for i, r in enumerate(ex.places) if r.start_tok == start and r.status == "active")
 
-        struck = []
-        for p in sorted((p for p in ex.places if p.status == "active"), key=lambda p: p.start_tok):
+        def active() -> list[PlaceMention]:
+            return sorted((p for p in ex.places if p.status == "active"), key=lambda p: p.start_tok)
+
+        for p in active():
             after = toks.gaps[p.end_tok] if p.end_tok < len(toks) else toks.text[toks.tokens[-1].end:]
             if "~~" in toks.gaps[p.start_tok] and "~~" in after:
-                struck.append(p.start_tok)
-        for start in struck:
-            i = at(start)
-            p = ex.places[i]
-            ex.places[i] = replace(p, status="retracted", reason="struck through")
-            nxt = min((q for q in ex.places if q.status == "active" and q.start_tok >= p.end_tok), key=lambda q: q.start_tok,
-                      default=None)
-            if nxt is not None and nxt.replaces is None:
-                ex.places[at(nxt.start_tok)] = replace(nxt, replaces=p.start_tok)
-        order = sorted((p for p in ex.places if p.status == "active"), key=lambda p: p.start_tok)
-        for q in order:
+                nxt = next((q for q in active() if q.start_tok >= p.end_tok), None)
+                ReportAnalyzer._take_back(ex, p, nxt, "struck through")
+        for q in active():
             if "*" not in toks.gaps[q.start_tok] or q.start_tok == 0:
                 continue
-            prev = [p for p in order if p.end_tok <= q.start_tok and p.status == "active" and p.landmark != q.landmark
+            prev = [p for p in active() if p.end_tok <= q.start_tok and p.landmark != q.landmark
                     and toks.sentence_of[p.start_tok] == toks.sentence_of[q.start_tok]]
-            if not prev:
-                continue
-            p = max(prev, key=lambda p: p.start_tok)
-            if p not in ex.places or q not in ex.places:
-                continue
-            ex.places[ex.places.index(p)] = replace(p, status="retracted", reason=f"corrected by '*{q.text}'")
-            ex.places[ex.places.index(q)] = replace(q, replaces=p.start_tok)
-            order = sorted((r for r in ex.places if r.status == "active"), key=lambda r: r.start_tok)
+            if prev:
+                ReportAnalyzer._take_back(ex, max(prev, key=lambda p: p.start_tok), q, f"corrected by '*{q.text}'")
 
     @staticmethod
     def _apply_pronoun_negation(ex: Extraction, norms: tuple[str, ...]) -> None:
@@ -2529,11 +2528,8 @@ class ReportAnalyzer:
             if not before or not after:
                 continue
             q, r = max(before, key=lambda q: q.end_tok), min(after, key=lambda r: r.start_tok)
-            if r.landmark == q.landmark:
-                continue
-            ex.places[ex.places.index(q)] = replace(q, status="retracted", reason=f"then '{toks.span_text(j, k + 1)}'")
-            if r.replaces is None:
-                ex.places[ex.places.index(r)] = replace(r, replaces=q.start_tok)
+            if r.landmark != q.landmark:
+                ReportAnalyzer._take_back(ex, q, r, f"then '{toks.span_text(j, k + 1)}'")
 
     def _cue_between(self, norms: tuple[str, ...], a: int, b: int) -> bool:
         return any(self._cues.match_at(norms, k) is not None for k in range(a, b))
@@ -3292,6 +3288,10 @@ class ReportAnalyzer:
         toks = ex.tokens
         moved: list[Claim] = []
         active = [p for p in ex.places if p.status == "active"]
+
+        def undesirable(c: CueMention) -> bool:
+            return self.kb.category_by_name[c.category].role == Role.UNDESIRABLE
+
         for key in _SOURCE_KEYS:  # "smoke over the square. Source identified as the bus depot."
             for i in range(len(norms) - len(key) + 1):
                 if norms[i:i + len(key)] != key:
@@ -3299,13 +3299,9 @@ class ReportAnalyzer:
                 j = i + len(key)
                 target = next((p for p in active if j <= p.start_tok <= j + 2
                                and all(norms[t] in lx.DETERMINERS for t in range(j, p.start_tok))), None)
-                n = toks.sentence_of[i]
-                before = [c for c in cues if c.status == "active" and c.polarity == "affirmed" and c.end_tok <= i
-                          and n - 1 <= toks.sentence_of[c.start_tok] <= n
-                          and self.kb.category_by_name[c.category].role == Role.UNDESIRABLE]
-                if target is None or not before:
+                last = self._last_cue_before(toks, cues, i, 1, undesirable)
+                if target is None or last is None:
                     continue
-                last = max(before, key=lambda c: c.start_tok)
                 cues = [replace(c, status="retracted", reason=f"its source is {target.text}") if c is last else c
                         for c in cues]
                 moved.append(Claim(target, replace(last, reason=f"its source is {target.text}")))
@@ -3315,13 +3311,10 @@ class ReportAnalyzer:
             src = next((p for p in active if i + 1 < p.start_tok <= i + 3), None)
             if src is None or src.end_tok >= len(norms) or norms[src.end_tok] not in ("to", "into", "onto"):
                 continue
-            dst = next((p for p in ex.places if p.status == "active" and src.end_tok < p.start_tok <= src.end_tok + 3), None)
-            n = toks.sentence_of[i]
-            before = [c for c in cues if c.status == "active" and c.polarity == "affirmed" and c.end_tok <= i
-                      and toks.sentence_of[c.start_tok] == n
-                      and self.kb.category_by_name[c.category].role == Role.UNDESIRABLE]
-            if dst is not None and before:
-                moved.append(Claim(dst, replace(max(before, key=lambda c: c.start_tok), reason=f"spread to {dst.text}")))
+            dst = next((p for p in active if src.end_tok < p.start_tok <= src.end_tok + 3), None)
+            last = self._last_cue_before(toks, cues, i, 0, undesirable)
+            if dst is not None and last is not None:
+                moved.append(Claim(dst, replace(last, reason=f"spread to {dst.text}")))
         for i, w in enumerate(norms):
             if w not in lx.RELOCATE_VERBS:
                 continue
@@ -3344,21 +3337,25 @@ class ReportAnalyzer:
             person = obj in ("her", "him", "them") and self._person_category is not None
             if not (instead or w in lx.RELOCATE_EXPLICIT):
                 continue
-            n = toks.sentence_of[i]
-            before = [c for c in cues if c.status == "active" and c.polarity == "affirmed" and c.end_tok <= i
-                      and n - 1 <= toks.sentence_of[c.start_tok] <= n]
-            if person:
-                before = [c for c in before if c.category == self._person_category]
-            else:
-                before = [c for c in before if self.kb.category_by_name[c.category].role == Role.DESIRABLE]
-            if not before:
+            last = self._last_cue_before(toks, cues, i, 1, (lambda c: c.category == self._person_category) if person
+                                         else (lambda c: self.kb.category_by_name[c.category].role == Role.DESIRABLE))
+            if last is None:
                 continue
-            last = max(before, key=lambda c: c.start_tok)
             if not person:
                 cues = [replace(c, status="retracted", reason=f"moved to {target.text}") if c is last else c
                         for c in cues]
             moved.append(Claim(target, replace(last, reason=f"moved to {target.text}")))
         return cues, moved
+
+    @staticmethod
+    def _last_cue_before(toks: Tokens, cues: list[CueMention], i: int, back: int,
+                         keep: Callable[[CueMention], bool]) -> CueMention | None:
+        """The last active, affirmed cue ``keep`` accepts that ends by token ``i``, in its sentence or up to
+        ``back`` sentences before it."""
+        n = toks.sentence_of[i]
+        return max((c for c in cues if c.status == "active" and c.polarity == "affirmed" and c.end_tok <= i
+                    and n - back <= toks.sentence_of[c.start_tok] <= n and keep(c)),
+                   key=lambda c: c.start_tok, default=None)
 
     RESTART_WORDS = frozenset({"there", "theres", "s", "is", "a", "an", "the", "its", "it", "some"})
 
@@ -3889,10 +3886,8 @@ class ReportAnalyzer:
         sentence_of = toks.sentence_of
         alarms: dict[int, int] = {}  # sentence -> the token before which its claims are denied
         places_now = getattr(self, "_places_now", [])
-        dangerous = {w for t in self.kb.glossary for w in norm_phrase(t.term)
-                     if self.kb.category_by_name[t.category].role == Role.UNDESIRABLE}
         for phrase, key in _FALSE_ALARM_KEYS:
-            if key[0] in ("just", "only") and key[-1] in dangerous:
+            if key[0] in ("just", "only") and key[-1] in self._danger_words:
                 continue  # "it's not chlorine, it's just steam, live steam blasting out": the KB says steam is a danger
             for i in range(len(norms) - len(key) + 1):
                 if norms[i] != key[0]:
