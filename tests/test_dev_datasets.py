@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev34) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev35) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -50,6 +50,8 @@ SKI_TOWN = ROOT / "knowledge_bases" / "ski_town"
 SPA_TOWN = ROOT / "knowledge_bases" / "spa_town"
 MARKET_TOWN = ROOT / "knowledge_bases" / "market_town"
 ISLAND = ROOT / "knowledge_bases" / "island_harbour"
+CASTLE_TOWN = ROOT / "knowledge_bases" / "castle_town"
+SCIENCE_PARK = ROOT / "knowledge_bases" / "science_park"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -193,6 +195,11 @@ SETS = {
     "dev34/market_square": _set("dev34/market_square.jsonl", MARKET_SQUARE, "d34", EVEN, sep=""),
     "dev34/riverbend": _set("dev34/riverbend.jsonl", RIVERBEND, "d34r",
                             {"standard": 20, "messy": 20, "advanced_messy": 20}),
+    "dev35/market_square": _set("dev35/market_square.jsonl", MARKET_SQUARE, "d35m", EVEN),
+    "dev35/riverbend": _set("dev35/riverbend.jsonl", RIVERBEND, "d35r",
+                            {"standard": 20, "messy": 20, "advanced_messy": 20}),
+    "dev35/castle_town": _set("dev35/castle_town.jsonl", CASTLE_TOWN, "ct35", THIRTY),
+    "dev35/science_park": _set("dev35/science_park.jsonl", SCIENCE_PARK, "sp35", THIRTY),
 }
 
 

@@ -23,7 +23,7 @@ import difflib
 import functools
 import re
 import threading
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field, replace
 from typing import Literal
 
@@ -3233,17 +3233,14 @@ class ReportAnalyzer:
         """"I can see smoke from the top of the road but I don't know where it's coming from": the speaker says
         they do not know where it is; what they saw since the last place they named is claimed of no place."""
         toks = ex.tokens
-        for key in _UNKNOWN_SOURCE_KEYS:
-            for i in range(len(norms) - len(key) + 1):
-                if norms[i:i + len(key)] != key:
-                    continue
-                n = toks.sentence_of[i]
-                named = [p.end_tok for p in ex.places if p.status == "active" and p.end_tok <= i
-                         and toks.sentence_of[p.start_tok] == n]
-                lo = max(named, default=min(t for t in range(i + 1) if toks.sentence_of[t] == n))
-                cues = [replace(c, status="retracted", reason="where it is, the speaker does not know")
-                        if c.status == "active" and lo <= c.start_tok < i and c.polarity == "affirmed" else c
-                        for c in cues]
+        for i, _, _ in _UNKNOWN_SOURCE.find_all(norms):
+            n = toks.sentence_of[i]
+            named = [p.end_tok for p in ex.places if p.status == "active" and p.end_tok <= i
+                     and toks.sentence_of[p.start_tok] == n]
+            lo = max(named, default=min(t for t in range(i + 1) if toks.sentence_of[t] == n))
+            cues = [replace(c, status="retracted", reason="where it is, the speaker does not know")
+                    if c.status == "active" and lo <= c.start_tok < i and c.polarity == "affirmed" else c
+                    for c in cues]
         # "theres smoke everywhere on our road": where it is, said, and no place of the KB
         place_tokens = {t for p in ex.places for t in range(p.start_tok, p.end_tok)}
         for idx, c in enumerate(cues):
@@ -3292,19 +3289,15 @@ class ReportAnalyzer:
         def undesirable(c: CueMention) -> bool:
             return self.kb.category_by_name[c.category].role == Role.UNDESIRABLE
 
-        for key in _SOURCE_KEYS:  # "smoke over the square. Source identified as the bus depot."
-            for i in range(len(norms) - len(key) + 1):
-                if norms[i:i + len(key)] != key:
-                    continue
-                j = i + len(key)
-                target = next((p for p in active if j <= p.start_tok <= j + 2
-                               and all(norms[t] in lx.DETERMINERS for t in range(j, p.start_tok))), None)
-                last = self._last_cue_before(toks, cues, i, 1, undesirable)
-                if target is None or last is None:
-                    continue
-                cues = [replace(c, status="retracted", reason=f"its source is {target.text}") if c is last else c
-                        for c in cues]
-                moved.append(Claim(target, replace(last, reason=f"its source is {target.text}")))
+        for i, j, _ in _SOURCE_IS.find_all(norms):  # "smoke over the square. Source identified as the bus depot."
+            target = next((p for p in active if j <= p.start_tok <= j + 2
+                           and all(norms[t] in lx.DETERMINERS for t in range(j, p.start_tok))), None)
+            last = self._last_cue_before(toks, cues, i, 1, undesirable)
+            if target is None or last is None:
+                continue
+            cues = [replace(c, status="retracted", reason=f"its source is {target.text}") if c is last else c
+                    for c in cues]
+            moved.append(Claim(target, replace(last, reason=f"its source is {target.text}")))
         for i, w in enumerate(norms):  # "fire's jumped from the tank farm to the station it feeds": both burn
             if w not in lx.SPREAD_VERBS or norms[i + 1:i + 2] != ("from",):
                 continue
@@ -5107,8 +5100,17 @@ def _same_stem(a: str, b: str) -> bool:
     return a[:k] == b[:k] and (a.startswith(b[: len(b) - 3]) or b.startswith(a[: len(a) - 3]) or a[:5] == b[:5])
 
 
-_UNKNOWN_SOURCE_KEYS = [norm_phrase(p) for p in lx.UNKNOWN_SOURCE]
-_SOURCE_KEYS = [norm_phrase(p) for p in lx.SOURCE_IS]
+def _phrases(phrases: Iterable[str]) -> PhraseMatcher[str]:
+    """A longest-match, non-overlapping matcher of ``phrases`` (each its own payload)."""
+    matcher: PhraseMatcher[str] = PhraseMatcher()
+    for phrase in phrases:
+        matcher.add(norm_phrase(phrase), phrase)
+    return matcher
+
+
+# "don't know where it's coming from"; "source identified as": one hit per place in the text, the longest
+_UNKNOWN_SOURCE = _phrases(lx.UNKNOWN_SOURCE)
+_SOURCE_IS = _phrases(lx.SOURCE_IS)
 # Coordinating phrases and false-alarm markers as token keys, computed once.
 _COORDINATOR_KEYS = [norm_phrase(p) for p in lx.COORDINATOR_PHRASES]
 _FALSE_ALARM_KEYS = [(p, norm_phrase(p)) for p in lx.FALSE_ALARM]
