@@ -249,7 +249,8 @@ class ReportAnalyzer:
         sims = vecs[1:] @ vecs[0]
         return cats[int(np.argmax(sims))].name
 
-    _danger_kind_of = {p: kind for kind, phrases in lx.DANGER_KINDS.items() for p in phrases}
+    _danger_kind_of = {p: kind for kinds in (lx.DANGER_KINDS, lx.DANGER_KIND_EXTRA)
+                       for kind, phrases in kinds.items() for p in phrases}
 
     def _kind_category(self, kind: str, cats: list[Category]) -> str | None:
         """The category a kind of danger (``lexicon.DANGER_KINDS``) reads as in this KB: the one whose
@@ -281,7 +282,8 @@ class ReportAnalyzer:
         """Content words of a category description, leaving out its negated clauses ("Nothing is burning")."""
         out: set[str] = set()
         for clause in re.split(r"[.;:()\u2014\u2013]|\s-\s", description):
-            ws = norm_phrase(clause)
+            # ("wind-blown embers": one word, not "blown")
+            ws = norm_phrase(re.sub(r"(?<=[a-z])-(?=[a-z])", "", clause))
             if set(ws) & lx.NEGATORS:
                 continue
             out.update(w for w in ws if len(w) >= 4)
@@ -301,6 +303,21 @@ class ReportAnalyzer:
                     key = norm_phrase(part)
                     if 0 < len(key) <= 3 and not (set(key) & {"e", "g", "eg", "etc"}):
                         entries[key] = (cat.name, "category")
+        # 2b. a list after a colon or a dash: "Structural damage - collapsed or loose masonry, fallen trees"; the
+        # KB's own words for its category, where the vocabulary has no word yet
+        for cat in self.kb.categories:
+            for key in _description_list_items(cat.description):
+                if key not in entries and not self._cues.match_at(key, 0):
+                    entries[key] = (cat.name, "category")
+        # 2c. dangers only some KBs count, said in words their descriptions use ("failed building services ...
+        # live or arcing electrics": "the lights are out" is one there, no danger in a town square)
+        undesirable = self.kb.categories_with_role(Role.UNDESIRABLE)
+        for triggers, phrases in lx.DESCRIBED_KINDS.values():
+            named = [c for c in undesirable
+                     if any(re.search(rf"\b{re.escape(t)}", c.description.lower()) for t in triggers)]
+            if len(named) == 1:
+                for phrase in phrases:
+                    entries.setdefault(norm_phrase(phrase), (named[0].name, "category"))
         # 3. category names themselves ("hazard", "safe zone")
         for cat in self.kb.categories:
             entries[norm_phrase(cat.name.replace("_", " "))] = (cat.name, "category")
@@ -579,6 +596,8 @@ class ReportAnalyzer:
         places.extend(self._partial_names(toks, norms, {i for p in places for i in range(p.start_tok, p.end_tok)}))
         places.extend(self._head_names(toks, norms, {i for p in places for i in range(p.start_tok, p.end_tok)},
                                        {b for _, b, _ in all_relations}))
+        places.extend(self._modifier_names(toks, norms, {i for p in places for i in range(p.start_tok, p.end_tok)},
+                                           {b for a, b, _ in all_relations if b - a >= 2}))
         places.extend(self._misheard_names(toks, norms, {i for p in places for i in range(p.start_tok, p.end_tok)},
                                            {i for a, b, _ in all_cues for i in range(a, b)}))
         places.extend(self._definite_heads(toks, norms, places))
@@ -586,7 +605,8 @@ class ReportAnalyzer:
         for idx, p in enumerate(places):
             if p.end_tok < len(norms) and norms[p.end_tok] in lx.MODIFIED_BY and not toks.clause_start[p.end_tok] \
                     and norms[p.end_tok : p.end_tok + 2] not in lx.PART_OF_PLACE \
-                    and not (norms[p.end_tok] in lx.CARRIAGE_WORDS and p.landmark in self._conveyances):
+                    and not (norms[p.end_tok] in lx.CARRIAGE_WORDS and p.landmark in self._conveyances) \
+                    and not self._people_of_place_hurt(toks, norms, p.end_tok):
                 # ("the funicular car has come off its rails": the car is part of the railway)
                 places[idx] = replace(p, status="reference", reason=f"modifier of '{toks.tokens[p.end_tok].text}'")
             elif p.end_tok < len(norms) and norms[p.end_tok] in lx.PEOPLE_OF_PLACE and p.start_tok >= 2 \
@@ -623,12 +643,36 @@ class ReportAnalyzer:
         self._apply_restarts(ex)
         self._apply_place_repairs(ex)
         self._apply_trailing_repairs(ex)
+        self._apply_hesitation_chains(ex, norms)
         self._apply_written_corrections(ex)
         self._apply_confirmations(ex, norms)
         self._apply_transit(ex)
         self._apply_cut_off(ex, norms)
         ex.places.sort(key=lambda p: p.start_tok)
         return ex
+
+    @staticmethod
+    def _apply_hesitation_chains(ex: Extraction, norms: tuple[str, ...]) -> None:
+        """"smoke off the granary, er, the mill, no hang on, it's the timber yard": a place the speaker
+        hesitates away from to another, with no "and" between them, goes with the next one when a repair
+        takes that back; the speaker was searching for the place, not listing two."""
+        toks = ex.tokens
+        for _ in range(3):  # (a chain of three: "the granary, er, the mill, um, the barn, no, the yard")
+            changed = False
+            for y in [q for q in ex.places if q.status == "retracted" and q.reason.startswith("self-repair")]:
+                x = max((q for q in ex.places if q.status == "active" and q.via is None and q.end_tok <= y.start_tok
+                         and q.landmark != y.landmark), key=lambda q: q.end_tok, default=None)
+                if x is None or y.start_tok - x.end_tok > 5 or toks.sentence_of[x.start_tok] != toks.sentence_of[y.start_tok]:
+                    continue
+                between = norms[x.end_tok:y.start_tok]
+                if not any(w in lx.FILLERS for w in between) \
+                        or not all(w in lx.FILLERS or w in lx.ARTICLES for w in between) \
+                        or not toks.gaps[x.end_tok].strip().startswith((",", "\u2014", "-", "...")):
+                    continue
+                ReportAnalyzer._take_back(ex, x, y, f"self-repair: hesitated on to '{y.text}', itself taken back")
+                changed = True
+            if not changed:
+                break
 
     @staticmethod
     def _apply_cut_off(ex: Extraction, norms: tuple[str, ...]) -> None:
@@ -799,6 +843,18 @@ class ReportAnalyzer:
                                                         or norms[b + 1:b + 2] == ("and",)  # "Sidings checked and clear"
                                                         and self._cues.match_at(norms, b + 2) is not None))
 
+    def _people_of_place_hurt(self, toks: Tokens, norms: tuple[str, ...], w: int) -> bool:
+        """"the pharmacy's owner is trapped", "the bakery staff are injured": the people the place's name
+        modifies (token ``w``) are said at once to need help; where they are is the place."""
+        if norms[w] not in lx.PEOPLE_OF_PLACE_WORDS or self._person_category is None:
+            return False
+        j = w + 1
+        while j < len(norms) and j - w <= 3 and not toks.clause_start[j] and norms[j] in lx.COPULAS | lx.FILLERS | {
+                "been", "all", "still", "both", "badly"}:
+            j += 1
+        hit = self._cues.match_at(norms, j) if j < len(norms) and not toks.clause_start[j] else None
+        return hit is not None and hit[1][0] == self._person_category
+
     def _partial_names(self, toks: Tokens, norms: tuple[str, ...], taken: set[int]) -> list[PlaceMention]:
         """"the hardware —": the first words of a multi-word name, cut off by a pause."""
         if not hasattr(self, "_prefixes"):
@@ -867,13 +923,19 @@ class ReportAnalyzer:
                            and len(described.get(w, set()) - names) < 3
                            and w not in cue_words and w not in rel_words and w not in lx.DESCRIPTIVE_WORDS
                            and w not in lx.STOREY_WORDS and w not in lx.PART_NOUNS}  # ("the roof" of anything)
+            # heads no other landmark's description uses either: "the chapel is safe" where the castle chapel is
+            # the one chapel the KB speaks of
+            self._sole_heads = {w for w, name in self._heads.items() if not described.get(w, set()) - {name}}
         out = []
         for i in range(0, len(norms)):
             w = norms[i]
             opens = (i == 0 or toks.sentence_start[i]) and w in self._heads and i not in taken \
-                and w not in lx.UNNAMING_HEADS | lx.GENERIC_HEADS | lx.DESCRIPTION_HEADS and (
-                toks.tokens[i].text.lower().endswith(("'s", "’s")) or i + 1 < len(norms) and norms[i + 1] in ("is", "has"))
-            # ("crane's leaning badly": a report that opens on the bare head, said of it)
+                and (w not in lx.UNNAMING_HEADS | lx.GENERIC_HEADS | lx.DESCRIPTION_HEADS
+                     or w in self._sole_heads and w not in lx.UNNAMING_HEADS) and (
+                toks.tokens[i].text.lower().endswith(("'s", "’s")) or i + 1 < len(norms) and norms[i + 1] in ("is", "has")
+                or i + 2 < len(norms) and norms[i + 1] in lx.STOREY_WORDS | {"wall", "walls", "door", "doors", "windows"}
+                and not toks.clause_start[i + 1])
+            # ("crane's leaning badly", "Chapel roof open to the sky": a report that opens on the bare head, said of it)
             if opens:
                 out.append(self._mention(toks, i, i + 1, self._heads[w]))
                 continue
@@ -884,7 +946,9 @@ class ReportAnalyzer:
             contracted = toks.tokens[i].text.lower().endswith(("'s", "’s"))
             said_of = contracted or i + 1 >= len(norms) or toks.clause_start[i + 1] or norms[i + 1] in lx.COPULAS
             if w in lx.UNNAMING_HEADS or (w in lx.GENERIC_HEADS or w in lx.DESCRIPTION_HEADS) and (i - 1) not in rel_ends \
-                    and not (said_of and w in lx.GENERIC_HEADS and (contracted or w not in lx.DESCRIPTION_HEADS)):
+                    and not (said_of and w in lx.GENERIC_HEADS and (contracted or w not in lx.DESCRIPTION_HEADS
+                                                                    or w in self._sole_heads and w not in lx.UNNAMING_HEADS
+                                                                    and norms[i - 2:i - 1] != ("from",))):
                 # "the terrace" names the one terrace only as a relation's anchor ("back to back with the terrace"),
                 # or as what a predicate is said of ("the barn's out now")
                 continue
@@ -916,6 +980,63 @@ class ReportAnalyzer:
                     and not toks.clause_start[i + 1]:
                 out.append(self._mention(toks, i, i + 2, self._pair_heads[key]))
                 taken_now.update((i, i + 1))
+        return out
+
+    def _modifier_names(self, toks: Tokens, norms: tuple[str, ...], taken: set[int],
+                        rel_ends: set[int]) -> list[PlaceMention]:
+        """"the generator place" for "generator compound", "guarding the approach to reception" for "reception
+        pavilion", "the bio block" for "biosciences block": the first word of a multi-word name that no other
+        landmark's name holds, with a vague head after it ("place", "building", "site") or said bare as the
+        anchor of a relation phrase (``rel_ends``: where the report's relation phrases end); or that word
+        clipped, with the name's own last word. (Said bare anywhere else it is too often a plain word: "the
+        overflow" of a chapel, "the giraffes" of a giraffe paddock.)"""
+        if getattr(self, "_first_words", None) is None:
+            owners: dict[str, set[str]] = {}
+            for lm in self.kb.landmarks:
+                for form in lm.surface_forms:
+                    for w in name_words(form):
+                        owners.setdefault(w, set()).add(lm.name)
+            cue_words = {key[0] for key in self._cue_keys() if len(key) == 1}
+            rel_words = {w for rel in self.kb.relations for w in rel.phrase.split()}
+            firsts: dict[str, str] = {}
+            for lm in self.kb.landmarks:
+                for form in lm.surface_forms:
+                    words = [w for w in name_words(form) if w not in lx.ARTICLES]
+                    w = words[0] if len(words) >= 2 else ""
+                    if len(w) >= 5 and w.isalpha() and owners.get(w) == {lm.name} and w not in cue_words \
+                            and w not in rel_words and w not in lx.FUNCTION_WORDS | lx.DESCRIPTIVE_WORDS \
+                            | lx.GENERIC_HEADS | lx.STOREY_WORDS | lx.PART_NOUNS and not _direction_word(w):
+                        firsts[w] = lm.name
+            self._first_words = firsts
+        if getattr(self, "_clipped_forms", None) is None:
+            # "the bio block" for "biosciences block": a clipped first word, then the name's own last word
+            clipped: dict[tuple[str, str], set[str]] = {}
+            for lm in self.kb.landmarks:
+                for form in lm.surface_forms:
+                    words = [x for x in name_words(form) if x not in lx.ARTICLES]
+                    if len(words) == 2 and len(words[0]) >= 6:
+                        for n in range(3, len(words[0]) - 2):
+                            clipped.setdefault((words[0][:n], words[1]), set()).add(lm.name)
+            self._clipped_forms = {k: next(iter(v)) for k, v in clipped.items() if len(v) == 1}
+        out = []
+        for i in range(1, len(norms) - 1):
+            key = (norms[i], norms[i + 1])
+            if key in self._clipped_forms and norms[i - 1] in lx.ARTICLES and not {i, i + 1} & taken \
+                    and not toks.clause_start[i + 1]:
+                out.append(self._mention(toks, i, i + 2, self._clipped_forms[key]))
+                taken = taken | {i, i + 1}
+        for i, w in enumerate(norms):
+            if w not in self._first_words or i in taken or i == 0:
+                continue
+            nxt = i + 1
+            if nxt < len(norms) and norms[nxt] in lx.VAGUE_PLACE_HEADS and not toks.clause_start[nxt] \
+                    and norms[i - 1] in lx.ARTICLES and nxt not in taken:
+                out.append(self._mention(toks, i - 1, nxt + 1, self._first_words[w]))
+                continue
+            j = i - 1 if norms[i - 1] == "the" else i
+            if j in rel_ends and (nxt >= len(norms) or toks.clause_start[nxt] or norms[nxt] in lx.COPULAS | {"has", "have"}) \
+                    and not toks.tokens[i].text.lower().endswith(("'s", "’s")):
+                out.append(self._mention(toks, i, nxt, self._first_words[w]))
         return out
 
     def _resolve_containers(self, ex: Extraction, norms: tuple[str, ...]) -> None:
@@ -1207,6 +1328,12 @@ class ReportAnalyzer:
             frag = t.text.lower()
             if frag in lx.FUNCTION_WORDS or frag in ("he", "she", "we", "i", "me", "you", "him", "her", "my"):
                 continue  # "he- he fell": a stutter on a pronoun is no cut-off name
+            if nxt_gap == "-" and t.i + 1 < len(toks) and toks.tokens[t.i + 1].text[:1].isalpha() \
+                    and not toks.tokens[t.i + 1].text.lower().startswith(frag):
+                continue  # "the engineers have green-tagged it": a hyphenated word, nothing cut off
+            if t.norm == "uh" and frag != "uh" and nxt_gap[:1] == "-" and t.i + 1 < len(toks) \
+                    and not any(ch.isspace() for ch in nxt_gap):
+                continue  # "ember sh-shower": the next word said again whole (``_respell``), no name begun
             if t.i > 0 and any((hit := self._cues.match_at(norms, k)) is not None
                                and hit[0] == t.i + 1 and k < t.i for k in range(max(0, t.i - 3), t.i)):
                 continue  # "the bank's on fire— wait": a cue said whole, not "fire st—"
@@ -1511,14 +1638,19 @@ class ReportAnalyzer:
             k = anchor.start_tok
             while k > 0 and norms[k - 1] in lx.DETERMINERS | {"that", "which"} and anchor.start_tok - k < 2:
                 k -= 1
-            if k == 0 or (k == anchor.start_tok and norms[k - 1] != "whatever" and not (k >= 2 and norms[k - 2] in lx.ARTICLES)) \
+            h = k
+            while h > 0 and norms[h - 1] in lx.DETERMINERS | lx.FILLERS and anchor.start_tok - h < 5:
+                h -= 1
+            if h > 0 and h < k and norms[h - 1] in lx.WHATEVER and any(norms[i] in lx.FILLERS for i in range(h, k)):
+                k = h  # "whatever the, er, the grain store is built against": past the hesitation
+            if k == 0 or (k == anchor.start_tok and norms[k - 1] not in lx.WHATEVER and not (k >= 2 and norms[k - 2] in lx.ARTICLES)) \
                     or (k - 1) in place_tokens \
                     or toks.clause_start[k] or not (norms[k - 1] in lx.GENERIC_HEADS or self._plain_head(norms, k - 1)):
                 continue
             hs = k - 1
             while hs > 0 and norms[hs - 1] in lx.DETERMINERS and (hs - 1) not in marker_tokens:
                 hs -= 1
-            if hs == k - 1 and norms[hs] != "whatever":
+            if hs == k - 1 and norms[hs] not in lx.WHATEVER:
                 continue  # "the shop the pharmacy ...", not "shop the pharmacy"
             e = anchor.end_tok
             m = None
@@ -1579,9 +1711,9 @@ class ReportAnalyzer:
             for h in range(a - 1, max(-1, a - 9), -1):
                 if h in blocked or toks.clause_start[h + 1] and toks.gaps[h + 1] != "-" or norms[h] in lx.COORDINATORS:
                     break  # (a hyphen inside a word, "cross-passage", ends no clause)
-                if norms[h] in nouns and h > 0 and (norms[h - 1] in lx.ARTICLES | {"whatever"} or h > 1
+                if norms[h] in nouns and h > 0 and (norms[h - 1] in lx.ARTICLES | lx.WHATEVER or h > 1
                                                     and norms[h - 2] in lx.ARTICLES and norms[h - 1].isalpha()
-                                                    and (h - 1) not in blocked) or norms[h] == "whatever":
+                                                    and (h - 1) not in blocked) or norms[h] in lx.WHATEVER:
                     # (one modifier may stand between: "the cross-passage right before RB7", "that little bay")
                     head = h
                     break
@@ -1597,7 +1729,7 @@ class ReportAnalyzer:
                     continue  # "a tank wagon on the siding": the noun goes on, it heads nothing
             else:
                 # "the tube the shaft draws from": the linking verb comes after the anchor
-                if norms[head] == "whatever" or head == 0 or norms[head - 1] not in lx.ARTICLES:
+                if norms[head] in lx.WHATEVER or head == 0 or norms[head - 1] not in lx.ARTICLES:
                     continue
                 while end < len(norms) and end - anchor.end_tok < 6 and end not in blocked \
                         and not toks.clause_start[end] and norms[end] not in lx.COORDINATORS:
@@ -2095,6 +2227,14 @@ class ReportAnalyzer:
         place = next((p for p in ex.places if p.start_tok == j or (p.start_tok >= b and p.start_tok <= j and p.status == "active")), None)
         if place is not None and any(ex.tokens.sentence_start[t] for t in range(b, place.start_tok + 1)):
             place = None  # "diesel all over the road. Toll plaza is ...": a relation does not reach into the next sentence
+        elif place is not None and norms[b - 1] in ("road", "lane", "street", "way"):
+            # "across the lane the surgery's windows are blown in": said where it is ("across the lane" from the
+            # speaker); without "from" the place after it is what is described, not the anchor
+            place = None
+        elif place is not None and b < len(norms) and "," in ex.tokens.gaps[b] and norms[b] not in lx.FILLERS:
+            # "the place the chemist's is built on the side of, the bread place": past the comma the speaker
+            # names the place described, not the relation's anchor
+            place = None
         if place is not None and place.status in ("active", "retracted", "negated"):
             if place.status == "active" or place.start_tok == j:
                 return place, place.end_tok, False
@@ -2561,6 +2701,11 @@ class ReportAnalyzer:
             if toks.sentence_start[p.start_tok] and p.end_tok + 1 < len(norms) \
                     and norms[p.end_tok] in ("reporting", "calling", "speaking") and toks.clause_start[p.end_tok + 1]:
                 ex.places[idx] = replace(p, status="reference", reason="who is calling ('X reporting,'): no claim")
+                continue
+            k = p.start_tok - 1 if p.start_tok >= 1 and norms[p.start_tok - 1] in lx.ARTICLES else p.start_tok
+            if k >= 1 and norms[k - 1] == "from" and toks.sentence_start[k - 1] and p.end_tok < len(norms) \
+                    and toks.gaps[p.end_tok].strip().startswith(":"):
+                ex.places[idx] = replace(p, status="reference", reason="who is calling ('From X:'): no claim")
                 continue
             j = p.start_tok
             while j > 0 and norms[j - 1] in lx.DETERMINERS | lx.FILLERS | {"at", "to", "by", "the", "from"} \
@@ -3095,6 +3240,9 @@ class ReportAnalyzer:
                     and (norms[b] in lx.NUMBER_WORDS | {"one"} or norms[b].isdigit()) and toks.gaps[b] == " " \
                     and (b + 1 == len(norms) or toks.clause_start[b + 1] or norms[b + 1] in lx.COPULAS | {"to", "here"}):
                 continue  # "Control, Hazmat One, we're ...": a call sign
+            if b == a + 1 and a > 0 and norms[a - 1] in lx.ARTICLES and norms[a] in lx.NEGATABLE_STATES \
+                    and toks.tokens[a].text.lower() == norms[a] + "s":
+                continue  # "the stables that back onto it": a plural noun, not the state ("stable")
             start, end = toks.tokens[a].start, toks.tokens[b - 1].end
             if norms[a:b] in lx.LOCK_CUES and not self._access_category():
                 # "The church is locked, nobody's using it": shut, no danger, where no category is about access
@@ -3298,6 +3446,28 @@ class ReportAnalyzer:
             cues = [replace(c, status="retracted", reason=f"its source is {target.text}") if c is last else c
                     for c in cues]
             moved.append(Claim(target, replace(last, reason=f"its source is {target.text}")))
+        def said_after(p: PlaceMention, words: tuple[tuple[str, ...], ...]) -> int | None:
+            """The token of the preposition before ``p`` (articles and fillers skipped) if the words end there."""
+            k = p.start_tok - 1
+            while k >= 0 and norms[k] in lx.ARTICLES | lx.FILLERS and p.start_tok - k <= 3:
+                k -= 1
+            return k if k >= 1 and any(norms[k - len(w) + 1:k + 1] == w for w in words) else None
+
+        # "the triage tent, they've moved it, it was in the square, now it's in the park"
+        for y in [p for p in ex.places if p.status == "active" or p.reason.startswith("restarted")]:
+            k = said_after(y, (("in",), ("at",), ("on",), ("to",)))
+            if k is None or "now" not in norms[max(0, k - 4):k]:
+                continue
+            x = max((p for p in active if p.end_tok < k and p.landmark != y.landmark and y.start_tok - p.end_tok <= 14
+                     and said_after(p, (("was", "in"), ("was", "at"), ("was", "on"))) is not None),
+                    key=lambda p: p.start_tok, default=None)
+            target = y if y.status == "active" else next(
+                (p for p in active if p.landmark == y.landmark and p.start_tok > y.start_tok), None)
+            last = self._last_cue_before(toks, cues, x.start_tok, 1, lambda c: True) if x is not None else None
+            if x is None or target is None or last is None:
+                continue
+            cues = [replace(c, status="retracted", reason=f"moved to {target.text}") if c is last else c for c in cues]
+            moved.append(Claim(target, replace(last, reason=f"was at {x.text}, now at {target.text}")))
         for i, w in enumerate(norms):  # "fire's jumped from the tank farm to the station it feeds": both burn
             if w not in lx.SPREAD_VERBS or norms[i + 1:i + 2] != ("from",):
                 continue
@@ -3504,6 +3674,8 @@ class ReportAnalyzer:
                 continue  # the vocabulary (or a repair) already spoke here; the fallback stays silent
             if any(a <= i < b for i in negated):
                 continue  # "nobody home at the flats": a negated predicate is no claim to guess at
+            if any(b <= ma <= b + 2 for ma, _, _ in ex.markers):
+                continue  # "we were told it had blown, but that's wrong": taken back at once, no claim to guess at
             if any(norms[i:i + len(key)] == key for _, key in _FALSE_ALARM_KEYS for i in range(a, b)):
                 continue  # "it's just fog round the bell tower": a dismissal is no claim to guess at
             if self._says_who_and_where(toks, norms, p):
@@ -3779,6 +3951,12 @@ class ReportAnalyzer:
                 # (a hyphen inside a word, "walk-in", does not open the asking clause)
                 first = opener if start == a and opener > a \
                     else next((i for i in range(start, b) if norms[i] not in lx.FILLERS), start)
+                if norms[first] == "or" and first + 1 < b and norms[first + 1] in lx.QUESTION_OPENERS:
+                    # "is the chapel still open for visits, or is everything shut?": the question asked first goes on
+                    earlier = max((i for i in range(a, start) if toks.clause_start[i] or i == opener
+                                   if norms[i] in lx.QUESTION_OPENERS and i not in marker_starts), default=None)
+                    if earlier is not None:
+                        start, first = earlier, earlier
                 if norms[first] in lx.QUESTION_OPENERS and first not in marker_starts:
                     if not (n + 1 < len(sentences) and self._answered(toks, norms, sentences[n + 1], lx.YES_WORDS)):
                         asked.update(range(start, b))  # (answered "Yes.", the question says what is so)
@@ -4284,9 +4462,13 @@ class ReportAnalyzer:
                         # "the hotel's on fire, well, not the hotel, it's the ware— no, hotel, it is the hotel": the
                         # place the speaker comes back to, past the one put in its stead and taken back
                         nxt = next((q for q in ex.places if q.landmark == p.landmark and q.start_tok > p.start_tok
-                                    and q.status == "active" and any(
+                                    and q.status == "active" and (any(
                                         r.landmark != p.landmark and p.start_tok < r.start_tok < q.start_tok
-                                        and r.status == "retracted" for r in ex.places)), None)
+                                        and r.status == "retracted" for r in ex.places)
+                                        # "no not the bank, the credit— oh it's the same thing, yes, the bank"
+                                        or any(norms[i] == "same" and norms[i + 1:i + 2] in (("thing",), ("place",),
+                                                                                              ("one",), ("building",))
+                                               for i in range(p.end_tok, q.start_tok)))), None)
                 elif nxt is None and p.status == "negated" and p.reason.startswith("negated by 'not"):
                     # "it's not the library that's flooding it's the town hall basement": the place the cleft names
                     nxt = next((q for q in ex.places if q.status == "active" and q.landmark != p.landmark
@@ -4967,7 +5149,9 @@ class ReportAnalyzer:
             return True  # "use it to bring the residents out of the flats": where they leave
         return j >= 0 and norms[j] == "from" and bool(after) and (
             after[0] in ("here", "calling", "speaking")
-            or bool(set(after) & {"walking", "coming", "heading", "moving", "going", "making"}))
+            or bool(set(after) & {"walking", "coming", "heading", "moving", "going", "making"})
+            # ("the kids from the primary school have all been walked over to the police post")
+            or bool(set(after) & (lx.MOVE_VERBS | {"walked", "evacuated", "led", "ferried"})))
 
     @staticmethod
     def _opening(norms: tuple[str, ...], a: int, b: int) -> str:
@@ -5089,6 +5273,30 @@ def _cue_list_into(k: int, later: int, segs: list[tuple[int, int]], seg_cues: di
 _PERSON_WORDS = frozenset(lx.PERSON_NOUNS) | {"pensioner", "residents", "neighbour", "neighbor", "tenant", "tenants",
                                               "lady", "gentleman", "family"}
 _LIST_OPENERS = frozenset({"and", "there", "theres", "is", "are", "lots", "of", "loads", "some", "also", "got", "weve"})
+
+
+def _description_list_items(description: str) -> list[tuple[str, ...]]:
+    """The items of a list a category description gives after a colon or a dash, as token keys of one to
+    three words: "Storm damage - collapsed or loose masonry, fallen trees." -> loose masonry, fallen trees (a
+    single word is left to the vocabulary: "checked", "rock", "vehicle" are too loose alone).
+
+    >>> _description_list_items("Danger from the storm - loose masonry, fallen trees or downed power lines.")
+    [('loose', 'masonry'), ('fallen', 'tree'), ('downed', 'power', 'line')]
+    """
+    out: list[tuple[str, ...]] = []
+    for sentence in re.split(r"(?<=[a-z])\.\s|\.$", description):
+        m = re.search(r":\s|\s[-\u2013\u2014]\s", sentence)
+        if m is None:
+            continue
+        items = re.split(r"\s[-\u2013\u2014]\s", sentence[m.end():])[0]  # (to a second dash: "- that makes it ...")
+        for part in re.split(r",|;|\bor\b|\band\b", items):
+            key = norm_phrase(part)
+            while key and key[0] in lx.DETERMINERS:
+                key = key[1:]
+            if 2 <= len(key) <= 3 and not set(key) & lx.FUNCTION_WORDS and all(len(w) >= 3 for w in key) \
+                    and key not in out:
+                out.append(key)
+    return out
 
 
 def _same_stem(a: str, b: str) -> bool:
@@ -5242,6 +5450,11 @@ def _relation_forms(phrase: str) -> list[tuple[str, bool]]:
     """
     words = phrase.split()
     out: list[tuple[str, bool]] = [(phrase, False)]
+    # "guards the approach to" said short: "the yard the gatehouse guards", "the cross it overlooks"
+    cut = next((i for i, w in enumerate(words) if i >= 1 and w in lx.ARTICLES), None)
+    if cut is not None and words[0].endswith("s") and not words[0].endswith("ss") and words[0] not in lx.GENERIC_VERBS \
+            and words[0] not in lx.COPULAS and not _direction_word(words[0]):
+        out.extend(_relation_forms(" ".join(words[:cut])))
     # direction words: "seaward of" is also "on the sea side of"; "landward of" reads it backwards
     for i, w in enumerate(words):
         if w not in lx.DIRECTION_FAMILIES:

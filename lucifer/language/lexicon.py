@@ -69,9 +69,21 @@ chimney's fallen|chimney has fallen|fallen masonry|fallen tree|tree's fallen|tre
 flattened|smashed in|swaying|fallen in|slipped in|smashed|is going up|s going up|still going up|going up properly|is catching|catching too|caught too|
 no-go|no go|no-go area|no go area|no-go areas|no go areas|a no-go|a no go|a torrent|raging torrent|like a torrent|
 up to the gutters|is up to the|right up to the|up to the windows|up to the second-floor windows|
+water coming through the ceiling|water through the ceiling|water pouring through the ceiling|
+water coming through the roof|ceiling's leaking|ceiling is leaking|water pouring through|is bending|it's bending|is fall down|has fall down|fallen down|carbon monoxide|carbon monoxide alarm|co alarm|
+roof is going up|roof's going up|roofs going up|thatch is going up|thatch's going up|thatch going up|
+fallen oak|fallen beech|fallen ash|fallen branch|fallen branches|peeled off|been peeled off|peeled back|lost its roof|lost their roof|lost their roofs|lost the roof|
+lost its leads|lost the leads|roof lifted|lifted clean off|blown clean off|blown off|off its hinges|
+pulled up by the roots|uprooted|windthrown|windthrow|blown down|open to the sky|rain's coming in|rain is coming in|
+rain coming straight in|rain's coming straight in|rain pouring in|rain is pouring|
 """.replace("\n", ""))
 
 _add(DESIRABLE, """
+put the families in there|put everyone in there|
+put them in there|put people in there|
+air's clean|air is clean|the air is clean|clean air|air's okay|air is okay|air's ok|air is ok|air's fine|air is fine|
+air is good|air's good|good spot|a good spot|good place|a good place|
+muster|mustering|we'll muster|we're mustering|mustering everyone|mustering the staff|
 safe|safe zone|safe area|safe to enter|safe to shelter|safe to pass|safe passage|safe route|
 clear|all clear|cleared|clear now|secure|secured|secure now|sheltering|shelter|shelter point|
 evacuation point|evacuation centre|evacuation center|rally point|rendezvous point|
@@ -98,6 +110,11 @@ sending people there|moving evacuees there|send them there|
 """.replace("\n", ""))
 
 _add(CRITICAL, """
+need to get them out|need hands to get them out|to get them out|can't get them out|cannot get them out|
+toddlers inside|children inside|kids inside|still has children inside|
+ankle is broken|ankle's broken|wrist is broken|wrist's broken|hip is broken|leg's broken|arm's broken|
+can't put any weight|cannot put any weight|can't put weight|can't weight bear|cannot weight bear|heat exhaustion|
+heatstroke|heat stroke|
 went into labour|gone into labour|in labour|needs a midwife|sitting on the roof|sitting on roofs|sitting on caravan roofs|
 on their roofs|lady fallen|old lady fallen|woman fallen|man fallen|old man fallen|someone's fallen|she's fallen|he's fallen|
 need carrying out|needs carrying out|by stretcher|stretcher case|one's collapsed|one has collapsed|one of them's collapsed|one of them has collapsed|coming out coughing|she's still up there|he's still up there|they're still up there|still up there|doesn't walk well|can't walk well|arm deformed|leg deformed|query spinal|spinal injury|suspected fracture|query fracture|fractured|lady gone down|
@@ -194,7 +211,9 @@ CANCEL_AFTER = ["turned up", "has turned up", "s turned up", "turned up safe", "
                 "no sign of anyone", "no sign of anybody", "no one there", "nobody there",
                 "off now", "s off now", "is off", "s off", "shut it off", "turned it off", "switched off",
                 "switched it off", "sealed", "been sealed", "plugged", "been plugged", "is sorted", "s sorted", "been sorted",
-                "all sorted", "sorted now"] + [
+                "all sorted", "sorted now", "neutralised", "neutralized", "been neutralised", "been neutralized",
+                "stood down", "have stood down", "has stood down", "was there already", "were there already",
+                "been there for years", "old damage", "no new damage"] + [
                 f"{verb} {who} out" for verb in ("got", "gotten", "taken", "took", "pulled", "brought")
                 for who in ("him", "her", "them", "everyone", "everybody", "all of them", "the casualty")] + [
                 "nobody was in", "no one was in", "nobody was inside", "no one was inside", "walked off",
@@ -441,9 +460,9 @@ GENERIC_HEADS = {
     "establishment", "complex", "crossing", "footbridge", "landing", "jetty", "wharf", "quay", "cottage", "cottages", "church", "school", "clinic", "restaurant", "pub", "bar", "market",
     "bridge", "mill", "plant", "factory", "workshop", "cabin", "dock", "pier", "square",
     "park", "field", "ground", "grounds", "point", "thing", "bit", "side", "corner", "room",
-    "space", "green", "lawn", "garden", "gardens", "road", "street", "alley", "terrace", "plot", "land", "apartments",
+    "space", "green", "lawn", "garden", "gardens", "road", "street", "lane", "alley", "terrace", "plot", "land", "apartments",
     "flats", "bay", "wing", "hotel", "inn", "library", "hospital", "quarter", "section", "zone", "ones",
-    "neighbour", "neighbor", "door", "location", "address", "greenspace", "premise", "whatever", "what", "works", "work",
+    "neighbour", "neighbor", "door", "location", "address", "greenspace", "premise", "whatever", "wherever", "whichever", "what", "works", "work",
     "row", "parade", "arcade", "kiosk", "stall", "lodge", "chapel", "compartment", "tent", "deck", "campsite",
 }
 
@@ -680,7 +699,7 @@ BODY_PARTS = {"arm", "arms", "leg", "legs", "hand", "hands", "head", "face", "fo
 
 # Members of the public: "<a|two|there's> <person> <at|in|under|clinging...>" is a casualty claim.
 LAY_PERSONS = {"man", "woman", "person", "people", "someone", "somebody", "child", "children", "kid", "baby", "kiddie",
-               "bairn", "lass",
+               "bairn", "lass", "chap", "gent", "husband", "wife", "son", "daughter", "visitor", "tourist",
                "resident", "fella", "guy", "bloke", "lady", "girl", "boy", "family", "occupant", "pensioner",
                "teenager", "toddler", "infant", "couple", "mother", "father", "gentleman", "walker", "diver",
                "swimmer", "guest", "customer", "elderly", "youngster", "male", "female", "casualty", "adult",
@@ -783,7 +802,7 @@ RELATIVE_COPULAS = {("that", "is"), ("which", "is"), ("that", "s"), ("which", "s
 # all the kind's words: "split open" is a collapse like "collapsed" and "cracked", whatever MiniLM
 # makes of the two words alone. Ambiguous words ("leak", "danger", "blocked") belong to no kind.
 # A kind of danger no category description names goes where its nearest kind goes.
-KIND_FALLBACK = {"smoke": "fire"}
+KIND_FALLBACK = {"smoke": "fire", "storm": "collapse"}
 DANGER_KINDS: dict[str, list[str]] = {
     "crowd": ["crowd crush", "crowd surge", "surge at", "surge in", "surging", "crammed", "packed solid", "pressed flat",
               "pressed against", "pushed up against", "crushing", "pile-up", "pile up", "overcrowded", "stampede",
@@ -882,6 +901,8 @@ DANGER_KINDS: dict[str, list[str]] = {
                 "fast-flowing water", "ripping through"],
     "electric": ["live cabling", "live cable", "live cables", "floor's live", "floor is live", "live wire", "live wires", "power line down", "power lines down", "downed lines", "sparking",
                  "sparks", "sparks everywhere", "electrified", "arcing", "electrical hazard", "exposed wiring"],
+    "storm": ["storm damage", "wind damage", "storm damaged", "windthrow", "windthrown", "uprooted", "blown down",
+              "lifted clean off"],
     "access": ["impassable", "blocked off", "no access", "no vehicle access", "no way in", "no way through",
                "no way onto", "inaccessible", "not passable", "no through route", "can't get in", "cannot get in",
                "can't get into", "cannot get into", "can't get through", "cannot get through", "can't reach",
@@ -980,3 +1001,44 @@ SPREAD_VERBS = {"spread", "spreading", "jumped", "jumping", "moved", "moving", "
 # Written abbreviations of the words descriptions and names are built from ("the bldg nxt to town hall").
 ABBREVIATIONS = {"bldg": "building", "bldgs": "building", "nxt": "next", "opp": "opposite", "mkt": "market",
                  "sq": "square", "rptd": "reported", "ppl": "people", "bhd": "behind", "adj": "adjacent"}
+
+# Free relatives that head a description of a place: "whatever the creche looks out onto", "wherever the
+# store takes its deliveries through"
+WHATEVER = frozenset({"whatever", "wherever", "whichever"})
+
+# Vague heads a name's first word can carry instead of the name's own head: "the generator place"
+VAGUE_PLACE_HEADS = frozenset({"place", "building", "site", "thing", "bit", "area", "one", "unit", "spot"})
+
+# People a place's name can modify ("the pharmacy's owner", "the bakery staff") who can be the ones hurt
+PEOPLE_OF_PLACE_WORDS = frozenset({"staff", "manager", "owner", "workers", "worker", "cook", "chef", "caretaker",
+                                   "porter", "receptionist", "warden", "supervisor", "foreman", "lads", "lad",
+                                   "guys", "guy", "blokes", "bloke", "boys", "boy", "fellas", "fella", "chaps", "chap"})
+
+# Verbs too general to stand for a relation on their own when its name is said short ("sits on the corner of")
+GENERIC_VERBS = frozenset({"sits", "stands", "lies", "gets", "takes", "goes", "has", "is", "does", "makes", "puts",
+                           "runs", "comes", "keeps", "holds", "looks", "leads", "opens", "gives", "shares"})
+
+# Dangers a KB counts only where a category's description names them (the triggers, as phrases of the description).
+DESCRIBED_KINDS: dict[str, tuple[frozenset[str], list[str]]] = {
+    "power": (frozenset({"power failure", "power cut", "power outage", "loss of power", "outage", "blackout",
+                         "building services", "failed services"}),
+              ["lost power", "lost all power", "no power", "power's out", "power is out", "power's gone",
+               "power has gone", "power cut", "power failure", "power outage", "lights are out", "lights have gone",
+               "lights went out", "lights have gone out", "in the dark", "blackout"]),
+}
+
+# More phrases of the kinds above that read as their kind but do not vote on which category a kind is (so the
+# kinds map onto a KB's categories as they did before these were added).
+DANGER_KIND_EXTRA: dict[str, list[str]] = {
+    "storm": ["peeled off", "been peeled off", "peeled back", "lost its roof", "lost their roof", "lost their roofs",
+              "lost the roof", "lost its leads", "lost the leads", "roof lifted", "blown clean off", "blown off",
+              "off its hinges", "pulled up by the roots", "open to the sky", "rain's coming in", "rain is coming in",
+              "rain coming straight in", "rain's coming straight in", "rain pouring in", "rain is pouring"],
+    "fire": ["roof is going up", "roof's going up", "roofs going up", "thatch is going up", "thatch's going up",
+             "thatch going up"],
+    "gas": ["carbon monoxide", "carbon monoxide alarm", "co alarm"],
+    "collapse": ["is bending", "it's bending", "is fall down", "has fall down", "fallen down"],
+    "water": ["water coming through the ceiling", "water through the ceiling", "water pouring through the ceiling",
+              "water coming through the roof", "ceiling's leaking", "ceiling is leaking", "water pouring through"],
+    "access": ["fallen oak", "fallen beech", "fallen ash", "fallen branch", "fallen branches"],
+}
