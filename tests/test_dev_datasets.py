@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev35) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev36) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -52,6 +52,8 @@ MARKET_TOWN = ROOT / "knowledge_bases" / "market_town"
 ISLAND = ROOT / "knowledge_bases" / "island_harbour"
 CASTLE_TOWN = ROOT / "knowledge_bases" / "castle_town"
 SCIENCE_PARK = ROOT / "knowledge_bases" / "science_park"
+RAIL_YARD = ROOT / "knowledge_bases" / "rail_yard"
+WINE_ESTATE = ROOT / "knowledge_bases" / "wine_estate"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -200,6 +202,9 @@ SETS = {
                             {"standard": 20, "messy": 20, "advanced_messy": 20}),
     "dev35/castle_town": _set("dev35/castle_town.jsonl", CASTLE_TOWN, "ct35", THIRTY),
     "dev35/science_park": _set("dev35/science_park.jsonl", SCIENCE_PARK, "sp35", THIRTY),
+    "dev36/market_square": _set("dev36/market_square.jsonl", MARKET_SQUARE, "d36m", THIRTY),
+    "dev36/rail_yard": _set("dev36/rail_yard.jsonl", RAIL_YARD, "ry36", THIRTY),
+    "dev36/wine_estate": _set("dev36/wine_estate.jsonl", WINE_ESTATE, "we36", THIRTY),
 }
 
 
