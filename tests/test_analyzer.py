@@ -2195,6 +2195,16 @@ def test_dev34_riverbend_phenomena(kb_analyzers, text, expected):
     # what is taken back at once ("but that's wrong") gives MiniLM's guess nothing to read
     ("We were told the thing that shares a fence with the generator compound had blown, but that's wrong, it's "
      "holding.", []),
+    # "the nursery kids": the people of a place, not the place; a stretcher needed; a two-hop chain
+    ("We've got the nursery kids out on whatever the creche looks out onto. It's clear and it's safe.",
+     [("central lawn", "refuge_point")]),
+    ("Stretcher needed at whatever's tucked against the deck the blue deck ramps down to.",
+     [("bike shelter", "rescue_needed")]),
+    # "the way into X" between a relation and its anchor
+    ("The post guarding the way into reception, that's us, we've got a woman here with a head wound.",
+     [("security lodge", "rescue_needed")]),
+    # a power cut is no danger where the KB's danger is only what follows from it
+    ("so, power's out everywhere, and the generator compound, they didn't kick in, that's not a damage thing", []),
 ])
 def test_dev35_science_park_phenomena(kb_analyzers, text, expected):
     assert claims(kb_analyzers["science_park"], text) == expected
@@ -2229,6 +2239,9 @@ def test_dev35_science_park_phenomena(kb_analyzers, text, expected):
     ("uh, disregard what I said about the keep, the crack in the keep was there already, there's no new damage", []),
     ("Wind's took half the roof off the great barn, and there's sheets of tin strewn all up the lane from it.",
      [("tithe barn", "storm_damage")]),
+    # "its gable" points back to the barn, the anchor of "leans against the gable of"
+    ("Tithe barn's still burning, and we've got a firefighter down in the little store leaning against its gable.",
+     [("granary", "stranded"), ("tithe barn", "ablaze")]),
 ])
 def test_dev35_castle_town_phenomena(kb_analyzers, text, expected):
     assert claims(kb_analyzers["castle_town"], text) == expected
@@ -2240,6 +2253,10 @@ def test_dev35_castle_town_phenomena(kb_analyzers, text, expected):
     ("The drugstore's owner is trapped, and the place it's stuck onto is full of smoke.",
      [("bakery", "hazard"), ("pharmacy", "victim")]),
     ("The bakery staff are safe at the library.", [("library", "safe_zone")]),
+    # "they're out" puts out flames as well as people
+    ("We had flames at the bakery earlier but they're out now, the baker's just sweeping up, nobody got hurt", []),
+    # residents who report a fire are no people of the place's name taken elsewhere
+    ("Tower block residents report a fire on the fourth floor.", [("apartment block", "hazard")]),
     # "it was in X, now it's in Y": the facility moved
     ("uh the triage tent, they've moved it, it was in the square, now it's in the — the park, yeah, the park",
      [("park", "safe_zone")]),

@@ -596,8 +596,11 @@ class ReportAnalyzer:
         places.extend(self._partial_names(toks, norms, {i for p in places for i in range(p.start_tok, p.end_tok)}))
         places.extend(self._head_names(toks, norms, {i for p in places for i in range(p.start_tok, p.end_tok)},
                                        {b for _, b, _ in all_relations}))
+        rel_ends = {b for a, b, _ in all_relations if b - a >= 2}
+        rel_ends |= {b + 3 for _, b, _ in all_relations if norms[b:b + 1] == ("the",) and b + 3 < len(norms)
+                     and norms[b + 1] in lx.APPROACH_NOUNS and norms[b + 2] in ("into", "to", "of", "for")}
         places.extend(self._modifier_names(toks, norms, {i for p in places for i in range(p.start_tok, p.end_tok)},
-                                           {b for a, b, _ in all_relations if b - a >= 2}))
+                                           rel_ends))
         places.extend(self._misheard_names(toks, norms, {i for p in places for i in range(p.start_tok, p.end_tok)},
                                            {i for a, b, _ in all_cues for i in range(a, b)}))
         places.extend(self._definite_heads(toks, norms, places))
@@ -2212,6 +2215,10 @@ class ReportAnalyzer:
                 and norms[j + 2] == "of" and (norms[j] == "the" or any(p.end_tok <= b for p in ex.places)):
             j += 3  # "built onto the side of the mill": the part of the anchor
             b = j
+        if norms[j:j + 1] == ("the",) and j + 3 < len(norms) and norms[j + 1] in lx.APPROACH_NOUNS \
+                and norms[j + 2] in ("into", "to", "of", "for") and not any(p.start_tok == j + 1 for p in ex.places):
+            j += 3  # "the post guarding the way into reception": the way into it, the anchor after
+            b = j
         # "the shop attached to it's got a live wire": "it's" right after the relation is "it has", the pronoun
         its = b < len(norms) and norms[b] == "its" and any(q in ex.tokens.tokens[b].text for q in ("'", "’"))
         while j < len(norms) and (norms[j] in lx.DETERMINERS or norms[j] in lx.FILLERS or norms[j] in ("my", "your"))\
@@ -2239,7 +2246,8 @@ class ReportAnalyzer:
             if place.status == "active" or place.start_tok == j:
                 return place, place.end_tok, False
         if j > b and norms[j - 1] in ("its", "their") and j < len(norms) and norms[j] in (
-                "side", "back", "wall", "rear", "front", "end", "corner", "left", "right", "north", "south", "east", "west"):
+                "side", "back", "wall", "rear", "front", "end", "corner", "gable", "left", "right", "north", "south", "east",
+                "west"):
             # "the shop attached to its side": the possessive points back to the last place
             before = [p for p in ex.places if p.end_tok <= b]
             if before:
@@ -4185,8 +4193,10 @@ class ReportAnalyzer:
                     nxt += 1
                 if h[1] == "no longer" and nxt in ends:
                     break  # "the evacuation point is no longer the town hall": the place is negated, not the cue
-                if h[1] in lx.CANCEL_PEOPLE_ONLY and self.kb.category_by_name[cue.category].role != Role.CRITICAL:
+                if h[1] in lx.CANCEL_PEOPLE_ONLY and self.kb.category_by_name[cue.category].role != Role.CRITICAL \
+                        and not (h[1] in ("they're out", "theyre out") and norms[cue.end_tok - 1] in lx.PLURAL_FIRES):
                     break  # "gas leak at the police post, they evacuated": people left, the leak stays
+                    # (but "flames at the bakery earlier but they're out now": the flames are out)
                 if h[1] in lx.CANCEL_MISSING_ONLY and not missing:
                     break  # "casualty at the bank, we found him under the desk": found, not safe
                 if k > 0 and (norms[k - 1] in ("not", "nt", "isnt", "hasnt", "wasnt", "never")

@@ -110,6 +110,7 @@ sending people there|moving evacuees there|send them there|
 """.replace("\n", ""))
 
 _add(CRITICAL, """
+stretcher needed|need a stretcher|needs a stretcher|stretcher required|stretcher to|
 need to get them out|need hands to get them out|to get them out|can't get them out|cannot get them out|
 toddlers inside|children inside|kids inside|still has children inside|
 ankle is broken|ankle's broken|wrist is broken|wrist's broken|hip is broken|leg's broken|arm's broken|
@@ -523,7 +524,8 @@ CARRIAGE_WORDS = {"car", "cars", "carriage", "carriages", "cabin", "cabins", "go
 MODIFIED_BY = {"team", "crew", "unit", "squad", "staff", "manager", "owner", "workers", "worker", "group", "cook",
                "chef", "caretaker", "porter", "receptionist", "warden", "supervisor", "foreman",
                "side", "car", "truck", "van", "bus", "sign", "road", "street", "lane",
-               "lads", "lad", "guys", "guy", "blokes", "bloke", "boys", "boy", "fellas", "fella", "chaps", "chap", "lot"}
+               "lads", "lad", "guys", "guy", "blokes", "bloke", "boys", "boy", "fellas", "fella", "chaps", "chap", "lot",
+               "kids", "kid", "children", "child", "pupils", "pupil"}
 
 # Words after a place that name a part of it, not another thing ("the surgery car park").
 PART_OF_PLACE = {("car", "park"), ("car", "parks")}
@@ -1012,7 +1014,8 @@ VAGUE_PLACE_HEADS = frozenset({"place", "building", "site", "thing", "bit", "are
 # People a place's name can modify ("the pharmacy's owner", "the bakery staff") who can be the ones hurt
 PEOPLE_OF_PLACE_WORDS = frozenset({"staff", "manager", "owner", "workers", "worker", "cook", "chef", "caretaker",
                                    "porter", "receptionist", "warden", "supervisor", "foreman", "lads", "lad",
-                                   "guys", "guy", "blokes", "bloke", "boys", "boy", "fellas", "fella", "chaps", "chap"})
+                                   "guys", "guy", "blokes", "bloke", "boys", "boy", "fellas", "fella", "chaps", "chap",
+                                   "kids", "kid", "children", "child", "pupils", "pupil"})
 
 # Verbs too general to stand for a relation on their own when its name is said short ("sits on the corner of")
 GENERIC_VERBS = frozenset({"sits", "stands", "lies", "gets", "takes", "goes", "has", "is", "does", "makes", "puts",
@@ -1020,8 +1023,7 @@ GENERIC_VERBS = frozenset({"sits", "stands", "lies", "gets", "takes", "goes", "h
 
 # Dangers a KB counts only where a category's description names them (the triggers, as phrases of the description).
 DESCRIBED_KINDS: dict[str, tuple[frozenset[str], list[str]]] = {
-    "power": (frozenset({"power failure", "power cut", "power outage", "loss of power", "outage", "blackout",
-                         "building services", "failed services"}),
+    "power": (frozenset({"outage", "blackout", "building services", "failed services"}),
               ["lost power", "lost all power", "no power", "power's out", "power is out", "power's gone",
                "power has gone", "power cut", "power failure", "power outage", "lights are out", "lights have gone",
                "lights went out", "lights have gone out", "in the dark", "blackout"]),
@@ -1042,3 +1044,9 @@ DANGER_KIND_EXTRA: dict[str, list[str]] = {
               "water coming through the roof", "ceiling's leaking", "ceiling is leaking", "water pouring through"],
     "access": ["fallen oak", "fallen beech", "fallen ash", "fallen branch", "fallen branches"],
 }
+
+# Nouns for the way to a place, between a relation and its anchor ("guarding the way into reception")
+APPROACH_NOUNS = frozenset({"way", "approach", "approaches", "entrance", "road", "path", "route", "gate", "door"})
+
+# Dangers said in the plural that "they're out" can put out ("flames at the bakery but they're out now")
+PLURAL_FIRES = frozenset({"flames", "flame", "fires", "fire"})
