@@ -2293,6 +2293,8 @@ def test_hesitation_chains(kb_analyzers, text, expected):
      [("granary", "shelter"), ("mill", "threat")]),
     ("I'm standing on the common, uh, and across the lane the — the surgery's windows are all blown in.",
      [("surgery", "threat")]),
+    # a clipped first word names a place only where it is no word of its own: "the car park" is no "caravan park"
+    ("Smoke drifting over the car park.", []),
     # "whatever" past a hesitation ("whatever the, er, the grain store is built against")
     ("Fire in whatever the, er, the grain store is built against.", [("mill", "threat")]),
 ])

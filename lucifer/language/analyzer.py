@@ -989,7 +989,7 @@ class ReportAnalyzer:
                         rel_ends: set[int]) -> list[PlaceMention]:
         """"the generator place" for "generator compound", "guarding the approach to reception" for "reception
         pavilion", "the bio block" for "biosciences block": the first word of a multi-word name that no other
-        landmark's name holds, with a vague head after it ("place", "building", "site") or said bare as the
+        landmark's name holds, with a vague head after it ("place", "site", "spot") or said bare as the
         anchor of a relation phrase (``rel_ends``: where the report's relation phrases end); or that word
         clipped, with the name's own last word. (Said bare anywhere else it is too often a plain word: "the
         overflow" of a chapel, "the giraffes" of a giraffe paddock.)"""
@@ -1012,6 +1012,7 @@ class ReportAnalyzer:
                         firsts[w] = lm.name
             self._first_words = firsts
         if getattr(self, "_clipped_forms", None) is None:
+            known = self.embedder.vocabulary() if self.embedder is not None else frozenset()
             # "the bio block" for "biosciences block": a clipped first word, then the name's own last word
             clipped: dict[tuple[str, str], set[str]] = {}
             for lm in self.kb.landmarks:
@@ -1019,7 +1020,9 @@ class ReportAnalyzer:
                     words = [x for x in name_words(form) if x not in lx.ARTICLES]
                     if len(words) == 2 and len(words[0]) >= 6:
                         for n in range(3, len(words[0]) - 2):
-                            clipped.setdefault((words[0][:n], words[1]), set()).add(lm.name)
+                            # (a clipping, not a word of its own: "the car park" is no "caravan park")
+                            if words[0][:n] in lx.CLIPPINGS or words[0][:n] not in known:
+                                clipped.setdefault((words[0][:n], words[1]), set()).add(lm.name)
             self._clipped_forms = {k: next(iter(v)) for k, v in clipped.items() if len(v) == 1}
         out = []
         for i in range(1, len(norms) - 1):
@@ -1032,8 +1035,13 @@ class ReportAnalyzer:
             if w not in self._first_words or i in taken or i == 0:
                 continue
             nxt = i + 1
+            after = nxt + 1
             if nxt < len(norms) and norms[nxt] in lx.VAGUE_PLACE_HEADS and not toks.clause_start[nxt] \
-                    and norms[i - 1] in lx.ARTICLES and nxt not in taken:
+                    and norms[i - 1] in lx.ARTICLES and nxt not in taken \
+                    and (after >= len(norms) or toks.clause_start[after] or norms[after] in lx.COPULAS) \
+                    and not (after < len(norms) and self._relations.match_at(norms, after) is not None):
+                # (only a noun phrase that ends there: "the ferry building upstream of the weir" is a description
+                # for the relation passes, headed by "building")
                 out.append(self._mention(toks, i - 1, nxt + 1, self._first_words[w]))
                 continue
             j = i - 1 if norms[i - 1] == "the" else i

@@ -1008,8 +1008,9 @@ ABBREVIATIONS = {"bldg": "building", "bldgs": "building", "nxt": "next", "opp": 
 # store takes its deliveries through"
 WHATEVER = frozenset({"whatever", "wherever", "whichever"})
 
-# Vague heads a name's first word can carry instead of the name's own head: "the generator place"
-VAGUE_PLACE_HEADS = frozenset({"place", "building", "site", "thing", "bit", "area", "one", "unit", "spot"})
+# Vague heads a name's first word can carry instead of the name's own head: "the generator place" (not "building" or
+# "one": "the ambulance building" can be a description of another place, found by the relation passes)
+VAGUE_PLACE_HEADS = frozenset({"place", "site", "spot", "thing", "bit"})
 
 # People a place's name can modify ("the pharmacy's owner", "the bakery staff") who can be the ones hurt
 PEOPLE_OF_PLACE_WORDS = frozenset({"staff", "manager", "owner", "workers", "worker", "cook", "chef", "caretaker",
@@ -1050,3 +1051,7 @@ APPROACH_NOUNS = frozenset({"way", "approach", "approaches", "entrance", "road",
 
 # Dangers said in the plural that "they're out" can put out ("flames at the bakery but they're out now")
 PLURAL_FIRES = frozenset({"flames", "flame", "fires", "fire"})
+
+# Clipped words that stand for a longer first word of a name ("the bio block", "the sci park"), though they
+# are words of their own too
+CLIPPINGS = frozenset({"bio", "sci", "tech", "med", "lab", "admin", "chem", "maths", "eng", "vet", "physio"})
