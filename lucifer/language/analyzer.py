@@ -985,6 +985,43 @@ class ReportAnalyzer:
                 taken_now.update((i, i + 1))
         return out
 
+    @functools.cached_property
+    def _first_words(self) -> dict[str, str]:
+        """First words of multi-word names that only one landmark's names hold (for ``_modifier_names``)."""
+        owners: dict[str, set[str]] = {}
+        for lm in self.kb.landmarks:
+            for form in lm.surface_forms:
+                for w in name_words(form):
+                    owners.setdefault(w, set()).add(lm.name)
+        cue_words = {key[0] for key in self._cue_keys() if len(key) == 1}
+        rel_words = {w for rel in self.kb.relations for w in rel.phrase.split()}
+        firsts: dict[str, str] = {}
+        for lm in self.kb.landmarks:
+            for form in lm.surface_forms:
+                words = [w for w in name_words(form) if w not in lx.ARTICLES]
+                w = words[0] if len(words) >= 2 else ""
+                if len(w) >= 5 and w.isalpha() and owners.get(w) == {lm.name} and w not in cue_words \
+                        and w not in rel_words and w not in lx.FUNCTION_WORDS | lx.DESCRIPTIVE_WORDS \
+                        | lx.GENERIC_HEADS | lx.STOREY_WORDS | lx.PART_NOUNS and not _direction_word(w):
+                    firsts[w] = lm.name
+        return firsts
+
+    @functools.cached_property
+    def _clipped_forms(self) -> dict[tuple[str, str], str]:
+        """(clipped first word, last word) of two-word names, for one landmark each ("bio", "block")."""
+        known = self.embedder.vocabulary() if self.embedder is not None else frozenset()
+        # "the bio block" for "biosciences block": a clipped first word, then the name's own last word
+        clipped: dict[tuple[str, str], set[str]] = {}
+        for lm in self.kb.landmarks:
+            for form in lm.surface_forms:
+                words = [x for x in name_words(form) if x not in lx.ARTICLES]
+                if len(words) == 2 and len(words[0]) >= 6:
+                    for n in range(3, len(words[0]) - 2):
+                        # (a clipping, not a word of its own: "the car park" is no "caravan park")
+                        if words[0][:n] in lx.CLIPPINGS or words[0][:n] not in known:
+                            clipped.setdefault((words[0][:n], words[1]), set()).add(lm.name)
+        return {k: next(iter(v)) for k, v in clipped.items() if len(v) == 1}
+
     def _modifier_names(self, toks: Tokens, norms: tuple[str, ...], taken: set[int],
                         rel_ends: set[int]) -> list[PlaceMention]:
         """"the generator place" for "generator compound", "guarding the approach to reception" for "reception
@@ -993,37 +1030,6 @@ class ReportAnalyzer:
         anchor of a relation phrase (``rel_ends``: where the report's relation phrases end); or that word
         clipped, with the name's own last word. (Said bare anywhere else it is too often a plain word: "the
         overflow" of a chapel, "the giraffes" of a giraffe paddock.)"""
-        if getattr(self, "_first_words", None) is None:
-            owners: dict[str, set[str]] = {}
-            for lm in self.kb.landmarks:
-                for form in lm.surface_forms:
-                    for w in name_words(form):
-                        owners.setdefault(w, set()).add(lm.name)
-            cue_words = {key[0] for key in self._cue_keys() if len(key) == 1}
-            rel_words = {w for rel in self.kb.relations for w in rel.phrase.split()}
-            firsts: dict[str, str] = {}
-            for lm in self.kb.landmarks:
-                for form in lm.surface_forms:
-                    words = [w for w in name_words(form) if w not in lx.ARTICLES]
-                    w = words[0] if len(words) >= 2 else ""
-                    if len(w) >= 5 and w.isalpha() and owners.get(w) == {lm.name} and w not in cue_words \
-                            and w not in rel_words and w not in lx.FUNCTION_WORDS | lx.DESCRIPTIVE_WORDS \
-                            | lx.GENERIC_HEADS | lx.STOREY_WORDS | lx.PART_NOUNS and not _direction_word(w):
-                        firsts[w] = lm.name
-            self._first_words = firsts
-        if getattr(self, "_clipped_forms", None) is None:
-            known = self.embedder.vocabulary() if self.embedder is not None else frozenset()
-            # "the bio block" for "biosciences block": a clipped first word, then the name's own last word
-            clipped: dict[tuple[str, str], set[str]] = {}
-            for lm in self.kb.landmarks:
-                for form in lm.surface_forms:
-                    words = [x for x in name_words(form) if x not in lx.ARTICLES]
-                    if len(words) == 2 and len(words[0]) >= 6:
-                        for n in range(3, len(words[0]) - 2):
-                            # (a clipping, not a word of its own: "the car park" is no "caravan park")
-                            if words[0][:n] in lx.CLIPPINGS or words[0][:n] not in known:
-                                clipped.setdefault((words[0][:n], words[1]), set()).add(lm.name)
-            self._clipped_forms = {k: next(iter(v)) for k, v in clipped.items() if len(v) == 1}
         out = []
         for i in range(1, len(norms) - 1):
             key = (norms[i], norms[i + 1])
