@@ -24,6 +24,8 @@ DATASETS = {
     "heldout/advanced_messy.jsonl": ("knowledge_base", 50),
     "heldout_b/market_square.jsonl": ("knowledge_base", 50),
     "heldout_b/riverbend.jsonl": ("knowledge_bases/riverbend", 20),
+    "heldout_c/market_square.jsonl": ("knowledge_base", 50),
+    "heldout_c/riverbend.jsonl": ("knowledge_bases/riverbend", 20),
 }
 
 
