@@ -307,8 +307,7 @@ class ReportAnalyzer:
         # KB's own words for its category, where the vocabulary has no word yet
         for cat in self.kb.categories:
             for key in _description_list_items(cat.description):
-                if key not in entries and not self._cues.match_at(key, 0):
-                    entries[key] = (cat.name, "category")
+                entries.setdefault(key, (cat.name, "category"))
         # 2c. dangers only some KBs count, said in words their descriptions use ("failed building services ...
         # live or arcing electrics": "the lights are out" is one there, no danger in a town square)
         undesirable = self.kb.categories_with_role(Role.UNDESIRABLE)
@@ -597,8 +596,7 @@ class ReportAnalyzer:
         places.extend(self._head_names(toks, norms, {i for p in places for i in range(p.start_tok, p.end_tok)},
                                        {b for _, b, _ in all_relations}))
         rel_ends = {b for a, b, _ in all_relations if b - a >= 2}
-        rel_ends |= {b + 3 for _, b, _ in all_relations if norms[b:b + 1] == ("the",) and b + 3 < len(norms)
-                     and norms[b + 1] in lx.APPROACH_NOUNS and norms[b + 2] in ("into", "to", "of", "for")}
+        rel_ends |= {e for _, b, _ in all_relations if (e := _past_approach(norms, b)) > b}
         places.extend(self._modifier_names(toks, norms, {i for p in places for i in range(p.start_tok, p.end_tok)},
                                            rel_ends))
         places.extend(self._misheard_names(toks, norms, {i for p in places for i in range(p.start_tok, p.end_tok)},
@@ -896,17 +894,15 @@ class ReportAnalyzer:
         ``rel_ends``: where the report's relation phrases end."""
         if not hasattr(self, "_heads"):
             owners: dict[str, set[str]] = {}
-            words_elsewhere: dict[str, set[str]] = {}
             for lm in self.kb.landmarks:
                 for form in lm.surface_forms:
                     words = name_words(form)
-                    for w in words:
-                        words_elsewhere.setdefault(w, set()).add(lm.name)
                     if len(words) >= 2:
                         owners.setdefault(words[-1], set()).add(lm.name)
+            words_elsewhere = self._name_word_owners
             # (a word of a longer cue still heads a name: "the well" is the town well, "well alight" aside)
-            cue_words = {key[0] for key in self._cue_keys() if len(key) == 1}
-            rel_words = {w for rel in self.kb.relations for w in rel.phrase.split()}
+            cue_words = self._single_cue_words
+            rel_words = self._relation_name_words
             # (nor a word the KB's descriptions use of other landmarks too: "ride" of "splash ride", where the
             # coaster and the ghost house are rides as well)
             described: dict[str, set[str]] = {}
@@ -986,15 +982,31 @@ class ReportAnalyzer:
         return out
 
     @functools.cached_property
-    def _first_words(self) -> dict[str, str]:
-        """First words of multi-word names that only one landmark's names hold (for ``_modifier_names``)."""
+    def _name_word_owners(self) -> dict[str, set[str]]:
+        """Every word of every landmark's names, with the landmarks whose names hold it."""
         owners: dict[str, set[str]] = {}
         for lm in self.kb.landmarks:
             for form in lm.surface_forms:
                 for w in name_words(form):
                     owners.setdefault(w, set()).add(lm.name)
-        cue_words = {key[0] for key in self._cue_keys() if len(key) == 1}
-        rel_words = {w for rel in self.kb.relations for w in rel.phrase.split()}
+        return owners
+
+    @functools.cached_property
+    def _single_cue_words(self) -> set[str]:
+        """Cues of one word ("flooded"): no word of a name that could be one of them names the place."""
+        return {key[0] for key in self._cue_keys() if len(key) == 1}
+
+    @functools.cached_property
+    def _relation_name_words(self) -> set[str]:
+        """The words of the KB's relation names."""
+        return {w for rel in self.kb.relations for w in rel.phrase.split()}
+
+    @functools.cached_property
+    def _first_words(self) -> dict[str, str]:
+        """First words of multi-word names that only one landmark's names hold (for ``_modifier_names``)."""
+        owners = self._name_word_owners
+        cue_words = self._single_cue_words
+        rel_words = self._relation_name_words
         firsts: dict[str, str] = {}
         for lm in self.kb.landmarks:
             for form in lm.surface_forms:
@@ -2229,10 +2241,8 @@ class ReportAnalyzer:
                 and norms[j + 2] == "of" and (norms[j] == "the" or any(p.end_tok <= b for p in ex.places)):
             j += 3  # "built onto the side of the mill": the part of the anchor
             b = j
-        if norms[j:j + 1] == ("the",) and j + 3 < len(norms) and norms[j + 1] in lx.APPROACH_NOUNS \
-                and norms[j + 2] in ("into", "to", "of", "for") and not any(p.start_tok == j + 1 for p in ex.places):
-            j += 3  # "the post guarding the way into reception": the way into it, the anchor after
-            b = j
+        if _past_approach(norms, j) > j and not any(p.start_tok == j + 1 for p in ex.places):
+            j = b = _past_approach(norms, j)  # "the post guarding the way into reception": the anchor after
         # "the shop attached to it's got a live wire": "it's" right after the relation is "it has", the pronoun
         its = b < len(norms) and norms[b] == "its" and any(q in ex.tokens.tokens[b].text for q in ("'", "’"))
         while j < len(norms) and (norms[j] in lx.DETERMINERS or norms[j] in lx.FILLERS or norms[j] in ("my", "your"))\
@@ -3459,15 +3469,20 @@ class ReportAnalyzer:
         def undesirable(c: CueMention) -> bool:
             return self.kb.category_by_name[c.category].role == Role.UNDESIRABLE
 
+        def move(last: CueMention, target: PlaceMention, why: str, left: str | None) -> None:
+            """``target`` has ``last`` now (``why``); the place it was said of no longer does, for ``left``."""
+            nonlocal cues
+            if left is not None:
+                cues = [replace(c, status="retracted", reason=left) if c is last else c for c in cues]
+            moved.append(Claim(target, replace(last, reason=why)))
+
         for i, j, _ in _SOURCE_IS.find_all(norms):  # "smoke over the square. Source identified as the bus depot."
             target = next((p for p in active if j <= p.start_tok <= j + 2
                            and all(norms[t] in lx.DETERMINERS for t in range(j, p.start_tok))), None)
             last = self._last_cue_before(toks, cues, i, 1, undesirable)
-            if target is None or last is None:
-                continue
-            cues = [replace(c, status="retracted", reason=f"its source is {target.text}") if c is last else c
-                    for c in cues]
-            moved.append(Claim(target, replace(last, reason=f"its source is {target.text}")))
+            if target is not None and last is not None:
+                move(last, target, f"its source is {target.text}", f"its source is {target.text}")
+
         def said_after(p: PlaceMention, words: tuple[tuple[str, ...], ...]) -> int | None:
             """The token of the preposition before ``p`` (articles and fillers skipped) if the words end there."""
             k = p.start_tok - 1
@@ -3486,10 +3501,8 @@ class ReportAnalyzer:
             target = y if y.status == "active" else next(
                 (p for p in active if p.landmark == y.landmark and p.start_tok > y.start_tok), None)
             last = self._last_cue_before(toks, cues, x.start_tok, 1, lambda c: True) if x is not None else None
-            if x is None or target is None or last is None:
-                continue
-            cues = [replace(c, status="retracted", reason=f"moved to {target.text}") if c is last else c for c in cues]
-            moved.append(Claim(target, replace(last, reason=f"was at {x.text}, now at {target.text}")))
+            if x is not None and target is not None and last is not None:
+                move(last, target, f"was at {x.text}, now at {target.text}", f"moved to {target.text}")
         for i, w in enumerate(norms):  # "fire's jumped from the tank farm to the station it feeds": both burn
             if w not in lx.SPREAD_VERBS or norms[i + 1:i + 2] != ("from",):
                 continue
@@ -3499,7 +3512,7 @@ class ReportAnalyzer:
             dst = next((p for p in active if src.end_tok < p.start_tok <= src.end_tok + 3), None)
             last = self._last_cue_before(toks, cues, i, 0, undesirable)
             if dst is not None and last is not None:
-                moved.append(Claim(dst, replace(last, reason=f"spread to {dst.text}")))
+                move(last, dst, f"spread to {dst.text}", None)  # (the source still burns)
         for i, w in enumerate(norms):
             if w not in lx.RELOCATE_VERBS:
                 continue
@@ -3524,12 +3537,8 @@ class ReportAnalyzer:
                 continue
             last = self._last_cue_before(toks, cues, i, 1, (lambda c: c.category == self._person_category) if person
                                          else (lambda c: self.kb.category_by_name[c.category].role == Role.DESIRABLE))
-            if last is None:
-                continue
-            if not person:
-                cues = [replace(c, status="retracted", reason=f"moved to {target.text}") if c is last else c
-                        for c in cues]
-            moved.append(Claim(target, replace(last, reason=f"moved to {target.text}")))
+            if last is not None:
+                move(last, target, f"moved to {target.text}", None if person else f"moved to {target.text}")
         return cues, moved
 
     @staticmethod
@@ -5300,7 +5309,7 @@ _LIST_OPENERS = frozenset({"and", "there", "theres", "is", "are", "lots", "of", 
 
 
 def _description_list_items(description: str) -> list[tuple[str, ...]]:
-    """The items of a list a category description gives after a colon or a dash, as token keys of one to
+    """The items of a list a category description gives after a colon or a dash, as token keys of two or
     three words: "Storm damage - collapsed or loose masonry, fallen trees." -> loose masonry, fallen trees (a
     single word is left to the vocabulary: "checked", "rock", "vehicle" are too loose alone).
 
@@ -5330,6 +5339,19 @@ def _same_stem(a: str, b: str) -> bool:
         return a == b
     k = max(4, n - 3)
     return a[:k] == b[:k] and (a.startswith(b[: len(b) - 3]) or b.startswith(a[: len(a) - 3]) or a[:5] == b[:5])
+
+
+def _past_approach(norms: tuple[str, ...], b: int) -> int:
+    """Past "the way into", "the approach to" from token ``b`` (where a relation phrase ends), to the anchor
+    named after it; else ``b``.
+
+    >>> _past_approach(("guarding", "the", "way", "into", "reception"), 1)
+    4
+    """
+    if norms[b:b + 1] == ("the",) and b + 3 < len(norms) and norms[b + 1] in lx.APPROACH_NOUNS \
+            and norms[b + 2] in ("into", "to", "of", "for"):
+        return b + 3
+    return b
 
 
 def _phrases(phrases: Iterable[str]) -> PhraseMatcher[str]:
