@@ -3672,6 +3672,34 @@ class ReportAnalyzer:
 
     def _semantic_claims(self, ex: Extraction, claims: list[Claim], denied: list[Claim]) -> list[Claim]:
         """Places the vocabulary left without a category: classify their predicate with MiniLM."""
+        todo = self._silent_places(ex, claims, denied)
+        if not todo:
+            return []
+        assert self.embedder is not None
+        vecs = self.embedder.embed([text for _, _, _, text in todo])
+        toks = ex.tokens
+        out = []
+        for (p, a, b, _), v in zip(todo, vecs, strict=True):
+            label, score, runner = self._rank_meaning(v)
+            if label == "none" or score < self.FALLBACK_MIN_SIM or score - runner < self.FALLBACK_MARGIN:
+                continue
+            start, end = toks.tokens[a].start, toks.tokens[b - 1].end
+            cue = CueMention(a, b, start, end, toks.text[start:end], label, "embedding",
+                             reason=f"MiniLM predicate match {score:.2f} (runner-up {runner:.2f})")
+            out.append(Claim(p, cue))
+        return out
+
+    def _predicate_words(self, ex: Extraction, p: PlaceMention, a: int, b: int) -> str:
+        """What is said of ``p`` in its predicate region, without fillers and the place's own words."""
+        toks = ex.tokens
+        words = [t.text for t in toks.tokens[a : p.start_tok] if t.norm not in lx.FILLERS and t.norm not in lx.DETERMINERS]
+        words += [t.text for t in toks.tokens[p.end_tok : b] if t.norm not in lx.FILLERS]
+        return " ".join(words)
+
+    def _silent_places(self, ex: Extraction, claims: list[Claim],
+                       denied: list[Claim]) -> list[tuple[PlaceMention, int, int, str]]:
+        """Active places nothing in the vocabulary spoke of, where a guess is allowed: (place, region
+        start, region end, what is said of it)."""
         done = {id(c.place) for c in claims} | {id(c.place) for c in denied}
         done_keys = {(c.place.start_tok) for c in claims} | {c.place.start_tok for c in denied}
         silent = getattr(self, "_non_report_tokens", set())
@@ -3680,7 +3708,6 @@ class ReportAnalyzer:
         if not todo:
             return []
         toks = ex.tokens
-        texts, regions = [], []
         all_cues = getattr(self, "_all_cues_now", [])
         kept = []
         norms = toks.norms(0, len(toks))
@@ -3727,28 +3754,12 @@ class ReportAnalyzer:
                     and any(after[n:n + 2] in (("whole", "time"), ("all", "along")) for n in range(len(after))):
                 continue  # "mum's found her, she was in the toilet block the whole time": never lost there
             kept.append(p)
-        todo = kept
-        if not todo:
-            return []
-        for p in todo:
-            a, b = self._predicate_region(ex, p)
-            words = [t.text for t in toks.tokens[a : p.start_tok] if t.norm not in lx.FILLERS and t.norm not in lx.DETERMINERS]
-            words += [t.text for t in toks.tokens[p.end_tok : b] if t.norm not in lx.FILLERS]
-            texts.append(" ".join(words))
-            regions.append((a, b))
-        if all(b - a <= (p.end_tok - p.start_tok) + 1 for p, (a, b) in zip(todo, regions, strict=True)):
-            return []
-        assert self.embedder is not None
-        vecs = self.embedder.embed(texts)
         out = []
-        for p, (a, b), v in zip(todo, regions, vecs, strict=True):
-            label, score, runner = self._rank_meaning(v)
-            if label == "none" or score < self.FALLBACK_MIN_SIM or score - runner < self.FALLBACK_MARGIN:
-                continue
-            start, end = toks.tokens[a].start, toks.tokens[b - 1].end
-            cue = CueMention(a, b, start, end, toks.text[start:end], label, "embedding",
-                             reason=f"MiniLM predicate match {score:.2f} (runner-up {runner:.2f})")
-            out.append(Claim(p, cue))
+        for p in kept:
+            a, b = self._predicate_region(ex, p)
+            out.append((p, a, b, self._predicate_words(ex, p, a, b)))
+        if all(b - a <= (p.end_tok - p.start_tok) + 1 for p, a, b, _ in out):
+            return []  # nothing but the places' own words around them
         return out
 
     @staticmethod
