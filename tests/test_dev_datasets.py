@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev36) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev37) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -54,6 +54,8 @@ CASTLE_TOWN = ROOT / "knowledge_bases" / "castle_town"
 SCIENCE_PARK = ROOT / "knowledge_bases" / "science_park"
 RAIL_YARD = ROOT / "knowledge_bases" / "rail_yard"
 WINE_ESTATE = ROOT / "knowledge_bases" / "wine_estate"
+RACECOURSE = ROOT / "knowledge_bases" / "racecourse"
+MINING_TOWN = ROOT / "knowledge_bases" / "mining_town"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -205,6 +207,9 @@ SETS = {
     "dev36/market_square": _set("dev36/market_square.jsonl", MARKET_SQUARE, "d36m", THIRTY),
     "dev36/rail_yard": _set("dev36/rail_yard.jsonl", RAIL_YARD, "ry36", THIRTY),
     "dev36/wine_estate": _set("dev36/wine_estate.jsonl", WINE_ESTATE, "we36", THIRTY),
+    "dev37/market_square": _set("dev37/market_square.jsonl", MARKET_SQUARE, "d37m", THIRTY),
+    "dev37/racecourse": _set("dev37/racecourse.jsonl", RACECOURSE, "d37r", THIRTY),
+    "dev37/mining_town": _set("dev37/mining_town.jsonl", MINING_TOWN, "d37t", THIRTY),
 }
 
 
