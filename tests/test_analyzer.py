@@ -11,7 +11,9 @@ from hypothesis import strategies as st
 
 from lucifer.embeddings import get_embedder
 from lucifer.kb import load_kb
+from lucifer.language import lexicon as lx
 from lucifer.language.analyzer import ReportAnalyzer, analyze
+from lucifer.language.text import norm
 
 HARBOURSIDE = ROOT / "knowledge_bases" / "harbourside"
 NORTHGATE = ROOT / "knowledge_bases" / "northgate"
@@ -2316,3 +2318,50 @@ def test_power_loss_is_a_danger_only_where_the_kb_says_so(kb_analyzers, analyzer
         ("cinema", "service_failure"), ("phone shop", "service_failure")]
     assert claims(analyzer, "We were going to put the triage tent at the sports hall but it's got no power, so it's "
                             "going in the bus station instead.") == [("bus station", "safe_zone")]
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    # a whole log line struck through says nothing: neither its place nor its words count
+    ("Log 10:02 ~~fire at the bank~~ fire at the bakery. 10:05 ~~casualty in the cafe~~ casualty in the hotel lobby.",
+     [("bakery", "hazard"), ("hotel", "victim")]),
+    ("10:14 ~~survivors sheltering in the church~~ sheltering in the library", [("library", "safe_zone")]),
+    # the people a place is for, said in the plural ("families" is keyed "familie")
+    ("We've opened the church as a rest centre for the school families.", [("church", "safe_zone")]),
+    ("Big hole in the roof of the library.", [("library", "hazard")]),
+])
+def test_dev37_market_square_phenomena(analyzer, text, expected):
+    assert claims(analyzer, text) == expected
+
+
+@pytest.mark.parametrize(("kb", "text", "expected"), [
+    # a name without its last word, said as a proper noun: "the Rowley" (rowley stand), "Valley Primary"
+    ("racecourse", "Smoke pouring out of the Rowley now.", [("rowley stand", "fire_and_smoke")]),
+    ("racecourse", "Mr Rowley says the Cavendish is on fire.", [("cavendish stand", "fire_and_smoke")]),
+    ("mining_town", "Headteacher of Valley Primary here, the children are stuck upstairs.",
+     [("valley primary school", "trapped_or_hurt")]),
+    ("mining_town", "St Barbara's is open as a rest centre.", [("st barbara's church", "safe_haven")]),
+    # the speaker's own deed is no relation ("opens_its_gates_onto"); a speaker's label is none ("leads_off")
+    ("mining_town", "We've opened the bobby's house as a rest shelter.", [("police house", "safe_haven")]),
+    ("racecourse", "From the medical lead: the saucer is a cold zone now.", [("parade ring", "safe_enclosure")]),
+    # "not safe" names no undesirable category of two; a cue that names one wins
+    ("mining_town", "The packhorse bridge is not safe, water over the deck.", [("packhorse bridge", "spoil_and_flood")]),
+    # mine and flood words, places set up to treat people, a withdrawn message
+    ("mining_town", "Methane round the lamp room.", [("lamp room", "foul_air")]),
+    ("mining_town", "CO detected in the lamp room.", [("lamp room", "foul_air")]),
+    ("mining_town", "The pit baths are full of slurry.", [("pit baths", "spoil_and_flood")]),
+    ("mining_town", "Hollins Beck is over its banks.", [("hollins beck", "spoil_and_flood")]),
+    ("mining_town", "The council depot is undamaged.", [("council depot", "safe_haven")]),
+    ("mining_town", "Treatment area is in the welfare hall.", [("welfare hall", "safe_haven")]),
+    ("mining_town", "Disregard the earlier message about gas at zion chapel.", []),
+    ("racecourse", "A steward's been swept off his feet at the brook bend.", [("brook bend", "in_distress")]),
+    ("racecourse", "The stable staff are moving the horses out of the stable yard, smoke everywhere.",
+     [("stable yard", "fire_and_smoke")]),
+])
+def test_dev37_phenomena_on_unseen_kbs(kb_analyzers, kb, text, expected):
+    assert claims(kb_analyzers[kb], text) == expected
+
+
+def test_word_sets_hold_the_keys_tokens_are_compared_by():
+    """Sets compared with token keys hold each word's key too: "families" is read as "familie"."""
+    assert norm("families") in lx.PEOPLE_OF_PLACE and norm("windows") in lx.ENTRANCE_PARTS
+    assert norm("approaches") in lx.APPROACH_NOUNS and norm("bricks") in lx.DANGER_KIND_PARTS

@@ -476,6 +476,8 @@ class ReportAnalyzer:
             hit = self._keyword_relation(word.lower())
             if hit is None:
                 continue
+            if t + 1 < len(norms) and ":" in toks.gaps[t + 1]:
+                continue  # "From the medical lead: the saucer ...": a speaker's label, not "leads_off"
             if norms[t] in lx.PART_NOUNS and t + 1 < len(norms) and norms[t + 1] == "of":
                 continue  # "the back wall of the Stella" is part of it, not "shares_a_wall_with"
             if t > 0 and (norms[t - 1] in lx.COPULAS or toks.tokens[t - 1].text.lower().endswith(("'s", "’s"))) \
@@ -484,6 +486,11 @@ class ReportAnalyzer:
             if toks.clause_start[t] and t + 1 < len(norms) and norms[t + 1] in lx.MOVED_PEOPLE | {
                     "them", "it", "clear", "away", "out", "back", "off", "everybody"}:
                 continue  # "..., keep everyone clear of them": an order, not "keeps_watch_over"
+            back = [w for w in norms[max(0, t - 4):t] if w not in ("ve", "have", "had", "just", "now", "already", "d")]
+            if back and back[-1] in ("i", "we", "they", "he", "she", "you", "ive", "weve", "theyve", "youve", "wed", "theyd") \
+                    and norms[t + 1:t + 2] \
+                    and norms[t + 1] in lx.DETERMINERS and norms[t].endswith("ed"):
+                continue  # "we've opened the parish church as a rest centre": the speaker's deed, not "opens_onto"
             phrase, voice = hit
             if voice == "active" and t > 0 and norms[t - 1] in lx.ARTICLES - {"that"} and phrase.split()[0] in (
                     norms[t], toks.tokens[t].text.lower()):
@@ -599,6 +606,7 @@ class ReportAnalyzer:
         rel_ends |= {e for _, b, _ in all_relations if (e := _past_approach(norms, b)) > b}
         places.extend(self._modifier_names(toks, norms, {i for p in places for i in range(p.start_tok, p.end_tok)},
                                            rel_ends))
+        places.extend(self._headless_names(toks, norms, {i for p in places for i in range(p.start_tok, p.end_tok)}))
         places.extend(self._misheard_names(toks, norms, {i for p in places for i in range(p.start_tok, p.end_tok)},
                                            {i for a, b, _ in all_cues for i in range(a, b)}))
         places.extend(self._definite_heads(toks, norms, places))
@@ -1017,6 +1025,58 @@ class ReportAnalyzer:
                         | lx.GENERIC_HEADS | lx.STOREY_WORDS | lx.PART_NOUNS and not _direction_word(w):
                     firsts[w] = lm.name
         return firsts
+
+    @functools.cached_property
+    def _headless_forms(self) -> dict[tuple[str, ...], str]:
+        """Multi-word names without their last word ("cavendish" for "cavendish stand", "valley primary"
+        for "valley primary school"), where only one landmark's names begin so and no name is just that."""
+        owners: dict[tuple[str, ...], set[str]] = {}
+        whole = {name_words(form) for lm in self.kb.landmarks for form in lm.surface_forms}
+        for lm in self.kb.landmarks:
+            for form in lm.surface_forms:
+                words = name_words(form)
+                for n in range(1, len(words)):
+                    owners.setdefault(words[:n], set()).add(lm.name)
+        banned = self._single_cue_words | self._relation_name_words | lx.FUNCTION_WORDS | lx.DESCRIPTIVE_WORDS \
+            | lx.GENERIC_HEADS | lx.STOREY_WORDS | lx.PART_NOUNS
+        described = {lm.name: " " + " ".join(norm_phrase(lm.description)) + " " for lm in self.kb.landmarks}
+        out: dict[tuple[str, ...], str] = {}
+        for lm in self.kb.landmarks:
+            for form in lm.surface_forms:
+                key = name_words(form)[:-1]
+                last = key[-1] if key else ""
+                if any(f" {' '.join(key)} " in d for name, d in described.items() if name != lm.name):
+                    continue  # "at High Garth farm" in other places' descriptions: the name of something larger
+                if len(owners.get(key, ())) == 1 and key not in whole and len(last) >= 4 and last.isalpha() \
+                        and last not in banned and not _direction_word(last) \
+                        and not (len(key) == 1 and self._name_word_owners.get(last, set()) != {lm.name}):
+                    out[key] = lm.name
+        return out
+
+    def _headless_names(self, toks: Tokens, norms: tuple[str, ...], taken: set[int]) -> list[PlaceMention]:
+        """"fire in the Cavendish" (cavendish stand), "Headteacher of Valley Primary" (valley primary school),
+        "St Barbara's is open" (st barbara's church): a name said without its last word, as a proper noun
+        (capitalised; one word only after "the"), ending its noun phrase."""
+        out: list[PlaceMention] = []
+        for i in range(len(norms)):
+            if i in taken:
+                continue
+            for n in (3, 2, 1):
+                key = norms[i:i + n]
+                end = i + n
+                if len(key) < n or key not in self._headless_forms or any(j in taken for j in range(i, end)):
+                    continue
+                if n == 1 and (toks.sentence_start[i] or norms[i - 1] != "the"):
+                    continue  # (one capitalised word where a sentence starts, or "Mr Rowley", names no place)
+                if not all(toks.tokens[j].text[:1].isupper() for j in range(i, end)):
+                    continue  # ("the valley primary concern": a plain phrase, not a name)
+                if end < len(norms) and not toks.clause_start[end] and norms[end] not in lx.FUNCTION_WORDS \
+                        and norms[end] not in lx.COPULAS and not re.search(r"[,.;:!?—–\-(]", toks.gaps[end]):
+                    continue  # "the Cavendish family": the word modifies a noun of its own
+                out.append(self._mention(toks, i, end, self._headless_forms[key]))
+                taken = taken | set(range(i, end))
+                break
+        return out
 
     @functools.cached_property
     def _clipped_forms(self) -> dict[tuple[str, str], str]:
@@ -2658,6 +2718,12 @@ class ReportAnalyzer:
                 ex.places[i] = replace(r, replaces=old.start_tok)
 
     @staticmethod
+    def _struck_tokens(toks: Tokens) -> set[int]:
+        """Tokens inside a span struck through in a written log: "~~gas at the hall~~"."""
+        spans = [(m.start(), m.end()) for m in re.finditer(r"~~[^~]+?~~", toks.text)]
+        return {i for i, t in enumerate(toks.tokens) if any(a < t.start < b for a, b in spans)}
+
+    @staticmethod
     def _apply_written_corrections(ex: Extraction) -> None:
         """Corrections typed rather than spoken: "fire at the bank *bakery" (an asterisk before the right word),
         "fire at the ~~bank~~ bakery" (a word struck through): the place corrected is taken back and the
@@ -2667,10 +2733,13 @@ class ReportAnalyzer:
         def active() -> list[PlaceMention]:
             return sorted((p for p in ex.places if p.status == "active"), key=lambda p: p.start_tok)
 
+        struck = ReportAnalyzer._struck_tokens(toks)
         for p in active():
-            after = toks.gaps[p.end_tok] if p.end_tok < len(toks) else toks.text[toks.tokens[-1].end:]
-            if "~~" in toks.gaps[p.start_tok] and "~~" in after:
-                nxt = next((q for q in active() if q.start_tok >= p.end_tok), None)
+            if p.start_tok in struck:
+                end = p.end_tok
+                while end in struck:
+                    end += 1  # "~~smoke in the east stand~~ smoke in the west stand": past the whole struck span
+                nxt = next((q for q in active() if q.start_tok >= end), None)
                 ReportAnalyzer._take_back(ex, p, nxt, "struck through")
         for q in active():
             if "*" not in toks.gaps[q.start_tok] or q.start_tok == 0:
@@ -3243,6 +3312,7 @@ class ReportAnalyzer:
                 blocked.update(range(p.start_tok, p.end_tok))
         marker_tokens = {i for a, b, _ in ex.markers for i in range(a, b)}
         blocked |= marker_tokens
+        blocked |= self._struck_tokens(toks)  # what a log line strikes through says nothing
         self._place_tokens = {i for p in ex.places for i in range(p.start_tok, p.end_tok)}
         self._places_now = ex.places
         self._marker_tokens = marker_tokens
@@ -3374,7 +3444,21 @@ class ReportAnalyzer:
             extra = [c for c in self._semantic_claims(ex, claims, denied) if c.key not in denied_keys]
             claims.extend(extra)
             cues.extend(c.cue for c in extra)
-        return Classification(cues, claims, denied)
+        return Classification(cues, self._drop_unspecific_dangers(claims), denied)
+
+    NOT_DESIRABLE = "desirable cue means undesirable"
+
+    def _drop_unspecific_dangers(self, claims: list[Claim]) -> list[Claim]:
+        """"the bridge is NOT safe, water over the deck": where a KB has several undesirable categories, "not
+        safe" names none of them; a place that another cue gives an undesirable category keeps only that."""
+        undesirable = {c.name for c in self.kb.categories_with_role(Role.UNDESIRABLE)}
+        if len(undesirable) < 2:
+            return claims
+        specific = {(c.place.landmark, c.cue.category) for c in claims
+                    if c.cue.category in undesirable and not c.cue.reason.endswith(self.NOT_DESIRABLE)}
+        return [c for c in claims if not (c.cue.reason.endswith(self.NOT_DESIRABLE)
+                                          and any(lm == c.place.landmark and cat != c.cue.category
+                                                  for lm, cat in specific))]
 
     def _answered_locations(self, ex: Extraction, norms: tuple[str, ...], cues: list[CueMention],
                             claims: list[Claim]) -> list[Claim]:
@@ -4335,7 +4419,7 @@ class ReportAnalyzer:
                 if before:
                     und = before[-1]
             if und is not None:
-                return replace(cue, category=und, source=cue.source, reason=f"'{negated_by}' + desirable cue means undesirable")
+                return replace(cue, category=und, source=cue.source, reason=f"'{negated_by}' + {self.NOT_DESIRABLE}")
         return replace(cue, polarity="denied", reason=f"negated by '{why}'")
 
     @staticmethod

@@ -9,12 +9,19 @@ base with other category names works without code changes.
 
 from __future__ import annotations
 
+from lucifer.language.text import norm as _norm
+
 UNDESIRABLE = "undesirable"
 DESIRABLE = "desirable"
 CRITICAL = "critical"
 
 # phrase -> role. Multi-word phrases win over their parts (longest match).
 ROLE_CUES: dict[str, str] = {}
+
+
+def _keyed(words: set[str]) -> frozenset[str]:
+    """A word set compared with token keys: each word with its key as well ("families" -> "familie")."""
+    return frozenset(words) | {_norm(w) for w in words}
 
 
 def _add(role: str, phrases: str) -> None:
@@ -76,6 +83,8 @@ fallen oak|fallen beech|fallen ash|fallen branch|fallen branches|peeled off|been
 lost its leads|lost the leads|roof lifted|lifted clean off|blown clean off|blown off|off its hinges|
 pulled up by the roots|uprooted|windthrown|windthrow|blown down|open to the sky|rain's coming in|rain is coming in|
 rain coming straight in|rain's coming straight in|rain pouring in|rain is pouring|
+methane|methane leak|natural gas|co detected|co reading|co readings|co levels|high co|slurry|full of slurry|sludge|
+silt|full of silt|over its banks|over the banks|out of its banks|broken its banks|burst their banks|bursting its banks|scoured|scoured out|lost a parapet|lost its parapet|lost the parapet|lost a wall|lost its wall|lost a gable|lost its gable|hole in the roof|holes in the roof|hole in its roof|hole in the wall|
 """.replace("\n", ""))
 
 _add(DESIRABLE, """
@@ -107,9 +116,13 @@ where we're sending everyone|where we're sending people|where we're sending them
 where we're taking people|where we're putting people|where we're putting everyone|where everyone's going|
 where everyone is going|putting people there|putting people in there|putting everyone there|moving people there|send people there|
 sending people there|moving evacuees there|send them there|
+undamaged|casualty clearing point|casualty clearing post|casualty clearing centre|clearing point|
+treatment area|treatment centre|treatment center|treatment point|treatment tent|stand-down area|stand down area|
+stand-down point|designated holding area|
 """.replace("\n", ""))
 
 _add(CRITICAL, """
+swept off his feet|swept off her feet|swept off their feet|hanging on to|hanging onto|
 stretcher needed|need a stretcher|needs a stretcher|stretcher required|stretcher to|
 need to get them out|need hands to get them out|to get them out|can't get them out|cannot get them out|
 toddlers inside|children inside|kids inside|still has children inside|
@@ -267,7 +280,8 @@ BACK_REFERENCE_WORDS = {"it", "its", "s", "is", "has", "been", "thats", "that", 
                         "ive"}
 
 # Phrases that contain cue words but claim nothing ("the smoke alarm went off", "fire crew on site").
-NEUTRAL_PHRASES = ["use it to bring", "use it to get", "use it to take", "use it to move", "use it to evacuate",
+NEUTRAL_PHRASES = ["stable staff", "stable lads", "stable lad", "stable hands", "stable hand", "stable girls",
+                   "stable block", "stable door", "stable doors", "use it to bring", "use it to get", "use it to take", "use it to move", "use it to evacuate",
                    "use that to bring", "use that to get", "out of use", "out of action", "out of service", "out of the smoke", "away from the smoke", "out of the rain", "out of the water", "out of the fumes",
                    "people sitting in here", "people sitting in there", "sitting in here", "waiting in here",
                    "i'm calling from", "im calling from", "i am calling from", "we're calling from",
@@ -297,7 +311,9 @@ FALSE_ALARM = ["false alarm", "never mind", "nevermind", "disregard my last", "d
                "nothing in it", "nothing to it", "just steam", "only steam", "just fog", "only fog", "just mist", "only mist", "extractor fan", "was just a", "was only a",
                "was just their", "was just the", "its just their", "is just their", "its only their", "nothing to worry about", "ignore my last", "cancel my last",
                "disregard my last message", "disregard previous", "disregard my earlier report",
-               "ignore my earlier report", "disregard the earlier report", "were wrong", "were unfounded",
+               "ignore my earlier report", "disregard the earlier report", "disregard the earlier message",
+               "disregard the last message", "disregard my earlier message", "disregard the previous message",
+               "faulty detector", "faulty sensor", "faulty alarm", "false reading", "detector fault", "were wrong", "were unfounded",
                "was unfounded", "were false", "are false", "are wrong", "are unfounded", "was false",
                "is false", "are untrue", "were untrue", "turned out to be false", "turned out to be wrong",
                "part of a drill", "part of the drill", "just a drill", "only a drill", "part of the exercise",
@@ -688,16 +704,16 @@ SPREAD_PHRASES = [("has", "reached"), ("have", "reached"), ("reached",), ("sprea
 # Cues that say a place is shut: a danger only where a category is about access.
 LOCK_CUES = {("locked",), ("padlocked",), ("chained",), ("chained", "shut"), ("locked", "up")}
 # Parts of a structure that can be the subject of "collapsed" (no person is).
-STRUCTURE_WORDS = {"stair", "stairs", "staircase", "stairwell", "scaffold", "scaffolding", "structure", "section",
+STRUCTURE_WORDS = _keyed({"stair", "stairs", "staircase", "stairwell", "scaffold", "scaffolding", "structure", "section",
                    "building", "fence", "canopy", "stand", "bridge", "balcony", "shelf", "shelving", "racking",
                    "tunnel", "shaft", "mezzanine", "platform", "awning", "shed", "barn", "enclosure", "gantry",
-                   "ladder", "steps", "walkway", "roof", "ceiling", "floor", "wall", "chimney", "crane", "mast"}
+                   "ladder", "steps", "walkway", "roof", "ceiling", "floor", "wall", "chimney", "crane", "mast"})
 PERSON_STATE_CUES = {("collapsed",), ("collapse",), ("collapsing",), ("burned",), ("burnt",), ("burned", "out"),
                      ("fallen", "in"), ("fell", "in"), ("slipped", "in")}
 
 # Parts of a person: "his arm is burned" is said of a person
-BODY_PARTS = {"arm", "arms", "leg", "legs", "hand", "hands", "head", "face", "foot", "feet", "back", "chest", "neck",
-              "eyes", "skin"}
+BODY_PARTS = _keyed({"arm", "arms", "leg", "legs", "hand", "hands", "head", "face", "foot", "feet", "back", "chest", "neck",
+              "eyes", "skin"})
 
 # Members of the public: "<a|two|there's> <person> <at|in|under|clinging...>" is a casualty claim.
 LAY_PERSONS = {"man", "woman", "person", "people", "someone", "somebody", "child", "children", "kid", "baby", "kiddie",
@@ -917,9 +933,9 @@ DANGER_KINDS: dict[str, list[str]] = {
                "sewage everywhere", "sewage coming up"],
 }
 # Words of the kinds' phrases that name the thing, not the danger: they do not vote ("roof down").
-DANGER_KIND_PARTS = {"roof", "roofs", "wall", "walls", "ceiling", "floor", "chimney", "tree", "trees", "door", "doors",
+DANGER_KIND_PARTS = _keyed({"roof", "roofs", "wall", "walls", "ceiling", "floor", "chimney", "tree", "trees", "door", "doors",
                      "pipe", "main", "bricks", "slates", "right", "across", "through", "everywhere", "going", "could",
-                     "might", "about", "second", "under", "over", "coming", "gone", "fully", "well", "again", "risk"}
+                     "might", "about", "second", "under", "over", "coming", "gone", "fully", "well", "again", "risk"})
 
 # Every kind's phrase is an undesirable cue: a new one needs writing only in its kind (older ones are
 # in the UNDESIRABLE list above as well).
@@ -955,8 +971,8 @@ MODAL_BEFORE_VERB = {"dont", "do", "cant", "cannot", "can", "will", "wont", "ll"
                      "doesnt", "shouldnt", "couldnt", "could", "would", "wouldnt", "never"}
 
 # People named by the place they belong to ("the hotel guests"): after "for the", whom a place serves.
-PEOPLE_OF_PLACE = {"guests", "guest", "residents", "resident", "staff", "customers", "visitors", "tenants", "pupils",
-                   "kids", "children", "patients", "people", "folk", "lot", "families"}
+PEOPLE_OF_PLACE = _keyed({"guests", "guest", "residents", "resident", "staff", "customers", "visitors", "tenants", "pupils",
+                   "kids", "children", "patients", "people", "folk", "lot", "families"})
 
 # Words that say only where something is, no verb a relation could be told apart by ("right under it").
 SPATIAL_WORDS = {"under", "over", "behind", "beside", "besides", "across", "around", "along", "between", "beneath",
@@ -996,7 +1012,7 @@ OUT_OF_VERBS = {"get", "getting", "evacuate", "evacuating", "lead", "leading", "
 # A caller's own places, never a landmark ("smoke everywhere on our road").
 OWN_PLACES = {"road", "street", "lane", "avenue", "close", "drive", "house", "garden", "home", "estate", "crescent"}
 # Parts of a building a relation may be said of ("by the bus station doors"): at the building itself.
-ENTRANCE_PARTS = {"door", "doors", "entrance", "entrances", "gate", "gates", "steps", "forecourt", "porch", "windows"}
+ENTRANCE_PARTS = _keyed({"door", "doors", "entrance", "entrances", "gate", "gates", "steps", "forecourt", "porch", "windows"})
 # "the fire's spread from the bank to the bakery": a danger that reaches a second place.
 SPREAD_VERBS = {"spread", "spreading", "jumped", "jumping", "moved", "moving", "travelled", "traveled", "gone", "got",
                 "spilled", "spilling", "run", "running", "crept", "creeping"}
@@ -1039,15 +1055,17 @@ DANGER_KIND_EXTRA: dict[str, list[str]] = {
               "rain coming straight in", "rain's coming straight in", "rain pouring in", "rain is pouring"],
     "fire": ["roof is going up", "roof's going up", "roofs going up", "thatch is going up", "thatch's going up",
              "thatch going up"],
-    "gas": ["carbon monoxide", "carbon monoxide alarm", "co alarm"],
+    "gas": ["methane", "methane leak", "natural gas", "co detected", "co reading", "co readings", "co levels", "high co", "carbon monoxide", "carbon monoxide alarm", "co alarm"],
     "collapse": ["is bending", "it's bending", "is fall down", "has fall down", "fallen down"],
-    "water": ["water coming through the ceiling", "water through the ceiling", "water pouring through the ceiling",
+    "water": ["over its banks", "over the banks", "out of its banks", "broken its banks", "burst their banks", "bursting its banks", "scoured", "scoured out", "water coming through the ceiling", "water through the ceiling", "water pouring through the ceiling",
               "water coming through the roof", "ceiling's leaking", "ceiling is leaking", "water pouring through"],
     "access": ["fallen oak", "fallen beech", "fallen ash", "fallen branch", "fallen branches"],
+    "ground": ["slurry", "full of slurry", "sludge", "silt", "full of silt"],
+    "fallen": ["hole in the roof", "holes in the roof", "hole in its roof", "hole in the wall", "lost a parapet", "lost its parapet", "lost the parapet", "lost a wall", "lost its wall", "lost a gable", "lost its gable"],
 }
 
 # Nouns for the way to a place, between a relation and its anchor ("guarding the way into reception")
-APPROACH_NOUNS = frozenset({"way", "approach", "approaches", "entrance", "road", "path", "route", "gate", "door"})
+APPROACH_NOUNS = _keyed({"way", "approach", "approaches", "entrance", "road", "path", "route", "gate", "door"})
 
 # Dangers said in the plural that "they're out" can put out ("flames at the bakery but they're out now")
 PLURAL_FIRES = frozenset({"flames", "flame", "fires", "fire"})
