@@ -2328,6 +2328,11 @@ def test_power_loss_is_a_danger_only_where_the_kb_says_so(kb_analyzers, analyzer
     # the people a place is for, said in the plural ("families" is keyed "familie")
     ("We've opened the church as a rest centre for the school families.", [("church", "safe_zone")]),
     ("Big hole in the roof of the library.", [("library", "hazard")]),
+    # a name cut off mid-word and the sentence said again with another place; a name said whole is no cut
+    ("man trapped under the van outside the hote-- outside the bank, repeat bank", [("bank", "victim")]),
+    ("fire at the garage — no, the fire's at the gym", [("sports hall", "hazard")]),
+    # a place said to be full says how many it holds, nothing MiniLM should guess a category from
+    ("Triage has moved to the park because the sports hall is full.", [("park", "safe_zone")]),
 ])
 def test_dev37_market_square_phenomena(analyzer, text, expected):
     assert claims(analyzer, text) == expected
@@ -2343,6 +2348,9 @@ def test_dev37_market_square_phenomena(analyzer, text, expected):
     # the speaker's own deed is no relation ("opens_its_gates_onto"); a speaker's label is none ("leads_off")
     ("mining_town", "We've opened the bobby's house as a rest shelter.", [("police house", "safe_haven")]),
     ("racecourse", "From the medical lead: the saucer is a cold zone now.", [("parade ring", "safe_enclosure")]),
+    # a head word the anchor's own name ends in ("stand") still heads a description with a pronoun anchor
+    ("racecourse", "Smoke in the cavendish stand. People are safe in the stand that butts up against it.",
+     [("cavendish stand", "fire_and_smoke"), ("rowley stand", "safe_enclosure")]),
     # "not safe" names no undesirable category of two; a cue that names one wins
     ("mining_town", "The packhorse bridge is not safe, water over the deck.", [("packhorse bridge", "spoil_and_flood")]),
     # mine and flood words, places set up to treat people, a withdrawn message

@@ -657,8 +657,25 @@ class ReportAnalyzer:
         self._apply_confirmations(ex, norms)
         self._apply_transit(ex)
         self._apply_cut_off(ex, norms)
+        self._apply_cut_off_names(ex)
         ex.places.sort(key=lambda p: p.start_tok)
         return ex
+
+    def _apply_cut_off_names(self, ex: Extraction) -> None:
+        """"trapped outside the hote-- outside the bank": a name cut off mid-word and the sentence said again
+        with another place; the word cut off is a false start."""
+        toks = ex.tokens
+        for p in sorted(ex.active, key=lambda p: p.start_tok):
+            gap = toks.gaps[p.end_tok] if p.end_tok < len(toks) else ""
+            word = toks.tokens[p.end_tok - 1].text.lower()
+            said = {w for form in self.kb.landmark_by_name[p.landmark].surface_forms for w in form.lower().split()}
+            if p.end_tok - p.start_tok != 1 or not any(d in gap for d in ("--", "—", "–")) or word in said \
+                    or not any(w.startswith(word) for w in said):
+                continue  # (only a word no name holds whole: "the garage —" is said in full)
+            nxt = next((q for q in ex.active if p.end_tok <= q.start_tok <= p.end_tok + 4
+                        and q.landmark != p.landmark), None)
+            if nxt is not None:
+                self._take_back(ex, p, nxt, "cut off mid-word and said again")
 
     @staticmethod
     def _apply_hesitation_chains(ex: Extraction, norms: tuple[str, ...]) -> None:
@@ -1973,6 +1990,8 @@ class ReportAnalyzer:
             # a bare "underneath")
             # "the stretch seaward of the fish market": any plain noun after an article heads a description
             closed = lx.PREPOSITIONS | lx.COPULAS | lx.FILLERS | lx.PRONOUNS | lx.INVERSE_VERBS
+            if len(words) == 1 and words[0] in self._name_word_owners:
+                closed = closed - {words[0]}  # "the stand that butts up against it": a word names end in, a noun here
             generic = all(w.isalpha() and w not in closed for w in words) and len(words[-1]) >= 3 \
                 and not any(self._cues.match_at(norms, j) is not None for j in range(head_start, head_end))
         if not generic and anchor is not None and words and words[-1] in lx.STOREY_WORDS | {"rooms", "room", "storeys"} \
@@ -3827,6 +3846,8 @@ class ReportAnalyzer:
                 continue  # "All the flats.": a place said alone, nothing said of it to guess at
             if {"saying", "says", "said"} & set(norms[a:b]):
                 continue  # "people keep saying garage": what others say, no claim to guess at
+            if any(norms[i] in ("full", "capacity") and norms[i + 1:i + 2] != ("of",) for i in range(p.end_tok, b)):
+                continue  # "moved to the rec because the welfare hall is full": how many it holds, no claim
             said = [w for w in norms[p.end_tok:b] if w not in lx.FILLERS]
             if toks.tokens[p.end_tok - 1].text.lower().replace("’", "'").endswith("'s"):
                 said = ["s", *said]
