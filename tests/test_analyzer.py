@@ -2333,6 +2333,8 @@ def test_power_loss_is_a_danger_only_where_the_kb_says_so(kb_analyzers, analyzer
     ("fire at the garage — no, the fire's at the gym", [("sports hall", "hazard")]),
     # a place said to be full says how many it holds, nothing MiniLM should guess a category from
     ("Triage has moved to the park because the sports hall is full.", [("park", "safe_zone")]),
+    # the place the speaker stands at, anchoring "across from us", is a reference point, whatever is said between
+    ("From our church steps I can see the place directly across from us: windows blown in.", [("cafe", "hazard")]),
 ])
 def test_dev37_market_square_phenomena(analyzer, text, expected):
     assert claims(analyzer, text) == expected
@@ -2354,6 +2356,10 @@ def test_dev37_market_square_phenomena(analyzer, text, expected):
     # "not safe" names no undesirable category of two; a cue that names one wins
     ("mining_town", "The packhorse bridge is not safe, water over the deck.", [("packhorse bridge", "spoil_and_flood")]),
     # mine and flood words, places set up to treat people, a withdrawn message
+    # a relation's verb between two named places is no cue ("spills" is no chemical spill here)
+    ("mining_town", "The beck the day hole spills into has burst its banks.", [("hollins beck", "spoil_and_flood")]),
+    ("mining_town", "The bottom chapel is cut off by water and pit row is half buried.",
+     [("bethel chapel", "spoil_and_flood"), ("pit row", "spoil_and_flood")]),
     ("mining_town", "Methane round the lamp room.", [("lamp room", "foul_air")]),
     ("mining_town", "CO detected in the lamp room.", [("lamp room", "foul_air")]),
     ("mining_town", "The pit baths are full of slurry.", [("pit baths", "spoil_and_flood")]),

@@ -102,6 +102,8 @@ class Extraction:
     tokens: Tokens
     places: list[PlaceMention]
     markers: list[tuple[int, int, bool]] = field(default_factory=list)  # (start_tok, end_tok, strong)
+    # words of a relation read between two named places ("the beck the day hole spills into"): no cues
+    relation_tokens: set[int] = field(default_factory=set)
 
     @property
     def active(self) -> list[PlaceMention]:
@@ -2008,6 +2010,7 @@ class ReportAnalyzer:
             if named is True:
                 ex.places[ex.places.index(anchor_p)] = replace(anchor_p, status="reference",
                                                                reason="reference point of a named place")
+                ex.relation_tokens.update(range(a, b))
                 return
             head_words = " ".join(toks.tokens[j].text for j in range(hs, min(anchor_p.start_tok, a)))
             target, via = self._follow(anchor_p.landmark, phrase, head_words, inverse=not flipped)
@@ -2103,8 +2106,10 @@ class ReportAnalyzer:
             lo = max(t for t in range(0, anchor.start_tok + 1) if toks.sentence_start[t])
             between = norms[anchor.end_tok:det_start]
             shared = {"both", "all", "each", "either"} & set(norms[anchor_end:anchor_end + 4])
-            if not shared and all(w in lx.FILLERS or w in lx.DETERMINERS or w in ("and", "so") or i in marker_tokens
-                                  for i, w in enumerate(between, start=anchor.end_tok)) \
+            speaker = norms[anchor_end - 1] in ("us", "me", "here")  # "From our church steps I can see the place
+            # directly across from us: ...": where the speaker stands, whatever is said between
+            if not shared and (speaker or all(w in lx.FILLERS or w in lx.DETERMINERS or w in ("and", "so")
+                                              or i in marker_tokens for i, w in enumerate(between, start=anchor.end_tok))) \
                     and not any(self._cues.match_at(norms, i) is not None for i in range(lo, det_start)
                                 if not anchor.start_tok <= i < anchor.end_tok):
                 ex.places[ex.places.index(anchor)] = replace(anchor, status="reference",
@@ -3332,6 +3337,7 @@ class ReportAnalyzer:
         marker_tokens = {i for a, b, _ in ex.markers for i in range(a, b)}
         blocked |= marker_tokens
         blocked |= self._struck_tokens(toks)  # what a log line strikes through says nothing
+        blocked |= ex.relation_tokens
         self._place_tokens = {i for p in ex.places for i in range(p.start_tok, p.end_tok)}
         self._places_now = ex.places
         self._marker_tokens = marker_tokens

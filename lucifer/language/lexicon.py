@@ -83,7 +83,7 @@ fallen oak|fallen beech|fallen ash|fallen branch|fallen branches|peeled off|been
 lost its leads|lost the leads|roof lifted|lifted clean off|blown clean off|blown off|off its hinges|
 pulled up by the roots|uprooted|windthrown|windthrow|blown down|open to the sky|rain's coming in|rain is coming in|
 rain coming straight in|rain's coming straight in|rain pouring in|rain is pouring|
-methane|methane leak|natural gas|co detected|co reading|co readings|co levels|high co|slurry|full of slurry|sludge|
+half buried|half-buried|cut off by water|cut off by the water|cut off by floodwater|cut off by the flood|methane|methane leak|natural gas|co detected|co reading|co readings|co levels|high co|slurry|full of slurry|sludge|
 silt|full of silt|over its banks|over the banks|out of its banks|broken its banks|burst their banks|bursting its banks|scoured|scoured out|lost a parapet|lost its parapet|lost the parapet|lost a wall|lost its wall|lost a gable|lost its gable|hole in the roof|holes in the roof|hole in its roof|hole in the wall|
 """.replace("\n", ""))
 
@@ -1057,10 +1057,10 @@ DANGER_KIND_EXTRA: dict[str, list[str]] = {
              "thatch going up"],
     "gas": ["methane", "methane leak", "natural gas", "co detected", "co reading", "co readings", "co levels", "high co", "carbon monoxide", "carbon monoxide alarm", "co alarm"],
     "collapse": ["is bending", "it's bending", "is fall down", "has fall down", "fallen down"],
-    "water": ["over its banks", "over the banks", "out of its banks", "broken its banks", "burst their banks", "bursting its banks", "scoured", "scoured out", "water coming through the ceiling", "water through the ceiling", "water pouring through the ceiling",
+    "water": ["cut off by water", "cut off by the water", "cut off by floodwater", "cut off by the flood", "over its banks", "over the banks", "out of its banks", "broken its banks", "burst their banks", "bursting its banks", "scoured", "scoured out", "water coming through the ceiling", "water through the ceiling", "water pouring through the ceiling",
               "water coming through the roof", "ceiling's leaking", "ceiling is leaking", "water pouring through"],
     "access": ["fallen oak", "fallen beech", "fallen ash", "fallen branch", "fallen branches"],
-    "ground": ["slurry", "full of slurry", "sludge", "silt", "full of silt"],
+    "ground": ["half buried", "half-buried", "slurry", "full of slurry", "sludge", "silt", "full of silt"],
     "fallen": ["hole in the roof", "holes in the roof", "hole in its roof", "hole in the wall", "lost a parapet", "lost its parapet", "lost the parapet", "lost a wall", "lost its wall", "lost a gable", "lost its gable"],
 }
 

@@ -41,7 +41,7 @@ def _extraction(state: GroundingState, analyzer: ReportAnalyzer) -> Extraction:
     places = [PlaceMention(**{k: tuple(v) if k == "also" else v for k, v in p.items() if k != "span"})
               for p in state.places]
     markers = [(int(a), int(b), bool(s)) for a, b, s in state.markers]
-    return Extraction(analyzer.tokens(state.report), places, markers)
+    return Extraction(analyzer.tokens(state.report), places, markers, set(state.relation_tokens))
 
 
 # --------------------------------------------------------------------------- retrieve
@@ -70,6 +70,7 @@ async def extract_places(state: GroundingState, runtime: Runtime[GroundingContex
     update: dict[str, Any] = {
         "places": [dataclasses.asdict(p) for p in ex.places],
         "markers": [list(m) for m in ex.markers],
+        "relation_tokens": sorted(ex.relation_tokens),
         "attempts": state.attempts + 1,
     }
     if res.model in ("rule", "ner"):

@@ -34,6 +34,7 @@ class GroundingState:
     # extract: place mentions with a status (active / retracted / negated / reference) and repair markers
     places: list[dict[str, Any]] = field(default_factory=list)
     markers: list[list[Any]] = field(default_factory=list)
+    relation_tokens: list[int] = field(default_factory=list)  # words of a relation between two named places
     # classify: category cues and (entity, location, category) candidates
     cues: list[dict[str, Any]] = field(default_factory=list)
     candidates: list[dict[str, Any]] = field(default_factory=list)
