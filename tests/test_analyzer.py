@@ -2367,6 +2367,7 @@ def test_dev37_market_square_phenomena(analyzer, text, expected):
     ("mining_town", "The council depot is undamaged.", [("council depot", "safe_haven")]),
     ("mining_town", "Treatment area is in the welfare hall.", [("welfare hall", "safe_haven")]),
     ("mining_town", "Disregard the earlier message about gas at zion chapel.", []),
+    ("racecourse", "Disregard my last about water in the groundstaff sheds. It was a burst trough.", []),
     ("racecourse", "A steward's been swept off his feet at the brook bend.", [("brook bend", "in_distress")]),
     ("racecourse", "The stable staff are moving the horses out of the stable yard, smoke everywhere.",
      [("stable yard", "fire_and_smoke")]),

@@ -4221,6 +4221,8 @@ class ReportAnalyzer:
                     # "disregard my last, the spill is at the store": an earlier report is withdrawn and
                     # what follows replaces it
                     until = i if phrase in lx.PREVIOUS_REPORT_WITHDRAWN else len(norms)
+                    if until == i and norms[i + len(key):i + len(key) + 1] in (("about",), ("regarding",), ("re",)):
+                        until = len(norms)  # "disregard my last about water in the sheds": what it was about
                     if phrase in lx.DISMISSED_BEFORE:
                         until = i + len(key)  # ("'supermarket smoke was a barbecue' ...; 'water tower leaking'")
                     # "no fire at the chip shop, it's just steam, but the hotel's got a proper fire going": a
