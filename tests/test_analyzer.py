@@ -2368,6 +2368,11 @@ def test_dev37_market_square_phenomena(analyzer, text, expected):
     ("mining_town", "Treatment area is in the welfare hall.", [("welfare hall", "safe_haven")]),
     ("mining_town", "Disregard the earlier message about gas at zion chapel.", []),
     ("racecourse", "Disregard my last about water in the groundstaff sheds. It was a burst trough.", []),
+    # a later update that closes the job closes what was reported; someone "found safe" is no safe place
+    ("mining_town", "Log. 15:10 son reported missing at pit row. 15:14 update: son located, uninjured, report closed.",
+     []),
+    ("mining_town", "Casualty in the colliers arms - cancel, cancel, the landlord's been found safe at his daughter's.",
+     []),
     ("racecourse", "A steward's been swept off his feet at the brook bend.", [("brook bend", "in_distress")]),
     ("racecourse", "The stable staff are moving the horses out of the stable yard, smoke everywhere.",
      [("stable yard", "fire_and_smoke")]),

@@ -4250,6 +4250,14 @@ class ReportAnalyzer:
                                     for j in range(i) if sentence_of[j] == n):
                         # "Fire at the bakery! ... oh, no, sorry, it's just steam off their ovens, false alarm."
                         alarms[n - 1] = len(norms)
+        # "... child stuck up a tree in the park. Update - child now down and unhurt, job closed.": a later
+        # update that closes the job closes what was reported before it
+        closed = [sentence_of[i] for i in range(len(norms) - 1) if norms[i + 1] == "closed"
+                  and norms[i] in ("job", "incident", "report", "case", "call")
+                  and "update" in {norms[j] for j in range(len(norms)) if sentence_of[j] == sentence_of[i]}]
+        if closed:
+            for n in range(max(closed)):
+                alarms[n] = len(norms)
         if not alarms:
             return cues
         return [replace(c, polarity="denied", reason="false alarm")

@@ -280,7 +280,7 @@ BACK_REFERENCE_WORDS = {"it", "its", "s", "is", "has", "been", "thats", "that", 
                         "ive"}
 
 # Phrases that contain cue words but claim nothing ("the smoke alarm went off", "fire crew on site").
-NEUTRAL_PHRASES = ["stable staff", "stable lads", "stable lad", "stable hands", "stable hand", "stable girls",
+NEUTRAL_PHRASES = ["been found safe", "found safe and well", "found safe at", "stable staff", "stable lads", "stable lad", "stable hands", "stable hand", "stable girls",
                    "stable block", "stable door", "stable doors", "use it to bring", "use it to get", "use it to take", "use it to move", "use it to evacuate",
                    "use that to bring", "use that to get", "out of use", "out of action", "out of service", "out of the smoke", "away from the smoke", "out of the rain", "out of the water", "out of the fumes",
                    "people sitting in here", "people sitting in there", "sitting in here", "waiting in here",
