@@ -659,25 +659,8 @@ class ReportAnalyzer:
         self._apply_confirmations(ex, norms)
         self._apply_transit(ex)
         self._apply_cut_off(ex, norms)
-        self._apply_cut_off_names(ex)
         ex.places.sort(key=lambda p: p.start_tok)
         return ex
-
-    def _apply_cut_off_names(self, ex: Extraction) -> None:
-        """"trapped outside the hote-- outside the bank": a name cut off mid-word and the sentence said again
-        with another place; the word cut off is a false start."""
-        toks = ex.tokens
-        for p in sorted(ex.active, key=lambda p: p.start_tok):
-            gap = toks.gaps[p.end_tok] if p.end_tok < len(toks) else ""
-            word = toks.tokens[p.end_tok - 1].text.lower()
-            said = {w for form in self.kb.landmark_by_name[p.landmark].surface_forms for w in form.lower().split()}
-            if p.end_tok - p.start_tok != 1 or not any(d in gap for d in ("--", "—", "–")) or word in said \
-                    or not any(w.startswith(word) for w in said):
-                continue  # (only a word no name holds whole: "the garage —" is said in full)
-            nxt = next((q for q in ex.active if p.end_tok <= q.start_tok <= p.end_tok + 4
-                        and q.landmark != p.landmark), None)
-            if nxt is not None:
-                self._take_back(ex, p, nxt, "cut off mid-word and said again")
 
     @staticmethod
     def _apply_hesitation_chains(ex: Extraction, norms: tuple[str, ...]) -> None:
@@ -886,14 +869,8 @@ class ReportAnalyzer:
     def _partial_names(self, toks: Tokens, norms: tuple[str, ...], taken: set[int]) -> list[PlaceMention]:
         """"the hardware —": the first words of a multi-word name, cut off by a pause."""
         if not hasattr(self, "_prefixes"):
-            counts: dict[tuple[str, ...], set[str]] = {}
-            for lm in self.kb.landmarks:
-                for form in lm.surface_forms:
-                    words = name_words(form)
-                    for n in range(1, len(words)):
-                        counts.setdefault(words[:n], set()).add(lm.name)
             cue_words = {w for key in self._cue_keys() for w in key}
-            self._prefixes = {k: next(iter(v)) for k, v in counts.items()
+            self._prefixes = {k: next(iter(v)) for k, v in self._name_prefix_owners.items()
                               if len(v) == 1 and not set(k) & cue_words and not set(k) & lx.GENERIC_HEADS}
         out = []
         for i in range(1, len(norms)):
@@ -1046,16 +1023,22 @@ class ReportAnalyzer:
         return firsts
 
     @functools.cached_property
-    def _headless_forms(self) -> dict[tuple[str, ...], str]:
-        """Multi-word names without their last word ("cavendish" for "cavendish stand", "valley primary"
-        for "valley primary school"), where only one landmark's names begin so and no name is just that."""
+    def _name_prefix_owners(self) -> dict[tuple[str, ...], set[str]]:
+        """The first words of every multi-word name (all but its last), with the landmarks whose names begin so."""
         owners: dict[tuple[str, ...], set[str]] = {}
-        whole = {name_words(form) for lm in self.kb.landmarks for form in lm.surface_forms}
         for lm in self.kb.landmarks:
             for form in lm.surface_forms:
                 words = name_words(form)
                 for n in range(1, len(words)):
                     owners.setdefault(words[:n], set()).add(lm.name)
+        return owners
+
+    @functools.cached_property
+    def _headless_forms(self) -> dict[tuple[str, ...], str]:
+        """Multi-word names without their last word ("cavendish" for "cavendish stand", "valley primary"
+        for "valley primary school"), where only one landmark's names begin so and no name is just that."""
+        owners = self._name_prefix_owners
+        whole = {name_words(form) for lm in self.kb.landmarks for form in lm.surface_forms}
         banned = self._single_cue_words | self._relation_name_words | lx.FUNCTION_WORDS | lx.DESCRIPTIVE_WORDS \
             | lx.GENERIC_HEADS | lx.STOREY_WORDS | lx.PART_NOUNS
         described = {lm.name: " " + " ".join(norm_phrase(lm.description)) + " " for lm in self.kb.landmarks}
@@ -1311,6 +1294,8 @@ class ReportAnalyzer:
                         or any(toks.clause_start[j] for j in range(i + 1, i + n)):
                     continue  # ("fuel from" is not "fuel farm"; "the munisipal building" is the municipal one)
                 word = "".join(norms[j] for j in span)  # ("hanger two's": the keys drop the "'s")
+                if self._cut_off_here(toks, i + n - 1):
+                    continue  # "outside the hote-- outside the bank": a word cut off, for ``_false_starts``
                 typo = self._typo_of(word, [norms[j] for j in span],
                                      raw=toks.tokens[i].text.lower() if n == 1 else None)
                 if typo is None and n > 1 and word in self._spellings and len(word) >= 8 \
@@ -1424,6 +1409,13 @@ class ReportAnalyzer:
 
     def _cue_keys(self) -> list[tuple[str, ...]]:
         return [key for bucket in self._cues._by_first.values() for key, _ in bucket]
+
+    def _cut_off_here(self, toks: Tokens, t: int) -> bool:
+        """Token ``t`` is cut off by a dash and begins, but is not, a word of some landmark's names."""
+        gap = toks.gaps[t + 1] if t + 1 < len(toks) else toks.text[toks.tokens[t].end:]
+        frag = toks.tokens[t].text.lower()
+        return gap[:1] in ("-", "—", "–") and frag.isalpha() and frag not in self._name_word_owners \
+            and any(w.startswith(frag) for w in self._name_word_owners)
 
     def _false_starts(self, toks: Tokens, taken: set[int]) -> list[PlaceMention]:
         """Cut-off words ("the fire st— at the police station") that begin a landmark name."""
