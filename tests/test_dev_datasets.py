@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev37) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev38) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -56,6 +56,8 @@ RAIL_YARD = ROOT / "knowledge_bases" / "rail_yard"
 WINE_ESTATE = ROOT / "knowledge_bases" / "wine_estate"
 RACECOURSE = ROOT / "knowledge_bases" / "racecourse"
 MINING_TOWN = ROOT / "knowledge_bases" / "mining_town"
+TORNADO = ROOT / "knowledge_bases" / "tornado_suburb"
+ASH_ISLAND = ROOT / "knowledge_bases" / "ash_island"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -210,6 +212,11 @@ SETS = {
     "dev37/market_square": _set("dev37/market_square.jsonl", MARKET_SQUARE, "d37m", THIRTY),
     "dev37/racecourse": _set("dev37/racecourse.jsonl", RACECOURSE, "d37r", THIRTY),
     "dev37/mining_town": _set("dev37/mining_town.jsonl", MINING_TOWN, "d37t", THIRTY),
+    "dev38/market_square": _set("dev38/market_square.jsonl", MARKET_SQUARE, "d38m", EVEN),
+    "dev38/riverbend": _set("dev38/riverbend.jsonl", RIVERBEND, "d38r",
+                            {"standard": 20, "messy": 20, "advanced_messy": 20}),
+    "dev38/tornado_suburb": _set("dev38/tornado_suburb.jsonl", TORNADO, "d38t", THIRTY),
+    "dev38/ash_island": _set("dev38/ash_island.jsonl", ASH_ISLAND, "d38i", THIRTY),
 }
 
 
