@@ -2385,3 +2385,47 @@ def test_word_sets_hold_the_keys_tokens_are_compared_by():
     """Sets compared with token keys hold each word's key too: "families" is read as "familie"."""
     assert norm("families") in lx.PEOPLE_OF_PLACE and norm("windows") in lx.ENTRANCE_PARTS
     assert norm("approaches") in lx.APPROACH_NOUNS and norm("bricks") in lx.DANGER_KIND_PARTS
+
+
+@pytest.mark.parametrize(("kb", "text", "expected"), [
+    # a relation's whole listed phrase is not cut to its verb because the verb is also a cue ("shelters")
+    ("tornado_suburb", "Two men hurt at the tree farm that shelters the back of the plaza.",
+     [("kessler tree nursery", "hurt_or_pinned")]),
+    # an inverse relative clause whose subject is a named place: "the road that same gully empties onto"
+    ("ash_island", "Lava in the black gully. The road that same gully empties onto is buried in ash.",
+     [("harbour road", "ashfall_and_slide"), ("lava gully", "ashfall_and_slide")]),
+    # the relation's own verb between a pronoun anchor and the matched words: "the tower it huddles under"
+    ("ash_island", "The boat shed is covered in ash, and the tower it huddles under has a man hurt on the steps.",
+     [("boat shed", "ashfall_and_slide"), ("lighthouse", "person_at_risk")]),
+    # a noun of the relation's name after a possessive: "backs onto its lot" for ``backs onto the lot of``
+    ("tornado_suburb", "Dobbins is fine. The place that backs onto its lot has a resident pinned under a wardrobe.",
+     [("willow court senior living", "hurt_or_pinned")]),
+    # a plural that is a verb after a name is no mention of "the tower"; the two-hop chain resolves
+    ("tornado_suburb", "A kid with a broken wrist in whatever's bolted onto the school that big blue towers over.",
+     [("hollis school gym", "hurt_or_pinned")]),
+    # "that same shed" is the shed said before, as a relation's anchor
+    ("ash_island", "The smokehouse that leans on that same shed has lost its roof.", [("fish smokehouse", "ashfall_and_slide")]),
+    # depth and gas words: ash, not water; the smell of rotten eggs is gas; "came down" is no downed line
+    ("ash_island", "Ash is knee deep on the sheep grounds.", [("high pasture", "ashfall_and_slide")]),
+    ("ash_island", "Rotten egg smell all through the stink hole.", [("sulphur hollow", "vent_gas")]),
+    ("tornado_suburb", "The steeple came down through the roof of grace church.", [("grace fellowship church", "wind_wreckage")]),
+    # where no description names fire, it goes where explosions go (gas and power here, not wind damage)
+    ("tornado_suburb", "The pole at the quickstop is on fire.", [("quickstop gas station", "utility_peril")]),
+    # who is calling, from a place described: "Relay from a station on the east ridge:"
+    ("riverbend", "Relay from a station on the east ridge: one walking wounded inside the granary.",
+     [("granary", "casualty")]),
+    # "disregard all of it" withdraws what the earlier sentences said too
+    ("riverbend", "I reported smoke at the almshouses. It was a garden bonfire. Please disregard all of it.", []),
+])
+def test_dev38_phenomena(kb_analyzers, kb, text, expected):
+    assert claims(kb_analyzers[kb], text) == expected
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    ("Two lads went into the gym and haven't come out.", [("sports hall", "victim")]),
+    ("My neighbour is on the top floor of the flats in a wheelchair, he cannot come down.",
+     [("apartment block", "victim")]),
+    ("The scouts are waiting safely in the church.", [("church", "safe_zone")]),
+])
+def test_dev38_market_square_phenomena(analyzer, text, expected):
+    assert claims(analyzer, text) == expected

@@ -462,7 +462,7 @@ class ReportAnalyzer:
             return out
         taken = set(covered)
         for t in range(len(norms)):
-            if t in cue_tokens and t > 0 and (norms[t - 1] in ("that", "which")
+            if t in cue_tokens and t not in known and t > 0 and (norms[t - 1] in ("that", "which")
                                               or norms[t - 1] not in lx.COPULAS | lx.DETERMINERS | {"re", "ve"}) \
                     and norms[t + 1:t + 2] and norms[t + 1] in lx.ARTICLES and t + 2 in covered \
                     and not toks.clause_start[t] and self._keyword_relation(toks.tokens[t].text.lower()) is not None:
@@ -600,6 +600,10 @@ class ReportAnalyzer:
                     and toks.tokens[a].text.lower().endswith("s") and not any(
                         f.lower().endswith("s") for f in self.kb.landmark_by_name[landmark].surface_forms):
                 continue  # "the pond's over its banks": a thing of its own, not the landmark
+            if b - a == 1 and raw.endswith("s") and any(p.end_tok == a for p in places) \
+                    and self._relations.match_at(norms, a) is not None and not any(
+                        f.lower().endswith("s") for f in self.kb.landmark_by_name[landmark].surface_forms):
+                continue  # "the school that big blue towers over": a verb after a name, not "the tower"
             places.append(self._mention(toks, a, b, landmark))
         places.extend(self._partial_names(toks, norms, {i for p in places for i in range(p.start_tok, p.end_tok)}))
         places.extend(self._head_names(toks, norms, {i for p in places for i in range(p.start_tok, p.end_tok)},
@@ -943,8 +947,10 @@ class ReportAnalyzer:
                 out.append(self._mention(toks, i, i + 1, self._heads[w]))
                 continue
             if i == 0 or w not in self._heads or i in taken or (i - 1) in taken or not (
-                    norms[i - 1] == "the" or norms[i - 1] in ("my", "our") and (i - 1) in rel_ends):
-                # ("the hall right below my cottage": the speaker's own, as a relation's anchor; not "my kitchen")
+                    norms[i - 1] == "the" or norms[i - 1] in ("my", "our") and (i - 1) in rel_ends
+                    or norms[i - 1] == "same" and i >= 2 and norms[i - 2] in ("the", "that", "this")):
+                # ("the hall right below my cottage": the speaker's own, as a relation's anchor; not "my kitchen";
+                # "the road that same gully empties onto": the one said before)
                 continue
             contracted = toks.tokens[i].text.lower().endswith(("'s", "’s"))
             said_of = contracted or i + 1 >= len(norms) or toks.clause_start[i + 1] or norms[i + 1] in lx.COPULAS
@@ -1904,7 +1910,7 @@ class ReportAnalyzer:
                      flipped: bool, place_tokens: set[int], marker_tokens: set[int], inverse_pass: bool) -> None:
         if any(i in place_tokens for i in range(a, b)):
             return  # already inside a resolved description
-        anchor, anchor_end, pronoun = self._anchor_after(ex, norms, b)
+        anchor, anchor_end, pronoun = self._anchor_after(ex, norms, b, phrase)
         if anchor is None and norms[a:b] in lx.IMPLICIT_ANCHOR and (b >= len(norms) or ex.tokens.clause_start[b]
                                                                     or not any(p.start_tok == b for p in ex.places)) \
                 and not self._names_other_object(toks, norms, b):
@@ -1991,11 +1997,14 @@ class ReportAnalyzer:
         if not generic and anchor is not None and words and words[-1] in lx.STOREY_WORDS | {"rooms", "room", "storeys"} \
                 and self._follow(anchor.landmark, phrase, head_text, inverse=flipped)[0] is not None:
             generic = True  # "people trapped on the floor above the corn exchange", where the KB puts a place above it
+        if anchor is None and head_place is not None and head_place.start_tok > 1 \
+                and norms[head_place.start_tok - 1] in ("that", "which") and self._plain_head(norms, head_place.start_tok - 2):
+            generic = False  # "the road that gully empties onto": "that" opens a relative clause, the gully its subject
         if anchor is None:
             # inverse: "the one (that) the garage sits behind", "the row it shares a wall with"
             if generic and not (words and words[-1] in ("it", "they", "theyre")):
                 return
-            found = self._inverse_anchor(ex, norms, a)
+            found = self._inverse_anchor(ex, norms, a, phrase)
             if found is None:
                 return
             anchor_p, hs, named = found
@@ -2310,8 +2319,13 @@ class ReportAnalyzer:
                 return True
         return False
 
-    def _anchor_after(self, ex: Extraction, norms: tuple[str, ...], b: int) -> tuple[PlaceMention | None, int, bool]:
-        """The landmark a relation phrase points at: a place right after it, or a pronoun."""
+    def _anchor_after(self, ex: Extraction, norms: tuple[str, ...], b: int,
+                      phrase: str = "") -> tuple[PlaceMention | None, int, bool]:
+        """The landmark a relation phrase points at: a place right after it, or a pronoun.
+
+        ``phrase`` is the KB relation read: a noun of its name may follow a possessive ("the place that backs
+        onto its lot" for ``backs onto the lot of``)."""
+        own_nouns = {w for w in norm_phrase(phrase)[1:] if len(w) >= 3 and w not in lx.FUNCTION_WORDS}
         j = b
         if norms[j : j + 1] in (("the",), ("its",)) and j + 2 < len(norms) and norms[j + 1] in lx.PART_NOUNS \
                 and norms[j + 2] == "of" and (norms[j] == "the" or any(p.end_tok <= b for p in ex.places)):
@@ -2321,7 +2335,8 @@ class ReportAnalyzer:
             j = b = _past_approach(norms, j)  # "the post guarding the way into reception": the anchor after
         # "the shop attached to it's got a live wire": "it's" right after the relation is "it has", the pronoun
         its = b < len(norms) and norms[b] == "its" and any(q in ex.tokens.tokens[b].text for q in ("'", "’"))
-        while j < len(norms) and (norms[j] in lx.DETERMINERS or norms[j] in lx.FILLERS or norms[j] in ("my", "your"))\
+        while j < len(norms) and (norms[j] in lx.DETERMINERS or norms[j] in lx.FILLERS or norms[j] in ("my", "your")
+                                  or norms[j] == "same" and j > b and norms[j - 1] in ("the", "that", "this"))\
                 and j - b < 3:
             if norms[j] in ("that", "this") and (j + 1 >= len(norms) or ex.tokens.clause_start[j + 1]
                                                  or norms[j + 1] in lx.COPULAS
@@ -2345,9 +2360,9 @@ class ReportAnalyzer:
         if place is not None and place.status in ("active", "retracted", "negated"):
             if place.status == "active" or place.start_tok == j:
                 return place, place.end_tok, False
-        if j > b and norms[j - 1] in ("its", "their") and j < len(norms) and norms[j] in (
+        if j > b and norms[j - 1] in ("its", "their") and j < len(norms) and (norms[j] in (
                 "side", "back", "wall", "rear", "front", "end", "corner", "gable", "left", "right", "north", "south", "east",
-                "west"):
+                "west") or norms[j] in own_nouns):
             # "the shop attached to its side": the possessive points back to the last place
             before = [p for p in ex.places if p.end_tok <= b]
             if before:
@@ -2409,11 +2424,17 @@ class ReportAnalyzer:
             head_start += 1
         return head_start, words
 
-    def _inverse_anchor(self, ex: Extraction, norms: tuple[str, ...], a: int) -> tuple[PlaceMention, int, bool] | None:
-        """"the one (that) the garage sits behind": (anchor, start of the description, head is a named place)."""
+    def _inverse_anchor(self, ex: Extraction, norms: tuple[str, ...], a: int,
+                        phrase: str = "") -> tuple[PlaceMention, int, bool] | None:
+        """"the one (that) the garage sits behind": (anchor, start of the description, head is a named place).
+
+        ``phrase`` is the KB relation read; its own verb may stand between the anchor and the matched words
+        ("the tower it huddles under" for ``huddles_in_the_lee_of``)."""
+        verb = phrase.split()[0] if phrase and "_" not in phrase.split()[0] else ""
         j = a
-        while j > 0 and norms[j - 1] in lx.INVERSE_VERBS | {"a", "an"} and a - j < 3 \
-                and not any(p.end_tok == j and p.status == "active" for p in ex.places):
+        while j > 0 and (norms[j - 1] in lx.INVERSE_VERBS | {"a", "an"}
+                         or verb and j == a and len(norms[j - 1]) >= 4 and _same_stem(norms[j - 1], verb.rstrip("s"))) \
+                and a - j < 3 and not any(p.end_tok == j and p.status == "active" for p in ex.places):
             j -= 1  # (not past a name's own last word: "car park A lies downhill of")
         anchor = next((p for p in ex.places if p.end_tok == j and p.status == "active"), None)
         if anchor is None and j > 0 and norms[j - 1] in ("it", "its", "they", "theyre") and j - 1 > 0 \
@@ -2801,12 +2822,27 @@ class ReportAnalyzer:
         return len(before) <= 4 and all(toks.tokens[i].text[:1].isupper() or toks.tokens[i].text.isdigit()
                                         for i in before) and not any(self._cues.match_at(norms, i) for i in before)
 
+    @staticmethod
+    def _from_label(toks: Tokens, norms: tuple[str, ...], p: PlaceMention) -> bool:
+        """"From the pump house: ...", "Relay from a station on the east ridge: ...": who is calling."""
+        k = p.start_tok - 1 if p.start_tok >= 1 and norms[p.start_tok - 1] in lx.ARTICLES else p.start_tok
+        if k < 1 or norms[k - 1] != "from" or p.end_tok >= len(norms) or not toks.gaps[p.end_tok].strip().startswith(":"):
+            return False
+        opener = k - 1
+        while opener > 0 and not toks.sentence_start[opener] and k - opener <= 3 \
+                and norms[opener - 1] in ("relay", "relayed", "relaying"):
+            opener -= 1  # "Relay from ...:" (not "Report from the doctor's office:", the place reported on)
+        return bool(toks.sentence_start[opener])
+
     def _apply_transit(self, ex: Extraction) -> None:
         """"heading to the bakery", "passing the church": the team moves; nothing is claimed there."""
         toks = ex.tokens
         norms = toks.norms(0, len(toks))
         supposed = self._conditional_tokens(toks, norms)
         for idx, p in enumerate(ex.places):
+            if p.status == "active" and (p.via or "").startswith("description of") and self._from_label(toks, norms, p):
+                ex.places[idx] = replace(p, status="reference", reason="who is calling ('From X:'): no claim")
+                continue
             if p.status != "active" or p.via is not None:
                 continue
             if p.start_tok in supposed:
@@ -2819,9 +2855,7 @@ class ReportAnalyzer:
                     and norms[p.end_tok] in ("reporting", "calling", "speaking") and toks.clause_start[p.end_tok + 1]:
                 ex.places[idx] = replace(p, status="reference", reason="who is calling ('X reporting,'): no claim")
                 continue
-            k = p.start_tok - 1 if p.start_tok >= 1 and norms[p.start_tok - 1] in lx.ARTICLES else p.start_tok
-            if k >= 1 and norms[k - 1] == "from" and toks.sentence_start[k - 1] and p.end_tok < len(norms) \
-                    and toks.gaps[p.end_tok].strip().startswith(":"):
+            if self._from_label(toks, norms, p):
                 ex.places[idx] = replace(p, status="reference", reason="who is calling ('From X:'): no claim")
                 continue
             j = p.start_tok
@@ -4234,6 +4268,9 @@ class ReportAnalyzer:
                         until = min(repaired)
                     alarms[sentence_of[i]] = max(alarms.get(sentence_of[i], 0), until)
                     n = sentence_of[i]
+                    if phrase in lx.WHOLE_REPORT_WITHDRAWN:
+                        for m in range(n):  # "... Please disregard all of it, nobody is hurt."
+                            alarms[m] = len(norms)
                     if n > 0 and phrase not in lx.PREVIOUS_REPORT_WITHDRAWN and not any(
                             sentence_of[p.start_tok] == n and p.start_tok < i for p in places_now) \
                             and not any(c.start_tok < i and sentence_of[c.start_tok] == n and c.polarity == "affirmed"

@@ -88,7 +88,7 @@ silt|full of silt|over its banks|over the banks|out of its banks|broken its bank
 """.replace("\n", ""))
 
 _add(DESIRABLE, """
-put the families in there|put everyone in there|
+waiting safely|sheltering safely|safely inside|blankets out|dry and warm|warm and dry|put the families in there|put everyone in there|
 put them in there|put people in there|
 air's clean|air is clean|the air is clean|clean air|air's okay|air is okay|air's ok|air is ok|air's fine|air is fine|
 air is good|air's good|good spot|a good spot|good place|a good place|
@@ -189,6 +189,7 @@ just lying there|lying there|lying on the floor|lying on the ground|fell off|fal
 out cold|knocked out|knocked unconscious|electrocuted|got a shock|got a belt|needs lifting|needs lifting off|
 needs winching|needs winching off|heat signature|heat signatures|thermal signature|under the bricks|
 under the wreckage|under the masonry|is under it|s under it|are under it|still under it|
+haven't come out|havent come out|have not come out|can't come down|cannot come down|can't come out|cannot come out|is underneath it|s underneath it|are underneath it|haven't come back|hasn't come back|not come back down|not come back yet|gash on his head|gash on her head|a gash on|blood all down his face|blood all down her face|blood down his face|blood down her face|bleeding from the head|bleed from the head|lying motionless|motionless|
 """.replace("\n", ""))
 
 # "collapsed" alone is structural (hazard); "collapsed inside" / "passed out" is a person.
@@ -321,7 +322,8 @@ FALSE_ALARM = ["false alarm", "never mind", "nevermind", "disregard my last", "d
                "was stood down", "are stood down", "was a mannequin", "was a dummy", "was a training dummy",
                "was a barbecue", "was a bbq", "was a bonfire", "was someone's barbecue", "job closed", "incident closed",
                "it's a bonfire",
-               "its a bonfire", "it's just a bonfire", "it's only a bonfire", "it's a barbecue", "its a barbecue"]
+               "its a bonfire", "it's just a bonfire", "it's only a bonfire", "it's a barbecue", "its a barbecue",
+               "disregard all of it", "disregard all of that", "disregard all that", "ignore all of that", "ignore all of it"]
 # ... of which these say what the thing said before them was: what follows them is not denied
 DISMISSED_BEFORE = {"it's a bonfire", "its a bonfire", "it's just a bonfire", "it's only a bonfire", "it's a barbecue",
                     "its a barbecue", "is stood down", "been stood down", "was stood down", "are stood down", "was a mannequin",
@@ -329,7 +331,13 @@ DISMISSED_BEFORE = {"it's a bonfire", "its a bonfire", "it's just a bonfire", "i
                     "was someone's barbecue"}
 # ... of which these withdraw an earlier report: only what comes before them in the sentence is denied
 PREVIOUS_REPORT_WITHDRAWN = {"disregard my last", "disregard the last report", "ignore my last", "cancel my last",
-                             "disregard my last message", "disregard previous", "never mind", "nevermind"}
+                             "disregard my last message", "disregard previous", "never mind", "nevermind",
+                             "disregard all of it", "disregard all of that", "disregard all that", "ignore all of that",
+                             "ignore all of it"}
+
+# ... of which these withdraw everything said before them, in earlier sentences as well
+WHOLE_REPORT_WITHDRAWN = {"disregard all of it", "disregard all of that", "disregard all that", "ignore all of that",
+                          "ignore all of it"}
 
 # Self-repair markers. Strong ones reach back into the previous sentence.
 STRONG_REPAIR = [
@@ -820,7 +828,7 @@ RELATIVE_COPULAS = {("that", "is"), ("which", "is"), ("that", "s"), ("which", "s
 # all the kind's words: "split open" is a collapse like "collapsed" and "cracked", whatever MiniLM
 # makes of the two words alone. Ambiguous words ("leak", "danger", "blocked") belong to no kind.
 # A kind of danger no category description names goes where its nearest kind goes.
-KIND_FALLBACK = {"smoke": "fire", "storm": "collapse"}
+KIND_FALLBACK = {"smoke": "fire", "storm": "collapse", "fire": "explosion"}
 DANGER_KINDS: dict[str, list[str]] = {
     "crowd": ["crowd crush", "crowd surge", "surge at", "surge in", "surging", "crammed", "packed solid", "pressed flat",
               "pressed against", "pushed up against", "crushing", "pile-up", "pile up", "overcrowded", "stampede",
@@ -830,7 +838,7 @@ DANGER_KINDS: dict[str, list[str]] = {
              "ablaze", "flames", "flame", "in flames", "engulfed", "inferno", "alight", "well alight", "fully alight",
              "fully involved", "going up in flames", "gone up in flames", "smouldering", "smoldering", "charred",
              "gutted", "flashover", "flashover risk", "backdraft", "backdraft risk", "heavy fire", "fire showing",
-             "fully developed fire", "burning debris", "on fire again", "reignited", "hot spot", "hotspot"],
+             "fully developed fire", "on fire again", "reignited", "hot spot", "hotspot"],
     "smoke": ["smoke", "smoking", "smoky", "smoke everywhere", "thick smoke", "smoke logged", "smoke logging",
               "smoke-logged"],
     "gas": ["gas", "gas leak", "leaking gas", "smell of gas", "smells of gas", "gas smell", "strong smell of gas",
@@ -935,7 +943,8 @@ DANGER_KINDS: dict[str, list[str]] = {
 # Words of the kinds' phrases that name the thing, not the danger: they do not vote ("roof down").
 DANGER_KIND_PARTS = _keyed({"roof", "roofs", "wall", "walls", "ceiling", "floor", "chimney", "tree", "trees", "door", "doors",
                      "pipe", "main", "bricks", "slates", "right", "across", "through", "everywhere", "going", "could",
-                     "might", "about", "second", "under", "over", "coming", "gone", "fully", "well", "again", "risk"})
+                     "might", "about", "second", "under", "over", "coming", "gone", "fully", "well", "again", "risk",
+                     "down"})
 
 # Every kind's phrase is an undesirable cue: a new one needs writing only in its kind (older ones are
 # in the UNDESIRABLE list above as well).
@@ -1049,20 +1058,27 @@ DESCRIBED_KINDS: dict[str, tuple[frozenset[str], list[str]]] = {
 # More phrases of the kinds above that read as their kind but do not vote on which category a kind is (so the
 # kinds map onto a KB's categories as they did before these were added).
 DANGER_KIND_EXTRA: dict[str, list[str]] = {
-    "storm": ["peeled off", "been peeled off", "peeled back", "lost its roof", "lost their roof", "lost their roofs",
+    "storm": ["strewn across", "strewn over", "strewn all over", "on their sides", "on its side", "onto its side", "onto their sides", "blew in", "blew straight in", "blown straight in", "roof is gone", "roof's torn", "torn clean off", "came down through", "peeled off", "been peeled off", "peeled back", "lost its roof", "lost their roof", "lost their roofs",
               "lost the roof", "lost its leads", "lost the leads", "roof lifted", "blown clean off", "blown off",
               "off its hinges", "pulled up by the roots", "open to the sky", "rain's coming in", "rain is coming in",
               "rain coming straight in", "rain's coming straight in", "rain pouring in", "rain is pouring"],
-    "fire": ["roof is going up", "roof's going up", "roofs going up", "thatch is going up", "thatch's going up",
+    "fire": ["burning debris", "roof is going up", "roof's going up", "roofs going up", "thatch is going up", "thatch's going up",
              "thatch going up"],
-    "gas": ["methane", "methane leak", "natural gas", "co detected", "co reading", "co readings", "co levels", "high co", "carbon monoxide", "carbon monoxide alarm", "co alarm"],
+    "electric": ["wire is hot", "wires are hot", "line is hot", "lines are hot", "wire as hot", "wires as hot",
+                 "conductors are on", "conductor down", "conductors down", "feeder is down", "feeder down", "lines down",
+                 "line down", "lines are down", "line is down"],
+    "gas": ["rotten egg", "rotten eggs", "rotten-egg smell", "rotten egg smell", "eggy smell", "smell like eggs", "smells like eggs", "smell of eggs", "smells of eggs", "smell like rotten eggs", "there's a hiss", "a loud hiss", "hissing out of", "h2s", "so2", "co2", "sulphur dioxide", "hydrogen sulphide", "carbon dioxide", "methane", "methane leak", "natural gas", "co detected", "co reading", "co readings", "co levels", "high co", "carbon monoxide", "carbon monoxide alarm", "co alarm"],
     "collapse": ["is bending", "it's bending", "is fall down", "has fall down", "fallen down"],
     "water": ["cut off by water", "cut off by the water", "cut off by floodwater", "cut off by the flood", "over its banks", "over the banks", "out of its banks", "broken its banks", "burst their banks", "bursting its banks", "scoured", "scoured out", "water coming through the ceiling", "water through the ceiling", "water pouring through the ceiling",
               "water coming through the roof", "ceiling's leaking", "ceiling is leaking", "water pouring through"],
-    "access": ["fallen oak", "fallen beech", "fallen ash", "fallen branch", "fallen branches"],
-    "ground": ["half buried", "half-buried", "slurry", "full of slurry", "sludge", "silt", "full of silt"],
+    "access": ["rocks across", "rocks across it", "rocks across the road", "debris across", "debris right across", "fallen oak", "fallen beech", "fallen ash", "fallen branch", "fallen branches"],
+    "ground": ["ash a foot deep", "ash is knee deep", "ash knee deep", "ash's knee deep", "ash is ankle deep", "a foot of ash", "feet of ash", "inches of ash", "deep in ash", "covered in ash", "heaped with ash", "buried in ash", "under the ash", "drifts of ash", "ash drifts", "half buried", "half-buried", "slurry", "full of slurry", "sludge", "silt", "full of silt"],
     "fallen": ["hole in the roof", "holes in the roof", "hole in its roof", "hole in the wall", "lost a parapet", "lost its parapet", "lost the parapet", "lost a wall", "lost its wall", "lost a gable", "lost its gable"],
 }
+
+for _phrases in DANGER_KIND_EXTRA.values():  # each an undesirable cue as well, as the kinds' own phrases are
+    for _p in _phrases:
+        ROLE_CUES.setdefault(_p, UNDESIRABLE)
 
 # Nouns for the way to a place, between a relation and its anchor ("guarding the way into reception")
 APPROACH_NOUNS = _keyed({"way", "approach", "approaches", "entrance", "road", "path", "route", "gate", "door"})
