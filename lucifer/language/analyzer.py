@@ -2652,6 +2652,9 @@ class ReportAnalyzer:
             )  # "nothing at the bus depot, it's the supermarket"
             if neg and norms[j] == "instead" and toks.clause_start[j + 1]:
                 neg = False  # "use the school instead, the school's the rest centre": the clause before ends there
+            if neg and norms[j] == "not" and j > 0 and norms[j - 1] in ("do", "dont", "does", "did") \
+                    and any(d in toks.gaps[j + 1] for d in ("—", "–", "--", " - ")):
+                neg = False  # "the harbour road, do not — the harbour road is buried": an order broken off
             # "not the school" but not "not on fire at the school" (that negates a cue)
             after = norms[p.end_tok : p.end_tok + 2]
             if norms[j] in ("take", "taking", "took") and after[:1] and after[0] in ("off", "out", "back", "away"):

@@ -29,7 +29,8 @@ ABBREVIATIONS = {"stn": "station", "bldg": "building", "opp": "opposite", "ppl":
                  "cntr": "centre", "ctr": "centre", "upd": "update", "rf": "roof", "flr": "floor", "blk": "block",
                  "apt": "apartment", "gdn": "garden", "corr": "correction", "cas": "casualty", "invlvd": "involved",
                  "consc": "conscious", "uncon": "unconscious", "uncons": "unconscious", "evac": "evacuated",
-                 "crk": "crack", "chan": "channel", "est": "established"}
+                 "crk": "crack", "chan": "channel", "est": "established",
+                 "saint": "st"}  # ("Saint Brendan" reads as a KB's "st brendan")
 # Shorthand written with a full stop that does not end the sentence before a lower-case word.
 _PERIOD_ABBREVIATIONS = set(ABBREVIATIONS) | {"est", "st", "vs", "etc"}
 
