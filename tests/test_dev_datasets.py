@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev38) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev39) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -58,6 +58,8 @@ RACECOURSE = ROOT / "knowledge_bases" / "racecourse"
 MINING_TOWN = ROOT / "knowledge_bases" / "mining_town"
 TORNADO = ROOT / "knowledge_bases" / "tornado_suburb"
 ASH_ISLAND = ROOT / "knowledge_bases" / "ash_island"
+TOWER_BLOCK = ROOT / "knowledge_bases" / "tower_block"
+REFUGEE_CAMP = ROOT / "knowledge_bases" / "refugee_camp"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -217,6 +219,9 @@ SETS = {
                             {"standard": 20, "messy": 20, "advanced_messy": 20}),
     "dev38/tornado_suburb": _set("dev38/tornado_suburb.jsonl", TORNADO, "d38t", THIRTY),
     "dev38/ash_island": _set("dev38/ash_island.jsonl", ASH_ISLAND, "d38i", THIRTY),
+    "dev39/market_square": _set("dev39/market_square.jsonl", MARKET_SQUARE, "d39m", THIRTY),
+    "dev39/tower_block": _set("dev39/tower_block.jsonl", TOWER_BLOCK, "d39t", THIRTY),
+    "dev39/refugee_camp": _set("dev39/refugee_camp.jsonl", REFUGEE_CAMP, "d39c", THIRTY),
 }
 
 
