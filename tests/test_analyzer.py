@@ -2416,6 +2416,28 @@ def test_word_sets_hold_the_keys_tokens_are_compared_by():
      [("granary", "casualty")]),
     # "disregard all of it" withdraws what the earlier sentences said too
     ("riverbend", "I reported smoke at the almshouses. It was a garden bonfire. Please disregard all of it.", []),
+    # "Saint" is the KB's "st"; an order broken off ("do not —") negates nothing
+    ("ash_island", "My grandmother is in Saint Brendan and she cannot breathe.", [("chapel of st brendan", "person_at_risk")]),
+    ("ash_island", "The harbour road, do not — the harbour road is buried.", [("harbour road", "ashfall_and_slide")]),
+    # a three-letter place noun stands for the one name it ends ("the gym" for "hollis school gym")
+    ("tornado_suburb", "Everybody is sheltering in the gym.", [("hollis school gym", "storm_refuge")]),
+    # "One from Willow Court:" names the place reported on, not only who calls
+    ("tornado_suburb", "Two callers. One from Willow Court: a resident can't get out.",
+     [("willow court senior living", "hurt_or_pinned")]),
+    ("tornado_suburb", "Windows all blown out of the building sitting kitty-corner from Station Nine.",
+     [("maple branch library", "wind_wreckage")]),
+    # a cue word used as the relation's verb, with its particles: "leaning on", "spreading out below"
+    ("ash_island", "Somebody's trapped in the building leaning on the shed that sits in the lee of the light.",
+     [("fish smokehouse", "person_at_risk")]),
+    ("ash_island", "We've brought the children to the open ground spreading out below the old mill and it's clear.",
+     [("windmill green", "sheltered_ground")]),
+    # a part's state is no relation: "roof is rolled back" is not ``rolls down to``
+    ("tornado_suburb", "The book barn's roof is rolled back like a sardine can.", [("maple branch library", "wind_wreckage")]),
+    # where the speaker looks from is no claim
+    ("riverbend", "From the abbey tower I can see the green is all under water.", [("village green", "threat")]),
+    # a person known by their place, said to be in another place right after
+    ("ash_island", "The old boy from the smokehouse is lying in the shed it leans up against, cut his head.",
+     [("boat shed", "person_at_risk")]),
 ])
 def test_dev38_phenomena(kb_analyzers, kb, text, expected):
     assert claims(kb_analyzers[kb], text) == expected
@@ -2426,6 +2448,7 @@ def test_dev38_phenomena(kb_analyzers, kb, text, expected):
     ("My neighbour is on the top floor of the flats in a wheelchair, he cannot come down.",
      [("apartment block", "victim")]),
     ("The scouts are waiting safely in the church.", [("church", "safe_zone")]),
+    ("One of my leaders is still out at the water tower with a badly gashed leg.", [("water tower", "victim")]),
 ])
 def test_dev38_market_square_phenomena(analyzer, text, expected):
     assert claims(analyzer, text) == expected

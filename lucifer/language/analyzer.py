@@ -462,9 +462,14 @@ class ReportAnalyzer:
             return out
         taken = set(covered)
         for t in range(len(norms)):
+            k = t + 1  # past the verb's particles: "leaning on the shed", "spreading out below the old mill"
+            while k < min(t + 3, len(norms)) and norms[k] in lx.RELATION_ENDINGS | {"out", "up", "down", "into", "in"} \
+                    and not toks.clause_start[k]:
+                k += 1
             if t in cue_tokens and t not in known and t > 0 and (norms[t - 1] in ("that", "which")
                                               or norms[t - 1] not in lx.COPULAS | lx.DETERMINERS | {"re", "ve"}) \
-                    and norms[t + 1:t + 2] and norms[t + 1] in lx.ARTICLES and t + 2 in covered \
+                    and norms[k:k + 1] and norms[k] in lx.ARTICLES \
+                    and (k + 1 in covered or k > t + 1 and k + 1 < len(norms) and self._place_head_word(norms[k + 1])) \
                     and not toks.clause_start[t] and self._keyword_relation(toks.tokens[t].text.lower()) is not None:
                 pass  # "the wall sheltering the towpath": a cue word ("shelter") used as the relation's verb
             elif t in taken or t in cue_tokens or t in known or t + 1 in known:
@@ -485,6 +490,9 @@ class ReportAnalyzer:
             if t > 0 and (norms[t - 1] in lx.COPULAS or toks.tokens[t - 1].text.lower().endswith(("'s", "’s"))) \
                     and hit[0].split()[0].startswith(norms[t]) and norms[t] != hit[0].split()[0]:
                 continue  # "apron's open": a state, not "opens_onto"
+            if t >= 2 and norms[t - 1] in lx.COPULAS and norms[t - 2] in lx.PART_NOUNS | lx.DANGER_KIND_PARTS \
+                    and word.lower().endswith("ed"):
+                continue  # "the book barn's roof is rolled back": a state of a part, not "rolls_down_to"
             if toks.clause_start[t] and t + 1 < len(norms) and norms[t + 1] in lx.MOVED_PEOPLE | {
                     "them", "it", "clear", "away", "out", "back", "off", "everybody"}:
                 continue  # "..., keep everyone clear of them": an order, not "keeps_watch_over"
@@ -926,7 +934,8 @@ class ReportAnalyzer:
                 for w in words:
                     described.setdefault(w, set()).add(lm.name)
             self._heads = {w: next(iter(names)) for w, names in owners.items()
-                           if len(names) == 1 and words_elsewhere.get(w, set()) == names and len(w) >= 4 and w.isalpha()
+                           if len(names) == 1 and words_elsewhere.get(w, set()) == names
+                           and (len(w) >= 4 or w in lx.SHORT_PLACE_NOUNS) and w.isalpha()
                            and len(described.get(w, set()) - names) < 3
                            and w not in cue_words and w not in rel_words and w not in lx.DESCRIPTIVE_WORDS
                            and w not in lx.STOREY_WORDS and w not in lx.PART_NOUNS}  # ("the roof" of anything)
@@ -2834,8 +2843,21 @@ class ReportAnalyzer:
         opener = k - 1
         while opener > 0 and not toks.sentence_start[opener] and k - opener <= 3 \
                 and norms[opener - 1] in ("relay", "relayed", "relaying"):
-            opener -= 1  # "Relay from ...:" (not "Report from the doctor's office:", the place reported on)
+            opener -= 1  # "Relay from ...:" (not "Report from the doctor's office:" nor "One from Willow Court:",
+            # the place reported on)
         return bool(toks.sentence_start[opener])
+
+    @staticmethod
+    def _person_from(toks: Tokens, norms: tuple[str, ...], p: PlaceMention, places: list[PlaceMention]) -> bool:
+        """"The old boy from the smokehouse is lying in the shed": a person known by their place, said to be in
+        another place right after."""
+        k = p.start_tok - 1 if p.start_tok >= 1 and norms[p.start_tok - 1] in lx.ARTICLES else p.start_tok
+        if k < 2 or norms[k - 1] != "from" or norms[k - 2] not in _PERSON_KEYS or p.end_tok >= len(norms) \
+                or norms[p.end_tok] not in ("is", "s", "was", "are", "were") or toks.clause_start[p.end_tok]:
+            return False
+        n = toks.sentence_of[p.start_tok]
+        return any(q.status == "active" and q.landmark != p.landmark and toks.sentence_of[q.start_tok] == n
+                   and p.end_tok < q.start_tok <= p.end_tok + 5 for q in places)
 
     def _apply_transit(self, ex: Extraction) -> None:
         """"heading to the bakery", "passing the church": the team moves; nothing is claimed there."""
@@ -2860,6 +2882,15 @@ class ReportAnalyzer:
                 continue
             if self._from_label(toks, norms, p):
                 ex.places[idx] = replace(p, status="reference", reason="who is calling ('From X:'): no claim")
+                continue
+            k = p.start_tok - 1 if p.start_tok >= 1 and norms[p.start_tok - 1] in lx.ARTICLES else p.start_tok
+            if k >= 1 and norms[k - 1] == "from" and toks.sentence_start[k - 1] \
+                    and any(norms[p.end_tok + d:p.end_tok + d + 3] in (("i", "can", "see"), ("we", "can", "see"))
+                            for d in range(0, 3)):
+                ex.places[idx] = replace(p, status="reference", reason="where the speaker looks from ('From X I can see')")
+                continue
+            if self._person_from(toks, norms, p, ex.places):
+                ex.places[idx] = replace(p, status="reference", reason="where the person is from, not where they are")
                 continue
             j = p.start_tok
             while j > 0 and norms[j - 1] in lx.DETERMINERS | lx.FILLERS | {"at", "to", "by", "the", "from"} \
@@ -3796,6 +3827,7 @@ class ReportAnalyzer:
     def _predicate_region(self, ex: Extraction, p: PlaceMention) -> tuple[int, int]:
         toks = ex.tokens
         marker_starts = {a for a, _, _ in ex.markers}
+        # (a place said again after a repair bounds it too: "the Dome's roof is on, it's the book barn")
         others = [q.start_tok for q in ex.places if q.start_tok > p.start_tok and q.status == "active"]
         stop = min(others + [len(toks)])
         end = p.end_tok
@@ -5532,6 +5564,7 @@ _SOURCE_IS = _phrases(lx.SOURCE_IS)
 # Coordinating phrases and false-alarm markers as token keys, computed once.
 _COORDINATOR_KEYS = [norm_phrase(p) for p in lx.COORDINATOR_PHRASES]
 _FALSE_ALARM_KEYS = [(p, norm_phrase(p)) for p in lx.FALSE_ALARM]
+_PERSON_KEYS = frozenset(w for p in lx.PERSON_NOUNS for w in norm_phrase(p))
 
 # The withdrawal markers ("scratch that") as token keys joined by spaces.
 _WITHDRAW_KEYS = frozenset(" ".join(norm_phrase(m)) for m in lx.WITHDRAW_MARKERS)

@@ -76,19 +76,12 @@ chimney's fallen|chimney has fallen|fallen masonry|fallen tree|tree's fallen|tre
 flattened|smashed in|swaying|fallen in|slipped in|smashed|is going up|s going up|still going up|going up properly|is catching|catching too|caught too|
 no-go|no go|no-go area|no go area|no-go areas|no go areas|a no-go|a no go|a torrent|raging torrent|like a torrent|
 up to the gutters|is up to the|right up to the|up to the windows|up to the second-floor windows|
-water coming through the ceiling|water through the ceiling|water pouring through the ceiling|
-water coming through the roof|ceiling's leaking|ceiling is leaking|water pouring through|is bending|it's bending|is fall down|has fall down|fallen down|carbon monoxide|carbon monoxide alarm|co alarm|
-roof is going up|roof's going up|roofs going up|thatch is going up|thatch's going up|thatch going up|
-fallen oak|fallen beech|fallen ash|fallen branch|fallen branches|peeled off|been peeled off|peeled back|lost its roof|lost their roof|lost their roofs|lost the roof|
-lost its leads|lost the leads|roof lifted|lifted clean off|blown clean off|blown off|off its hinges|
-pulled up by the roots|uprooted|windthrown|windthrow|blown down|open to the sky|rain's coming in|rain is coming in|
-rain coming straight in|rain's coming straight in|rain pouring in|rain is pouring|
-half buried|half-buried|cut off by water|cut off by the water|cut off by floodwater|cut off by the flood|methane|methane leak|natural gas|co detected|co reading|co readings|co levels|high co|slurry|full of slurry|sludge|
-silt|full of silt|over its banks|over the banks|out of its banks|broken its banks|burst their banks|bursting its banks|scoured|scoured out|lost a parapet|lost its parapet|lost the parapet|lost a wall|lost its wall|lost a gable|lost its gable|hole in the roof|holes in the roof|hole in its roof|hole in the wall|
+lifted clean off|
+uprooted|windthrown|windthrow|blown down|
 """.replace("\n", ""))
 
 _add(DESIRABLE, """
-the walls held|walls have held|the roof held|roof has held|waiting safely|sheltering safely|safely inside|blankets out|dry and warm|warm and dry|put the families in there|put everyone in there|
+room for more|room for a few more|room for three or four more|room for plenty more|dry and solid|the walls held|walls have held|the roof held|roof has held|waiting safely|sheltering safely|safely inside|blankets out|dry and warm|warm and dry|put the families in there|put everyone in there|
 put them in there|put people in there|
 air's clean|air is clean|the air is clean|clean air|air's okay|air is okay|air's ok|air is ok|air's fine|air is fine|
 air is good|air's good|good spot|a good spot|good place|a good place|
@@ -189,7 +182,7 @@ just lying there|lying there|lying on the floor|lying on the ground|fell off|fal
 out cold|knocked out|knocked unconscious|electrocuted|got a shock|got a belt|needs lifting|needs lifting off|
 needs winching|needs winching off|heat signature|heat signatures|thermal signature|under the bricks|
 under the wreckage|under the masonry|is under it|s under it|are under it|still under it|
-someone lying|somebody lying|a man lying|a woman lying|a person lying|a child lying|lying at the bottom of|lying injured|lying unconscious|haven't come out|havent come out|have not come out|can't come down|cannot come down|can't come out|cannot come out|is underneath it|s underneath it|are underneath it|haven't come back|hasn't come back|not come back down|not come back yet|gash on his head|gash on her head|a gash on|blood all down his face|blood all down her face|blood down his face|blood down her face|bleeding from the head|bleed from the head|lying motionless|motionless|
+gashed leg|gashed arm|gashed head|gashed his leg|gashed her leg|badly gashed|someone lying|somebody lying|a man lying|a woman lying|a person lying|a child lying|lying at the bottom of|lying injured|lying unconscious|haven't come out|havent come out|have not come out|can't come down|cannot come down|can't come out|cannot come out|is underneath it|s underneath it|are underneath it|haven't come back|hasn't come back|not come back down|not come back yet|gash on his head|gash on her head|a gash on|blood all down his face|blood all down her face|blood down his face|blood down her face|bleeding from the head|bleed from the head|lying motionless|motionless|
 """.replace("\n", ""))
 
 # "collapsed" alone is structural (hazard); "collapsed inside" / "passed out" is a person.
@@ -281,7 +274,7 @@ BACK_REFERENCE_WORDS = {"it", "its", "s", "is", "has", "been", "thats", "that", 
                         "ive"}
 
 # Phrases that contain cue words but claim nothing ("the smoke alarm went off", "fire crew on site").
-NEUTRAL_PHRASES = ["been found safe", "found safe and well", "found safe at", "stable staff", "stable lads", "stable lad", "stable hands", "stable hand", "stable girls",
+NEUTRAL_PHRASES = ["roof is still on", "roof's still on", "been found safe", "found safe and well", "found safe at", "stable staff", "stable lads", "stable lad", "stable hands", "stable hand", "stable girls",
                    "stable block", "stable door", "stable doors", "use it to bring", "use it to get", "use it to take", "use it to move", "use it to evacuate",
                    "use that to bring", "use that to get", "out of use", "out of action", "out of service", "out of the smoke", "away from the smoke", "out of the rain", "out of the water", "out of the fumes",
                    "people sitting in here", "people sitting in there", "sitting in here", "waiting in here",
@@ -1058,7 +1051,7 @@ DESCRIBED_KINDS: dict[str, tuple[frozenset[str], list[str]]] = {
 # More phrases of the kinds above that read as their kind but do not vote on which category a kind is (so the
 # kinds map onto a KB's categories as they did before these were added).
 DANGER_KIND_EXTRA: dict[str, list[str]] = {
-    "storm": ["strewn across", "strewn over", "strewn all over", "on their sides", "on its side", "onto its side", "onto their sides", "blew in", "blew straight in", "blown straight in", "roof is gone", "roof's torn", "torn clean off", "came down through", "peeled off", "been peeled off", "peeled back", "lost its roof", "lost their roof", "lost their roofs",
+    "storm": ["windows all blown out", "windows blown out", "windows are blown out", "windows have blown out", "all blown out", "strewn across", "strewn over", "strewn all over", "on their sides", "on its side", "onto its side", "onto their sides", "blew in", "blew straight in", "blown straight in", "roof is gone", "roof's torn", "torn clean off", "came down through", "peeled off", "been peeled off", "peeled back", "lost its roof", "lost their roof", "lost their roofs",
               "lost the roof", "lost its leads", "lost the leads", "roof lifted", "blown clean off", "blown off",
               "off its hinges", "pulled up by the roots", "open to the sky", "rain's coming in", "rain is coming in",
               "rain coming straight in", "rain's coming straight in", "rain pouring in", "rain is pouring"],
@@ -1068,11 +1061,11 @@ DANGER_KIND_EXTRA: dict[str, list[str]] = {
                  "conductors are on", "conductor down", "conductors down", "feeder is down", "feeder down", "lines down",
                  "line down", "lines are down", "line is down"],
     "gas": ["rotten egg", "rotten eggs", "rotten-egg smell", "rotten egg smell", "eggy smell", "smell like eggs", "smells like eggs", "smell of eggs", "smells of eggs", "smell like rotten eggs", "there's a hiss", "a loud hiss", "hissing out of", "h2s", "so2", "co2", "sulphur dioxide", "hydrogen sulphide", "carbon dioxide", "methane", "methane leak", "natural gas", "co detected", "co reading", "co readings", "co levels", "high co", "carbon monoxide", "carbon monoxide alarm", "co alarm"],
-    "collapse": ["roof fall on", "roof fall in", "roof has split", "roof split", "is bending", "it's bending", "is fall down", "has fall down", "fallen down"],
-    "water": ["cut off by water", "cut off by the water", "cut off by floodwater", "cut off by the flood", "over its banks", "over the banks", "out of its banks", "broken its banks", "burst their banks", "bursting its banks", "scoured", "scoured out", "water coming through the ceiling", "water through the ceiling", "water pouring through the ceiling",
+    "collapse": ["breaking up", "is breaking up", "coming adrift", "come adrift", "broken adrift", "peeling off", "coming off in slabs", "coming away in slabs", "roof fall on", "roof fall in", "roof has split", "roof split", "is bending", "it's bending", "is fall down", "has fall down", "fallen down"],
+    "water": ["yard's a lake", "is a lake", "'s a lake", "like a lake", "completely under", "cut off by water", "cut off by the water", "cut off by floodwater", "cut off by the flood", "over its banks", "over the banks", "out of its banks", "broken its banks", "burst their banks", "bursting its banks", "scoured", "scoured out", "water coming through the ceiling", "water through the ceiling", "water pouring through the ceiling",
               "water coming through the roof", "ceiling's leaking", "ceiling is leaking", "water pouring through"],
     "access": ["rocks across", "rocks across it", "rocks across the road", "debris across", "debris right across", "fallen oak", "fallen beech", "fallen ash", "fallen branch", "fallen branches"],
-    "ground": ["ash a foot deep", "ash is knee deep", "ash knee deep", "ash's knee deep", "ash is ankle deep", "a foot of ash", "feet of ash", "inches of ash", "deep in ash", "covered in ash", "heaped with ash", "buried in ash", "under the ash", "drifts of ash", "ash drifts", "half buried", "half-buried", "slurry", "full of slurry", "sludge", "silt", "full of silt"],
+    "ground": ["hole opened up", "hole has opened up", "hole just opened up", "floor has opened", "floor's opened", "sinkhole", "sink hole", "ash a foot deep", "ash is knee deep", "ash knee deep", "ash's knee deep", "ash is ankle deep", "a foot of ash", "feet of ash", "inches of ash", "deep in ash", "covered in ash", "heaped with ash", "buried in ash", "under the ash", "drifts of ash", "ash drifts", "half buried", "half-buried", "slurry", "full of slurry", "sludge", "silt", "full of silt"],
     "fallen": ["hole in the roof", "holes in the roof", "hole in its roof", "hole in the wall", "lost a parapet", "lost its parapet", "lost the parapet", "lost a wall", "lost its wall", "lost a gable", "lost its gable"],
 }
 
@@ -1085,6 +1078,9 @@ APPROACH_NOUNS = _keyed({"way", "approach", "approaches", "entrance", "road", "p
 
 # Dangers said in the plural that "they're out" can put out ("flames at the bakery but they're out now")
 PLURAL_FIRES = frozenset({"flames", "flame", "fires", "fire"})
+
+# Place nouns of three letters that may stand for a name they end ("the gym" for "hollis school gym")
+SHORT_PLACE_NOUNS = frozenset({"gym", "pub", "inn", "spa", "zoo", "dam"})
 
 # Clipped words that stand for a longer first word of a name ("the bio block", "the sci park"), though they
 # are words of their own too
