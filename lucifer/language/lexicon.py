@@ -81,7 +81,7 @@ uprooted|windthrown|windthrow|blown down|
 """.replace("\n", ""))
 
 _add(DESIRABLE, """
-room for more|room for a few more|room for three or four more|room for plenty more|dry and solid|the walls held|walls have held|the roof held|roof has held|waiting safely|sheltering safely|safely inside|blankets out|dry and warm|warm and dry|put the families in there|put everyone in there|
+room for maybe|room for about|room for another|got room for|have room for|plenty of room|room for more|room for a few more|room for three or four more|room for plenty more|dry and solid|the walls held|walls have held|the roof held|roof has held|waiting safely|sheltering safely|safely inside|blankets out|dry and warm|warm and dry|put the families in there|put everyone in there|
 put them in there|put people in there|
 air's clean|air is clean|the air is clean|clean air|air's okay|air is okay|air's ok|air is ok|air's fine|air is fine|
 air is good|air's good|good spot|a good spot|good place|a good place|
@@ -562,7 +562,7 @@ TRANSIT = ["people in off", "taking people in off", "in off the", "walked up fro
            "driven from", "ran from", "run from", "cycled from", "anyone coming off", "anybody coming off", "everyone coming off", "people coming off", "evacuated from", "moved out of", "moved from", "relocated from", "decanted from", "brought out of",
            "heading to", "heading for", "heading towards", "heading toward", "headed to", "headed for", "head to",
            "passing", "passed", "moving past", "going past", "driving past", "walking past", "past",
-           "on our way to", "on the way to", "our way to", "en route to", "enroute to", "going to", "driving to",
+           "on our way to", "on the way to", "our way to", "on my way to", "my way to", "on his way to", "on her way to", "on their way to", "en route to", "enroute to", "going to", "driving to",
            "walking to", "moving to", "moving towards", "proceeding to", "approaching", "leaving",
            "just left", "came from", "come from", "just came from", "coming back from", "returning to",
            "returning from", "parked at", "parked by", "parked near", "parked the truck at", "parked the truck by",
