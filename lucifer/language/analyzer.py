@@ -2848,6 +2848,13 @@ class ReportAnalyzer:
         return bool(toks.sentence_start[opener])
 
     @staticmethod
+    def _watch_point(toks: Tokens, norms: tuple[str, ...], p: PlaceMention) -> bool:
+        """"From the abbey tower I can see the green is under water": where the speaker looks from."""
+        k = p.start_tok - 1 if p.start_tok >= 1 and norms[p.start_tok - 1] in lx.ARTICLES else p.start_tok
+        return k >= 1 and norms[k - 1] == "from" and bool(toks.sentence_start[k - 1]) and any(
+            norms[p.end_tok + d:p.end_tok + d + 3] in (("i", "can", "see"), ("we", "can", "see")) for d in range(3))
+
+    @staticmethod
     def _person_from(toks: Tokens, norms: tuple[str, ...], p: PlaceMention, places: list[PlaceMention]) -> bool:
         """"The old boy from the smokehouse is lying in the shed": a person known by their place, said to be in
         another place right after."""
@@ -2883,10 +2890,7 @@ class ReportAnalyzer:
             if self._from_label(toks, norms, p):
                 ex.places[idx] = replace(p, status="reference", reason="who is calling ('From X:'): no claim")
                 continue
-            k = p.start_tok - 1 if p.start_tok >= 1 and norms[p.start_tok - 1] in lx.ARTICLES else p.start_tok
-            if k >= 1 and norms[k - 1] == "from" and toks.sentence_start[k - 1] \
-                    and any(norms[p.end_tok + d:p.end_tok + d + 3] in (("i", "can", "see"), ("we", "can", "see"))
-                            for d in range(0, 3)):
+            if self._watch_point(toks, norms, p):
                 ex.places[idx] = replace(p, status="reference", reason="where the speaker looks from ('From X I can see')")
                 continue
             if self._person_from(toks, norms, p, ex.places):
@@ -3827,7 +3831,6 @@ class ReportAnalyzer:
     def _predicate_region(self, ex: Extraction, p: PlaceMention) -> tuple[int, int]:
         toks = ex.tokens
         marker_starts = {a for a, _, _ in ex.markers}
-        # (a place said again after a repair bounds it too: "the Dome's roof is on, it's the book barn")
         others = [q.start_tok for q in ex.places if q.start_tok > p.start_tok and q.status == "active"]
         stop = min(others + [len(toks)])
         end = p.end_tok
