@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev39) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev40) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -60,6 +60,7 @@ TORNADO = ROOT / "knowledge_bases" / "tornado_suburb"
 ASH_ISLAND = ROOT / "knowledge_bases" / "ash_island"
 TOWER_BLOCK = ROOT / "knowledge_bases" / "tower_block"
 REFUGEE_CAMP = ROOT / "knowledge_bases" / "refugee_camp"
+HOSPITAL_TOWER = ROOT / "knowledge_bases" / "hospital_tower"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -222,6 +223,7 @@ SETS = {
     "dev39/market_square": _set("dev39/market_square.jsonl", MARKET_SQUARE, "d39m", THIRTY),
     "dev39/tower_block": _set("dev39/tower_block.jsonl", TOWER_BLOCK, "d39t", THIRTY),
     "dev39/refugee_camp": _set("dev39/refugee_camp.jsonl", REFUGEE_CAMP, "d39c", THIRTY),
+    "dev40/hospital_tower": _set("dev40/hospital_tower.jsonl", HOSPITAL_TOWER, "d40h", THIRTY),
 }
 
 
