@@ -2452,3 +2452,40 @@ def test_dev38_phenomena(kb_analyzers, kb, text, expected):
 ])
 def test_dev38_market_square_phenomena(analyzer, text, expected):
     assert claims(analyzer, text) == expected
+
+
+@pytest.mark.parametrize(("kb", "text", "expected"), [
+    # a number the KB's numbered ranges place in one landmark ("Pier with gates 1 to 4")
+    ("airport_terminal", "Smoke at gate 3.", [("north gates", "danger_area")]),
+    ("airport_terminal", "Passenger collapsed at gate seven -- sorry, gate two.", [("north gates", "casualty")]),
+    # a number several landmarks share (deck 8 holds the upper cabins and both lifeboat stations) names none
+    ("ferry_ship", "Fire on deck 8.", []),
+    # ranges in names; "level" is the car park's, "floor" the tower's; a description's negated relative clause
+    # ("water where it should not be, such as ... flooding") still names its dangers
+    ("hospital_tower", "Water's pouring through the ceiling in clinic 12.",
+     [("outpatients clinics 9-16", "structural_or_flood_danger")]),
+    ("hospital_tower", "Smoke on level 5.", [("car park levels 4-6", "fire_or_smoke")]),
+    ("hospital_tower", "Smoke on floor 5.", [("tower floors 5-8", "fire_or_smoke")]),
+])
+def test_numbered_places(kb_analyzers, kb, text, expected):
+    assert claims(kb_analyzers[kb], text) == expected
+
+
+def test_numbered_floors_of_a_tower(tmp_path):
+    """Floor ranges as landmarks: "floor ten", "the seventh floor", a bare number repairing one."""
+    (tmp_path / "map.yaml").write_text(
+        "grid: {rows: 4, cols: 4}\n"
+        "landmarks:\n"
+        "  - {name: lower wards, cells: [[1, 1]], description: Wards on floors 1-4 of the tower.}\n"
+        "  - {name: middle wards, cells: [[1, 1]], description: Wards on floors 5-8 of the tower.}\n"
+        "  - {name: upper wards, aliases: [floors 9 to 12], cells: [[1, 1]], description: The top of the tower.}\n"
+        "  - {name: chapel, cells: [[2, 2]], description: Hospital chapel.}\n"
+        "relations: []\n", encoding="utf-8")
+    for name in ("information_space.yaml", "glossary.yaml"):
+        (tmp_path / name).write_text((KB / name).read_text(encoding="utf-8"), encoding="utf-8")
+    an = ReportAnalyzer(load_kb(tmp_path), get_embedder())
+    assert claims(an, "Fire on floor ten.") == [("upper wards", "hazard")]
+    assert claims(an, "Someone trapped on the seventh floor.") == [("middle wards", "victim")]
+    assert claims(an, "Smoke on level three.") == [("lower wards", "hazard")]
+    assert claims(an, "fire on floor six -- sorry, sixteen... no, eleven") == [("upper wards", "hazard")]
+    assert claims(an, "There are two floors of smoke in the chapel.") == [("chapel", "hazard")]

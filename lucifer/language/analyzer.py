@@ -32,6 +32,14 @@ import numpy as np
 from lucifer.embeddings import Embedder
 from lucifer.kb import Category, KnowledgeBase, Relation, Role
 from lucifer.language import lexicon as lx
+from lucifer.language.numbers import (
+    SIBLING_UNITS,
+    UNITS,
+    is_number,
+    is_ordinal,
+    number_at,
+    text_ranges,
+)
 from lucifer.language.text import PhraseMatcher, Tokens, name_words, norm, norm_phrase, tokenize
 
 MentionStatus = Literal["active", "retracted", "negated", "reference"]
@@ -285,10 +293,17 @@ class ReportAnalyzer:
         out: set[str] = set()
         for clause in re.split(r"[.;:()\u2014\u2013]|\s-\s", description):
             # ("wind-blown embers": one word, not "blown")
-            ws = norm_phrase(re.sub(r"(?<=[a-z])-(?=[a-z])", "", clause))
-            if set(ws) & lx.NEGATORS:
-                continue
-            out.update(w for w in ws if len(w) >= 4)
+            for part in clause.split(","):
+                ws = norm_phrase(re.sub(r"(?<=[a-z])-(?=[a-z])", "", part))
+                neg = next((i for i, w in enumerate(ws) if w in lx.NEGATORS), None)
+                if neg is None:
+                    out.update(w for w in ws if len(w) >= 4)
+                    continue
+                rel = next((i for i, w in enumerate(ws[:neg]) if w in ("where", "which", "when", "that")), None)
+                if rel is None:
+                    break  # "Nothing is burning, smoke or fire": the negation runs on through the clause's list
+                # "water where it should not be, such as ...": only the relative clause is negated
+                out.update(w for w in ws[:rel] if len(w) >= 4)
         return frozenset(out)
 
     def _build_cues(self) -> None:
@@ -625,6 +640,7 @@ class ReportAnalyzer:
                                            {i for a, b, _ in all_cues for i in range(a, b)}))
         places.extend(self._definite_heads(toks, norms, places))
         places.extend(self._modifier_ones(toks, norms, places))
+        places.extend(self._numbered_places(toks, norms, {i for p in places for i in range(p.start_tok, p.end_tok)}))
         for idx, p in enumerate(places):
             if p.end_tok < len(norms) and norms[p.end_tok] in lx.MODIFIED_BY and not toks.clause_start[p.end_tok] \
                     and norms[p.end_tok : p.end_tok + 2] not in lx.PART_OF_PLACE \
@@ -1163,6 +1179,72 @@ class ReportAnalyzer:
             p = next((p for p in ex.places if p.end_tok == k and p.status == "active"), None)
             if p is not None and p.landmark != q.landmark and cells[p.landmark] < cells[q.landmark]:
                 ex.places[idx] = replace(q, status="reference", reason=f"holds '{p.text}'")
+
+    @functools.cached_property
+    def _number_ranges(self) -> dict[str, list[tuple[int, int, str]]]:
+        """unit -> (low, high, landmark) of every numbered range the KB gives a landmark: in its name or an
+        alias ("tower floors 9-12", "car park level 1"); else a range in its description ("Pier with gates 1 to
+        4"). A single number a description mentions in passing ("on the roof, above floor 12") is none."""
+        out: dict[str, list[tuple[int, int, str]]] = {}
+        for lm in self.kb.landmarks:
+            named = {r for form in lm.surface_forms for r in text_ranges(form, at_end=True)}
+            described = {r for r in text_ranges(lm.description or "") if r[1] < r[2]}
+            for unit, lo, hi in sorted(named or described):
+                out.setdefault(unit, []).append((lo, hi, lm.name))
+        return out
+
+    def _number_owner(self, unit: str, value: int) -> tuple[str | None, bool]:
+        """(the one landmark whose range holds the number, whether any range of the unit or its sibling does)."""
+        ranges = self._number_ranges
+        for u in (unit, SIBLING_UNITS.get(unit)):
+            owners = {name for lo, hi, name in ranges.get(u or "", []) if lo <= value <= hi}
+            if owners:
+                return (next(iter(owners)) if len(owners) == 1 else None), True
+        return None, False
+
+    REPAIRED_NUMBER_WORDS = frozenset({"sorry", "no", "correction", "mean", "make", "that", "er", "um", "uh", "wait",
+                                       "or", "rather", "actually", "scratch"})
+
+    def _numbered_places(self, toks: Tokens, norms: tuple[str, ...], taken: set[int]) -> list[PlaceMention]:
+        """"fire on floor ten", "the seventh floor", "bay 14": a number the KB's numbered ranges place in exactly
+        one landmark ("floors 9-12"); a bare number that repairs one just said ("floor six -- sorry, sixteen")
+        keeps its unit."""
+        ranges = self._number_ranges
+        if not ranges:
+            return []
+        out: list[PlaceMention] = []
+        last: tuple[str, int] | None = None  # the unit of the last numbered mention and where it ended
+        i = 0
+        while i < len(norms):
+            hit: tuple[int, int, str, int] | None = None
+            unit = UNITS.get(norms[i]) or UNITS.get(toks.tokens[i].text.lower())
+            if i not in taken and unit is not None and (unit in ranges or SIBLING_UNITS.get(unit) in ranges):
+                n = number_at(norms, i + 1) if i + 1 < len(norms) and not toks.clause_start[i + 1] else None
+                if n is not None:
+                    hit = (i, n[1], unit, n[0])  # "floor ten", "level 3"
+                elif i > 0 and is_ordinal(norms[i - 1]):
+                    a = i - 2 if i > 1 and (got := number_at(norms, i - 2)) is not None and got[1] == i else i - 1
+                    got = number_at(norms, a)
+                    if got is not None and got[1] == i:
+                        hit = (a, i + 1, unit, got[0])  # "the seventh floor", "10th floor", "twenty first floor"
+            elif i not in taken and last is not None and is_number(norms[i]) and i - last[1] <= 5 \
+                    and not any(toks.sentence_start[t] for t in range(last[1], i + 1)) \
+                    and (i + 1 >= len(norms) or UNITS.get(norms[i + 1]) is None) \
+                    and (any(d in toks.gaps[t] for t in range(last[1], i + 1) for d in ("-", "—", "–"))
+                         or any(norms[t] in self.REPAIRED_NUMBER_WORDS for t in range(last[1], i))):
+                got = number_at(norms, i)
+                if got is not None:
+                    hit = (i, got[1], last[0], got[0])  # "floor six -- sorry, sixteen"
+            if hit is None:
+                i += 1
+                continue
+            a, b, unit, value = hit
+            owner, _ = self._number_owner(unit, value)
+            if owner is not None and not taken.intersection(range(a, b)):
+                out.append(self._mention(toks, a, b, owner))
+            last = (unit, b)
+            i = b
+        return out
 
     def _modifier_ones(self, toks: Tokens, norms: tuple[str, ...], places: list[PlaceMention]) -> list[PlaceMention]:
         """"west jetty ... Actually no, that's the east one": "the X one" names the landmark whose name is X and
