@@ -2466,6 +2466,9 @@ def test_dev38_market_square_phenomena(analyzer, text, expected):
      [("outpatients clinics 9-16", "structural_or_flood_danger")]),
     ("hospital_tower", "Smoke on level 5.", [("car park levels 4-6", "fire_or_smoke")]),
     ("hospital_tower", "Smoke on floor 5.", [("tower floors 5-8", "fire_or_smoke")]),
+    # "on top of" after a relation's words is where on the anchor, not another relation ("stacked_on")
+    ("hospital_tower", "The medical floors are smoke logged. The block stacked on top of them is the refuge.",
+     [("tower floors 5-8", "fire_or_smoke"), ("tower floors 9-12", "safe_muster")]),
 ])
 def test_numbered_places(kb_analyzers, kb, text, expected):
     assert claims(kb_analyzers[kb], text) == expected

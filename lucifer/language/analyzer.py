@@ -2422,6 +2422,8 @@ class ReportAnalyzer:
                 and norms[j + 2] == "of" and (norms[j] == "the" or any(p.end_tok <= b for p in ex.places)):
             j += 3  # "built onto the side of the mill": the part of the anchor
             b = j
+        elif norms[j:j + 2] == ("top", "of") and phrase and "top" not in norm_phrase(phrase):
+            j = b = j + 2  # "the block stacked on top of them" for ``stacked_on``
         if _past_approach(norms, j) > j and not any(p.start_tok == j + 1 for p in ex.places):
             j = b = _past_approach(norms, j)  # "the post guarding the way into reception": the anchor after
         # "the shop attached to it's got a live wire": "it's" right after the relation is "it has", the pronoun
