@@ -478,8 +478,8 @@ class ReportAnalyzer:
         taken = set(covered)
         for t in range(len(norms)):
             k = t + 1  # past the verb's particles: "leaning on the shed", "spreading out below the old mill"
-            while k < min(t + 3, len(norms)) and norms[k] in lx.RELATION_ENDINGS | {"out", "up", "down", "into", "in"} \
-                    and not toks.clause_start[k]:
+            while t in cue_tokens and k < min(t + 3, len(norms)) \
+                    and norms[k] in lx.RELATION_ENDINGS | {"out", "up", "down", "into", "in"} and not toks.clause_start[k]:
                 k += 1
             if t in cue_tokens and t not in known and t > 0 and (norms[t - 1] in ("that", "which")
                                               or norms[t - 1] not in lx.COPULAS | lx.DETERMINERS | {"re", "ve"}) \
@@ -973,7 +973,7 @@ class ReportAnalyzer:
                 continue
             if i == 0 or w not in self._heads or i in taken or (i - 1) in taken or not (
                     norms[i - 1] == "the" or norms[i - 1] in ("my", "our") and (i - 1) in rel_ends
-                    or norms[i - 1] == "same" and i >= 2 and norms[i - 2] in ("the", "that", "this")):
+                    or _after_same(norms, i)):
                 # ("the hall right below my cottage": the speaker's own, as a relation's anchor; not "my kitchen";
                 # "the road that same gully empties onto": the one said before)
                 continue
@@ -1193,14 +1193,14 @@ class ReportAnalyzer:
                 out.setdefault(unit, []).append((lo, hi, lm.name))
         return out
 
-    def _number_owner(self, unit: str, value: int) -> tuple[str | None, bool]:
-        """(the one landmark whose range holds the number, whether any range of the unit or its sibling does)."""
+    def _number_owner(self, unit: str, value: int) -> str | None:
+        """The one landmark whose range of the unit (else of its sibling unit) holds the number."""
         ranges = self._number_ranges
         for u in (unit, SIBLING_UNITS.get(unit)):
             owners = {name for lo, hi, name in ranges.get(u or "", []) if lo <= value <= hi}
             if owners:
-                return (next(iter(owners)) if len(owners) == 1 else None), True
-        return None, False
+                return next(iter(owners)) if len(owners) == 1 else None
+        return None
 
     REPAIRED_NUMBER_WORDS = frozenset({"sorry", "no", "correction", "mean", "make", "that", "er", "um", "uh", "wait",
                                        "or", "rather", "actually", "scratch"})
@@ -1223,10 +1223,12 @@ class ReportAnalyzer:
                 if n is not None:
                     hit = (i, n[1], unit, n[0])  # "floor ten", "level 3"
                 elif i > 0 and is_ordinal(norms[i - 1]):
-                    a = i - 2 if i > 1 and (got := number_at(norms, i - 2)) is not None and got[1] == i else i - 1
-                    got = number_at(norms, a)
-                    if got is not None and got[1] == i:
-                        hit = (a, i + 1, unit, got[0])  # "the seventh floor", "10th floor", "twenty first floor"
+                    # "the seventh floor", "10th floor", "twenty first floor" (two words, from i - 2)
+                    for a in (i - 2, i - 1):
+                        got = number_at(norms, a) if a >= 0 else None
+                        if got is not None and got[1] == i:
+                            hit = (a, i + 1, unit, got[0])
+                            break
             elif i not in taken and last is not None and is_number(norms[i]) and i - last[1] <= 5 \
                     and not any(toks.sentence_start[t] for t in range(last[1], i + 1)) \
                     and (i + 1 >= len(norms) or UNITS.get(norms[i + 1]) is None) \
@@ -1239,7 +1241,7 @@ class ReportAnalyzer:
                 i += 1
                 continue
             a, b, unit, value = hit
-            owner, _ = self._number_owner(unit, value)
+            owner = self._number_owner(unit, value)
             if owner is not None and not taken.intersection(range(a, b)):
                 out.append(self._mention(toks, a, b, owner))
             last = (unit, b)
@@ -2429,7 +2431,7 @@ class ReportAnalyzer:
         # "the shop attached to it's got a live wire": "it's" right after the relation is "it has", the pronoun
         its = b < len(norms) and norms[b] == "its" and any(q in ex.tokens.tokens[b].text for q in ("'", "’"))
         while j < len(norms) and (norms[j] in lx.DETERMINERS or norms[j] in lx.FILLERS or norms[j] in ("my", "your")
-                                  or norms[j] == "same" and j > b and norms[j - 1] in ("the", "that", "this"))\
+                                  or j > b and _after_same(norms, j + 1))\
                 and j - b < 3:
             if norms[j] in ("that", "this") and (j + 1 >= len(norms) or ex.tokens.clause_start[j + 1]
                                                  or norms[j + 1] in lx.COPULAS
@@ -2921,7 +2923,7 @@ class ReportAnalyzer:
     @staticmethod
     def _from_label(toks: Tokens, norms: tuple[str, ...], p: PlaceMention) -> bool:
         """"From the pump house: ...", "Relay from a station on the east ridge: ...": who is calling."""
-        k = p.start_tok - 1 if p.start_tok >= 1 and norms[p.start_tok - 1] in lx.ARTICLES else p.start_tok
+        k = _noun_phrase_start(norms, p)
         if k < 1 or norms[k - 1] != "from" or p.end_tok >= len(norms) or not toks.gaps[p.end_tok].strip().startswith(":"):
             return False
         opener = k - 1
@@ -2934,7 +2936,7 @@ class ReportAnalyzer:
     @staticmethod
     def _watch_point(toks: Tokens, norms: tuple[str, ...], p: PlaceMention) -> bool:
         """"From the abbey tower I can see the green is under water": where the speaker looks from."""
-        k = p.start_tok - 1 if p.start_tok >= 1 and norms[p.start_tok - 1] in lx.ARTICLES else p.start_tok
+        k = _noun_phrase_start(norms, p)
         return k >= 1 and norms[k - 1] == "from" and bool(toks.sentence_start[k - 1]) and any(
             norms[p.end_tok + d:p.end_tok + d + 3] in (("i", "can", "see"), ("we", "can", "see")) for d in range(3))
 
@@ -2942,7 +2944,7 @@ class ReportAnalyzer:
     def _person_from(toks: Tokens, norms: tuple[str, ...], p: PlaceMention, places: list[PlaceMention]) -> bool:
         """"The old boy from the smokehouse is lying in the shed": a person known by their place, said to be in
         another place right after."""
-        k = p.start_tok - 1 if p.start_tok >= 1 and norms[p.start_tok - 1] in lx.ARTICLES else p.start_tok
+        k = _noun_phrase_start(norms, p)
         if k < 2 or norms[k - 1] != "from" or norms[k - 2] not in _PERSON_KEYS or p.end_tok >= len(norms) \
                 or norms[p.end_tok] not in ("is", "s", "was", "are", "were") or toks.clause_start[p.end_tok]:
             return False
@@ -5613,6 +5615,16 @@ def _description_list_items(description: str) -> list[tuple[str, ...]]:
                     and key not in out:
                 out.append(key)
     return out
+
+
+def _noun_phrase_start(norms: tuple[str, ...], p: PlaceMention) -> int:
+    """Where the noun phrase of a place mention begins: at its article, if one stands before it."""
+    return p.start_tok - 1 if p.start_tok >= 1 and norms[p.start_tok - 1] in lx.ARTICLES else p.start_tok
+
+
+def _after_same(norms: tuple[str, ...], i: int) -> bool:
+    """Token ``i`` follows "the same" / "that same" / "this same": the one said before."""
+    return i >= 2 and norms[i - 1] == "same" and norms[i - 2] in ("the", "that", "this")
 
 
 def _same_stem(a: str, b: str) -> bool:

@@ -2,15 +2,15 @@
 floor", "bay 14" in a report.
 
 A KB may make numbered ranges of one building its landmarks ("upper wards (floors 9-12)"); a report then
-names the place only by its number. :func:`kb_ranges` reads the ranges from landmark names, aliases and
-descriptions; :func:`number_at` reads a number said in digits, words or as an ordinal.
+names the place only by its number. :func:`text_ranges` reads the ranges from a landmark's names, aliases
+and description; :func:`number_at` reads a number said in digits, words or as an ordinal.
 """
 
 from __future__ import annotations
 
 import re
 
-# unit words, folded onto one key each ("level" and "storey" are floors of a building)
+# unit words, folded onto one key each ("storey" is a floor; "level" is its own unit, a car park's)
 UNITS = {"floor": "floor", "floors": "floor", "storey": "floor", "storeys": "floor", "story": "floor",
          "stories": "floor", "level": "level", "levels": "level", "bay": "bay", "bays": "bay", "gate": "gate",
          "gates": "gate", "platform": "platform", "platforms": "platform", "pitch": "pitch", "pitches": "pitch",
@@ -18,7 +18,7 @@ UNITS = {"floor": "floor", "floors": "floor", "storey": "floor", "storeys": "flo
          "clinic": "clinic", "clinics": "clinic", "room": "room", "rooms": "room", "theatre": "theatre",
          "theatres": "theatre", "hangar": "hangar", "hangars": "hangar"}
 # a unit a report may say for another where the KB numbers only that one ("level 10" of a tower of floors)
-SIBLING_UNITS = {"floor": "level", "level": "floor", "storey": "floor"}
+SIBLING_UNITS = {"floor": "level", "level": "floor"}
 
 _ONES = ["zero", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten", "eleven", "twelve",
          "thirteen", "fourteen", "fifteen", "sixteen", "seventeen", "eighteen", "nineteen"]
@@ -33,6 +33,7 @@ ORDINALS: dict[str, int] = {w: i for i, w in enumerate(_ORD_ONES)} | _ORD_TENS
 
 _UNIT_RE = "|".join(sorted(UNITS, key=len, reverse=True))
 _NUM = r"(\d{1,3})(?:st|nd|rd|th)?"
+_DIGITS = re.compile(r"(\d{1,3})(st|nd|rd|th)?")  # "14", "7th": a number written in digits
 _DASH = r"\s*(?:-|–|—|to|through|thru|and)\s*"
 # "floors 9-12", "levels 1 to 3", "bays 10–20"
 _UNIT_FIRST = re.compile(rf"\b({_UNIT_RE})\s+{_NUM}(?:{_DASH}{_NUM})?\b", re.IGNORECASE)
@@ -69,7 +70,7 @@ def number_at(norms: tuple[str, ...], i: int) -> tuple[int, int] | None:
         if len(parts) == 2 and parts[0] in _TENS:
             got = number_at(parts, 0)
             return (got[0], i + 1) if got is not None and got[1] == 2 else None
-    m = re.fullmatch(r"(\d{1,3})(?:st|nd|rd|th)?", w)
+    m = _DIGITS.fullmatch(w)
     if m:
         return int(m.group(1)), i + 1
     if w in ORDINALS:
@@ -92,5 +93,6 @@ def is_number(word: str) -> bool:
 
 def is_ordinal(word: str) -> bool:
     """"seventh", "10th", "twenty-first"."""
-    return word in ORDINALS or bool(re.fullmatch(r"\d{1,3}(?:st|nd|rd|th)", word)) or (
+    m = _DIGITS.fullmatch(word)
+    return word in ORDINALS or bool(m and m.group(2)) or (
         "-" in word and word.split("-")[-1] in ORDINALS)
