@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev40) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev41) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -61,6 +61,8 @@ ASH_ISLAND = ROOT / "knowledge_bases" / "ash_island"
 TOWER_BLOCK = ROOT / "knowledge_bases" / "tower_block"
 REFUGEE_CAMP = ROOT / "knowledge_bases" / "refugee_camp"
 HOSPITAL_TOWER = ROOT / "knowledge_bases" / "hospital_tower"
+COUNTY_PRISON = ROOT / "knowledge_bases" / "county_prison"
+COAST_ROAD = ROOT / "knowledge_bases" / "coast_road"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -224,6 +226,11 @@ SETS = {
     "dev39/tower_block": _set("dev39/tower_block.jsonl", TOWER_BLOCK, "d39t", THIRTY),
     "dev39/refugee_camp": _set("dev39/refugee_camp.jsonl", REFUGEE_CAMP, "d39c", THIRTY),
     "dev40/hospital_tower": _set("dev40/hospital_tower.jsonl", HOSPITAL_TOWER, "d40h", THIRTY),
+    "dev41/market_square": _set("dev41/market_square.jsonl", MARKET_SQUARE, "d41m", EVEN),
+    "dev41/riverbend": _set("dev41/riverbend.jsonl", RIVERBEND, "d41r",
+                            {"standard": 20, "messy": 20, "advanced_messy": 20}),
+    "dev41/county_prison": _set("dev41/county_prison.jsonl", COUNTY_PRISON, "d41p", THIRTY),
+    "dev41/coast_road": _set("dev41/coast_road.jsonl", COAST_ROAD, "d41c", THIRTY),
 }
 
 
