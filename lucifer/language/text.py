@@ -4,13 +4,16 @@ from __future__ import annotations
 
 import itertools
 import re
+import unicodedata
 from collections.abc import Iterable
 from dataclasses import dataclass
 from typing import Generic, TypeVar
 
 T = TypeVar("T")
 
-_TOKEN = re.compile(r"[a-z0-9]+(?:['’][a-z]+)*", re.IGNORECASE)
+# ("A&E", "B & B": letters joined by an ampersand are one word)
+# (letters with accents are letters: "café" is one word, keyed "cafe")
+_TOKEN = re.compile(r"(?<![^\W_])[^\W_] ?& ?[^\W_](?![^\W_])(?:['’][a-z]+)?|[^\W_]+(?:['’][^\W_]+)*")
 _SENTENCE_END = re.compile(r"[.!?]")
 _PAUSE_AFTER_END = re.compile(r"[.!?]\s*[—–,]|[.!?]\s+-\s")
 _CLAUSE = re.compile(r"[,;:()\[\]—–/]|\s-\s|--|^-|-$|\.\.\.|…")
@@ -41,7 +44,9 @@ def norm(word: str) -> str:
     >>> [norm(w) for w in ["Bakeries", "chemist's", "gas", "Fires", "isn't", "class", "op's", "it's", "1's"]]
     ['bakerie', 'chemist', 'gas', 'fire', 'isnt', 'class', 'op', 'its', '1']
     """
-    w = word.lower().replace("’", "'")
+    w = word.lower().replace("’", "'").replace(" ", "")
+    if not w.isascii():
+        w = "".join(ch for ch in unicodedata.normalize("NFKD", w) if not unicodedata.combining(ch))
     if w.endswith("'s") and (len(w) > 3 or w[:-2].isdigit()) and w[:-2] not in _KEEP_S:
         w = w[:-2]  # "op's" -> "op" (a short word's possessive, as in "Co-op's")
     w = w.replace("'", "")
