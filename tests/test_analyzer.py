@@ -2492,3 +2492,52 @@ def test_numbered_floors_of_a_tower(tmp_path):
     assert claims(an, "Smoke on level three.") == [("lower wards", "hazard")]
     assert claims(an, "fire on floor six -- sorry, sixteen... no, eleven") == [("upper wards", "hazard")]
     assert claims(an, "There are two floors of smoke in the chapel.") == [("chapel", "hazard")]
+
+
+@pytest.mark.parametrize(("kb", "text", "expected"), [
+    # a place said as a fragment after the danger ("Casualty found. Ground floor, town hall.")
+    ("ms", "BA team two. Casualty found. Ground floor, town hall. Bringing him out.", [("town hall", "victim")]),
+    ("ms", "I live in the flats and I've fallen, I can't get myself up.", [("apartment block", "victim")]),
+    # chains through "whatever is X", an inverse clause with "'s", non-native prepositions, "then ... from that"
+    ("ms", "survivor located in the building across from whatever is behind the warehouse.",
+     [("apartment block", "victim")]),
+    ("ms", "Someone's hurt in the building the park's behind.", [("warehouse", "victim")]),
+    ("ms", "The building across the street of the credit union, it has people inside injured.",
+     [("fire station", "victim")]),
+    ("ms", "Behind of the market square, that building, there is many people hurt.", [("bus station", "victim")]),
+    ("ms", "From the warehouse, pan to whatever's behind it... then across the road from that -- there, the tall "
+           "building -- someone on a balcony waving a sheet.", [("apartment block", "victim")]),
+    # false alarms: a sentence that opens with one, "ignore me", "it's out now" a clause later
+    ("ms", "15:33 Unit 2 to Control: reported fire at the cafe, we're on scene, er, nothing showing. False alarm, "
+           "it was a barbecue on the terrace. Over.", []),
+    ("ms", "Fire at the bakery. False alarm at the school.", [("bakery", "hazard")]),
+    ("riverbend", "Thought I saw someone in the water by the mill, um, no, it's a bin bag. Sorry, ignore me.", []),
+    ("riverbend", "Um, the almshouses, we did have smoke, er, from the kitchen, but it's out now.", []),
+    ("riverbend", "fire at the mill, but it's spreading", [("mill", "threat")]),
+    # accents are letters ("café"); "A&E" is one word and names "a&e entrance" alone
+    ("coast_road", "Hello, it's Jenny at the cliff-top café. My husband's cut his hand badly on the glass.",
+     [("cliff-top cafe", "people_in_difficulty")]),
+    ("hospital_tower", "fire at A & E", [("a&e entrance", "fire_or_smoke")]),
+    # "J4" for "junction 4"; crashes are a kind of danger; a cleared danger is gone, not a safe place
+    ("coast_road", "crash at J4, lorry jackknifed", [("junction 4", "slip_and_wreckage")]),
+    ("coast_road", "Control, the rockfall at Devil's Elbow has been cleared.", []),
+    ("ms", "Live cables arcing in the shop joined onto the baker's, and the baker's itself has been cleared.",
+     [("bakery", "safe_zone"), ("pharmacy", "hazard")]),
+    ("coast_road", "I'm parked up on the headland car park, it's a good safe spot.",
+     [("upper car park", "safe_stopping_place")]),
+    # the side word that tells a pair apart, in a repair; going back to the first place said
+    ("coast_road", "a car pulled over on the southbound, no, northbound lay-by -- no, I had it right first time, "
+                   "southbound, and it's a safe spot", [("southbound lay-by", "safe_stopping_place")]),
+    ("county_prison", "fire on the kitchens -- no, the chapel -- no, I had it right the first time",
+     [("kitchens", "riot_or_blaze")]),
+    # a lettered series: "a wing" beside "b wing" is no article; the radio alphabet; call signs are no places
+    ("county_prison", "fire on the wing", []),
+    ("county_prison", "fire on A-wing", [("a wing", "riot_or_blaze")]),
+    ("county_prison", "fires on Alpha and on Bravo",
+     [("a wing", "riot_or_blaze"), ("b wing", "riot_or_blaze")]),
+    ("county_prison", "fire on echo block", [("e block", "riot_or_blaze")]),
+    ("county_prison", "Alpha one to Control: fire on Bravo.", [("b wing", "riot_or_blaze")]),
+])
+def test_dev41_phenomena(kb_analyzers, analyzer, kb, text, expected):
+    an = analyzer if kb == "ms" else kb_analyzers[kb]
+    assert claims(an, text) == expected

@@ -157,9 +157,14 @@ class ReportAnalyzer:
         self._places: PhraseMatcher[str] = PhraseMatcher()
         self._needs_article: set[tuple[str, ...]] = set()  # "the tower": an alias written with its article
         plain: set[tuple[str, ...]] = set()
+        labelled = _letter_labelled(kb)
         for lm in kb.landmarks:
             for form in lm.surface_forms:
                 key = norm_phrase(form)
+                if key in labelled:
+                    self._places.add(key, lm.name)  # ("a wing" beside "b wing": "a" is its letter, not an article)
+                    plain.add(key)
+                    continue
                 had_article = bool(key) and key[0] in ("the", "a", "an")
                 while key and key[0] in ("the", "a", "an"):
                     key = key[1:]
@@ -167,6 +172,8 @@ class ReportAnalyzer:
                 self._places.add(key, lm.name)
         self._needs_article -= plain
         for key, name in self._compound_forms():
+            self._places.add(key, name)
+        for key, name in _phonetic_forms(kb, labelled):
             self._places.add(key, name)
         self._role_category = self._map_roles()
         self._cues: PhraseMatcher[tuple[str, str]] = PhraseMatcher(lx.CUE_SKIPPABLE)
@@ -224,6 +231,15 @@ class ReportAnalyzer:
                     key = (*mod, head)
                     if key not in existing and head not in mod:
                         made.setdefault(key, set()).add(lm.name)
+            # ("J4" for "junction 4", "M6" for "motorway 6": a numbered name's initial and number written together)
+            for form in forms:
+                if len(form) == 2 and form[1].isdigit() and form[0].isalpha() and len(form[0]) >= 3:
+                    if (form[0][0] + form[1],) not in existing:
+                        made.setdefault((form[0][0] + form[1],), set()).add(lm.name)
+            # ("A&E" alone for "a&e entrance": letters joined by an ampersand name the place on their own)
+            for word in {w for form in forms for w in form if "&" in w}:
+                if (word,) not in existing:
+                    made.setdefault((word,), set()).add(lm.name)
         return [(key, next(iter(names))) for key, names in sorted(made.items()) if len(names) == 1]
 
     def _map_roles(self) -> dict[str, str | None]:
@@ -516,6 +532,8 @@ class ReportAnalyzer:
                     and norms[t + 1:t + 2] \
                     and norms[t + 1] in lx.DETERMINERS and norms[t].endswith("ed"):
                 continue  # "we've opened the parish church as a rest centre": the speaker's deed, not "opens_onto"
+            if back and back[-1] in ("im", "were", "am", "m") and norms[t].endswith("ed"):
+                continue  # "I'm parked up on the headland car park": where the speaker is, not "car park for"
             phrase, voice = hit
             if voice == "active" and t > 0 and norms[t - 1] in lx.ARTICLES - {"that"} and phrase.split()[0] in (
                     norms[t], toks.tokens[t].text.lower()):
@@ -580,6 +598,10 @@ class ReportAnalyzer:
         for a, b, landmark in self._places.find_all(norms):
             if any(ca <= a and b <= cb and cb - ca > b - a for ca, cb in cue_hits):
                 continue  # "first aid post" is a cue, "across the square from" a relation
+            if b - a == 1 and norms[a] in lx.PHONETIC_LETTERS and (
+                    b < len(norms) and is_number(norms[b]) and not toks.clause_start[b]
+                    or a > 0 and norms[a - 1] == "to" and not toks.clause_start[a]):
+                continue  # "Control to Alpha one", "Oscar Two here": a call sign, not the spoken letter of a place
             prev = norms[a - 1] if a > 0 else ""
             k = a - 1
             while k > 0 and a - k <= 2 and norms[k] in lx.NAME_ADJECTIVES and not toks.clause_start[k + 1]:
@@ -683,12 +705,35 @@ class ReportAnalyzer:
         self._apply_place_repairs(ex)
         self._apply_trailing_repairs(ex)
         self._apply_hesitation_chains(ex, norms)
+        self._apply_first_was_right(ex, norms)
         self._apply_written_corrections(ex)
         self._apply_confirmations(ex, norms)
         self._apply_transit(ex)
         self._apply_cut_off(ex, norms)
         ex.places.sort(key=lambda p: p.start_tok)
         return ex
+
+    @staticmethod
+    def _apply_first_was_right(ex: Extraction, norms: tuple[str, ...]) -> None:
+        """"fire on the kitchens -- no, the chapel -- no, I had it right the first time": the speaker goes back
+        to the first place of the repairs; the ones put in its stead are taken back."""
+        toks = ex.tokens
+        for m in range(len(norms)):
+            if not any(norms[m:m + len(key)] == key for key in _FIRST_WAS_RIGHT):
+                continue
+            n = toks.sentence_of[m]
+            said = sorted((p for p in ex.places if p.end_tok <= m and p.status in ("active", "retracted")
+                           and p.via is None and toks.sentence_of[p.start_tok] >= n - 1), key=lambda p: p.start_tok)
+            if len(said) < 2 or not any(p.status == "retracted" for p in said) \
+                    or len({p.landmark for p in said}) < 2:
+                continue
+            first = said[0].landmark
+            for p in said:
+                i = ex.places.index(p)
+                if p.landmark == first:
+                    ex.places[i] = replace(p, status="active", reason="the speaker went back to it")
+                else:
+                    ex.places[i] = replace(p, status="retracted", reason=f"the speaker went back to '{said[0].text}'")
 
     @staticmethod
     def _apply_hesitation_chains(ex: Extraction, norms: tuple[str, ...]) -> None:
@@ -1054,6 +1099,20 @@ class ReportAnalyzer:
         return firsts
 
     @functools.cached_property
+    def _side_words(self) -> dict[str, str]:
+        """First words that tell a pair of landmarks apart by side or direction ("southbound lay-by" beside
+        "northbound lay-by", "upper car park" beside "lower car park"), with the landmark each names."""
+        names = [(lm.name, tuple(w for w in name_words(f) if w not in lx.ARTICLES))
+                 for lm in self.kb.landmarks for f in lm.surface_forms]
+        owners: dict[str, set[str]] = {}
+        for name, words in names:
+            if len(words) >= 2 and (_direction_word(words[0]) or words[0] in lx.SIDE_WORDS) and any(
+                    other != name and len(ws) == len(words) and ws[1:] == words[1:] and ws[0] != words[0]
+                    for other, ws in names):
+                owners.setdefault(words[0], set()).add(name)
+        return {w: next(iter(v)) for w, v in owners.items() if len(v) == 1 and self._name_word_owners.get(w) == v}
+
+    @functools.cached_property
     def _name_prefix_owners(self) -> dict[tuple[str, ...], set[str]]:
         """The first words of every multi-word name (all but its last), with the landmarks whose names begin so."""
         owners: dict[tuple[str, ...], set[str]] = {}
@@ -1143,6 +1202,16 @@ class ReportAnalyzer:
                 out.append(self._mention(toks, i, i + 2, self._clipped_forms[key]))
                 taken = taken | {i, i + 1}
         for i, w in enumerate(norms):
+            if w in self._side_words and i not in taken and (i == 0 or toks.clause_start[i] or norms[i - 1] in lx.ARTICLES) \
+                    and (i + 1 >= len(norms) or toks.clause_start[i + 1]) \
+                    and any(norms[j] in self._side_words and norms[j] != w and self._side_words[norms[j]] != self._side_words[w]
+                            and toks.sentence_of[j] == toks.sentence_of[i] for j in range(len(norms))) and (
+                        any(norms[j] in _REPAIR_WORDS for j in range(max(0, i - 3), min(len(norms), i + 4)) if j != i)
+                        or any(norms[j:j + len(key)] == key for key in _FIRST_WAS_RIGHT for j in range(max(0, i - 8), i))):
+                # "on the southbound, no, northbound lay-by": the word that tells the pair apart, said alone in a
+                # repair
+                out.append(self._mention(toks, i, i + 1, self._side_words[w]))
+                continue
             if w not in self._first_words or i in taken or i == 0:
                 continue
             nxt = i + 1
@@ -2010,7 +2079,9 @@ class ReportAnalyzer:
             # "the building next door": the anchor is the place last spoken of
             before = [p for p in ex.places if p.end_tok <= a and p.status != "retracted"]
             if before and max(before, key=lambda p: p.end_tok).end_tok == a and not ex.tokens.clause_start[a] \
-                    and norms[a:b] != ("next", "door"):
+                    and norms[a:b] != ("next", "door") and not (
+                        toks.tokens[a - 1].text.lower().replace("’", "'").endswith("'s")
+                        and self._inverse_anchor(ex, norms, a)):  # (but "the building the park's behind")
                 return  # "the problem's the flats across the way": the place named, where it is from the speaker
             if before and not self._inverse_anchor(ex, norms, a):
                 anchor, anchor_end, pronoun = max(before, key=lambda p: p.end_tok), b, True
@@ -2030,6 +2101,8 @@ class ReportAnalyzer:
             head_end = a - 2  # "the place that is behind the warehouse": the relative clause's head
         elif a >= 2 and toks.tokens[a - 1].text.lower().replace("’", "'") in ("that's", "thats", "which's"):
             head_end = a - 1
+        elif a >= 2 and norms[a - 2] in lx.WHATEVER and norms[a - 1] in ("is", "was"):
+            head_end = a - 1  # "across from whatever is behind the warehouse": "whatever" heads it
         elif a >= 3 and norms[a - 1] in ("that", "which") and norms[a - 2] in lx.GENERIC_HEADS:
             head_end = a - 1  # "the hall that faces onto it"
         head_place = next((p for p in ex.places if p.end_tok == head_end and p.status == "active"), None)
@@ -4380,7 +4453,7 @@ class ReportAnalyzer:
                     places = {p.start_tok for p in places_now}
                     but = next((j for j in range(i + len(key), len(norms)) if sentence_of[j] == sentence_of[i]
                                 and norms[j] in ("but", "however", "whereas")
-                                and any(t in places for t in range(j + 1, min(len(norms), j + 8)))), None)
+                                and any(t in places for t in range(j + 1, min(len(norms), j + 12)))), None)
                     if but is not None and until == len(norms):
                         until = but
                     # "someone trapped in the supermarket but no, false alarm — it's the gym, someone's trapped
@@ -4399,8 +4472,11 @@ class ReportAnalyzer:
                             sentence_of[p.start_tok] == n and p.start_tok < i for p in places_now) \
                             and not any(c.start_tok < i and sentence_of[c.start_tok] == n and c.polarity == "affirmed"
                                         for c in cues) \
-                            and any(norms[j] in ("no", "sorry", "oh", "actually", "wait", "its", "just")
-                                    for j in range(i) if sentence_of[j] == n):
+                            and (any(norms[j] in ("no", "sorry", "oh", "actually", "wait", "its", "just")
+                                     for j in range(i) if sentence_of[j] == n)
+                                 # ("... nothing showing. False alarm, it was a barbecue on the terrace.")
+                                 or all(norms[j] in lx.FILLERS for j in range(i) if sentence_of[j] == n)
+                                 and not any(sentence_of[p.start_tok] == n for p in places_now)):
                         # "Fire at the bakery! ... oh, no, sorry, it's just steam off their ovens, false alarm."
                         alarms[n - 1] = len(norms)
         # "... child stuck up a tree in the park. Update - child now down and unhurt, job closed.": a later
@@ -4547,12 +4623,14 @@ class ReportAnalyzer:
             for _ in range(2):
                 # "the fire in the, er, the paint shed, it's out": past the rest of a noun phrase cut by pauses
                 e = next((i for i in range(k + 1, min(len(norms), k + 6)) if toks.clause_start[i]), None)
-                if e is None or norms[k] not in lx.DETERMINERS | lx.FILLERS or any(
+                if e is None or norms[k] not in lx.DETERMINERS | lx.FILLERS | {"from", "in", "on", "at"} or any(
                         norms[i] in lx.COPULAS or norms[i] in lx.PRONOUNS - {"that", "this"}
                         or self._cues.match_at(norms, i) is not None for i in range(k, e)):
                     break
                 k = e
             j = k
+            if norms[k] == "but" and not self._cue_between(norms, cue.end_tok, k):
+                j += 1  # "we did have smoke, er, from the kitchen, but it's out now"
             while j < len(norms) and j - k < 6 and norms[j] in lx.BACK_REFERENCE_WORDS | lx.FILLERS:
                 j += 1
             h = self._cancel.match_at(norms, j) if j < len(norms) else None
@@ -4580,6 +4658,15 @@ class ReportAnalyzer:
                 j -= 1
             if j >= 1 and norms[j] == "on" and norms[j - 1] == "negative":
                 negated_by = "negative on"  # "negative on the fire at the ice house"
+        if negated_by is None and cancelled_by is None and self.kb.category_by_name[cue.category].role == Role.DESIRABLE \
+                and norms[cue.start_tok:cue.end_tok] == ("cleared",) and norms[cue.start_tok - 1:cue.start_tok] == ("been",):
+            # "the rockfall at the elbow has been cleared": the danger is gone, the place is not said to be safe
+            for i in range(cue.start_tok - 1, -1, -1):
+                if toks.clause_start[i + 1]:
+                    break
+                h = self._cues.match_at(norms, i)
+                if h is not None and self.kb.category_by_name[h[1][0]].role == Role.UNDESIRABLE:
+                    return replace(cue, polarity="denied", reason="the danger before it was cleared")
         if negated_by is None and cancelled_by is None and self.kb.category_by_name[cue.category].role == Role.DESIRABLE:
             j = cue.start_tok - 1
             while j >= 0 and norms[j] in lx.FILLERS | {"be", "been", "all"}:
@@ -5515,7 +5602,7 @@ class ReportAnalyzer:
             if seg_places.get(j):
                 start = next(i for i in range(segs[j][0], -1, -1) if i == 0 or sentence_of[i - 1] != n)
                 words = [w for w in norms[start:segs[j][1]] if w not in lx.FILLERS]
-                said_alone = sent_words.get(n, 99) <= 3
+                said_alone = sent_words.get(n, 99) <= 3 or _place_fragment(n, seg_places[j], sentence_of, norms)
                 own = [w for w in norms[segs[j][0]:segs[j][1]] if w not in lx.FILLERS]
                 named = words[:2] in (["it", "is"], ["this", "is"]) or words[:1] in (["its"], ["thats"]) \
                     or own[:2] == ["its", "the"] \
@@ -5568,6 +5655,73 @@ class ReportAnalyzer:
                 return None
             j += 1
         return None
+
+
+_FRAGMENT_WORDS = frozenset(lx.STOREY_WORDS | lx.PART_NOUNS | lx.LOCATIVE_PARTS) | {
+    "ground", "first", "second", "third", "top", "upper", "lower", "back", "inside", "outside", "upstairs",
+    "downstairs", "room", "number", "flat", "one", "two", "three", "four", "five", "six"}
+
+
+def _place_fragment(n: int, places: list[PlaceMention], sentence_of: list[int], norms: tuple[str, ...]) -> bool:
+    """Sentence ``n`` is a place said as a fragment, with nothing but where in it ("Casualty found. Ground
+    floor, town hall."): the place the sentence before was about."""
+    inside = {i for q in places for i in range(q.start_tok, q.end_tok)}
+    words = [w for i, w in enumerate(norms) if sentence_of[i] == n and i not in inside]
+    return bool(inside) and all(w in _FRAGMENT_WORDS or w in lx.FILLERS or w in lx.DETERMINERS
+                                or w in lx.PREPOSITIONS for w in words)
+
+
+# "I had it right the first time", "the first one was right": the speaker goes back to the first place said
+_FIRST_WAS_RIGHT = [norm_phrase(p) for p in ("right first time", "right the first time", "first one was right",
+                                             "first one was correct", "first was right", "right to begin with",
+                                             "as i said first", "like i said at first", "what i said first")]
+
+
+_REPAIR_WORDS = frozenset({"no", "sorry", "correction", "mean", "rather", "wait", "scratch", "negative"})
+
+
+def _letter_labelled(kb: KnowledgeBase) -> set[tuple[str, ...]]:
+    """Names whose first word is the letter "a" labelling one of a lettered series ("a wing" beside "b wing",
+    "c wing"): the "a" is no article there."""
+    keys = {norm_phrase(f) for lm in kb.landmarks for f in lm.surface_forms}
+    return {k for k in keys if len(k) >= 2 and k[0] == "a"
+            and any(o[1:] == k[1:] and len(o[0]) == 1 and o[0].isalpha() and o[0] != "a" for o in keys)}
+
+
+def _phonetic_forms(kb: KnowledgeBase, labelled: set[tuple[str, ...]]) -> list[tuple[tuple[str, ...], str]]:
+    """A lettered series' names in the radio alphabet: "bravo wing" for "b wing", "block charlie" for "block c";
+    and the spoken letter alone ("fire on Delta") where two or more landmarks share the series' other words
+    and the word names nothing else in the KB."""
+    letters = {v: k for k, v in lx.PHONETIC_LETTERS.items() if k not in ("alfa", "juliett", "whisky")}
+    forms: dict[tuple[str, ...], set[str]] = {}
+    series: dict[tuple[int, tuple[str, ...]], set[str]] = {}
+    owners: dict[str, set[str]] = {}
+    for lm in kb.landmarks:
+        for f in lm.surface_forms:
+            for w in norm_phrase(f):
+                owners.setdefault(w, set()).add(lm.name)
+    for lm in kb.landmarks:
+        for form in lm.surface_forms:
+            key = norm_phrase(form)
+            if len(key) < 2 or (key[0] in ("a", "an") and key not in labelled):
+                continue
+            for i, w in enumerate(key):
+                if len(w) == 1 and w.isalpha() and (i in (0, len(key) - 1)) and w in letters:
+                    spoken = letters[w]
+                    forms.setdefault(key[:i] + (spoken,) + key[i + 1:], set()).add(lm.name)
+                    series.setdefault((i, key[:i] + key[i + 1:]), set()).add(lm.name)
+                    if owners.get(spoken, set()) <= {lm.name}:
+                        forms.setdefault((spoken,), set()).add(lm.name)
+    keys = {norm_phrase(f) for lm in kb.landmarks for f in lm.surface_forms}
+    out = []
+    for key, names in sorted(forms.items()):
+        if len(names) != 1 or key in keys:
+            continue
+        name = next(iter(names))
+        if len(key) == 1 and not any(len(v) >= 2 and name in v for v in series.values()):
+            continue
+        out.append((key, name))
+    return out
 
 
 def _cue_list_into(k: int, later: int, segs: list[tuple[int, int]], seg_cues: dict[int, list[CueMention]],

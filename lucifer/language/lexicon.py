@@ -182,7 +182,7 @@ just lying there|lying there|lying on the floor|lying on the ground|fell off|fal
 out cold|knocked out|knocked unconscious|electrocuted|got a shock|got a belt|needs lifting|needs lifting off|
 needs winching|needs winching off|heat signature|heat signatures|thermal signature|under the bricks|
 under the wreckage|under the masonry|is under it|s under it|are under it|still under it|
-gashed leg|gashed arm|gashed head|gashed his leg|gashed her leg|badly gashed|someone lying|somebody lying|a man lying|a woman lying|a person lying|a child lying|lying at the bottom of|lying injured|lying unconscious|haven't come out|havent come out|have not come out|can't come down|cannot come down|can't come out|cannot come out|is underneath it|s underneath it|are underneath it|haven't come back|hasn't come back|not come back down|not come back yet|gash on his head|gash on her head|a gash on|blood all down his face|blood all down her face|blood down his face|blood down her face|bleeding from the head|bleed from the head|lying motionless|motionless|
+gashed leg|gashed arm|gashed head|gashed his leg|gashed her leg|badly gashed|someone lying|somebody lying|a man lying|a woman lying|a person lying|a child lying|lying at the bottom of|lying injured|lying unconscious|haven't come out|havent come out|have not come out|can't come down|cannot come down|can't come out|cannot come out|is underneath it|s underneath it|are underneath it|haven't come back|hasn't come back|not come back down|not come back yet|gash on his head|gash on her head|a gash on|blood all down his face|blood all down her face|blood down his face|blood down her face|bleeding from the head|bleed from the head|lying motionless|motionless|i've fallen|i have fallen|i fell|we've fallen|can't get myself up|cannot get myself up|can't get herself up|can't get himself up|
 """.replace("\n", ""))
 
 # "collapsed" alone is structural (hazard); "collapsed inside" / "passed out" is a person.
@@ -198,7 +198,7 @@ NEGATOR_PHRASES = ["no one", "no longer", "not any", "free of", "clear of", "no 
                    "away from the", "far from the", "out of the way of", "upwind of the", "safe from the"]
 
 # Phrases after a hazard cue that cancel it ("the fire is out").
-CANCEL_AFTER = ["turned up", "has turned up", "s turned up", "turned up safe", "is out", "s out", "are out", "was out", "put out", "out now", "been put out",
+CANCEL_AFTER = ["been cleared", "been cleared away", "been towed", "been towed away", "turned up", "has turned up", "s turned up", "turned up safe", "is out", "s out", "are out", "was out", "put out", "out now", "been put out",
                 "has cleared", "have cleared", "s cleared", "has lifted", "s lifted", "has gone down", "s gone down",
                 "has receded", "s receded", "have receded", "gone down now", "old news", "pumped it out",
                 "pumped it all out", "brought down", "been brought down",
@@ -316,7 +316,8 @@ FALSE_ALARM = ["false alarm", "never mind", "nevermind", "disregard my last", "d
                "was a barbecue", "was a bbq", "was a bonfire", "was someone's barbecue", "job closed", "incident closed",
                "it's a bonfire",
                "its a bonfire", "it's just a bonfire", "it's only a bonfire", "it's a barbecue", "its a barbecue",
-               "disregard all of it", "disregard all of that", "disregard all that", "ignore all of that", "ignore all of it"]
+               "disregard all of it", "disregard all of that", "disregard all that", "ignore all of that", "ignore all of it",
+               "ignore me", "nothing showing", "no fire showing", "nothing found", "found nothing"]
 # ... of which these say what the thing said before them was: what follows them is not denied
 DISMISSED_BEFORE = {"it's a bonfire", "its a bonfire", "it's just a bonfire", "it's only a bonfire", "it's a barbecue",
                     "its a barbecue", "is stood down", "been stood down", "was stood down", "are stood down", "was a mannequin",
@@ -326,11 +327,11 @@ DISMISSED_BEFORE = {"it's a bonfire", "its a bonfire", "it's just a bonfire", "i
 PREVIOUS_REPORT_WITHDRAWN = {"disregard my last", "disregard the last report", "ignore my last", "cancel my last",
                              "disregard my last message", "disregard previous", "never mind", "nevermind",
                              "disregard all of it", "disregard all of that", "disregard all that", "ignore all of that",
-                             "ignore all of it"}
+                             "ignore all of it", "ignore me"}
 
 # ... of which these withdraw everything said before them, in earlier sentences as well
 WHOLE_REPORT_WITHDRAWN = {"disregard all of it", "disregard all of that", "disregard all that", "ignore all of that",
-                          "ignore all of it"}
+                          "ignore all of it", "ignore me"}
 
 # Self-repair markers. Strong ones reach back into the previous sentence.
 STRONG_REPAIR = [
@@ -374,12 +375,13 @@ RELATION_SYNONYMS: dict[str, list[str]] = {
                     "looks across the square at", "looks across the street at", "across the road", "across the street",
                     "over the road", "over the way", "across the lane from", "over the lane from", "across the lane",
                     "over the lane", "across the alley from", "across the track from", "over the track from",
-                    "across the green from"],
+                    "across the green from", "across the street of", "across the road of", "in opposite of",
+                    "on the opposite of", "on the other side of the street of", "on the other side of the road of"],
     "behind": ["behind", "round the back of", "around the back of", "at the back of", "in back of",
                "back of", "to the rear of", "at the rear of", "out back of", "directly behind", "right behind",
                "just behind", "backs onto", "backing onto", "that backs onto", "round behind", "out the back of",
                "back behind", "built against the back of", "built onto the back of", "built on to the back of",
-               "against the back of", "up against the back of", "stuck on the back of", "tacked onto the back of"],
+               "against the back of", "up against the back of", "stuck on the back of", "tacked onto the back of", "behind of", "in behind of"],
     "in front of": ["in front of", "out front of", "directly in front of", "right in front of", "at the front of"],
     "inside": ["inside", "within"],
     "above": ["above", "on top of", "upstairs from", "overlooks", "overlooking", "overlook", "looks over",
@@ -788,7 +790,7 @@ COMPOUND_MODIFIERS = {"car", "ball", "theme", "trailer", "business", "retail", "
 # Verbs of where a danger is ("a vapour cloud sitting over the lorry park"), not of a place described.
 POSITION_VERBS = {"sitting", "hanging", "lying", "drifting", "hovering", "spreading", "settling", "pooling", "sat", "hung"}
 HEADLESS_OK = {"she", "he", "they", "says", "said", "reports", "reported", "say", "thinks", "think", "its", "it",
-               "is", "was", "actually", "rather", "now", "maybe", "probably", "definitely", "but", "and", "while", "whereas", "plus"}
+               "is", "was", "actually", "rather", "now", "maybe", "probably", "definitely", "but", "and", "while", "whereas", "plus", "then"}
 # Relation groups close enough to stand in for each other when the exact one finds nothing.
 LOOSE_EQUIVALENTS = {"attached to": "next to", "next to": "attached to"}
 
@@ -821,7 +823,7 @@ RELATIVE_COPULAS = {("that", "is"), ("which", "is"), ("that", "s"), ("which", "s
 # all the kind's words: "split open" is a collapse like "collapsed" and "cracked", whatever MiniLM
 # makes of the two words alone. Ambiguous words ("leak", "danger", "blocked") belong to no kind.
 # A kind of danger no category description names goes where its nearest kind goes.
-KIND_FALLBACK = {"smoke": "fire", "storm": "collapse", "fire": "explosion"}
+KIND_FALLBACK = {"smoke": "fire", "storm": "collapse", "fire": "explosion", "vehicle": "access"}
 DANGER_KINDS: dict[str, list[str]] = {
     "crowd": ["crowd crush", "crowd surge", "surge at", "surge in", "surging", "crammed", "packed solid", "pressed flat",
               "pressed against", "pushed up against", "crushing", "pile-up", "pile up", "overcrowded", "stampede",
@@ -932,6 +934,10 @@ DANGER_KINDS: dict[str, list[str]] = {
     "sewage": ["sewage", "raw sewage", "sewage backing up", "backing up with sewage", "sewer overflow",
                "sewer backing up", "foul water", "contaminated water", "polluted water", "dirty water coming up",
                "sewage everywhere", "sewage coming up"],
+    "vehicle": ["a crash", "crash at", "crash on", "crash in", "crash near", "bad crash", "serious crash", "crashed",
+                "car crash", "collision", "collided", "jackknifed", "jack-knifed", "overturned",
+                "rolled over", "gone off the road", "went off the road", "come off the road", "came off the road",
+                "rtc", "road traffic collision", "shunt", "rear-ended", "written off", "wrecked"],
 }
 # Words of the kinds' phrases that name the thing, not the danger: they do not vote ("roof down").
 DANGER_KIND_PARTS = _keyed({"roof", "roofs", "wall", "walls", "ceiling", "floor", "chimney", "tree", "trees", "door", "doors",
@@ -1085,3 +1091,16 @@ SHORT_PLACE_NOUNS = frozenset({"gym", "pub", "inn", "spa", "zoo", "dam"})
 # Clipped words that stand for a longer first word of a name ("the bio block", "the sci park"), though they
 # are words of their own too
 CLIPPINGS = frozenset({"bio", "sci", "tech", "med", "lab", "admin", "chem", "maths", "eng", "vet", "physio"})
+
+# The radio alphabet: "Bravo wing", "on Charlie" for a KB's "b wing" / "c wing".
+PHONETIC_LETTERS = {"alpha": "a", "alfa": "a", "bravo": "b", "charlie": "c", "delta": "d", "echo": "e",
+                    "foxtrot": "f", "golf": "g", "hotel": "h", "india": "i", "juliet": "j", "juliett": "j",
+                    "kilo": "k", "lima": "l", "mike": "m", "november": "n", "oscar": "o", "papa": "p", "quebec": "q",
+                    "romeo": "r", "sierra": "s", "tango": "t", "uniform": "u", "victor": "v", "whiskey": "w",
+                    "whisky": "w", "xray": "x", "yankee": "y", "zulu": "z"}
+
+# Words that tell two landmarks of a pair apart ("upper car park" / "lower car park"); direction words
+# with an antonym count as well.
+SIDE_WORDS = frozenset({"north", "south", "east", "west", "northbound", "southbound", "eastbound", "westbound",
+                        "upper", "lower", "inner", "outer", "front", "rear", "top", "bottom", "northern", "southern",
+                        "eastern", "western", "near", "far", "left", "right", "old", "new"})
