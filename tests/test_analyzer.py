@@ -2537,6 +2537,27 @@ def test_numbered_floors_of_a_tower(tmp_path):
      [("a wing", "riot_or_blaze"), ("b wing", "riot_or_blaze")]),
     ("county_prison", "fire on echo block", [("e block", "riot_or_blaze")]),
     ("county_prison", "Alpha one to Control: fire on Bravo.", [("b wing", "riot_or_blaze")]),
+    ("county_prison", "smoke logging in the unit that's joined to Delta by the covered walkway",
+     [("healthcare unit", "riot_or_blaze")]),
+    # a head word several names share ("the block" is the seg's alias, "e block" a block too): the relation says
+    ("county_prison", "Delta's been retaken and it's secure; the block that takes its overflow is still burning.",
+     [("d wing", "secure_holding"), ("e block", "riot_or_blaze")]),
+    ("county_prison", "fire in the block", [("segregation unit", "riot_or_blaze")]),
+    # "looks down over"; "next 2" in a text; "Nothing ongoing." closes what came before
+    ("riverbend", "two kids hurt on the open ground the abbey looks down over", [("village green", "casualty")]),
+    ("riverbend", "my cousin is stuck in the place next 2 the brewery, she cant get out", [("tannery", "casualty")]),
+    ("riverbend", "Claim file for the building facing the ferry landing: smoke damage from last night's fire, which "
+                  "the brigade had out by midnight. Nothing ongoing.", []),
+    # a name's last words after a possessive ("the café's car park"), the one the KB relates to the owner;
+    # a relation's words that are a name's ("is the customer car park for") are no keyword for it
+    ("coast_road", "fire in the café's car park", [("upper car park", "slip_and_wreckage")]),
+    ("coast_road", "Use the car park below the café's car park as the holding area, it's dry.",
+     [("lower car park", "safe_stopping_place")]),
+    ("coast_road", "rockfall in the car park below the upper car park", [("lower car park", "slip_and_wreckage")]),
+    # "we" as an inverse description's anchor: where the speaker is
+    ("coast_road", "Coastguard lookout here. The building we share the headland with has its lantern glass blown in.",
+     [("lighthouse", "slip_and_wreckage")]),
+    ("ms", "We're at the bakery. The building we share a wall with is on fire.", [("pharmacy", "hazard")]),
 ])
 def test_dev41_phenomena(kb_analyzers, analyzer, kb, text, expected):
     an = analyzer if kb == "ms" else kb_analyzers[kb]

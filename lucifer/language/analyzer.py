@@ -437,8 +437,14 @@ class ReportAnalyzer:
                 voice[rel.phrase] = "active"
             else:
                 voice.setdefault(rel.phrase, "other")
+        # (not a word of the KB's own names: "car park" of "is the customer car park for" where "upper car park"
+        # and "lower car park" are landmarks)
+        tails = {words[-n:] for lm in self.kb.landmarks for f in lm.surface_forms
+                 for words in [name_words(f)] for n in range(2, len(words) + 1)}
+        named = {w for rel in self.kb.relations for words in [tuple(norm_phrase(rel.phrase))]
+                 for i in range(len(words)) for n in (2, 3) if words[i:i + n] in tails for w in words[i:i + n]}
         stems = self._unique_stems(lambda w: w not in lx.RELATION_NAME_STOPWORDS and not _direction_word(w)
-                                   and w not in lx.DIRECTION_FAMILIES)
+                                   and w not in lx.DIRECTION_FAMILIES and w not in named)
         return {stem: (phrase, voice[phrase]) for stem, phrase in stems.items()}
 
     def _keyword_relation(self, word: str) -> tuple[str, str] | None:
@@ -600,7 +606,8 @@ class ReportAnalyzer:
                 continue  # "first aid post" is a cue, "across the square from" a relation
             if b - a == 1 and norms[a] in lx.PHONETIC_LETTERS and (
                     b < len(norms) and is_number(norms[b]) and not toks.clause_start[b]
-                    or a > 0 and norms[a - 1] == "to" and not toks.clause_start[a]):
+                    or a > 0 and norms[a - 1] == "to" and not toks.clause_start[a]
+                    and any(toks.sentence_start[j] for j in range(max(0, a - 3), a))):
                 continue  # "Control to Alpha one", "Oscar Two here": a call sign, not the spoken letter of a place
             prev = norms[a - 1] if a > 0 else ""
             k = a - 1
@@ -1352,6 +1359,10 @@ class ReportAnalyzer:
             for lm in self.kb.landmarks:
                 for head in filter(None, map(_name_head, lm.surface_forms)):
                     owners.setdefault(head, set()).add(lm.name)
+            for lm in self.kb.landmarks:  # ("the block" for the seg beside "e block", "education block")
+                for words in (name_words(f) for f in lm.surface_forms):
+                    if len(words) == 1 and len(owners.get(words[0], ())) >= 2:
+                        owners[words[0]].add(lm.name)
             self._shared_heads = {w: names for w, names in owners.items() if len(names) >= 2}
         return self._shared_heads
 
@@ -2168,7 +2179,7 @@ class ReportAnalyzer:
             generic = False  # "the road that gully empties onto": "that" opens a relative clause, the gully its subject
         if anchor is None:
             # inverse: "the one (that) the garage sits behind", "the row it shares a wall with"
-            if generic and not (words and words[-1] in ("it", "they", "theyre")):
+            if generic and not (words and words[-1] in ("it", "they", "theyre", "we", "i")):
                 return
             found = self._inverse_anchor(ex, norms, a, phrase)
             if found is None:
@@ -2197,6 +2208,16 @@ class ReportAnalyzer:
             if named != "pronoun":
                 ex.places[ex.places.index(anchor_p)] = replace(anchor_p, status="reference",
                                                                reason=f"reference point: {via}")
+            head_p = next((p for p in ex.places if p.end_tok == hs and p.end_tok - p.start_tok == 1
+                           and p.status == "active" and p.via is None and not p.reason), None)
+            if head_p is not None and target in self._head_groups().get(norms[head_p.start_tok], set()) \
+                    and head_p.landmark in self._head_groups()[norms[head_p.start_tok]]:
+                # "the block that takes its overflow": a head word several names share ("the block" is the seg,
+                # "e block" a block too) heads the description; the relation says which
+                ex.places.remove(head_p)
+                hs = head_p.start_tok
+                while hs > 0 and norms[hs - 1] in lx.DETERMINERS:
+                    hs -= 1
             new = self._mention(toks, hs, b, target, via=via)
             ex.places.append(new)
             place_tokens.update(range(hs, b))
@@ -2417,6 +2438,8 @@ class ReportAnalyzer:
             else:
                 if self._possessive_keyword(ex, idx, p, p.end_tok):
                     continue
+                if self._possessive_tail(ex, idx, p, norms):
+                    continue
                 # "the church's across-the-road neighbour": a relation phrase used as a modifier
                 hit = self._relations.match_at(norms, p.end_tok) if p.end_tok < len(norms) else None
                 if hit is None or hit[0] >= len(norms) or norms[hit[0]] not in lx.GENERIC_HEADS:
@@ -2427,6 +2450,28 @@ class ReportAnalyzer:
                     continue
                 ex.places[idx] = replace(p, status="reference", reason=f"reference point: {via}")
                 ex.places.append(self._mention(toks, p.start_tok, hit[0] + 1, target, via=via))
+
+    def _possessive_tail(self, ex: Extraction, idx: int, p: PlaceMention, norms: tuple[str, ...]) -> bool:
+        """"the café's car park": after a possessive, the last words of landmarks' names ("car park": upper and
+        lower car park), of which the KB relates exactly one to the owner."""
+        for n in (3, 2):
+            key = norms[p.end_tok:p.end_tok + n]
+            if len(key) < n or any(q.start_tok < p.end_tok + n and q.end_tok > p.end_tok for q in ex.places):
+                continue
+            owners = {lm.name for lm in self.kb.landmarks for f in lm.surface_forms
+                      if name_words(f)[-n:] == key and len(name_words(f)) > n}
+            if len(owners) < 2:
+                continue
+            related = {other for rel in self.kb.relations for other in (rel.subject, rel.object)
+                       if p.landmark in (rel.subject, rel.object) and other != p.landmark and other in owners}
+            if len(related) != 1:
+                return False
+            target = next(iter(related))
+            ex.places[idx] = replace(p, status="reference", reason=f"reference point: the {' '.join(key)} of it")
+            ex.places.append(self._mention(ex.tokens, p.start_tok, p.end_tok + n, target,
+                                           via=f"{_OWNED} {' '.join(key)} of {p.landmark}"))
+            return True
+        return False
 
     def _possessive_keyword(self, ex: Extraction, idx: int, p: PlaceMention, k: int) -> bool:
         """"hangar two's sister hangar", "its twin": a possessive, then a noun that names a KB relation."""
@@ -2515,6 +2560,10 @@ class ReportAnalyzer:
                 break
             j += 1
         place = next((p for p in ex.places if p.start_tok == j or (p.start_tok >= b and p.start_tok <= j and p.status == "active")), None)
+        if place is not None and place.status == "reference":
+            # ("below the café's car park": the place the possessive names, not its owner)
+            place = next((p for p in ex.places if p.start_tok == place.start_tok and p.status == "active"
+                          and (p.via or "").startswith(_OWNED) and p.end_tok > place.end_tok), place)
         if place is not None and any(ex.tokens.sentence_start[t] for t in range(b, place.start_tok + 1)):
             place = None  # "diesel all over the road. Toll plaza is ...": a relation does not reach into the next sentence
         elif place is not None and norms[b - 1] in ("road", "lane", "street", "way"):
@@ -2620,6 +2669,18 @@ class ReportAnalyzer:
                 if norms[hs] in lx.GENERIC_HEADS or (hs + 1 < len(norms) and norms[hs + 1] in lx.GENERIC_HEADS) \
                         or (hs + 1 < len(norms) and self._plain_head(norms, hs + 1)) or self._plain_head(norms, hs):
                     return ante, hs, "pronoun"  # type: ignore[return-value]
+        if anchor is None and j > 1 and norms[j - 1] in ("we", "i") \
+                and (norms[j - 2] in lx.GENERIC_HEADS | {"that", "which"} or self._plain_head(norms, j - 2)):
+            # "Coastguard lookout here. The building we share the headland with": the speaker's place is the anchor
+            hs = j - 2
+            while hs > 0 and norms[hs] in ("that", "which"):
+                hs -= 1
+            while hs > 0 and norms[hs - 1] in lx.DETERMINERS:
+                hs -= 1
+            at = [p for p in ex.places if p.end_tok <= hs and p.status != "retracted" and (
+                self._speaker_at(norms, p) or norms[p.end_tok:p.end_tok + 1] == ("here",))]
+            if at:
+                return max(at, key=lambda p: p.end_tok), hs, "pronoun"  # type: ignore[return-value]
         if anchor is None:
             return None
         k = anchor.start_tok
@@ -5677,6 +5738,7 @@ _FIRST_WAS_RIGHT = [norm_phrase(p) for p in ("right first time", "right the firs
                                              "as i said first", "like i said at first", "what i said first")]
 
 
+_OWNED = "owned:"  # the ``via`` of "the café's car park" (``_possessive_tail``)
 _REPAIR_WORDS = frozenset({"no", "sorry", "correction", "mean", "rather", "wait", "scratch", "negative"})
 
 

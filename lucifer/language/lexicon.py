@@ -317,7 +317,7 @@ FALSE_ALARM = ["false alarm", "never mind", "nevermind", "disregard my last", "d
                "it's a bonfire",
                "its a bonfire", "it's just a bonfire", "it's only a bonfire", "it's a barbecue", "its a barbecue",
                "disregard all of it", "disregard all of that", "disregard all that", "ignore all of that", "ignore all of it",
-               "ignore me", "nothing showing", "no fire showing", "nothing found", "found nothing"]
+               "ignore me", "nothing showing", "no fire showing", "nothing found", "found nothing", "nothing ongoing"]
 # ... of which these say what the thing said before them was: what follows them is not denied
 DISMISSED_BEFORE = {"it's a bonfire", "its a bonfire", "it's just a bonfire", "it's only a bonfire", "it's a barbecue",
                     "its a barbecue", "is stood down", "been stood down", "was stood down", "are stood down", "was a mannequin",
@@ -365,7 +365,7 @@ RELATION_SYNONYMS: dict[str, list[str]] = {
     "next to": ["next to", "next door to", "next door", "beside", "next building over from", "next one over from",
                 "next along from", "next one along from", "the next building over from", "next door along from", "besides", "alongside", "adjacent to", "right by",
                 "right next to", "just next to", "by", "neighbouring", "neighboring", "next door from",
-                "immediately next to", "directly next to", "to the side of"],
+                "immediately next to", "directly next to", "to the side of", "next 2"],
     "across from": ["across from", "opposite", "opposite to", "across the street from", "across the road from",
                     "facing", "over the road from", "across the square from", "across the way from",
                     "over the street from", "directly across from", "straight across from", "that faces",
@@ -385,7 +385,8 @@ RELATION_SYNONYMS: dict[str, list[str]] = {
     "in front of": ["in front of", "out front of", "directly in front of", "right in front of", "at the front of"],
     "inside": ["inside", "within"],
     "above": ["above", "on top of", "upstairs from", "overlooks", "overlooking", "overlook", "looks over",
-              "looking over", "looks down on", "looking down on", "looking down over", "up above", "up from",
+              "looking over", "looks down on", "looking down on", "looking down over", "looks down over", "look down over",
+              "looks down onto", "looking down onto", "looks down at", "up above", "up from",
               "higher than", "uphill from", "up the hill from", "looms over", "looming over", "looks out over",
               "looking out over", "towers over", "towering over", "stands over", "sits above", "stands above",
               "directly over", "right over", "immediately over", "sits over", "sitting over", "lies over",
