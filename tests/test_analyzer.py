@@ -2558,6 +2558,16 @@ def test_numbered_floors_of_a_tower(tmp_path):
     ("coast_road", "Coastguard lookout here. The building we share the headland with has its lantern glass blown in.",
      [("lighthouse", "slip_and_wreckage")]),
     ("ms", "We're at the bakery. The building we share a wall with is on fire.", [("pharmacy", "hazard")]),
+    # a disorder kind of danger, custody and medical words for people; crashes and sea water by kind
+    ("county_prison", "prisoners on the roof of the chapel, they're chucking slates", [("chapel", "riot_or_blaze")]),
+    ("county_prison", "lad fitting in the visits hall", [("visits hall", "someone_hurt_or_held")]),
+    ("county_prison", "b-wing, landing two, ligature round his neck, we're cutting him down now",
+     [("b wing", "someone_hurt_or_held")]),
+    ("coast_road", "at J4 two cars have gone into each other, nobody hurt", [("junction 4", "slip_and_wreckage")]),
+    ("coast_road", "water pooling at junction 2, a good foot of it", [("junction 2", "sea_and_flood")]),
+    # "a van" is one van, not the caravan park the KB calls "the vans"
+    ("coast_road", "we've a van nose-down in the drain at the north portal, driver's okay",
+     [("north tunnel portal", "slip_and_wreckage")]),
 ])
 def test_dev41_phenomena(kb_analyzers, analyzer, kb, text, expected):
     an = analyzer if kb == "ms" else kb_analyzers[kb]

@@ -646,6 +646,10 @@ class ReportAnalyzer:
                     and all(norm_phrase(f)[-1:] != norms[a:b] or f.lower().endswith("s") for f in
                             self.kb.landmark_by_name[landmark].surface_forms):
                 continue  # "a customer's fainted in there, flat on the floor": the singular of "flats", no name
+            if b - a == 1 and prev in ("a", "an", "one") and not raw.endswith("s") and all(
+                    f.lower().endswith("s") for f in self.kb.landmark_by_name[landmark].surface_forms
+                    if norm_phrase(f)[-1:] == norms[a:b]):
+                continue  # "we've a van nose-down in the drain": one van, not the caravan park's "the vans"
             if b - a == 1 and prev in lx.MODAL_BEFORE_VERB and not (a > 0 and toks.clause_start[a]):
                 continue  # "don't park anything round there": the word as a verb
             if b - a == 1 and a > 0 and toks.tokens[a - 1].text.lower() in ("its", "their", "his", "her") \

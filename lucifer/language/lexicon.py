@@ -182,7 +182,7 @@ just lying there|lying there|lying on the floor|lying on the ground|fell off|fal
 out cold|knocked out|knocked unconscious|electrocuted|got a shock|got a belt|needs lifting|needs lifting off|
 needs winching|needs winching off|heat signature|heat signatures|thermal signature|under the bricks|
 under the wreckage|under the masonry|is under it|s under it|are under it|still under it|
-gashed leg|gashed arm|gashed head|gashed his leg|gashed her leg|badly gashed|someone lying|somebody lying|a man lying|a woman lying|a person lying|a child lying|lying at the bottom of|lying injured|lying unconscious|haven't come out|havent come out|have not come out|can't come down|cannot come down|can't come out|cannot come out|is underneath it|s underneath it|are underneath it|haven't come back|hasn't come back|not come back down|not come back yet|gash on his head|gash on her head|a gash on|blood all down his face|blood all down her face|blood down his face|blood down her face|bleeding from the head|bleed from the head|lying motionless|motionless|i've fallen|i have fallen|i fell|we've fallen|can't get myself up|cannot get myself up|can't get herself up|can't get himself up|
+gashed leg|gashed arm|gashed head|gashed his leg|gashed her leg|badly gashed|someone lying|somebody lying|a man lying|a woman lying|a person lying|a child lying|lying at the bottom of|lying injured|lying unconscious|haven't come out|havent come out|have not come out|can't come down|cannot come down|can't come out|cannot come out|is underneath it|s underneath it|are underneath it|haven't come back|hasn't come back|not come back down|not come back yet|gash on his head|gash on her head|a gash on|blood all down his face|blood all down her face|blood down his face|blood down her face|bleeding from the head|bleed from the head|lying motionless|motionless|lad fitting|he's fitting|she's fitting|someone fitting|man fitting|having a fit|he's seizing|she's seizing|ligature|ligatured|found hanging|prisoner hanging|someone hanging|lad hanging|man hanging|hostage|hostages|taken hostage|held hostage|officer slashed|been slashed|was slashed|stabbed|been stabbed|i've fallen|i have fallen|i fell|we've fallen|can't get myself up|cannot get myself up|can't get herself up|can't get himself up|
 """.replace("\n", ""))
 
 # "collapsed" alone is structural (hazard); "collapsed inside" / "passed out" is a person.
@@ -824,7 +824,7 @@ RELATIVE_COPULAS = {("that", "is"), ("which", "is"), ("that", "s"), ("which", "s
 # all the kind's words: "split open" is a collapse like "collapsed" and "cracked", whatever MiniLM
 # makes of the two words alone. Ambiguous words ("leak", "danger", "blocked") belong to no kind.
 # A kind of danger no category description names goes where its nearest kind goes.
-KIND_FALLBACK = {"smoke": "fire", "storm": "collapse", "fire": "explosion", "vehicle": "access"}
+KIND_FALLBACK = {"smoke": "fire", "storm": "collapse", "fire": "explosion", "vehicle": "access", "disorder": "fire"}
 DANGER_KINDS: dict[str, list[str]] = {
     "crowd": ["crowd crush", "crowd surge", "surge at", "surge in", "surging", "crammed", "packed solid", "pressed flat",
               "pressed against", "pushed up against", "crushing", "pile-up", "pile up", "overcrowded", "stampede",
@@ -887,7 +887,10 @@ DANGER_KINDS: dict[str, list[str]] = {
                "subsided into", "subsiding into", "subsidence", "has slipped", "face has slipped", "being undercut",
                "undercut", "being undermined", "undermined", "mud", "mud and rocks", "mud everywhere",
                "full of mud", "rocks came down", "rocks have come down", "rockfall", "rock fall", "boulders"],
-    "water": ["sea's come over", "sea's come right over", "sea has come over", "sea came over", "sea's pouring in",
+    "water": ["water pooling", "pooling", "the sea in the", "sea's in the", "taking water", "taking in water",
+              "under the tide", "waves breaking over", "waves breaking clean over", "waves coming over",
+              "over the bonnet", "over the bonnets", "water's over the",
+              "sea's come over", "sea's come right over", "sea has come over", "sea came over", "sea's pouring in",
               "sea pouring in", "sea's coming in", "sea coming in", "sea's come in", "sea has come in", "under a metre of water",
               "a metre of water", "metres of water", "full of seawater", "seawater", "awash", "washout", "washed over",
               "water's come through", "water's come right through", "water's right through", "water right through",
@@ -938,7 +941,15 @@ DANGER_KINDS: dict[str, list[str]] = {
     "vehicle": ["a crash", "crash at", "crash on", "crash in", "crash near", "bad crash", "serious crash", "crashed",
                 "car crash", "collision", "collided", "jackknifed", "jack-knifed", "overturned",
                 "rolled over", "gone off the road", "went off the road", "come off the road", "came off the road",
-                "rtc", "road traffic collision", "shunt", "rear-ended", "written off", "wrecked"],
+                "rtc", "road traffic collision", "shunt", "rear-ended", "written off", "wrecked", "gone into each other",
+                "went into each other", "car's gone into", "car has gone into", "van's gone into", "lorry's gone into",
+                "car in the ditch", "van in the ditch", "lorry in the ditch", "nose-down", "nose down in", "nose-first",
+                "nose first in", "wedged under", "slid half over", "slid over the", "slid off the"],
+    "disorder": ["rioting", "riot", "riots", "barricaded", "barricaded in", "barricades", "smashing up", "smashed up",
+                 "trashing", "trashed", "kicking off", "kicked off", "chucking slates", "throwing slates",
+                 "throwing tiles", "chucking tiles", "throwing missiles", "missiles", "on the roof throwing",
+                 "prisoners on the roof", "rooftop protest", "roof protest", "disorder", "concerted indiscipline",
+                 "running riot"],
 }
 # Words of the kinds' phrases that name the thing, not the danger: they do not vote ("roof down").
 DANGER_KIND_PARTS = _keyed({"roof", "roofs", "wall", "walls", "ceiling", "floor", "chimney", "tree", "trees", "door", "doors",
