@@ -2565,6 +2565,11 @@ def test_numbered_floors_of_a_tower(tmp_path):
      [("b wing", "someone_hurt_or_held")]),
     ("coast_road", "at J4 two cars have gone into each other, nobody hurt", [("junction 4", "slip_and_wreckage")]),
     ("coast_road", "water pooling at junction 2, a good foot of it", [("junction 2", "sea_and_flood")]),
+    # "it's nothing", "there's nothing, all normal" close a false alarm; "nothing left of it" does not
+    ("ms", "I was thinking there is fire at the supermarket, but no, it is the sun on the windows, it is nothing.", []),
+    ("ms", "rumour going round theres a fire at the cafe but i just walked passed and theres nothing, all normal", []),
+    ("ms", "there's nothing left of the bakery, it burned down", [("bakery", "hazard")]),
+    ("ms", "man hurt at the bank, it's nothing serious", [("bank", "victim")]),
     # "a van" is one van, not the caravan park the KB calls "the vans"
     ("coast_road", "we've a van nose-down in the drain at the north portal, driver's okay",
      [("north tunnel portal", "slip_and_wreckage")]),

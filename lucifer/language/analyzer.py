@@ -4505,6 +4505,10 @@ class ReportAnalyzer:
                 if norms[i] != key[0]:
                     continue
                 stutter = norms[i + 1 : i + 1 + len(key)] == key  # "are, are false"
+                if norms[i : i + len(key)] == key and norms[i + len(key):i + len(key) + 1] \
+                        and norms[i + len(key)] in lx.FALSE_ALARM_NOT_BEFORE and "nothing" in key \
+                        and not toks.clause_start[i + len(key)]:
+                    continue  # "there's nothing left of the bakery": what is gone, not a false alarm
                 if norms[i : i + len(key)] == key or stutter:
                     # "disregard my last, the spill is at the store": an earlier report is withdrawn and
                     # what follows replaces it

@@ -317,7 +317,13 @@ FALSE_ALARM = ["false alarm", "never mind", "nevermind", "disregard my last", "d
                "it's a bonfire",
                "its a bonfire", "it's just a bonfire", "it's only a bonfire", "it's a barbecue", "its a barbecue",
                "disregard all of it", "disregard all of that", "disregard all that", "ignore all of that", "ignore all of it",
-               "ignore me", "nothing showing", "no fire showing", "nothing found", "found nothing", "nothing ongoing"]
+               "ignore me", "nothing showing", "no fire showing", "nothing found", "found nothing", "nothing ongoing", "it is nothing", "it's nothing", "its nothing", "there's nothing",
+               "theres nothing", "there is nothing", "i've got nothing", "got nothing here", "all normal",
+               "all looks normal", "everything normal", "everything's normal"]
+# ... unless the words after them go on to say what there is none of ("there's nothing left of it", "it's nothing
+# serious", "there's nothing we can do")
+FALSE_ALARM_NOT_BEFORE = {"left", "serious", "major", "like", "but", "we", "i", "you", "they", "else", "more", "to",
+                          "much", "stopping", "holding", "between", "in", "on", "at"}
 # ... of which these say what the thing said before them was: what follows them is not denied
 DISMISSED_BEFORE = {"it's a bonfire", "its a bonfire", "it's just a bonfire", "it's only a bonfire", "it's a barbecue",
                     "its a barbecue", "is stood down", "been stood down", "was stood down", "are stood down", "was a mannequin",
