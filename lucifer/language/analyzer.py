@@ -4498,12 +4498,15 @@ class ReportAnalyzer:
         sentence_of = toks.sentence_of
         alarms: dict[int, int] = {}  # sentence -> the token before which its claims are denied
         places_now = getattr(self, "_places_now", [])
+        positions: dict[str, list[int]] = {}
+        for i, w in enumerate(norms):
+            positions.setdefault(w, []).append(i)
         for phrase, key in _FALSE_ALARM_KEYS:
             if key[0] in ("just", "only") and key[-1] in self._danger_words:
                 continue  # "it's not chlorine, it's just steam, live steam blasting out": the KB says steam is a danger
-            for i in range(len(norms) - len(key) + 1):
-                if norms[i] != key[0]:
-                    continue
+            for i in positions.get(key[0], ()):
+                if i > len(norms) - len(key):
+                    break
                 stutter = norms[i + 1 : i + 1 + len(key)] == key  # "are, are false"
                 if norms[i : i + len(key)] == key and norms[i + len(key):i + len(key) + 1] \
                         and norms[i + len(key)] in lx.FALSE_ALARM_NOT_BEFORE and "nothing" in key \
