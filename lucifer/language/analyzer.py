@@ -2658,14 +2658,19 @@ class ReportAnalyzer:
                 and a - j < 3 and not any(p.end_tok == j and p.status == "active" for p in ex.places):
             j -= 1  # (not past a name's own last word: "car park A lies downhill of")
         anchor = next((p for p in ex.places if p.end_tok == j and p.status == "active"), None)
-        if anchor is None and j > 0 and norms[j - 1] in ("it", "its", "they", "theyre") and j - 1 > 0 \
+        if anchor is None and j > 1 and norms[j - 1] in ("it", "its", "they", "theyre", "we", "i") \
                 and (norms[j - 2] in lx.GENERIC_HEADS | {"that", "which"} or self._plain_head(norms, j - 2)):
-            # "the building it sits next to": the pronoun is the anchor
+            # "the building it sits next to": the pronoun is the anchor; "Coastguard lookout here. The building
+            # we share the headland with": the speaker's place is
             hs = j - 2
             while hs > 0 and norms[hs] in ("that", "which"):
                 hs -= 1
             while hs > 0 and norms[hs - 1] in lx.DETERMINERS:
                 hs -= 1
+            if norms[j - 1] in ("we", "i"):
+                at = [p for p in ex.places if p.end_tok <= hs and p.status != "retracted" and (
+                    self._speaker_at(norms, p) or norms[p.end_tok:p.end_tok + 1] == ("here",))]
+                return (max(at, key=lambda p: p.end_tok), hs, "pronoun") if at else None  # type: ignore[return-value]
             # the antecedent is spoken before the head ("the landing it faces": not the landing)
             before = [p for p in ex.places if p.end_tok <= hs and p.status != "reference"]
             if before:
@@ -2673,18 +2678,6 @@ class ReportAnalyzer:
                 if norms[hs] in lx.GENERIC_HEADS or (hs + 1 < len(norms) and norms[hs + 1] in lx.GENERIC_HEADS) \
                         or (hs + 1 < len(norms) and self._plain_head(norms, hs + 1)) or self._plain_head(norms, hs):
                     return ante, hs, "pronoun"  # type: ignore[return-value]
-        if anchor is None and j > 1 and norms[j - 1] in ("we", "i") \
-                and (norms[j - 2] in lx.GENERIC_HEADS | {"that", "which"} or self._plain_head(norms, j - 2)):
-            # "Coastguard lookout here. The building we share the headland with": the speaker's place is the anchor
-            hs = j - 2
-            while hs > 0 and norms[hs] in ("that", "which"):
-                hs -= 1
-            while hs > 0 and norms[hs - 1] in lx.DETERMINERS:
-                hs -= 1
-            at = [p for p in ex.places if p.end_tok <= hs and p.status != "retracted" and (
-                self._speaker_at(norms, p) or norms[p.end_tok:p.end_tok + 1] == ("here",))]
-            if at:
-                return max(at, key=lambda p: p.end_tok), hs, "pronoun"  # type: ignore[return-value]
         if anchor is None:
             return None
         k = anchor.start_tok
