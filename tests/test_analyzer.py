@@ -2570,6 +2570,12 @@ def test_numbered_floors_of_a_tower(tmp_path):
     ("ms", "rumour going round theres a fire at the cafe but i just walked passed and theres nothing, all normal", []),
     ("ms", "there's nothing left of the bakery, it burned down", [("bakery", "hazard")]),
     ("ms", "man hurt at the bank, it's nothing serious", [("bank", "victim")]),
+    # an aside that says which place was meant: "it" is the place before it; a person who "fell down"
+    ("ms", "So I go past the bakery, nothing wrong there. Then the chemist's, the one built onto it, there's smoke.",
+     [("pharmacy", "hazard")]),
+    ("ms", "there's fire in the dinner room at the school, and my teacher fell down and she's not talking",
+     [("school", "hazard"), ("school", "victim")]),
+    ("ms", "the wall fell down at the bank", [("bank", "hazard")]),
     # "a van" is one van, not the caravan park the KB calls "the vans"
     ("coast_road", "we've a van nose-down in the drain at the north portal, driver's okay",
      [("north tunnel portal", "slip_and_wreckage")]),

@@ -2088,6 +2088,17 @@ class ReportAnalyzer:
         if any(i in place_tokens for i in range(a, b)):
             return  # already inside a resolved description
         anchor, anchor_end, pronoun = self._anchor_after(ex, norms, b, phrase)
+        if pronoun and anchor is not None and anchor.end_tok < a and ex.tokens.clause_start[anchor.end_tok] \
+                and a - anchor.end_tok <= 4 and norms[anchor.end_tok] in lx.ARTICLES \
+                and all(w in lx.DETERMINERS or w.isalpha() for w in norms[anchor.end_tok:a]):
+            # "the chemist's, the one built onto it": an aside that says which place was meant; "it" is the place
+            # said before it, the one the relation leads from to the place named
+            earlier = [p for p in ex.places if p.end_tok <= anchor.start_tok and p.landmark != anchor.landmark
+                       and p.status != "retracted"]
+            if earlier:
+                prev = max(earlier, key=lambda p: p.end_tok)
+                if self._follow(prev.landmark, phrase, "", inverse=flipped)[0] == anchor.landmark:
+                    anchor = prev
         if anchor is None and norms[a:b] in lx.IMPLICIT_ANCHOR and (b >= len(norms) or ex.tokens.clause_start[b]
                                                                     or not any(p.start_tok == b for p in ex.places)) \
                 and not self._names_other_object(toks, norms, b):

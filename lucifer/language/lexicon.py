@@ -182,7 +182,7 @@ just lying there|lying there|lying on the floor|lying on the ground|fell off|fal
 out cold|knocked out|knocked unconscious|electrocuted|got a shock|got a belt|needs lifting|needs lifting off|
 needs winching|needs winching off|heat signature|heat signatures|thermal signature|under the bricks|
 under the wreckage|under the masonry|is under it|s under it|are under it|still under it|
-gashed leg|gashed arm|gashed head|gashed his leg|gashed her leg|badly gashed|someone lying|somebody lying|a man lying|a woman lying|a person lying|a child lying|lying at the bottom of|lying injured|lying unconscious|haven't come out|havent come out|have not come out|can't come down|cannot come down|can't come out|cannot come out|is underneath it|s underneath it|are underneath it|haven't come back|hasn't come back|not come back down|not come back yet|gash on his head|gash on her head|a gash on|blood all down his face|blood all down her face|blood down his face|blood down her face|bleeding from the head|bleed from the head|lying motionless|motionless|lad fitting|he's fitting|she's fitting|someone fitting|man fitting|having a fit|he's seizing|she's seizing|ligature|ligatured|found hanging|prisoner hanging|someone hanging|lad hanging|man hanging|hostage|hostages|taken hostage|held hostage|officer slashed|been slashed|was slashed|stabbed|been stabbed|i've fallen|i have fallen|i fell|we've fallen|can't get myself up|cannot get myself up|can't get herself up|can't get himself up|
+gashed leg|gashed arm|gashed head|gashed his leg|gashed her leg|badly gashed|someone lying|somebody lying|a man lying|a woman lying|a person lying|a child lying|lying at the bottom of|lying injured|lying unconscious|haven't come out|havent come out|have not come out|can't come down|cannot come down|can't come out|cannot come out|is underneath it|s underneath it|are underneath it|haven't come back|hasn't come back|not come back down|not come back yet|gash on his head|gash on her head|a gash on|blood all down his face|blood all down her face|blood down his face|blood down her face|bleeding from the head|bleed from the head|lying motionless|motionless|she's not talking|he's not talking|not talking to us|lad fitting|he's fitting|she's fitting|someone fitting|man fitting|having a fit|he's seizing|she's seizing|ligature|ligatured|found hanging|prisoner hanging|someone hanging|lad hanging|man hanging|hostage|hostages|taken hostage|held hostage|officer slashed|been slashed|was slashed|stabbed|been stabbed|i've fallen|i have fallen|i fell|we've fallen|can't get myself up|cannot get myself up|can't get herself up|can't get himself up|
 """.replace("\n", ""))
 
 # "collapsed" alone is structural (hazard); "collapsed inside" / "passed out" is a person.
@@ -696,6 +696,8 @@ PERSON_NOUNS = ["man", "woman", "person", "someone", "somebody", "firefighter", 
                 "patient", "resident", "worker", "officer", "lady", "guy", "bloke", "fella", "casualty", "boy", "girl",
                 "customer", "driver", "student", "teacher", "nurse", "someone's", "somebody's"]
 for _p in PERSON_NOUNS:
+    ROLE_CUES[f"{_p} fell down"] = CRITICAL  # ("my teacher fell down"; "the wall fell down" is no person)
+    ROLE_CUES[f"{_p} has fallen"] = CRITICAL
     ROLE_CUES[f"{_p} collapsed"] = CRITICAL
     ROLE_CUES[f"{_p} has collapsed"] = CRITICAL
     ROLE_CUES[f"{_p} s collapsed"] = CRITICAL
