@@ -157,7 +157,8 @@ class ReportAnalyzer:
         self._places: PhraseMatcher[str] = PhraseMatcher()
         self._needs_article: set[tuple[str, ...]] = set()  # "the tower": an alias written with its article
         plain: set[tuple[str, ...]] = set()
-        labelled = _letter_labelled(kb)
+        keys = {norm_phrase(f) for lm in kb.landmarks for f in lm.surface_forms}
+        labelled = _letter_labelled(keys)
         for lm in kb.landmarks:
             for form in lm.surface_forms:
                 key = norm_phrase(form)
@@ -173,7 +174,7 @@ class ReportAnalyzer:
         self._needs_article -= plain
         for key, name in self._compound_forms():
             self._places.add(key, name)
-        for key, name in _phonetic_forms(kb, labelled):
+        for key, name in _phonetic_forms(kb, keys, labelled):
             self._places.add(key, name)
         self._role_category = self._map_roles()
         self._cues: PhraseMatcher[tuple[str, str]] = PhraseMatcher(lx.CUE_SKIPPABLE)
@@ -730,7 +731,7 @@ class ReportAnalyzer:
         to the first place of the repairs; the ones put in its stead are taken back."""
         toks = ex.tokens
         for m in range(len(norms)):
-            if not any(norms[m:m + len(key)] == key for key in _FIRST_WAS_RIGHT):
+            if not _first_was_right_at(norms, m):
                 continue
             n = toks.sentence_of[m]
             said = sorted((p for p in ex.places if p.end_tok <= m and p.status in ("active", "retracted")
@@ -1218,7 +1219,7 @@ class ReportAnalyzer:
                     and any(norms[j] in self._side_words and norms[j] != w and self._side_words[norms[j]] != self._side_words[w]
                             and toks.sentence_of[j] == toks.sentence_of[i] for j in range(len(norms))) and (
                         any(norms[j] in _REPAIR_WORDS for j in range(max(0, i - 3), min(len(norms), i + 4)) if j != i)
-                        or any(norms[j:j + len(key)] == key for key in _FIRST_WAS_RIGHT for j in range(max(0, i - 8), i))):
+                        or any(_first_was_right_at(norms, j) for j in range(max(0, i - 8), i))):
                 # "on the southbound, no, northbound lay-by": the word that tells the pair apart, said alone in a
                 # repair
                 out.append(self._mention(toks, i, i + 1, self._side_words[w]))
@@ -1369,6 +1370,14 @@ class ReportAnalyzer:
                         owners[words[0]].add(lm.name)
             self._shared_heads = {w: names for w, names in owners.items() if len(names) >= 2}
         return self._shared_heads
+
+    def _shared_head_group(self, norms: tuple[str, ...], p: PlaceMention) -> set[str]:
+        """The landmarks whose names share the one word ``p`` was said as, when its own is among them ("the
+        block": the seg's alias, e block, education block); else none."""
+        if p.end_tok - p.start_tok != 1 or p.reason:
+            return set()
+        group = self._head_groups().get(norms[p.start_tok], set())
+        return group if p.landmark in group else set()
 
     def _definite_heads(self, toks: Tokens, norms: tuple[str, ...], places: list[PlaceMention]) -> list[PlaceMention]:
         """"Hydrant pressure's gone at the west portal ... that portal's full of smoke": "the" / "that" and a
@@ -1754,15 +1763,20 @@ class ReportAnalyzer:
         """Last words of names that several landmarks share ("escalator shaft": main and deep escalator
         shaft; "stairs": the Kingsway stairs and the Foundry Lane stairs), with the landmarks."""
         if getattr(self, "_tails_cache", None) is None:
-            tails: dict[tuple[str, ...], set[str]] = {}
-            for lm in self.kb.landmarks:
-                for form in lm.surface_forms:
-                    words = name_words(form)
-                    for n in range(1, len(words)):
-                        tails.setdefault(words[-n:], set()).add(lm.name)
-            self._tails_cache = {k: v for k, v in tails.items() if len(v) >= 2 and k[-1].isalpha()
+            self._tails_cache = {k: v for k, v in self._tail_owners.items() if len(v) >= 2 and k[-1].isalpha()
                                  and len(k[-1]) >= 4 and not set(k) & lx.GENERIC_HEADS}
         return self._tails_cache
+
+    @functools.cached_property
+    def _tail_owners(self) -> dict[tuple[str, ...], set[str]]:
+        """The last words of every multi-word name (all but its first), with the landmarks whose names end so."""
+        tails: dict[tuple[str, ...], set[str]] = {}
+        for lm in self.kb.landmarks:
+            for form in lm.surface_forms:
+                words = name_words(form)
+                for n in range(1, len(words)):
+                    tails.setdefault(words[-n:], set()).add(lm.name)
+        return tails
 
     def _resolve_shared_heads(self, ex: Extraction, toks: Tokens, norms: tuple[str, ...], place_tokens: set[int],
                               marker_tokens: set[int]) -> None:
@@ -2140,14 +2154,12 @@ class ReportAnalyzer:
             before = [p for p in ex.places if p.end_tok <= head_place.start_tok and p.status not in ("retracted", "reference")]
             if before:
                 anchor = max(before, key=lambda p: p.end_tok)
-        if head_place is not None and anchor is not None and head_place.end_tok - head_place.start_tok == 1 \
-                and norms[head_place.start_tok] in self._head_groups() and not head_place.reason \
-                and head_place.landmark in self._head_groups()[norms[head_place.start_tok]]:
+        if head_place is not None and anchor is not None and (group := self._shared_head_group(norms, head_place)):
             # "the row of cabins that carries on from the A row": a head word several names share heads the
             # description; the relation, not a guess between the names, says which
             tgt = self._follow(anchor.landmark, phrase, "", inverse=flipped)[0] \
                 or self._follow_by_meaning(anchor.landmark, toks, a, b, inverse=flipped)[0]
-            if tgt is not None and tgt in self._head_groups()[norms[head_place.start_tok]]:
+            if tgt is not None and tgt in group:
                 ex.places.remove(head_place)
                 place_tokens.difference_update(range(head_place.start_tok, head_place.end_tok))
                 head_place = None
@@ -2223,10 +2235,8 @@ class ReportAnalyzer:
             if named != "pronoun":
                 ex.places[ex.places.index(anchor_p)] = replace(anchor_p, status="reference",
                                                                reason=f"reference point: {via}")
-            head_p = next((p for p in ex.places if p.end_tok == hs and p.end_tok - p.start_tok == 1
-                           and p.status == "active" and p.via is None and not p.reason), None)
-            if head_p is not None and target in self._head_groups().get(norms[head_p.start_tok], set()) \
-                    and head_p.landmark in self._head_groups()[norms[head_p.start_tok]]:
+            head_p = next((p for p in ex.places if p.end_tok == hs and p.status == "active" and p.via is None), None)
+            if head_p is not None and target in self._shared_head_group(norms, head_p):
                 # "the block that takes its overflow": a head word several names share ("the block" is the seg,
                 # "e block" a block too) heads the description; the relation says which
                 ex.places.remove(head_p)
@@ -2473,8 +2483,7 @@ class ReportAnalyzer:
             key = norms[p.end_tok:p.end_tok + n]
             if len(key) < n or any(q.start_tok < p.end_tok + n and q.end_tok > p.end_tok for q in ex.places):
                 continue
-            owners = {lm.name for lm in self.kb.landmarks for f in lm.surface_forms
-                      if name_words(f)[-n:] == key and len(name_words(f)) > n}
+            owners = self._tail_owners.get(key, set())
             if len(owners) < 2:
                 continue
             related = {other for rel in self.kb.relations for other in (rel.subject, rel.object)
@@ -5753,19 +5762,27 @@ _FIRST_WAS_RIGHT = [norm_phrase(p) for p in ("right first time", "right the firs
                                              "as i said first", "like i said at first", "what i said first")]
 
 
+_FIRST_WAS_RIGHT_STARTS = frozenset(key[0] for key in _FIRST_WAS_RIGHT)
+
+
+def _first_was_right_at(norms: tuple[str, ...], i: int) -> bool:
+    """Does one of ``_FIRST_WAS_RIGHT`` begin at token ``i``?"""
+    return norms[i] in _FIRST_WAS_RIGHT_STARTS and any(norms[i:i + len(key)] == key for key in _FIRST_WAS_RIGHT)
+
+
 _OWNED = "owned:"  # the ``via`` of "the café's car park" (``_possessive_tail``)
 _REPAIR_WORDS = frozenset({"no", "sorry", "correction", "mean", "rather", "wait", "scratch", "negative"})
 
 
-def _letter_labelled(kb: KnowledgeBase) -> set[tuple[str, ...]]:
-    """Names whose first word is the letter "a" labelling one of a lettered series ("a wing" beside "b wing",
-    "c wing"): the "a" is no article there."""
-    keys = {norm_phrase(f) for lm in kb.landmarks for f in lm.surface_forms}
+def _letter_labelled(keys: set[tuple[str, ...]]) -> set[tuple[str, ...]]:
+    """Of a KB's names (``keys``, as token keys), those whose first word is the letter "a" labelling one of a
+    lettered series ("a wing" beside "b wing", "c wing"): the "a" is no article there."""
     return {k for k in keys if len(k) >= 2 and k[0] == "a"
             and any(o[1:] == k[1:] and len(o[0]) == 1 and o[0].isalpha() and o[0] != "a" for o in keys)}
 
 
-def _phonetic_forms(kb: KnowledgeBase, labelled: set[tuple[str, ...]]) -> list[tuple[tuple[str, ...], str]]:
+def _phonetic_forms(kb: KnowledgeBase, keys: set[tuple[str, ...]],
+                    labelled: set[tuple[str, ...]]) -> list[tuple[tuple[str, ...], str]]:
     """A lettered series' names in the radio alphabet: "bravo wing" for "b wing", "block charlie" for "block c";
     and the spoken letter alone ("fire on Delta") where two or more landmarks share the series' other words
     and the word names nothing else in the KB."""
@@ -5789,7 +5806,6 @@ def _phonetic_forms(kb: KnowledgeBase, labelled: set[tuple[str, ...]]) -> list[t
                     series.setdefault((i, key[:i] + key[i + 1:]), set()).add(lm.name)
                     if owners.get(spoken, set()) <= {lm.name}:
                         forms.setdefault((spoken,), set()).add(lm.name)
-    keys = {norm_phrase(f) for lm in kb.landmarks for f in lm.surface_forms}
     out = []
     for key, names in sorted(forms.items()):
         if len(names) != 1 or key in keys:

@@ -954,10 +954,10 @@ DANGER_KINDS: dict[str, list[str]] = {
                 "went into each other", "car's gone into", "car has gone into", "van's gone into", "lorry's gone into",
                 "car in the ditch", "van in the ditch", "lorry in the ditch", "nose-down", "nose down in", "nose-first",
                 "nose first in", "wedged under", "slid half over", "slid over the", "slid off the"],
-    "disorder": ["rioting", "riot", "riots", "barricaded", "barricaded in", "barricades", "kicking off", "kicked off", "chucking slates", "throwing slates",
-                 "throwing tiles", "chucking tiles", "throwing missiles", "missiles", "on the roof throwing",
-                 "prisoners on the roof", "rooftop protest", "roof protest", "disorder", "concerted indiscipline",
-                 "running riot"],
+    "disorder": ["rioting", "riot", "riots", "barricaded", "barricaded in", "barricades", "kicking off", "kicked off",
+                 "chucking slates", "throwing slates", "throwing tiles", "chucking tiles", "throwing missiles",
+                 "missiles", "on the roof throwing", "prisoners on the roof", "rooftop protest", "roof protest",
+                 "disorder", "concerted indiscipline", "running riot"],
 }
 # Words of the kinds' phrases that name the thing, not the danger: they do not vote ("roof down").
 DANGER_KIND_PARTS = _keyed({"roof", "roofs", "wall", "walls", "ceiling", "floor", "chimney", "tree", "trees", "door", "doors",
