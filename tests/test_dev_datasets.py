@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev41) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev42) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -63,6 +63,7 @@ REFUGEE_CAMP = ROOT / "knowledge_bases" / "refugee_camp"
 HOSPITAL_TOWER = ROOT / "knowledge_bases" / "hospital_tower"
 COUNTY_PRISON = ROOT / "knowledge_bases" / "county_prison"
 COAST_ROAD = ROOT / "knowledge_bases" / "coast_road"
+FOREST_PARK = ROOT / "knowledge_bases" / "forest_park"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -73,6 +74,7 @@ def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") 
 
 EVEN = {"standard": 40, "messy": 40, "advanced_messy": 40}
 THIRTY = {"standard": 30, "messy": 30, "advanced_messy": 30}  # the 90-report set of an unseen KB
+QUARTER = {"standard": 25, "messy": 25, "advanced_messy": 25}
 
 
 SETS = {
@@ -231,6 +233,11 @@ SETS = {
                             {"standard": 20, "messy": 20, "advanced_messy": 20}),
     "dev41/county_prison": _set("dev41/county_prison.jsonl", COUNTY_PRISON, "d41p", THIRTY),
     "dev41/coast_road": _set("dev41/coast_road.jsonl", COAST_ROAD, "d41c", THIRTY),
+    "dev42/market_square": _set("dev42/market_square.jsonl", MARKET_SQUARE, "d42m", QUARTER),
+    "dev42/market_square_b": _set("dev42/market_square_b.jsonl", MARKET_SQUARE, "d42b", QUARTER),
+    "dev42/riverbend": _set("dev42/riverbend.jsonl", RIVERBEND, "d42r",
+                            {"standard": 20, "messy": 20, "advanced_messy": 20}),
+    "dev42/forest_park": _set("dev42/forest_park.jsonl", FOREST_PARK, "d42f", THIRTY),
 }
 
 
