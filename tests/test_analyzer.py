@@ -2583,3 +2583,108 @@ def test_numbered_floors_of_a_tower(tmp_path):
 def test_dev41_phenomena(kb_analyzers, analyzer, kb, text, expected):
     an = analyzer if kb == "ms" else kb_analyzers[kb]
     assert claims(an, text) == expected
+
+
+@pytest.mark.parametrize("kb,text,expected", [
+    # who tells is no one to rescue, and where they stand is the anchor, not the place told of
+    ("ms", "A woman in the coffee house says the building across the square from it is flooding.",
+     [("church", "hazard")]),
+    ("ms", "Crew at the fire station: the building right across from our station has smoke showing.",
+     [("bank", "hazard")]),
+    ("ms", "Staff at the bank report the building across the street from them has been cleared and is in use as "
+           "the staging area.", [("fire station", "safe_zone")]),
+    ("ms", "a firefighter at the fire hall reports a man collapsed in the building across the road from his station",
+     [("bank", "victim")]),
+    ("ms", "Fire at the bakery: the building attached to it is alight too.", [("bakery", "hazard"), ("pharmacy", "hazard")]),
+    # the speaker's own building, by where they are or by their trade
+    ("ms", "I'm at the pharmacy. The shop our building is built onto has smoke pouring out.", [("bakery", "hazard")]),
+    ("ms", "Pharmacist here. The shop our building's built onto is on fire.", [("bakery", "hazard")]),
+    # "it's the shop it's stuck onto", with or without apostrophes
+    ("ms", "the chemist isn't on fire, it's the shop it's stuck onto", [("bakery", "hazard")]),
+    ("ms", "my mate said the chemist was on fire but its not, its the shop its stuck onto", [("bakery", "hazard")]),
+    # a place with its own predicate lends nothing to the description it anchors
+    ("ms", "the library is quiet but the hall next to it is burning", [("town hall", "hazard")]),
+    ("ms", "the library and the hall next to it are both burning", [("library", "hazard"), ("town hall", "hazard")]),
+    # hearsay the speaker contradicts, with or without "but"; the contradicting words claim nothing
+    ("ms", "My cabbie swears the bank's on fire, which, er, no, I'm stood right outside it and it's not.", []),
+    ("ms", "Someone in the queue said the library had flooded, but I walked past and it's bone dry.", []),
+    # a question that asks "or no?", an ask, a place of another time
+    ("ms", "please, the smoke, it is at the school or no?", []),
+    ("riverbend", "I'm at the almshouses, sorry, the surgery was this morning, and one resident can't walk",
+     [("almshouses", "casualty")]),
+    # the way out, and an order to keep a way clear for someone
+    ("ms", "Evacuation route is out through the park.", [("park", "safe_zone")]),
+    ("ms", "the fire at the bakery is out of control", [("bakery", "hazard")]),
+    ("ms", "keep the road by the school clear for the engine coming down from the fire station", []),
+    # a person "who's collapsed"; a shop "on the square" and who is inside it
+    ("ms", "one patient at the hotel who's collapsed", [("hotel", "victim")]),
+    ("ms", "Fire in the bank on the square. My dad is still inside.", [("bank", "hazard"), ("bank", "victim")]),
+    # a report withdrawn by name; a relation the KB has, to a place it lacks
+    ("ms", "I reported the building next to the clinic as cracked. It's only cosmetic, withdraw my earlier warning.", []),
+    ("ms", "A woman trapped in a cottage behind St Mary's, we can't find it on the map.", []),
+    # people placed by a relation; a coordinated clause with its own subject lends no claim back
+    ("riverbend", "there's folk over the road from the brewery coughing badly", [("ferry landing", "casualty")]),
+    # a contrast that says where it really is: "not from us"
+    ("ms", "This is the bank, we've got smoke, but it's coming from the fire station, not from us.",
+     [("fire station", "hazard")]),
+    # where the one who saw it stood; a way to someone's home
+    ("ms", "i was on the roof of the library and i seen the sports hall roof fold in", [("sports hall", "hazard")]),
+    ("tornado_suburb", "I'm at the Quickstop on my way to my mom's at Willow Court, and there's a man lying by the "
+                       "air pump", [("quickstop gas station", "hurt_or_pinned")]),
+    # an ended fire is no claim to guess at
+    ("riverbend", "it was only a bonfire on the allotments, and that's out now", []),
+])
+def test_dev42_phenomena(kb_analyzers, analyzer, kb, text, expected):
+    an = analyzer if kb == "ms" else kb_analyzers[kb]
+    assert claims(an, text) == expected
+
+
+@pytest.mark.parametrize("text,expected", [
+    # the KB's own noun ("beside the burn") is no injury; vocabulary of the fire and of people out of reach
+    ("We pulled everyone back over the burn into the paddock, everyone's safe there.",
+     [("overflow car park", "holding_point")]),
+    ("The yard that feeds the mill has gone up.", [("log yard", "burn_zone")]),
+    ("the car park across the burn from the timber stacks is flooded", [("overflow car park", "storm_wreck")]),
+    ("my brother was camping at the tent field and I can't reach him", [("campsite", "missing_or_hurt")]),
+    ("my parents are in the chalets, sorry, the cabins, the larch ones, dad's on oxygen",
+     [("larch cabins", "missing_or_hurt")]),
+    ("one of my riders came off on widowmaker, suspected broken collarbone", [("black run", "missing_or_hurt")]),
+    ("We're safe in the village hall, thirty of us who came down from the campsite.", [("village hall", "holding_point")]),
+    ("I'm at hollins, I can see smoke up the hill but it's a long way off", []),
+    ("The hut behind the visitor centre is safe. The centre itself has taken in walking wounded off the trails.",
+     [("ranger station", "holding_point"), ("visitor centre", "missing_or_hurt")]),
+    ("Bomber Two, dropping on the larch plantation now, fire's well established there.",
+     [("larch plantation", "burn_zone")]),
+    ("heading for the car park across the burn from the log yard but it's flooded out, so we went to the visitor "
+     "centre, safe inside", [("overflow car park", "storm_wreck"), ("visitor centre", "holding_point")]),
+])
+def test_dev42_forest_park(kb_analyzers, text, expected):
+    assert claims(kb_analyzers["forest_park"], text) == expected
+
+
+@pytest.mark.parametrize("kb,text,expected", [
+    # a list's own predicate, after a clause about another place
+    ("ms", "people trapped at the bank; the school and the library have both been checked and are clear.",
+     [("bank", "victim"), ("library", "safe_zone"), ("school", "safe_zone")]),
+    # people hurt: by their words, and by what hurt them (the cause is no claim of its own)
+    ("ms", "an elderly man has had a fall at the library", [("library", "victim")]),
+    ("quarrytown", "the top bench has had a fall of ground", [("upper gallery", "unstable_ground")]),
+    ("ms", "a boy cut by broken glass at the school", [("school", "victim")]),
+    ("ms", "a pedestrian collapsed by the doors of the bus station", [("bus station", "victim")]),
+    ("ms", "a woman struck by a falling tile at the bank", [("bank", "victim")]),
+    ("ms", "two people hurt by the blast at the cafe", [("cafe", "victim")]),
+    ("ms", "people trapped by the fire at the bakery", [("bakery", "hazard"), ("bakery", "victim")]),
+    ("riverbend", "resident at the almshouses needs evacuating, she's in a wheelchair", [("almshouses", "casualty")]),
+    ("riverbend", "two people cut off by the water at the allotments", [("allotments", "casualty"), ("allotments", "threat")]),
+    ("riverbend", "the lane is cut off by the water at the allotments", [("allotments", "threat")]),
+    # a safe place, and the danger people were taken from or that never reached it
+    ("ms", "the church is being used as a shelter for people fleeing the fire", [("church", "safe_zone")]),
+    ("ms", "we've moved everyone out of the smoke into the school, it's safe", [("school", "safe_zone")]),
+    ("ms", "the hotel's fine now, the fire never reached it, people can shelter there", [("hotel", "safe_zone")]),
+    ("ms", "the town hall's been cleared of smoke and is safe", [("town hall", "safe_zone")]),
+    ("alpine_village", "the helipad is cleared of snow and safe to land", [("helipad", "refuge")]),
+    ("ms", "get everyone out of the bakery, it's on fire", [("bakery", "hazard")]),
+])
+def test_people_hurt_and_places_left(kb_analyzers, analyzer, kb, text, expected):
+    an = analyzer if kb == "ms" else kb_analyzers[kb]
+    assert claims(an, text) == expected

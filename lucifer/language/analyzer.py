@@ -548,6 +548,12 @@ class ReportAnalyzer:
             if t > 0 and norms[t - 1] in lx.ARTICLES - {"that"} and self._place_head_word(norms[t]) \
                     and _link_stems(phrase.split()[0], synonyms=False) & _link_stems(norms[t], synonyms=False):
                 continue  # "the stand the fan zone is set up behind": a word names end in, not "stands_on_..."
+            particles = set(phrase.split()[1:]) & _PARTICLES
+            if len(particles) >= 2 and t + 1 < len(norms) and norms[t + 1] in ("on", "onto", "in", "into", "at") \
+                    and not {norms[t + 1], *_SAME_PARTICLE.get(norms[t + 1], ())} & particles \
+                    and _same_stem(norms[t], phrase.split()[0]) \
+                    and not toks.clause_start[t + 1]:
+                continue  # "dropping on the larch plantation" is no ``drops down from``: another particle
             b = t + 1
             for j in range(t + 1, min(t + 4, len(norms))):
                 if j in taken or toks.clause_start[j]:
@@ -670,10 +676,10 @@ class ReportAnalyzer:
         places.extend(self._modifier_names(toks, norms, {i for p in places for i in range(p.start_tok, p.end_tok)},
                                            rel_ends))
         places.extend(self._headless_names(toks, norms, {i for p in places for i in range(p.start_tok, p.end_tok)}))
+        places.extend(self._modifier_ones(toks, norms, places))  # (before a slip: "the larch ones" is no "larches")
         places.extend(self._misheard_names(toks, norms, {i for p in places for i in range(p.start_tok, p.end_tok)},
                                            {i for a, b, _ in all_cues for i in range(a, b)}))
         places.extend(self._definite_heads(toks, norms, places))
-        places.extend(self._modifier_ones(toks, norms, places))
         places.extend(self._numbered_places(toks, norms, {i for p in places for i in range(p.start_tok, p.end_tok)}))
         for idx, p in enumerate(places):
             if p.end_tok < len(norms) and norms[p.end_tok] in lx.MODIFIED_BY and not toks.clause_start[p.end_tok] \
@@ -692,6 +698,12 @@ class ReportAnalyzer:
                     and any(q.end_tok == p.start_tok - 2 for q in places) \
                     and (p.end_tok >= len(norms) or toks.clause_start[p.end_tok]) \
                     and self._relations.match_at(norms, p.start_tok - 2) is None:
+                places[idx] = replace(p, status="reference", reason="where the place before it is")
+            elif p.start_tok >= 3 and norms[p.start_tok - 1] == "the" and norms[p.start_tok - 2] in ("on", "in") \
+                    and norms[p.end_tok - 1] in lx.AREA_HEADS and p.end_tok - p.start_tok == 1 \
+                    and any(q.end_tok == p.start_tok - 2 and q.landmark != p.landmark for q in places) \
+                    and (p.end_tok >= len(norms) or toks.clause_start[p.end_tok]):
+                # "Fire in the coffee shop on the square.": where the shop is, not a place of its own
                 places[idx] = replace(p, status="reference", reason="where the place before it is")
         starts = self._false_starts(toks, {i for p in places for i in range(p.start_tok, p.end_tok)})
         for fs in starts:
@@ -714,6 +726,7 @@ class ReportAnalyzer:
         self._apply_place_negation(ex)
         self._apply_pronoun_negation(ex, norms)
         self._apply_restarts(ex)
+        self._apply_other_times(ex, norms)
         self._apply_place_repairs(ex)
         self._apply_trailing_repairs(ex)
         self._apply_hesitation_chains(ex, norms)
@@ -724,6 +737,24 @@ class ReportAnalyzer:
         self._apply_cut_off(ex, norms)
         ex.places.sort(key=lambda p: p.start_tok)
         return ex
+
+    @staticmethod
+    def _apply_other_times(ex: Extraction, norms: tuple[str, ...]) -> None:
+        """"I'm at the almshouses actually, sorry, the surgery was this morning": a place said of another time is
+        no claim, and no repair."""
+        toks = ex.tokens
+        for idx, p in enumerate(ex.places):
+            if p.status != "active" or p.via is not None:
+                continue
+            k = p.end_tok
+            if norms[k:k + 1] not in (("was",), ("s",)) or any(
+                    q.landmark == p.landmark and q.status == "active" and q.end_tok <= p.start_tok for q in ex.places):
+                continue  # ("the hot zone is the hotel, no sorry, the hotel was this morning, now it's the garage")
+            for when in lx.OTHER_TIMES:
+                e = k + 1 + len(when)
+                if norms[k + 1:e] == when and (e >= len(norms) or toks.clause_start[e]):
+                    ex.places[idx] = replace(p, status="reference", reason="said of another time: no claim")
+                    break
 
     @staticmethod
     def _apply_first_was_right(ex: Extraction, norms: tuple[str, ...]) -> None:
@@ -1035,11 +1066,16 @@ class ReportAnalyzer:
                 # "the road that same gully empties onto": the one said before)
                 continue
             contracted = toks.tokens[i].text.lower().endswith(("'s", "’s"))
+            raw = toks.tokens[i].text.lower()
+            if raw.endswith("s") and not contracted and not raw.endswith("ss") and raw != w and not any(
+                    name_words(f)[-1:] and f.lower().rstrip().endswith("s")
+                    for f in self.kb.landmark_by_name[self._heads[w]].surface_forms):
+                continue  # "walking wounded off the trails": many trails, not the one "skyline trail"
             said_of = contracted or i + 1 >= len(norms) or toks.clause_start[i + 1] or norms[i + 1] in lx.COPULAS
             if w in lx.UNNAMING_HEADS or (w in lx.GENERIC_HEADS or w in lx.DESCRIPTION_HEADS) and (i - 1) not in rel_ends \
-                    and not (said_of and w in lx.GENERIC_HEADS and (contracted or w not in lx.DESCRIPTION_HEADS
-                                                                    or w in self._sole_heads and w not in lx.UNNAMING_HEADS
-                                                                    and norms[i - 2:i - 1] != ("from",))):
+                    and not (said_of and (w in lx.GENERIC_HEADS and (contracted or w not in lx.DESCRIPTION_HEADS)
+                                          or w in self._sole_heads and w not in lx.UNNAMING_HEADS
+                                          and norms[i - 2:i - 1] != ("from",))):
                 # "the terrace" names the one terrace only as a relation's anchor ("back to back with the terrace"),
                 # or as what a predicate is said of ("the barn's out now")
                 continue
@@ -1082,6 +1118,19 @@ class ReportAnalyzer:
                 for w in name_words(form):
                     owners.setdefault(w, set()).add(lm.name)
         return owners
+
+    @functools.cached_property
+    def _kb_nouns(self) -> frozenset[str]:
+        """Words the KB's landmark descriptions use as nouns of their own, after "the", twice or more ("beside
+        the burn", "over the burn"), which its category descriptions do not use: said so, they are no cue."""
+        counts: dict[str, int] = {}
+        for lm in self.kb.landmarks:
+            words = norm_phrase(lm.description or "")
+            for i in range(1, len(words)):
+                if words[i - 1] == "the":
+                    counts[words[i]] = counts.get(words[i], 0) + 1
+        used = {w for c in self.kb.categories for w in norm_phrase(c.description or "")}
+        return frozenset(w for w, n in counts.items() if n >= 2 and w not in used and w.isalpha())
 
     @functools.cached_property
     def _single_cue_words(self) -> set[str]:
@@ -1230,7 +1279,8 @@ class ReportAnalyzer:
             after = nxt + 1
             if nxt < len(norms) and norms[nxt] in lx.VAGUE_PLACE_HEADS and not toks.clause_start[nxt] \
                     and norms[i - 1] in lx.ARTICLES and nxt not in taken \
-                    and (after >= len(norms) or toks.clause_start[after] or norms[after] in lx.COPULAS) \
+                    and (after >= len(norms) or toks.clause_start[after] or norms[after] in lx.COPULAS
+                         or norms[after] in lx.PERSON_SUBJECTS | lx.COORDINATORS | {"theres", "there"}) \
                     and not (after < len(norms) and self._relations.match_at(norms, after) is not None):
                 # (only a noun phrase that ends there: "the ferry building upstream of the weir" is a description
                 # for the relation passes, headed by "building")
@@ -1388,11 +1438,22 @@ class ReportAnalyzer:
         out: list[PlaceMention] = []
         taken = {i for p in places for i in range(p.start_tok, p.end_tok)}
         for i in range(1, len(norms)):
-            if norms[i - 1] in ("my", "our") and i not in taken and norms[i].isalpha() and len(norms[i]) >= 3:
+            if norms[i - 1] in ("my", "our", "his", "her", "their") and i not in taken and norms[i].isalpha() \
+                    and len(norms[i]) >= 3:
                 # "Mrs Kay from the village shop here, the place my shop is tucked in beside": the speaker's own,
-                # named before
+                # named before; "a firefighter at the fire hall reports ... across the road from his station"
                 mine = [p for p in places if p.end_tok <= i - 1 and p.status == "active" and any(
                     name_words(f)[-1:] == (norms[i],) for f in self.kb.landmark_by_name[p.landmark].surface_forms)]
+                if not mine and norms[i - 1] in ("my", "our") and norms[i] in ("building", "place", "premises"):
+                    # "I'm at the pharmacy. The shop our building's built onto": where the speaker is
+                    mine = [p for p in places if p.end_tok <= i - 1 and p.status == "active" and (
+                        self._speaker_at(norms, p) or norms[p.end_tok:p.end_tok + 1] == ("here",))]
+                    own = self._trade_place(toks, norms) if not mine else None
+                    if own is not None:
+                        out.append(replace(self._mention(toks, i - 1, i + 1, own),
+                                           reason=f"the speaker's '{norms[i]}', where they work"))
+                        taken.update(range(i - 1, i + 1))
+                        continue
                 if mine:
                     last = max(mine, key=lambda p: p.end_tok)
                     out.append(replace(self._mention(toks, i - 1, i + 1, last.landmark),
@@ -1424,6 +1485,17 @@ class ReportAnalyzer:
                                reason=f"the '{norms[i]}' named last, '{last.text}'"))
             taken.update(range(i - 1, end))
         return out
+
+    def _trade_place(self, toks: Tokens, norms: tuple[str, ...]) -> str | None:
+        """"Pharmacist here.", "Librarian here,": a speaker who names their trade, and the one landmark the trade
+        is named after (the word and a name's word share their first six letters)."""
+        for i in range(len(norms) - 1):
+            if toks.sentence_start[i] and norms[i + 1] == "here" and len(norms[i]) >= 6 and norms[i].isalpha():
+                owners = self._name_word_owners
+                hits = {lm for w, lms in owners.items() if len(w) >= 6 and w[:6] == norms[i][:6] and w != norms[i]
+                        for lm in lms}
+                return next(iter(hits)) if len(hits) == 1 else None
+        return None
 
     def _description_heads_again(self, ex: Extraction, norms: tuple[str, ...]) -> list[PlaceMention]:
         """"the bit of green across from the apartment block ... the green's flooded": the head noun of a
@@ -1903,6 +1975,8 @@ class ReportAnalyzer:
             if k == 0 or norms[k - 1] not in lx.GENERIC_HEADS or j - k < 2 or toks.clause_start[k] \
                     or (k - 1) in place_tokens or (k - 1) in cue_tokens:
                 continue
+            if norms[k - 1] == "one" and norms[k] == "of":
+                continue  # "one of my riders came off on widowmaker": one of them, no place
             link = " ".join(toks.tokens[i].text.lower() for i in range(k, j))
             if self._relations.match_at(norms, k) is not None:
                 continue  # a known phrase: the table-driven pass owns it
@@ -2051,6 +2125,16 @@ class ReportAnalyzer:
                 continue
             named = {n: v for n, v in related.items() if norms[head] in name_words(n)
                      or any(norms[head] in name_words(f) for f in self.kb.landmark_by_name[n].surface_forms)}
+            said = self._relations.match_at(norms, next(i for i in range(head + 1, a) if norms[i] not in lx.FILLERS)) \
+                if between else None
+            if not named and said is not None and not said[1][1] and any(rel.phrase == said[1][0] for rel in self.kb.relations) \
+                    and norms[head] not in lx.UNNAMING_HEADS and not any(
+                    _same_stem(norms[head], d) for n in related for d in self._description_words()[n]):
+                # "a man trapped in a cottage behind St Mary's": a relation the phrase tables read, and nothing
+                # stands so to it; another of its relations would be a guess
+                ex.places[idx] = replace(anchor, status="reference",
+                                         reason=f"reference point of the description headed by '{toks.tokens[head].text}'")
+                continue
             pool = named or related
             target = None
             linking = [norms[i] for i in range(head + 1, end) if not anchor.start_tok <= i < anchor.end_tok
@@ -2272,7 +2356,9 @@ class ReportAnalyzer:
             if cue_end < head_end and cue_end > 0 and self._is_cue_end(norms, cue_end):
                 words = []
             if norms[a:b] in lx.AMBIGUOUS_HEADLESS or (words and not self._is_cue_end(norms, head_end) and not participle
-                                                       and not set(words) <= lx.HEADLESS_OK):
+                                                       and not set(words) <= lx.HEADLESS_OK
+                                                       and words[-1] not in lx.LAY_PERSONS | {"folk", "folks"}):
+                # ("there's folk over the road from the brewery coughing": people placed by the relation)
                 return
             head_start, head_text = a, ""
         target, via = self._follow(anchor.landmark, phrase, head_text, inverse=flipped)
@@ -2685,8 +2771,9 @@ class ReportAnalyzer:
             hs = j - 2
             while hs > 0 and norms[hs] in ("that", "which"):
                 hs -= 1
-            while hs > 0 and norms[hs - 1] in lx.DETERMINERS:
-                hs -= 1
+            while hs > 0 and norms[hs - 1] in lx.DETERMINERS and not (norms[hs - 1] == "its" and (
+                    "'" in ex.tokens.tokens[hs - 1].text.replace("’", "'") or norms[hs] in lx.ARTICLES)):
+                hs -= 1  # (not "it's the shop it's stuck onto", "its the shop its on")
             if norms[j - 1] in ("we", "i"):
                 at = [p for p in ex.places if p.end_tok <= hs and p.status != "retracted" and (
                     self._speaker_at(norms, p) or norms[p.end_tok:p.end_tok + 1] == ("here",))]
@@ -3103,6 +3190,24 @@ class ReportAnalyzer:
         return any(q.status == "active" and q.landmark != p.landmark and toks.sentence_of[q.start_tok] == n
                    and p.end_tok < q.start_tok <= p.end_tok + 5 for q in places)
 
+    def _teller_at(self, toks: Tokens, norms: tuple[str, ...], p: PlaceMention, places: list[PlaceMention]) -> bool:
+        """"Echo One at the fire station: the building across from our station ...", "Officers at the bank report the
+        building across the street from them ...": where the one telling is, then the anchor of the place told of."""
+        j = _noun_phrase_start(norms, p)
+        e = p.end_tok
+        if j < 2 or norms[j - 1] not in ("at", "in", "inside", "outside") or e >= len(norms) \
+                or not (toks.gaps[e].strip().startswith(":") or norms[e] in lx.TELLING_VERBS):
+            return False
+        c = j - 1
+        while c > 0 and not toks.clause_start[c]:
+            c -= 1
+        if any(self._cues.match_at(norms, i) is not None for i in range(c, j - 1)):
+            return False  # "fire at the bakery: the building next to it ...": the place claimed, then another
+        n = toks.sentence_of[p.start_tok]
+        return any(q.status == "active" and q.via and q.landmark != p.landmark and q.start_tok >= e
+                   and toks.sentence_of[q.start_tok] <= n + 1
+                   and (q.via.startswith(p.landmark + " ") or q.via.endswith(" " + p.landmark)) for q in places)
+
     def _apply_transit(self, ex: Extraction) -> None:
         """"heading to the bakery", "passing the church": the team moves; nothing is claimed there."""
         toks = ex.tokens
@@ -3133,11 +3238,17 @@ class ReportAnalyzer:
             if self._person_from(toks, norms, p, ex.places):
                 ex.places[idx] = replace(p, status="reference", reason="where the person is from, not where they are")
                 continue
+            if self._teller_at(toks, norms, p, ex.places):
+                ex.places[idx] = replace(p, status="reference", reason="where the teller is, the anchor of the place described")
+                continue
             j = p.start_tok
             while j > 0 and norms[j - 1] in lx.DETERMINERS | lx.FILLERS | {"at", "to", "by", "the", "from"} \
                     and p.start_tok - j < 5 and (not toks.clause_start[j] or norms[j - 1] in lx.ARTICLES | lx.FILLERS
                                                   | {"to", "at", "by"}):
                 j -= 1  # ("heading to the, er, the bus station": past a hesitation that broke the phrase)
+            if j >= 3 and norms[j] == "at" and toks.tokens[j - 1].text.lower().replace("’", "'").endswith("'s") \
+                    and norms[j - 2] in ("my", "his", "her", "our", "their"):
+                j -= 2  # "on my way to my mom's at Willow Court": to someone's home there
             if self._crew_position(norms, p.start_tok):
                 ex.places[idx] = replace(p, status="reference", reason="in transit (a crew's position): no claim")
                 continue
@@ -3151,6 +3262,10 @@ class ReportAnalyzer:
                     continue  # "my son and his friend were at the gym": "were", not "we're"
                 if hit is not None and hit[1].startswith("route ") and k > 0 and not toks.clause_start[k]:
                     continue  # "evacuation route through the square is clear": a route said to be safe; "route via" orders
+                if hit is not None and hit[1].split()[0] in ("came", "come", "coming") and len(hit[1].split()) == 3 \
+                        and not any(norms[m] in lx.LAY_PERSONS | {"who", "us", "we", "they", "everyone", "everybody", "folk"}
+                                    for m in range(max(0, k - 4), k)):
+                    continue  # "debris came down from the roof": a thing fallen, not people who came from there
                 if hit is not None and j <= hit[0] <= p.start_tok and not any(toks.clause_start[i] for i in range(k + 1, min(hit[0], p.start_tok) + 1) if i < p.start_tok):
                     if norms[k] in ("passing", "past", "going", "driving", "walking", "passed") \
                             and (norms[p.end_tok:p.end_tok + 2] in lx.SEEN_THERE
@@ -3654,6 +3769,31 @@ class ReportAnalyzer:
             if norms[a:b] == ("clear",) and toks.sentence_start[a] and b < len(norms) \
                     and norms[b] in ("everyone", "everybody", "people", "all", "out", "the", "them"):
                 continue  # "Clear everyone out of the building": an order, not a place said to be clear
+            if self._kept_clear_for(toks, norms, a):
+                continue  # "keep the road clear for the aerial ladder coming down from the fire station": who it is for
+            if self._person_category and self.kb.category_by_name[cat].role == Role.UNDESIRABLE \
+                    and self._injury_cause_at(norms, a):
+                # "a man hit by falling slates", "two hurt by the blast": what hurt them, the person the claim
+                start, end = toks.tokens[a].start, toks.tokens[b - 1].end
+                cues.append(CueMention(a, b, start, end, toks.text[start:end], self._person_category, source,
+                                       reason="the cause of an injury"))
+                continue
+            if norms[b - 1] == "fall" and norms[b:b + 1] == ("of",):
+                continue  # "the top bench has had a fall of ground": a fall of rock, no person's fall
+            if a >= 2 and ("cleared", "of") in (norms[a - 2:a], norms[a - 3:a - 1]) \
+                    and self.kb.category_by_name[cat].role == Role.UNDESIRABLE:
+                continue  # "the town hall's been cleared of smoke": the danger is gone from it
+            if norms[a:b] in (("everyone", "out"), ("everybody", "out")) and norms[b:b + 2] == ("of", "the") \
+                    and norms[b + 2:b + 3] and norms[b + 2] in lx.ESCAPED_THINGS:
+                continue  # "moved everyone out of the smoke into the school": out of the danger, no order about a place
+            if b == a + 1 and norms[max(0, a - 3):a] == ("out", "of", "the") and norms[a] in lx.ESCAPED_THINGS:
+                continue  # "we've moved everyone out of the smoke into the school": what they left, not where they are
+            if b == a + 1 and b < len(norms) and norms[b] in lx.VICTIM_NOUNS and norms[a] in lx.ESCAPED_THINGS | {
+                    "quake", "earthquake", "storm", "blast", "explosion", "crash"}:
+                continue  # "use it for the flood victims": who they are, no danger there
+            if b == a + 1 and a > 0 and norms[a] in self._kb_nouns and norms[a - 1] in lx.ARTICLES \
+                    and source != "glossary" and self.kb.category_by_name[cat].role != Role.UNDESIRABLE:
+                continue  # "the burn's burst its banks": a thing of the KB's own ("beside the burn"), no burns
             if norms[a:b] == ("clear",) and any(norms[k] in ("keep", "stay") for k in range(max(0, a - 4), a)) \
                     and not any(toks.clause_start[k] for k in range(max(1, a - 3), a + 1)):
                 continue  # "keep all boats clear of the lock", "stay well clear": an instruction, like "keep clear"
@@ -3684,6 +3824,10 @@ class ReportAnalyzer:
                                        polarity="denied", reason="everyone has left"))
                 continue
             cue = CueMention(a, b, start, end, toks.text[start:end], cat, source)
+            if norms[a:a + 2] == ("cut", "off") and b > a + 2 and self._person_category \
+                    and self.kb.category_by_name[cat].role == Role.UNDESIRABLE and self._person_before(norms, a):
+                # "two people cut off by the water at the allotments": the water there, and people to rescue
+                cues.append(replace(cue, category=self._person_category, reason="people cut off"))
             if source == "lexicon" and norms[a:b] in lx.PERSON_STATE_CUES and self._person_category \
                     and self._person_before(norms, a):
                 cue = replace(cue, category=self._person_category, reason=f"a person {norms[a]}")
@@ -3712,6 +3856,10 @@ class ReportAnalyzer:
                                                                   or norms[a - 1] in ("re", "m") and a > 1
                                                                   and norms[a - 2] in ("we", "i", "you")):
                 continue  # "we come down past the fish market": the speaker moving, nothing fallen
+            if norms[a] in ("come", "came", "coming") and norms[b:b + 1] == ("from",) and any(
+                    norms[j] in lx.LAY_PERSONS | {"who", "us", "we", "they", "everyone", "everybody", "folk"}
+                    for j in range(max(0, a - 4), a)):
+                continue  # "forty of us who came down from the campsite": people moving, nothing fallen
             if cue.category == self._person_category and norms[a:b] in (("gone", "under"), ("going", "under"),
                                                                          ("went", "under")) \
                     and any(i in self._place_tokens for i in range(max(0, a - 3), a)) \
@@ -3744,6 +3892,7 @@ class ReportAnalyzer:
             cues.append(checked)
             if checked.category != cue.category:  # "no longer safe": unsafe now, and no longer safe
                 cues.append(replace(cue, polarity="denied", reason=checked.reason))
+        cues = self._contradiction_words_dropped(toks, norms, cues)
         cues = self._read_cue_pairs(toks, norms, cues)
         cues = self._sheltered_people(norms, cues)
         cues.extend(self._predicative_cues(ex, norms, blocked | {i for c in cues for i in range(c.start_tok, c.end_tok)}))
@@ -3770,7 +3919,25 @@ class ReportAnalyzer:
             extra = [c for c in self._semantic_claims(ex, claims, denied) if c.key not in denied_keys]
             claims.extend(extra)
             cues.extend(c.cue for c in extra)
-        return Classification(cues, self._drop_unspecific_dangers(claims), denied)
+        return Classification(cues, self._not_from_us(ex, norms, self._drop_unspecific_dangers(claims)), denied)
+
+    @staticmethod
+    def _not_from_us(ex: Extraction, norms: tuple[str, ...], claims: list[Claim]) -> list[Claim]:
+        """"we've got smoke, but the smoke's coming from the bakery, not from us": the place named is where it
+        is; what the speaker's place was said to have of it, before, is taken back."""
+        toks = ex.tokens
+        for i in range(1, len(norms) - 1):
+            if not (norms[i:i + 3] in (("not", "from", "us"), ("not", "from", "here")) or norms[i:i + 2] == ("not", "us")):
+                continue
+            n = toks.sentence_of[i]
+            named = [p for p in ex.places if p.status == "active" and p.end_tok <= i and toks.sentence_of[p.start_tok] == n]
+            if not named:
+                continue
+            there = max(named, key=lambda p: p.end_tok)
+            cats = {c.cue.category for c in claims if c.place.landmark == there.landmark}
+            claims = [c for c in claims if not (c.place.landmark != there.landmark and c.cue.category in cats
+                                                and c.place.end_tok <= there.start_tok)]
+        return claims
 
     NOT_DESIRABLE = "desirable cue means undesirable"
 
@@ -4009,8 +4176,8 @@ class ReportAnalyzer:
         if w in lx.STRUCTURE_WORDS:
             return False  # "the access ladder's collapsed": a ladder, not a ladder crew
         if w in lx.LAY_PERSONS or w in lx.WORKER_PERSONS or w in lx.PERSON_NOUNS or w in lx.CREW_NOUNS \
-                or w in ("we", "they", "i", "he", "she", "hes", "shes", "him", "her"):
-            return True
+                or w in ("we", "they", "i", "he", "she", "hes", "shes", "him", "her", "who", "whos"):
+            return True  # ("one at the cafe who's collapsed")
         if w in lx.BODY_PARTS and j > 0 and norms[j - 1] in ("his", "her", "their", "my", "your"):
             return True  # "his arm is burned": a person's
         if j > 0 and norms[j - 1] in ("mr", "mrs", "ms", "miss", "dr", "keeper", "nurse", "officer", "sister"):
@@ -4148,6 +4315,15 @@ class ReportAnalyzer:
                 continue  # "it's just fog round the bell tower": a dismissal is no claim to guess at
             if self._says_who_and_where(toks, norms, p):
                 continue  # "Scaffolder on the roof of the hotel, over.": who is calling and from where
+            if self._kept_clear_for(toks, norms, p.start_tok):
+                continue  # "keep the road clear for the ladder coming down from the fire station": no claim to guess
+            after = [w for w in norms[p.end_tok:p.end_tok + 5] if w not in lx.FILLERS]
+            if after[:2] in (["and", "i"], ["and", "we"]) and after[2:3] and after[2] in lx.PERCEPTION_VERBS:
+                continue  # "up on the scaffold at the town hall and i seen the roof of the sports hall fold in": where
+                # the one who saw it stood
+            if any((h := self._cancel.match_at(norms, i)) is not None and ("out" in h[1].split() or h[1] in (
+                    "extinguished", "under control")) for i in range(p.end_tok, b)):
+                continue  # "it was someone's bonfire on the allotments, and that's out now": ended, no claim to guess
             if all(norms[i] in lx.FILLERS or norms[i] in lx.DETERMINERS or norms[i] in ("all", "whole", "every", "both", "of")
                    for i in range(a, b) if not p.start_tok <= i < p.end_tok):
                 continue  # "All the flats.": a place said alone, nothing said of it to guess at
@@ -4272,6 +4448,8 @@ class ReportAnalyzer:
                 continue  # "somebody's left a van right across the entrance": left something, not left behind
             if any(norms[m] in lx.NEGATORS and not toks.clause_start[m + 1] for m in range(max(0, j - 2), i)):
                 continue  # "no one at the window" is handled as a negation elsewhere (not "no, the man's at ...")
+            if self._speaks_next(toks, norms, k + 1):
+                continue  # "a man in the coffee house says the building across from it ...": who tells, not who is hurt
             if j >= 1 and norms[j] in ("a", "an") and (norms[j - 1] in ("were", "im") or norms[max(0, j - 2):j] in (
                     ("we", "are"), ("i", "am"), ("we", "re"))):
                 continue  # "We're a family in a car, parked in visitor parking": who is calling
@@ -4279,6 +4457,16 @@ class ReportAnalyzer:
             out.append(CueMention(i, k + 1, t0.start, t1.end, toks.text[t0.start:t1.end], cat, "lexicon",
                                   reason="a person placed at the scene"))
         return out
+
+    @staticmethod
+    def _speaks_next(toks: Tokens, norms: tuple[str, ...], k: int) -> bool:
+        """A verb of telling within the next few words of the clause ("somebody in the queue said ...")."""
+        for m in range(k, min(len(norms), k + 7)):
+            if toks.clause_start[m]:
+                return False
+            if norms[m] in lx.TELLING_VERBS:
+                return True
+        return False
 
     def _evacuation_destinations(self, ex: Extraction, norms: tuple[str, ...],
                                  cues: list[CueMention]) -> list[CueMention]:
@@ -4411,6 +4599,12 @@ class ReportAnalyzer:
                                    if norms[i] in lx.QUESTION_OPENERS and i not in marker_starts), default=None)
                     if earlier is not None:
                         start, first = earlier, earlier
+                words = [w for w in norms[a:b] if w not in lx.FILLERS]
+                if words[-2:] in (["or", "no"], ["or", "not"], ["or", "what"]) or any(
+                        words[i:i + 3] in (["want", "to", "ask"], ["wanted", "to", "ask"], ["can", "i", "ask"])
+                        for i in range(len(words))):
+                    asked.update(range(a, b))  # "the fire, it is at the garage or no?": the whole sentence asks
+                    continue
                 if norms[first] in lx.QUESTION_OPENERS and first not in marker_starts:
                     if not (n + 1 < len(sentences) and self._answered(toks, norms, sentences[n + 1], lx.YES_WORDS)):
                         asked.update(range(start, b))  # (answered "Yes.", the question says what is so)
@@ -4643,6 +4837,12 @@ class ReportAnalyzer:
             # "my wife says the coffee shop's collapsed but I can see it from here, it's still standing"
             cancelled_by = "but it isn't"
             k = len(norms)
+        elif but is None and self._hearsay_before(toks, norms, cue.start_tok) \
+                and self._contradicted_after(toks, norms, cue.end_tok):
+            # "bloke in my cab swears the fire station's on fire, which, er, yeah no, I'm parked right outside it and
+            # it's not"
+            cancelled_by = "said, and it isn't"
+            k = len(norms)
         while k < len(norms) and steps < 7 and not toks.clause_start[k]:  # "the fire on the roof at the bakery is out"
             if norms[k] in lx.UNTIL_WORDS:
                 break  # "no entry till it's shored up": what will end it, not that it has
@@ -4656,6 +4856,8 @@ class ReportAnalyzer:
                 cancelled_by = "but it isn't"  # "keeps saying the water tower's on fire but it isn't, it's the ..."
                 break
             h = self._cancel.match_at(norms, k)
+            if h is not None and h[1].endswith("out") and h[0] < len(norms) and norms[h[0]] in lx.ROUTE_PREPOSITIONS:
+                h = None  # "evacuation route is out through the park": the way out, nothing put out
             if h is not None:
                 nxt = h[0]
                 while nxt < len(norms) and norms[nxt] in lx.DETERMINERS:
@@ -4785,6 +4987,42 @@ class ReportAnalyzer:
         return replace(cue, polarity="denied", reason=f"negated by '{why}'")
 
     @staticmethod
+    def _injury_cause_at(norms: tuple[str, ...], a: int) -> bool:
+        """Token ``a`` opens what hurt someone: "hit by falling slates", "hurt by the blast", "injured in the
+        collapse"."""
+        j = a - 1
+        while j >= 0 and a - j <= 3 and norms[j] in lx.ARTICLES | {"falling", "flying", "some", "loose"}:
+            j -= 1
+        if not (j >= 1 and (norms[j] == "by" and norms[j - 1] in lx.INJURY_VERBS
+                            or norms[j] == "in" and norms[j - 1] in ("hurt", "injured") and norms[j + 1:j + 2] == ("the",))):
+            return False
+        return any(norms[m] in _PERSON_WORDS or norms[m].isdigit() or norms[m] in lx.NUMBER_WORDS
+                   for m in range(max(0, j - 6), j - 1))  # (a person hurt: "the bakery was hit by fire" is no one)
+
+    @staticmethod
+    def _kept_clear_for(toks: Tokens, norms: tuple[str, ...], a: int) -> bool:
+        """Token ``a`` says whom an order to keep a way clear is for ("keep the road clear for the ladder ...")."""
+        return any(norms[k:k + 2] == ("clear", "for") and any(norms[m] in ("keep", "keeping") for m in range(max(0, k - 8), k))
+                   and not any(toks.clause_start[t] for t in range(k + 1, a + 1)) for k in range(max(0, a - 12), a))
+
+    def _contradiction_words_dropped(self, toks: Tokens, norms: tuple[str, ...],
+                                     cues: list[CueMention]) -> list[CueMention]:
+        """"said the library had been flooded, but ... it's bone dry": the words that deny what was said are
+        no claim of their own (no safe place), unless another place is named between."""
+        denied = [c for c in cues if c.polarity == "denied" and c.reason.endswith(("'but it isn't'", "'said, and it isn't'"))]
+        if not denied:
+            return cues
+        starts = {p.start_tok for p in getattr(self, "_places_now", [])}
+        out = []
+        for c in cues:
+            if c.polarity == "affirmed" and self.kb.category_by_name[c.category].role == Role.DESIRABLE and any(
+                    d.end_tok <= c.start_tok <= d.end_tok + 16 and toks.sentence_of[d.start_tok] == toks.sentence_of[c.start_tok]
+                    and not starts & set(range(d.end_tok, c.start_tok)) for d in denied):
+                continue
+            out.append(c)
+        return out
+
+    @staticmethod
     def _hearsay_before(toks: Tokens, norms: tuple[str, ...], a: int) -> bool:
         """Someone else's word opens the cue's sentence: "a woman here says the bakery's flooded"."""
         j = a - 1
@@ -4799,7 +5037,7 @@ class ReportAnalyzer:
         """The speaker's own word against it, later in the sentence: "but I'm stood right outside it and it
         isn't", "but I can see it from here, it's still standing"."""
         n = toks.sentence_of[k - 1]
-        for j in range(k, min(len(norms), k + 14)):
+        for j in range(k, min(len(norms), k + 16)):
             if toks.sentence_of[j] != n:
                 return False
             for form in lx.CONTRADICTIONS:
@@ -5020,7 +5258,9 @@ class ReportAnalyzer:
         hollow = {k for k, (a, b) in enumerate(segs)
                   if all((i in marker_tokens or i in inactive_tokens or norms[i] in lx.FILLERS or norms[i] in lx.COORDINATORS
                           or norms[i] in lx.DETERMINERS or norms[i] in lx.PREPOSITIONS or norms[i] in ("just", "only", "its", "it"))
-                         and i not in cue_tokens for i in range(a, b))}
+                         and i not in cue_tokens for i in range(a, b))
+                  or norms[a:b] in (("but", "it", "isnt"), ("but", "its", "not"), ("but", "it", "wasnt"),
+                                    ("but", "it", "is", "not"))}  # "says the bakery's on fire but it isn't, it's ..."
 
         # sentences a cue-only sentence may look back across to the place it talks about: the
         # dispatcher's questions, one-word answers ("Yes.", "Eight o'clock."), and sentences that go
@@ -5047,7 +5287,9 @@ class ReportAnalyzer:
                 and norms[b - 1] not in lx.DETERMINERS \
                 and not any(m in toks.gaps[b] for m in ("-", "—", "–", "...", "…"))
             if (norms[b - 1] in lx.PREPOSITIONS or norms[b - 1] in lx.DETERMINERS) and not closed \
-                    and not self._particle_end(toks, norms, segs, seg_places, k, cs):
+                    and not self._particle_end(toks, norms, segs, seg_places, k, cs) \
+                    and not (norms[b - 1] in ("out", "off", "up", "over", "in") and any(c.end_tok == b for c in cs)):
+                # ("but it's flooded out, so ...": the cue's own word; "man down, warehouse" still leads on)
                 nxt = k + 1
                 skipped = 0
                 while nxt < len(segs) and (nxt in hollow or (not seg_places.get(nxt) and not seg_cues.get(nxt) and skipped < 2)):
@@ -5077,6 +5319,8 @@ class ReportAnalyzer:
                 # ("we're at the bank and it's on fire"; "We're at the bank. It's on fire.")
                 opens = toks.sentence_start[first_at] if first_at < b else False
                 here = [p for p in ex.places if p.reason.startswith("in transit") and segs[k - 1][0] <= p.start_tok < a
+                        and not (first in ("there", "theres")
+                                 and p.reason.endswith((" to'): no claim", " towards'): no claim")))  # (where one goes)
                         and (sentence_of[p.start_tok] == sentence_of[a]
                              or opens and sentence_of[p.start_tok] == sentence_of[a] - 1)]
                 if here and not seg_usable.get(k - 1):
@@ -5236,6 +5480,11 @@ class ReportAnalyzer:
                 continue  # "the hotel's got the gas leak, the bank's just got its alarm ringing": a predicate of its own
             donor = self._donor_for_places(k, segs, seg_places, seg_cues, sentence_of, hollow,
                                            [self._opening(norms, a, b) for a, b in segs])
+            if donor is not None and tail[:1] and tail[0] in lx.COPULAS | {"looks", "seems", "has", "got"} and any(
+                    q.via and q.landmark != p.landmark and (q.via.startswith(p.landmark + " ")
+                                                           or q.via.endswith(" " + p.landmark))
+                    for q in seg_places.get(donor, [])):
+                continue  # "the library is quiet but the hall next to it is burning": its own word, then the anchor
             if donor is not None:
                 for c in seg_cues[donor]:
                     if c.start_tok >= counted:
@@ -5247,8 +5496,9 @@ class ReportAnalyzer:
                     if c.polarity == "denied" and any(q.landmark == p.landmark for q in seg_places.get(donor, [])):
                         pass  # "the warehouse is secure and the — strike that, the warehouse isn't secure": the same
                         # place said again, denied, lends its denial, no contrast
-                    elif c.polarity == "denied" and c.reason.lower().startswith(("negated by 'not'", "negated by 'n't'", "negated by 'isn't'",
-                                                                          "negated by 's not'", "negated by 'nt'")):
+                    elif c.polarity == "denied" and c.reason.lower().startswith((
+                            "negated by 'not'", "negated by 'n't'", "negated by 'isn't'", "negated by 's not'",
+                            "negated by 'nt'", "negated by 'but it isn't'")):
                         # "the station is not flooded, the clinic is": the contrast takes the claim
                         c = replace(c, polarity="affirmed", reason="contrast with a negated claim")
                     pairs.append(Claim(p, c))
@@ -5545,6 +5795,10 @@ class ReportAnalyzer:
                 and not min(seg_places[j], key=lambda p: p.start_tok).text.lower().endswith(("'s", "’s")) \
                 and not own(j):
             return j  # ("..., and the fire hall's secure": a singular predicate is that place's own)
+        if j < len(segs) and j - 1 > k and sentence_of[segs[j][0]] == sent and seg_cues.get(j) and not seg_places.get(j) \
+                and seg_places.get(j - 1) and not seg_cues.get(j - 1) and first_norm[j - 1] == "and" \
+                and first_norm[j] in ("and", "are", "have", "were", "both", "all"):
+            return j  # "the town hall and the library have both been checked and are clear": the list's own predicate
         # backward: "fire at the bakery and the school", "people trapped in the, um, school, no, the library"
         j = k - 1
         while j >= 0 and sentence_of[segs[j][0]] == sent:
@@ -5646,7 +5900,8 @@ class ReportAnalyzer:
     @staticmethod
     def _opening(norms: tuple[str, ...], a: int, b: int) -> str:
         """First word of a segment; "and i", "but we": a coordinator that opens a clause with its own subject."""
-        if a + 1 < b and norms[a] in lx.COORDINATORS and norms[a + 1] in ("i", "we", "im", "you", "they", "he", "she"):
+        if a + 1 < b and norms[a] in lx.COORDINATORS and norms[a + 1] in ("i", "we", "im", "you", "they", "he", "she",
+                                                                         "there", "theres"):
             return f"{norms[a]} {norms[a + 1]}"
         return norms[a]
 
@@ -5942,6 +6197,13 @@ _ACROSS_THE = re.compile(r"^across the \w+ from$")
 _TRAILING_DIRECTIONS = {"above", "below", "beneath", "under", "underneath", "behind"}
 
 
+_PARTICLES = frozenset({"on", "onto", "off", "down", "up", "from", "to", "into", "over", "under", "in", "out", "at",
+                        "with", "by", "of", "across", "along", "through", "past", "behind", "above", "below"})
+
+
+_SAME_PARTICLE = {"on": ("onto",), "onto": ("on",), "in": ("into",), "into": ("in",)}
+
+
 def _relation_core(phrase: str) -> str:
     """The synonym group a relation name belongs to, read through its extra words: without its leading
     adverbs ("directly above" -> "above"), its final direction ("on the levee above" -> "above"), or the
@@ -6054,6 +6316,11 @@ def _relation_forms(phrase: str) -> list[tuple[str, bool]]:
             for member in lx.DIRECTION_FAMILIES[family]:
                 for t in ([[]] if member in lx.BARE_DIRECTIONS else tails):
                     out.append((" ".join(words[:i] + [member] + t), inverse))
+    # "faces across the burn to": the place "across the burn from" the other, read forwards
+    for i, w in enumerate(words):
+        if w == "across" and i + 3 < len(words) and words[i + 1] == "the" and words[i + 3] in ("to", "from", "at"):
+            for end in ("from", "to"):
+                out.append((" ".join(["across", "the", words[i + 2], end]), False))
     # antonym swap reads the relation backwards: "upstream of" -> "downstream of"
     swapped = [lx.ANTONYMS.get(w, w) for w in words]
     if swapped != words:

@@ -183,6 +183,14 @@ out cold|knocked out|knocked unconscious|electrocuted|got a shock|got a belt|nee
 needs winching|needs winching off|heat signature|heat signatures|thermal signature|under the bricks|
 under the wreckage|under the masonry|is under it|s under it|are under it|still under it|
 gashed leg|gashed arm|gashed head|gashed his leg|gashed her leg|badly gashed|someone lying|somebody lying|a man lying|a woman lying|a person lying|a child lying|lying at the bottom of|lying injured|lying unconscious|haven't come out|havent come out|have not come out|can't come down|cannot come down|can't come out|cannot come out|is underneath it|s underneath it|are underneath it|haven't come back|hasn't come back|not come back down|not come back yet|gash on his head|gash on her head|a gash on|blood all down his face|blood all down her face|blood down his face|blood down her face|bleeding from the head|bleed from the head|lying motionless|motionless|she's not talking|he's not talking|not talking to us|lad fitting|he's fitting|she's fitting|someone fitting|man fitting|having a fit|he's seizing|she's seizing|ligature|ligatured|found hanging|prisoner hanging|someone hanging|lad hanging|man hanging|hostage|hostages|taken hostage|held hostage|officer slashed|been slashed|was slashed|stabbed|been stabbed|i've fallen|i have fallen|i fell|we've fallen|can't get myself up|cannot get myself up|can't get herself up|can't get himself up|
+coughing|coughing badly|coughing their lungs up|on oxygen|broken collarbone|can't reach her|can't reach him|can't reach them|
+cannot reach her|cannot reach him|cannot reach them|can't get hold of her|can't get hold of him|can't get hold of them|
+not answered since|hasn't answered since|haven't heard from her|haven't heard from him|haven't heard from them|
+nothing since|no word from her|no word from him|no word from them|lost contact with|
+had a fall|has had a fall|taken a fall|had a nasty fall|tripped over|tripped and fell|tripped on|slipped and fell|
+slipped over|slipped on|cut by|been cut|needs evacuating|need evacuating|needs moving|need moving|needs moving out|
+need moving out|needs getting out|need getting out|needs carrying out|need carrying out|hit by falling|
+hit by a falling|struck by falling|struck by a falling|
 """.replace("\n", ""))
 
 # "collapsed" alone is structural (hazard); "collapsed inside" / "passed out" is a person.
@@ -195,10 +203,13 @@ NEGATORS = {
 }
 NEGATOR_PHRASES = ["no one", "no longer", "not any", "free of", "clear of", "no sign of", "no signs of",
                    "no more", "not anymore", "any more", "no trace of", "no evidence of", "ruled out", "well away from",
-                   "away from the", "far from the", "out of the way of", "upwind of the", "safe from the"]
+                   "away from the", "far from the", "out of the way of", "upwind of the", "safe from the",
+                   "fleeing the", "fled the", "escaping the", "escaped the", "sheltering from the", "shelter from the",
+                   "refuge from the"]
 
 # Phrases after a hazard cue that cancel it ("the fire is out").
-CANCEL_AFTER = ["been cleared", "been cleared away", "been towed", "been towed away", "turned up", "has turned up", "s turned up", "turned up safe", "is out", "s out", "are out", "was out", "put out", "out now", "been put out",
+CANCEL_AFTER = ["never reached", "didn't reach", "didnt reach", "hasn't reached", "hasnt reached", "never got to",
+                "been cleared", "been cleared away", "been towed", "been towed away", "turned up", "has turned up", "s turned up", "turned up safe", "is out", "s out", "are out", "was out", "put out", "out now", "been put out",
                 "has cleared", "have cleared", "s cleared", "has lifted", "s lifted", "has gone down", "s gone down",
                 "has receded", "s receded", "have receded", "gone down now", "old news", "pumped it out",
                 "pumped it all out", "brought down", "been brought down",
@@ -319,7 +330,9 @@ FALSE_ALARM = ["false alarm", "never mind", "nevermind", "disregard my last", "d
                "disregard all of it", "disregard all of that", "disregard all that", "ignore all of that", "ignore all of it",
                "ignore me", "nothing showing", "no fire showing", "nothing found", "found nothing", "nothing ongoing", "it is nothing", "it's nothing", "its nothing", "there's nothing",
                "theres nothing", "there is nothing", "i've got nothing", "got nothing here", "all normal",
-               "all looks normal", "everything normal", "everything's normal"]
+               "all looks normal", "everything normal", "everything's normal", "it's a long way off",
+               "its a long way off", "it's miles away", "its miles away", "it's a long way away", "its a long way away",
+               "withdraw my earlier warning", "withdraw my warning", "withdraw my earlier report", "withdraw my last", "withdraw that warning", "withdraw the warning", "withdraw my report"]
 # ... unless the words after them go on to say what there is none of ("there's nothing left of it", "it's nothing
 # serious", "there's nothing we can do")
 FALSE_ALARM_NOT_BEFORE = {"left", "serious", "major", "like", "but", "we", "i", "you", "they", "else", "more", "to",
@@ -333,11 +346,13 @@ DISMISSED_BEFORE = {"it's a bonfire", "its a bonfire", "it's just a bonfire", "i
 PREVIOUS_REPORT_WITHDRAWN = {"disregard my last", "disregard the last report", "ignore my last", "cancel my last",
                              "disregard my last message", "disregard previous", "never mind", "nevermind",
                              "disregard all of it", "disregard all of that", "disregard all that", "ignore all of that",
-                             "ignore all of it", "ignore me"}
+                             "ignore all of it", "ignore me",
+                             "withdraw my earlier warning", "withdraw my warning", "withdraw my earlier report", "withdraw my last", "withdraw that warning", "withdraw the warning", "withdraw my report"}
 
 # ... of which these withdraw everything said before them, in earlier sentences as well
 WHOLE_REPORT_WITHDRAWN = {"disregard all of it", "disregard all of that", "disregard all that", "ignore all of that",
-                          "ignore all of it", "ignore me"}
+                          "ignore all of it", "ignore me",
+                          "withdraw my earlier warning", "withdraw my warning", "withdraw my earlier report", "withdraw my last", "withdraw that warning", "withdraw the warning", "withdraw my report"}
 
 # Self-repair markers. Strong ones reach back into the previous sentence.
 STRONG_REPAIR = [
@@ -574,6 +589,7 @@ TRANSIT = ["people in off", "taking people in off", "in off the", "walked up fro
            "on our way to", "on the way to", "our way to", "on my way to", "my way to", "on his way to", "on her way to", "on their way to", "en route to", "enroute to", "going to", "driving to",
            "walking to", "moving to", "moving towards", "proceeding to", "approaching", "leaving",
            "just left", "came from", "come from", "just came from", "coming back from", "returning to",
+           "came down from", "come down from", "coming down from", "came up from", "come up from", "coming up from",
            "returning from", "parked at", "parked by", "parked near", "parked the truck at", "parked the truck by",
            "staged at", "regrouping at", "relocating to", "diverting to", "rerouting to", "going round",
            "we're at", "we are at", "currently at", "positioned at", "standing by at", "checking", "will check",
@@ -595,7 +611,7 @@ DESCRIPTION_HEADS = {"building", "place", "shop", "store", "tower", "block", "ho
 # Heads too generic ever to name a landmark on their own ("the building", even with one "terminal building").
 UNNAMING_HEADS = {"building", "place", "one", "site", "unit", "premises", "structure", "spot", "area", "thing", "bit",
                   "side", "house", "shop", "store", "block", "office", "hall", "station", "centre", "center", "room",
-                  "road", "street", "end", "front", "back", "property", "complex", "facility", "ground", "field"}
+                  "road", "street", "end", "front", "back", "property", "complex", "facility", "ground", "field", "water"}
 # Words that open the tail of such a description ("with the fuel pump", "on the west road", "that sells tools").
 DESCRIPTION_LINKS = {"with", "on", "at", "in", "along", "that", "which", "selling", "sells", "where", "by", "near",
                      "off", "beside", "having"}
@@ -733,7 +749,8 @@ LAY_PERSONS = {"man", "woman", "person", "people", "someone", "somebody", "child
                "resident", "fella", "guy", "bloke", "lady", "girl", "boy", "family", "occupant", "pensioner",
                "teenager", "toddler", "infant", "couple", "mother", "father", "gentleman", "walker", "diver",
                "swimmer", "guest", "customer", "elderly", "youngster", "male", "female", "casualty", "adult",
-               "survivor", "persons"}
+               "survivor", "persons", "pedestrian", "cyclist", "jogger", "motorist", "camper", "hiker", "rambler",
+               "commuter", "holidaymaker"}
 # People at work there: a casualty only when pinned, under or hanging ("a forklift driver under it").
 WORKER_PERSONS = {"driver", "worker", "workman", "lad", "labourer", "passenger", "pupil", "shopper", "baker",
                   "cleaner", "operator", "builder", "steward", "stewardess", "crewman", "deckhand", "fitter",
@@ -842,7 +859,8 @@ DANGER_KINDS: dict[str, list[str]] = {
              "ablaze", "flames", "flame", "in flames", "engulfed", "inferno", "alight", "well alight", "fully alight",
              "fully involved", "going up in flames", "gone up in flames", "smouldering", "smoldering", "charred",
              "gutted", "flashover", "flashover risk", "backdraft", "backdraft risk", "heavy fire", "fire showing",
-             "fully developed fire", "on fire again", "reignited", "hot spot", "hotspot"],
+             "fully developed fire", "on fire again", "reignited", "hot spot", "hotspot", "has gone up", "have gone up",
+             "has gone up in", "crown fire", "into the crowns"],
     "smoke": ["smoke", "smoking", "smoky", "smoke everywhere", "thick smoke", "smoke logged", "smoke logging",
               "smoke-logged"],
     "gas": ["gas", "gas leak", "leaking gas", "smell of gas", "smells of gas", "gas smell", "strong smell of gas",
@@ -879,7 +897,8 @@ DANGER_KINDS: dict[str, list[str]] = {
                  "has sagged", "roof's sagged", "stones falling", "stone falling",
                  "falling stones", "falling stone", "bits falling", "bits coming down", "chunks falling", "lumps falling",
                  "stonework falling", "frayed", "fraying", "cable's frayed", "derailed", "come off its rails",
-                 "came off its rails", "come off the rails", "came off the rails", "off its rails", "sheared off", "keystone's come out", "arch has dropped", "arch's dropped"],
+                 "came off its rails", "come off the rails", "came off the rails", "off its rails", "sheared off", "keystone's come out", "arch has dropped", "arch's dropped",
+                 "off its supports", "swept clean off", "a lean on it", "got a lean on"],
     "fallen": ["has fallen into", "have fallen into", "fallen into the", "rubble", "wall down", "walls down",
                "roof's in", "roof is in", "roof's gone", "roof has gone", "roof's off", "shedding bricks",
                "shedding slates", "masonry falling", "falling masonry", "fallen masonry", "wall's fallen",
@@ -889,7 +908,8 @@ DANGER_KINDS: dict[str, list[str]] = {
                "ceiling down", "tree through the roof", "tree on it", "the tree on it", "tree on the roof",
                "roof fell on", "fell on them", "came down on them", "come down on them", "collapsed on them",
                "smashed", "smashed up", "smashed to pieces", "smashed to matchwood", "full of wreckage", "wreckage",
-               "a breach in it", "breach in the"],
+               "a breach in it", "breach in the", "shedding stone", "shedding stones", "shedding masonry",
+               "roof's come off", "roof has come off", "roof come off", "roof came off"],
     "ground": ["is shifting", "s shifting", "its shifting", "keeps shifting", "started shifting", "sliding",
                "landslide", "mudslide", "mud slide", "landslip", "slipping", "sinkhole", "come away", "came away",
                "subsided into", "subsiding into", "subsidence", "has slipped", "face has slipped", "being undercut",
@@ -976,6 +996,34 @@ HEARSAY_VERBS = {"say", "says", "said", "reckon", "reckons", "reckoned", "think"
                  "reports", "tell", "told", "claim", "claims", "claimed", "insist", "insists", "swear", "swears", "heard",
                  "hear"}
 
+# Verbs of seeing and hearing: "... at the town hall and I seen the roof of the sports hall fold in".
+PERCEPTION_VERBS = {"seen", "saw", "see", "watched", "watch", "noticed", "notice", "heard", "hear", "spotted", "spot",
+                    "can", "could"}
+
+# Times that make "the surgery was this morning" a place of another time, not one now.
+OTHER_TIMES = [("this", "morning"), ("earlier",), ("yesterday",), ("last", "night"), ("last", "week"), ("before",),
+               ("this", "afternoon"), ("earlier", "on"), ("earlier", "today")]
+
+# One-word names of open areas that other places stand in or on ("the coffee shop on the square").
+AREA_HEADS = {"square", "green", "street", "precinct", "quay", "quayside", "marketplace", "plaza", "common", "prom",
+              "promenade", "seafront", "front", "estate", "high"}
+
+# Verbs of being hurt by something ("hit by falling slates"): what follows "by" is the cause, not a claim.
+INJURY_VERBS = {"hit", "hurt", "injured", "struck", "cut", "knocked"}
+
+# Dangers people are taken out of ("out of the smoke"), and the nouns they make a kind of person with ("flood
+# victims").
+ESCAPED_THINGS = {"smoke", "fire", "flood", "water", "floodwater", "floodwaters", "fumes", "flames", "flooding"}
+VICTIM_NOUNS = {"victims", "victim", "survivors", "evacuees", "refugees"}
+
+# Words after "is out" that make it a way out, not a fire put out ("the route is out through the park").
+ROUTE_PREPOSITIONS = {"through", "via", "onto", "along", "across", "past", "towards", "toward", "by", "into", "of", "over"}
+
+# Verbs that make the person before them the one telling ("a man in the cafe says ..."), not one to rescue.
+TELLING_VERBS = {"say", "says", "said", "swear", "swears", "swore", "reckon", "reckons", "reckoned", "tell", "tells",
+                 "told", "report", "reports", "reported", "claim", "claims", "claimed", "insist", "insists", "insisted",
+                 "rang", "phoned", "texted", "radioed"}
+
 # What a speaker says to contradict what they were told: "... but it isn't", "it's still standing".
 CONTRADICTIONS = [("it", "isnt"), ("its", "not"), ("it", "wasnt"), ("it", "is", "not"), ("its", "still", "standing"),
                   ("its", "fine"), ("its", "ok"), ("its", "okay"), ("its", "not", "true"), ("thats", "wrong"),
@@ -986,7 +1034,7 @@ CONTRADICTIONS = [("it", "isnt"), ("its", "not"), ("it", "wasnt"), ("it", "is", 
                   ("found", "nobody", "there"), ("found", "no", "one"), ("found", "nobody"), ("nobody", "there"),
                   ("theres", "nothing"), ("there", "nothing"), ("no", "smell"), ("nothing", "at", "all"),
                   ("nobody", "was"), ("no", "one", "was"), ("nobody", "is"), ("nobody", "hurt"),
-                  ("nothing", "there"), ("its", "just")]
+                  ("nothing", "there"), ("its", "just"), ("bone", "dry"), ("no", "water"), ("its", "dry")]
 
 # A person as the subject of a sentence that says where they are: "she's in the back of the shop".
 PERSON_SUBJECTS = {"he", "she", "hes", "shes", "they", "theyre"}
