@@ -2684,6 +2684,17 @@ def test_dev42_forest_park(kb_analyzers, text, expected):
     ("ms", "the town hall's been cleared of smoke and is safe", [("town hall", "safe_zone")]),
     ("alpine_village", "the helipad is cleared of snow and safe to land", [("helipad", "refuge")]),
     ("ms", "get everyone out of the bakery, it's on fire", [("bakery", "hazard")]),
+    ("riverbend", "woman with hypothermia at the ferry landing after falling in", [("ferry landing", "casualty")]),
+    ("ms", "a teenager overdosed at the bank", [("bank", "victim")]),
+    # a reason clause is no list item; "across the road at the bank" names the bank; a vantage point
+    ("ms", "they've opened the school as a rest centre because the town hall's flooded",
+     [("school", "safe_zone"), ("town hall", "hazard")]),
+    ("ms", "the church is safe, the flooding is across the road at the bank", [("bank", "hazard"), ("church", "safe_zone")]),
+    ("ms", "the library's on fire, people are watching from the square", [("library", "hazard")]),
+    ("ms", "hotel is our safe area, the smoke's blowing the other way", [("hotel", "safe_zone")]),
+    # a false alarm denies a danger, not a place said to be safe; a withdrawal takes everything back
+    ("ms", "the bank's been searched, nothing found, safe to use", [("bank", "safe_zone")]),
+    ("ms", "the school is safe. Disregard all of that, wrong address.", []),
 ])
 def test_people_hurt_and_places_left(kb_analyzers, analyzer, kb, text, expected):
     an = analyzer if kb == "ms" else kb_analyzers[kb]

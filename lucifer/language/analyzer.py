@@ -2178,6 +2178,9 @@ class ReportAnalyzer:
     @staticmethod
     def _names_other_object(toks: Tokens, norms: tuple[str, ...], b: int) -> bool:
         """"people trapped behind the shelving": the relation has an object of its own, no place of the KB."""
+        if b + 2 < len(norms) and not toks.clause_start[b] and norms[b] in ("at", "by", "outside") \
+                and norms[b + 1] in lx.ARTICLES and not toks.clause_start[b + 1]:
+            return True  # "the flooding is across the road at the bank": the place said after, not one related
         return b + 1 < len(norms) and not toks.clause_start[b] and norms[b] in lx.DETERMINERS \
             and norms[b + 1].isalpha() and norms[b + 1] not in lx.FILLERS and not toks.clause_start[b + 1]
 
@@ -3908,6 +3911,7 @@ class ReportAnalyzer:
         cues = self._unknown_source(ex, norms, cues)
         cues, moved = self._relocations(ex, norms, cues)
         claims, denied = self._associate(ex, cues)
+        claims.extend(self._cleft_claims(ex, norms, cues, claims))
         claims.extend(moved)
         claims.extend(self._answered_locations(ex, norms, cues, claims))
         spread = self._spread_claims(ex, norms, cues, claims, denied)
@@ -3920,6 +3924,35 @@ class ReportAnalyzer:
             claims.extend(extra)
             cues.extend(c.cue for c in extra)
         return Classification(cues, self._not_from_us(ex, norms, self._drop_unspecific_dangers(claims)), denied)
+
+    @staticmethod
+    def _cleft_claims(ex: Extraction, norms: tuple[str, ...], cues: list[CueMention], claims: list[Claim]) -> list[Claim]:
+        """"it's the bakery not the bank that's burning": the cue of the cleft is the first place's, not the one
+        it is set against."""
+        bound = {id(c.cue) for c in claims}
+        out = []
+        for c in cues:
+            if id(c) in bound or c.status != "active" or c.polarity != "affirmed":
+                continue
+            j = c.start_tok
+            for rel in (("that", "s"), ("thats",), ("that", "is"), ("whats",), ("which", "is"), ("that",)):
+                if norms[max(0, j - len(rel)):j] == rel:
+                    j -= len(rel)
+                    break
+            else:
+                continue
+            neg = next((p for p in ex.places if p.end_tok == j and p.status == "negated"), None)
+            if neg is None:
+                continue
+            k = neg.start_tok
+            while k > 0 and norms[k - 1] in lx.DETERMINERS:
+                k -= 1
+            if k < 1 or norms[k - 1] != "not":
+                continue
+            head = next((p for p in ex.places if p.end_tok == k - 1 and p.status == "active"), None)
+            if head is not None:
+                out.append(Claim(head, c))
+        return out
 
     @staticmethod
     def _not_from_us(ex: Extraction, norms: tuple[str, ...], claims: list[Claim]) -> list[Claim]:
@@ -4173,6 +4206,8 @@ class ReportAnalyzer:
         if j < 0:
             return False
         w = norms[j]
+        if w == "after" and any(norms[m] in _PERSON_WORDS for m in range(max(0, j - 10), j)):
+            return True  # "woman with hypothermia at the ferry landing after falling in"
         if w in lx.STRUCTURE_WORDS:
             return False  # "the access ladder's collapsed": a ladder, not a ladder crew
         if w in lx.LAY_PERSONS or w in lx.WORKER_PERSONS or w in lx.PERSON_NOUNS or w in lx.CREW_NOUNS \
@@ -4431,8 +4466,10 @@ class ReportAnalyzer:
                 # "an injured man at the water tower? -- no, ... the man's at the water tower": the one spoken of,
                 # placed again
                 introduced = True
-            if not introduced and w not in ("someone", "somebody"):
-                continue
+            if not introduced and w not in ("someone", "somebody") and not (
+                    toks.clause_start[j + 1] and any(norms[m] in lx.DISTRESS_VERBS and not toks.clause_start[m]
+                                                     for m in range(k + 1, min(len(norms), k + 7)))):
+                continue  # ("..., people on the balconies shouting": a clause of people in distress)
             if norms[k : k + 1] == ("of",) and k + 1 < len(norms) and (norms[k + 1].isdigit() or norms[k + 1] in lx.NUMBER_WORDS):
                 k += 2  # "a family of five up on the gantry"
             if norms[k : k + 1] == ("and",) and k + 3 < len(norms) and norms[k + 1] in lx.PERSON_INTRODUCERS | lx.NUMBER_WORDS \
@@ -4704,6 +4741,7 @@ class ReportAnalyzer:
         """"... the smoke was a false alarm": every claim of that sentence is denied."""
         sentence_of = toks.sentence_of
         alarms: dict[int, int] = {}  # sentence -> the token before which its claims are denied
+        withdrawn: set[int] = set()  # sentences a withdrawal takes back whole, safe places with the rest
         places_now = getattr(self, "_places_now", [])
         positions: dict[str, list[int]] = {}
         for i, w in enumerate(norms):
@@ -4744,9 +4782,12 @@ class ReportAnalyzer:
                         until = min(repaired)
                     alarms[sentence_of[i]] = max(alarms.get(sentence_of[i], 0), until)
                     n = sentence_of[i]
+                    if phrase in lx.PREVIOUS_REPORT_WITHDRAWN:
+                        withdrawn.add(n)
                     if phrase in lx.WHOLE_REPORT_WITHDRAWN:
                         for m in range(n):  # "... Please disregard all of it, nobody is hurt."
                             alarms[m] = len(norms)
+                            withdrawn.add(m)
                     if n > 0 and phrase not in lx.PREVIOUS_REPORT_WITHDRAWN and not any(
                             sentence_of[p.start_tok] == n and p.start_tok < i for p in places_now) \
                             and not any(c.start_tok < i and sentence_of[c.start_tok] == n and c.polarity == "affirmed"
@@ -4768,8 +4809,13 @@ class ReportAnalyzer:
                 alarms[n] = len(norms)
         if not alarms:
             return cues
+        # (a false alarm says a danger was none; a place said to be safe stays so: "searched, nothing found, safe")
+        safe_said = {sentence_of[c.start_tok] for c in cues if self.kb.category_by_name[c.category].role == Role.DESIRABLE
+                     and {"safe", "clear", "secure", "secured"} & set(norms[c.start_tok:c.end_tok])}
         return [replace(c, polarity="denied", reason="false alarm")
-                if c.start_tok < alarms.get(sentence_of[c.start_tok], -1) else c for c in cues]
+                if c.start_tok < alarms.get(sentence_of[c.start_tok], -1) and (
+                    sentence_of[c.start_tok] in withdrawn or sentence_of[c.start_tok] not in safe_said
+                    or self.kb.category_by_name[c.category].role != Role.DESIRABLE) else c for c in cues]
 
     def _undesirable(self) -> str | None:
         return self._role_category.get("undesirable") or next(
@@ -5304,7 +5350,9 @@ class ReportAnalyzer:
                     and segs[nxt][1] - segs[nxt][0] <= 4 and sentence_of[segs[nxt][0]] == sentence_of[a]:
                 a2, b2 = segs[nxt]
                 opened = opened or (norms[b2 - 1] in lx.PREPOSITIONS | lx.DETERMINERS
-                                    and any(norms[i] in lx.POSITION_PREPS for i in range(a2, b2)))
+                                    and any(norms[i] in lx.POSITION_PREPS for i in range(a2, b2))) \
+                    or norms[b2 - 2:b2] in (("coming", "from"), ("pouring", "from"), ("pouring", "out"),
+                                            ("coming", "out"))  # ("smoke, lots of it, coming from, er, the ...")
                 nxt, steps = nxt + 1, steps + 1
             if opened and seg_places.get(nxt) and sentence_of[segs[nxt][0]] == sentence_of[a]:
                 # "there's this gas smell, like really strong, at the, you know, the bread shop": past the
@@ -5469,6 +5517,9 @@ class ReportAnalyzer:
                                                                                      ["still", "dry"])) \
                     and len(seg_places.get(k, [])) == 1:
                 continue  # "the gift shop, that's where the water's coming in... the tea room's dry": its own word
+            if tail[:1] and tail[0] in ("evacuated", "evacuating", "closed", "shut", "locked") and len(tail) <= 2 \
+                    and len(seg_places.get(k, [])) == 1:
+                continue  # "hotel evacuated, they're all at the town hall now which is safe": a word of its own
             if tail[:1] == ["empty"] and len(seg_places.get(k, [])) == 1:
                 continue  # "the gas cage is on fire, reception's empty, we checked it": said of it, its own
             nxt_words = [w for w in norms[segs[k][1]:min(len(norms), segs[k][1] + 8)] if w not in lx.FILLERS]
@@ -5774,8 +5825,9 @@ class ReportAnalyzer:
                           seg_cues: dict[int, list[CueMention]], sentence_of: list[int], hollow: set[int],
                           first_norm: list[str]) -> int | None:
         sent = sentence_of[segs[k][0]]
-        if first_norm[k] in ("we", "i", "im", "were", "you", "youre"):
+        if first_norm[k] in ("we", "i", "im", "were", "you", "youre", "because", "cos", "coz"):
             return None  # "...full of smoke; we are shifting to emergency steering in the tiller flat": no list item
+            # ("moved to the rec because the welfare hall is full": a reason, no list item either)
 
         def own(j: int) -> bool:
             """The donor's place is one said before it ("I can see the park, the sports hall and the water tower,

@@ -190,7 +190,7 @@ nothing since|no word from her|no word from him|no word from them|lost contact w
 had a fall|has had a fall|taken a fall|had a nasty fall|tripped over|tripped and fell|tripped on|slipped and fell|
 slipped over|slipped on|cut by|been cut|needs evacuating|need evacuating|needs moving|need moving|needs moving out|
 need moving out|needs getting out|need getting out|needs carrying out|need carrying out|hit by falling|
-hit by a falling|struck by falling|struck by a falling|
+hit by a falling|struck by falling|struck by a falling|overdosed|taken an overdose|
 """.replace("\n", ""))
 
 # "collapsed" alone is structural (hazard); "collapsed inside" / "passed out" is a person.
@@ -208,7 +208,7 @@ NEGATOR_PHRASES = ["no one", "no longer", "not any", "free of", "clear of", "no 
                    "refuge from the"]
 
 # Phrases after a hazard cue that cancel it ("the fire is out").
-CANCEL_AFTER = ["never reached", "didn't reach", "didnt reach", "hasn't reached", "hasnt reached", "never got to",
+CANCEL_AFTER = ["blowing the other way", "blowing away from", "going the other way", "never reached", "didn't reach", "didnt reach", "hasn't reached", "hasnt reached", "never got to",
                 "been cleared", "been cleared away", "been towed", "been towed away", "turned up", "has turned up", "s turned up", "turned up safe", "is out", "s out", "are out", "was out", "put out", "out now", "been put out",
                 "has cleared", "have cleared", "s cleared", "has lifted", "s lifted", "has gone down", "s gone down",
                 "has receded", "s receded", "have receded", "gone down now", "old news", "pumped it out",
@@ -576,7 +576,7 @@ IMPLICIT_ANCHOR = {("next", "door"), ("next", "door", "to"), ("opposite",), ("ac
                    ("across", "the", "street"), ("over", "the", "road"), ("over", "the", "way"), ("behind",)}
 
 # Multi-word coordinators that separate claims like "and" does.
-COORDINATOR_PHRASES = ["as well as", "along with", "together with", "and also", "and then"]
+COORDINATOR_PHRASES = ["as well as", "along with", "together with", "and also", "and then", "because", "cos", "coz"]
 
 # Verbs of removal that retract the place after them ("scratch the pharmacy").
 RETRACT_VERBS = {"scratch", "strike", "forget", "cancel", "remove", "minus", "drop", "lose", "scrap", "scrub"}
@@ -590,6 +590,7 @@ TRANSIT = ["people in off", "taking people in off", "in off the", "walked up fro
            "walking to", "moving to", "moving towards", "proceeding to", "approaching", "leaving",
            "just left", "came from", "come from", "just came from", "coming back from", "returning to",
            "came down from", "come down from", "coming down from", "came up from", "come up from", "coming up from",
+           "watching from", "watching it from", "looking on from", "see it from", "seen from",
            "returning from", "parked at", "parked by", "parked near", "parked the truck at", "parked the truck by",
            "staged at", "regrouping at", "relocating to", "diverting to", "rerouting to", "going round",
            "we're at", "we are at", "currently at", "positioned at", "standing by at", "checking", "will check",
@@ -737,7 +738,7 @@ STRUCTURE_WORDS = _keyed({"stair", "stairs", "staircase", "stairwell", "scaffold
                    "tunnel", "shaft", "mezzanine", "platform", "awning", "shed", "barn", "enclosure", "gantry",
                    "ladder", "steps", "walkway", "roof", "ceiling", "floor", "wall", "chimney", "crane", "mast"})
 PERSON_STATE_CUES = {("collapsed",), ("collapse",), ("collapsing",), ("burned",), ("burnt",), ("burned", "out"),
-                     ("fallen", "in"), ("fell", "in"), ("slipped", "in")}
+                     ("fallen", "in"), ("fell", "in"), ("slipped", "in"), ("falling", "in")}
 
 # Parts of a person: "his arm is burned" is said of a person
 BODY_PARTS = _keyed({"arm", "arms", "leg", "legs", "hand", "hands", "head", "face", "foot", "feet", "back", "chest", "neck",
@@ -898,7 +899,8 @@ DANGER_KINDS: dict[str, list[str]] = {
                  "falling stones", "falling stone", "bits falling", "bits coming down", "chunks falling", "lumps falling",
                  "stonework falling", "frayed", "fraying", "cable's frayed", "derailed", "come off its rails",
                  "came off its rails", "come off the rails", "came off the rails", "off its rails", "sheared off", "keystone's come out", "arch has dropped", "arch's dropped",
-                 "off its supports", "swept clean off", "a lean on it", "got a lean on"],
+                 "off its supports", "swept clean off", "a lean on it", "got a lean on", "damaged", "badly damaged",
+                 "heavily damaged", "storm damaged", "storm-damaged"],
     "fallen": ["has fallen into", "have fallen into", "fallen into the", "rubble", "wall down", "walls down",
                "roof's in", "roof is in", "roof's gone", "roof has gone", "roof's off", "shedding bricks",
                "shedding slates", "masonry falling", "falling masonry", "fallen masonry", "wall's fallen",
@@ -1007,6 +1009,9 @@ OTHER_TIMES = [("this", "morning"), ("earlier",), ("yesterday",), ("last", "nigh
 # One-word names of open areas that other places stand in or on ("the coffee shop on the square").
 AREA_HEADS = {"square", "green", "street", "precinct", "quay", "quayside", "marketplace", "plaza", "common", "prom",
               "promenade", "seafront", "front", "estate", "high"}
+
+# What people do when they need help ("people on the balconies shouting").
+DISTRESS_VERBS = {"shouting", "yelling", "screaming", "waving", "crying", "banging", "calling", "hammering"}
 
 # Verbs of being hurt by something ("hit by falling slates"): what follows "by" is the cause, not a claim.
 INJURY_VERBS = {"hit", "hurt", "injured", "struck", "cut", "knocked"}
