@@ -2695,6 +2695,11 @@ def test_dev42_forest_park(kb_analyzers, text, expected):
     # a false alarm denies a danger, not a place said to be safe; a withdrawal takes everything back
     ("ms", "the bank's been searched, nothing found, safe to use", [("bank", "safe_zone")]),
     ("ms", "the school is safe. Disregard all of that, wrong address.", []),
+    # a safe place and the danger only looked for, left behind or kept away
+    ("ms", "the post office is clear, the fire crews have checked it for gas", [("post office", "safe_zone")]),
+    ("ms", "everyone from the gas leak area is at the town hall, which is safe", [("town hall", "safe_zone")]),
+    ("ms", "the library is safe to shelter in, the smoke hasn't got that far", [("library", "safe_zone")]),
+    ("riverbend", "the academy is open as a shelter for families flooded out of their homes", [("academy", "shelter")]),
 ])
 def test_people_hurt_and_places_left(kb_analyzers, analyzer, kb, text, expected):
     an = analyzer if kb == "ms" else kb_analyzers[kb]

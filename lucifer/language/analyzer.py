@@ -3781,6 +3781,14 @@ class ReportAnalyzer:
                 cues.append(CueMention(a, b, start, end, toks.text[start:end], self._person_category, source,
                                        reason="the cause of an injury"))
                 continue
+            if self.kb.category_by_name[cat].role == Role.UNDESIRABLE and a >= 2 and norms[a - 1] == "for" \
+                    and any(norms[m] in lx.CHECK_VERBS for m in range(max(0, a - 4), a - 1)):
+                continue  # "the fire crews have checked it for gas": what they looked for, not what they found
+            if self.kb.category_by_name[cat].role == Role.UNDESIRABLE and norms[max(0, a - 2):a] == ("from", "the") \
+                    and norms[b:b + 1] in (("area",), ("zone",), ("site",)):
+                continue  # "everyone from the gas leak area is at the town hall": where they came from
+            if norms[a:b] == ("flooded", "out") and norms[b:b + 1] == ("of",):
+                continue  # "families flooded out of their homes": who they are, no place flooded
             if norms[b - 1] == "fall" and norms[b:b + 1] == ("of",):
                 continue  # "the top bench has had a fall of ground": a fall of rock, no person's fall
             if a >= 2 and ("cleared", "of") in (norms[a - 2:a], norms[a - 3:a - 1]) \

@@ -208,7 +208,8 @@ NEGATOR_PHRASES = ["no one", "no longer", "not any", "free of", "clear of", "no 
                    "refuge from the"]
 
 # Phrases after a hazard cue that cancel it ("the fire is out").
-CANCEL_AFTER = ["blowing the other way", "blowing away from", "going the other way", "never reached", "didn't reach", "didnt reach", "hasn't reached", "hasnt reached", "never got to",
+CANCEL_AFTER = ["hasn't got that far", "hasnt got that far", "not got that far", "hasn't got this far", "hasnt got this far",
+                "not got this far", "hasn't reached us", "hasnt reached us", "blowing the other way", "blowing away from", "going the other way", "never reached", "didn't reach", "didnt reach", "hasn't reached", "hasnt reached", "never got to",
                 "been cleared", "been cleared away", "been towed", "been towed away", "turned up", "has turned up", "s turned up", "turned up safe", "is out", "s out", "are out", "was out", "put out", "out now", "been put out",
                 "has cleared", "have cleared", "s cleared", "has lifted", "s lifted", "has gone down", "s gone down",
                 "has receded", "s receded", "have receded", "gone down now", "old news", "pumped it out",
@@ -1015,6 +1016,10 @@ DISTRESS_VERBS = {"shouting", "yelling", "screaming", "waving", "crying", "bangi
 
 # Verbs of being hurt by something ("hit by falling slates"): what follows "by" is the cause, not a claim.
 INJURY_VERBS = {"hit", "hurt", "injured", "struck", "cut", "knocked"}
+
+# Verbs of checking a place for a danger ("checked it for gas"): the danger looked for, not found.
+CHECK_VERBS = {"checked", "checking", "check", "tested", "testing", "test", "swept", "sweeping", "monitored", "monitoring",
+               "searched", "searching", "screened", "screening"}
 
 # Dangers people are taken out of ("out of the smoke"), and the nouns they make a kind of person with ("flood
 # victims").
