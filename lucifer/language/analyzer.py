@@ -1176,12 +1176,21 @@ class ReportAnalyzer:
     @functools.cached_property
     def _name_prefix_owners(self) -> dict[tuple[str, ...], set[str]]:
         """The first words of every multi-word name (all but its last), with the landmarks whose names begin so."""
+        return self._name_part_owners(lambda words, n: words[:n])
+
+    @functools.cached_property
+    def _tail_owners(self) -> dict[tuple[str, ...], set[str]]:
+        """The last words of every multi-word name (all but its first), with the landmarks whose names end so."""
+        return self._name_part_owners(lambda words, n: words[-n:])
+
+    def _name_part_owners(self, part: Callable[[tuple[str, ...], int], tuple[str, ...]]) -> dict[tuple[str, ...], set[str]]:
+        """``part(words, n)`` of every name's words for n = 1 .. len - 1, with the landmarks whose names have it."""
         owners: dict[tuple[str, ...], set[str]] = {}
         for lm in self.kb.landmarks:
             for form in lm.surface_forms:
                 words = name_words(form)
                 for n in range(1, len(words)):
-                    owners.setdefault(words[:n], set()).add(lm.name)
+                    owners.setdefault(part(words, n), set()).add(lm.name)
         return owners
 
     @functools.cached_property
@@ -1446,8 +1455,8 @@ class ReportAnalyzer:
                     name_words(f)[-1:] == (norms[i],) for f in self.kb.landmark_by_name[p.landmark].surface_forms)]
                 if not mine and norms[i - 1] in ("my", "our") and norms[i] in ("building", "place", "premises"):
                     # "I'm at the pharmacy. The shop our building's built onto": where the speaker is
-                    mine = [p for p in places if p.end_tok <= i - 1 and p.status == "active" and (
-                        self._speaker_at(norms, p) or norms[p.end_tok:p.end_tok + 1] == ("here",))]
+                    mine = [p for p in places if p.end_tok <= i - 1 and p.status == "active"
+                            and self._speaker_here(norms, p)]
                     own = self._trade_place(toks, norms) if not mine else None
                     if own is not None:
                         out.append(replace(self._mention(toks, i - 1, i + 1, own),
@@ -1838,17 +1847,6 @@ class ReportAnalyzer:
             self._tails_cache = {k: v for k, v in self._tail_owners.items() if len(v) >= 2 and k[-1].isalpha()
                                  and len(k[-1]) >= 4 and not set(k) & lx.GENERIC_HEADS}
         return self._tails_cache
-
-    @functools.cached_property
-    def _tail_owners(self) -> dict[tuple[str, ...], set[str]]:
-        """The last words of every multi-word name (all but its first), with the landmarks whose names end so."""
-        tails: dict[tuple[str, ...], set[str]] = {}
-        for lm in self.kb.landmarks:
-            for form in lm.surface_forms:
-                words = name_words(form)
-                for n in range(1, len(words)):
-                    tails.setdefault(words[-n:], set()).add(lm.name)
-        return tails
 
     def _resolve_shared_heads(self, ex: Extraction, toks: Tokens, norms: tuple[str, ...], place_tokens: set[int],
                               marker_tokens: set[int]) -> None:
@@ -2736,6 +2734,11 @@ class ReportAnalyzer:
             return False
         return norms[j - 1] in ("im", "were") or norms[j - 2 : j] in (("i", "am"), ("we", "are"))
 
+    @classmethod
+    def _speaker_here(cls, norms: tuple[str, ...], p: PlaceMention) -> bool:
+        """The place the speaker says they are at: "I'm at the pharmacy", "Coastguard lookout here"."""
+        return cls._speaker_at(norms, p) or norms[p.end_tok:p.end_tok + 1] == ("here",)
+
     def _head_before(self, toks: Tokens, norms: tuple[str, ...], head_end: int, place_tokens: set[int],
                      marker_tokens: set[int]) -> tuple[int, list[str]]:
         head_start = head_end
@@ -2778,8 +2781,7 @@ class ReportAnalyzer:
                     "'" in ex.tokens.tokens[hs - 1].text.replace("’", "'") or norms[hs] in lx.ARTICLES)):
                 hs -= 1  # (not "it's the shop it's stuck onto", "its the shop its on")
             if norms[j - 1] in ("we", "i"):
-                at = [p for p in ex.places if p.end_tok <= hs and p.status != "retracted" and (
-                    self._speaker_at(norms, p) or norms[p.end_tok:p.end_tok + 1] == ("here",))]
+                at = [p for p in ex.places if p.end_tok <= hs and p.status != "retracted" and self._speaker_here(norms, p)]
                 return (max(at, key=lambda p: p.end_tok), hs, "pronoun") if at else None  # type: ignore[return-value]
             # the antecedent is spoken before the head ("the landing it faces": not the landing)
             before = [p for p in ex.places if p.end_tok <= hs and p.status != "reference"]
@@ -3207,9 +3209,8 @@ class ReportAnalyzer:
         if any(self._cues.match_at(norms, i) is not None for i in range(c, j - 1)):
             return False  # "fire at the bakery: the building next to it ...": the place claimed, then another
         n = toks.sentence_of[p.start_tok]
-        return any(q.status == "active" and q.via and q.landmark != p.landmark and q.start_tok >= e
-                   and toks.sentence_of[q.start_tok] <= n + 1
-                   and (q.via.startswith(p.landmark + " ") or q.via.endswith(" " + p.landmark)) for q in places)
+        return any(q.status == "active" and q.start_tok >= e and toks.sentence_of[q.start_tok] <= n + 1
+                   and _anchored_at(q, p.landmark) for q in places)
 
     def _apply_transit(self, ex: Extraction) -> None:
         """"heading to the bakery", "passing the church": the team moves; nothing is claimed there."""
@@ -3266,8 +3267,7 @@ class ReportAnalyzer:
                 if hit is not None and hit[1].startswith("route ") and k > 0 and not toks.clause_start[k]:
                     continue  # "evacuation route through the square is clear": a route said to be safe; "route via" orders
                 if hit is not None and hit[1].split()[0] in ("came", "come", "coming") and len(hit[1].split()) == 3 \
-                        and not any(norms[m] in lx.LAY_PERSONS | {"who", "us", "we", "they", "everyone", "everybody", "folk"}
-                                    for m in range(max(0, k - 4), k)):
+                        and not any(norms[m] in lx.MOVING_PEOPLE for m in range(max(0, k - 4), k)):
                     continue  # "debris came down from the roof": a thing fallen, not people who came from there
                 if hit is not None and j <= hit[0] <= p.start_tok and not any(toks.clause_start[i] for i in range(k + 1, min(hit[0], p.start_tok) + 1) if i < p.start_tok):
                     if norms[k] in ("passing", "past", "going", "driving", "walking", "passed") \
@@ -3774,26 +3774,19 @@ class ReportAnalyzer:
                 continue  # "Clear everyone out of the building": an order, not a place said to be clear
             if self._kept_clear_for(toks, norms, a):
                 continue  # "keep the road clear for the aerial ladder coming down from the fire station": who it is for
-            if self._person_category and self.kb.category_by_name[cat].role == Role.UNDESIRABLE \
-                    and self._injury_cause_at(norms, a):
+            undesirable = self.kb.category_by_name[cat].role == Role.UNDESIRABLE
+            if self._person_category and undesirable and self._injury_cause_at(norms, a):
                 # "a man hit by falling slates", "two hurt by the blast": what hurt them, the person the claim
                 start, end = toks.tokens[a].start, toks.tokens[b - 1].end
                 cues.append(CueMention(a, b, start, end, toks.text[start:end], self._person_category, source,
                                        reason="the cause of an injury"))
                 continue
-            if self.kb.category_by_name[cat].role == Role.UNDESIRABLE and a >= 2 and norms[a - 1] == "for" \
-                    and any(norms[m] in lx.CHECK_VERBS for m in range(max(0, a - 4), a - 1)):
-                continue  # "the fire crews have checked it for gas": what they looked for, not what they found
-            if self.kb.category_by_name[cat].role == Role.UNDESIRABLE and norms[max(0, a - 2):a] == ("from", "the") \
-                    and norms[b:b + 1] in (("area",), ("zone",), ("site",)):
-                continue  # "everyone from the gas leak area is at the town hall": where they came from
+            if undesirable and self._danger_not_here(norms, a, b):
+                continue
             if norms[a:b] == ("flooded", "out") and norms[b:b + 1] == ("of",):
                 continue  # "families flooded out of their homes": who they are, no place flooded
             if norms[b - 1] == "fall" and norms[b:b + 1] == ("of",):
                 continue  # "the top bench has had a fall of ground": a fall of rock, no person's fall
-            if a >= 2 and ("cleared", "of") in (norms[a - 2:a], norms[a - 3:a - 1]) \
-                    and self.kb.category_by_name[cat].role == Role.UNDESIRABLE:
-                continue  # "the town hall's been cleared of smoke": the danger is gone from it
             if norms[a:b] in (("everyone", "out"), ("everybody", "out")) and norms[b:b + 2] == ("of", "the") \
                     and norms[b + 2:b + 3] and norms[b + 2] in lx.ESCAPED_THINGS:
                 continue  # "moved everyone out of the smoke into the school": out of the danger, no order about a place
@@ -3803,7 +3796,7 @@ class ReportAnalyzer:
                     "quake", "earthquake", "storm", "blast", "explosion", "crash"}:
                 continue  # "use it for the flood victims": who they are, no danger there
             if b == a + 1 and a > 0 and norms[a] in self._kb_nouns and norms[a - 1] in lx.ARTICLES \
-                    and source != "glossary" and self.kb.category_by_name[cat].role != Role.UNDESIRABLE:
+                    and source != "glossary" and not undesirable:
                 continue  # "the burn's burst its banks": a thing of the KB's own ("beside the burn"), no burns
             if norms[a:b] == ("clear",) and any(norms[k] in ("keep", "stay") for k in range(max(0, a - 4), a)) \
                     and not any(toks.clause_start[k] for k in range(max(1, a - 3), a + 1)):
@@ -3868,8 +3861,7 @@ class ReportAnalyzer:
                                                                   and norms[a - 2] in ("we", "i", "you")):
                 continue  # "we come down past the fish market": the speaker moving, nothing fallen
             if norms[a] in ("come", "came", "coming") and norms[b:b + 1] == ("from",) and any(
-                    norms[j] in lx.LAY_PERSONS | {"who", "us", "we", "they", "everyone", "everybody", "folk"}
-                    for j in range(max(0, a - 4), a)):
+                    norms[j] in lx.MOVING_PEOPLE for j in range(max(0, a - 4), a)):
                 continue  # "forty of us who came down from the campsite": people moving, nothing fallen
             if cue.category == self._person_category and norms[a:b] in (("gone", "under"), ("going", "under"),
                                                                          ("went", "under")) \
@@ -5054,6 +5046,15 @@ class ReportAnalyzer:
                    for m in range(max(0, j - 6), j - 1))  # (a person hurt: "the bakery was hit by fire" is no one)
 
     @staticmethod
+    def _danger_not_here(norms: tuple[str, ...], a: int, b: int) -> bool:
+        """A danger word at ``a:b`` said of no place: "the fire crews have checked it for gas" (what was looked for),
+        "everyone from the gas leak area is at the town hall" (where they came from), "the town hall's been cleared
+        of smoke" (gone from it)."""
+        return (a >= 2 and norms[a - 1] == "for" and any(norms[m] in lx.CHECK_VERBS for m in range(max(0, a - 4), a - 1))
+                or norms[max(0, a - 2):a] == ("from", "the") and norms[b:b + 1] in (("area",), ("zone",), ("site",))
+                or a >= 2 and ("cleared", "of") in (norms[a - 2:a], norms[a - 3:a - 1]))
+
+    @staticmethod
     def _kept_clear_for(toks: Tokens, norms: tuple[str, ...], a: int) -> bool:
         """Token ``a`` says whom an order to keep a way clear is for ("keep the road clear for the ladder ...")."""
         return any(norms[k:k + 2] == ("clear", "for") and any(norms[m] in ("keep", "keeping") for m in range(max(0, k - 8), k))
@@ -5540,9 +5541,7 @@ class ReportAnalyzer:
             donor = self._donor_for_places(k, segs, seg_places, seg_cues, sentence_of, hollow,
                                            [self._opening(norms, a, b) for a, b in segs])
             if donor is not None and tail[:1] and tail[0] in lx.COPULAS | {"looks", "seems", "has", "got"} and any(
-                    q.via and q.landmark != p.landmark and (q.via.startswith(p.landmark + " ")
-                                                           or q.via.endswith(" " + p.landmark))
-                    for q in seg_places.get(donor, [])):
+                    _anchored_at(q, p.landmark) for q in seg_places.get(donor, [])):
                 continue  # "the library is quiet but the hall next to it is burning": its own word, then the anchor
             if donor is not None:
                 for c in seg_cues[donor]:
@@ -6083,6 +6082,11 @@ _FIRST_WAS_RIGHT_STARTS = frozenset(key[0] for key in _FIRST_WAS_RIGHT)
 def _first_was_right_at(norms: tuple[str, ...], i: int) -> bool:
     """Does one of ``_FIRST_WAS_RIGHT`` begin at token ``i``?"""
     return norms[i] in _FIRST_WAS_RIGHT_STARTS and any(norms[i:i + len(key)] == key for key in _FIRST_WAS_RIGHT)
+
+
+def _anchored_at(q: PlaceMention, landmark: str) -> bool:
+    """Is ``q`` a place reached through a relation with ``landmark`` at its other end?"""
+    return bool(q.via) and q.landmark != landmark and (q.via.startswith(landmark + " ") or q.via.endswith(" " + landmark))
 
 
 _OWNED = "owned:"  # the ``via`` of "the café's car park" (``_possessive_tail``)

@@ -312,6 +312,11 @@ NEUTRAL_PHRASES = ["roof is still on", "roof's still on", "been found safe", "fo
                    "waiting for the all clear", "wait for the all clear", "awaiting the all clear",
                    "until the all clear", "until we get the all clear", "waiting on the all clear"]
 
+# A warning or report taken back by name ("please withdraw my earlier warning"): a false alarm that withdraws
+# the whole report before it.
+_WITHDRAWN_WARNINGS = ["withdraw my earlier warning", "withdraw my warning", "withdraw my earlier report", "withdraw my last",
+                       "withdraw that warning", "withdraw the warning", "withdraw my report"]
+
 # Whole-report "nothing to see" markers that cancel every claim in their sentence.
 FALSE_ALARM = ["false alarm", "never mind", "nevermind", "disregard my last", "disregard the last report",
                "nothing in it", "nothing to it", "just steam", "only steam", "just fog", "only fog", "just mist", "only mist", "extractor fan", "was just a", "was only a",
@@ -333,7 +338,7 @@ FALSE_ALARM = ["false alarm", "never mind", "nevermind", "disregard my last", "d
                "theres nothing", "there is nothing", "i've got nothing", "got nothing here", "all normal",
                "all looks normal", "everything normal", "everything's normal", "it's a long way off",
                "its a long way off", "it's miles away", "its miles away", "it's a long way away", "its a long way away",
-               "withdraw my earlier warning", "withdraw my warning", "withdraw my earlier report", "withdraw my last", "withdraw that warning", "withdraw the warning", "withdraw my report"]
+               *_WITHDRAWN_WARNINGS]
 # ... unless the words after them go on to say what there is none of ("there's nothing left of it", "it's nothing
 # serious", "there's nothing we can do")
 FALSE_ALARM_NOT_BEFORE = {"left", "serious", "major", "like", "but", "we", "i", "you", "they", "else", "more", "to",
@@ -343,17 +348,13 @@ DISMISSED_BEFORE = {"it's a bonfire", "its a bonfire", "it's just a bonfire", "i
                     "its a barbecue", "is stood down", "been stood down", "was stood down", "are stood down", "was a mannequin",
                     "was a dummy", "was a training dummy", "was a barbecue", "was a bbq", "was a bonfire",
                     "was someone's barbecue"}
-# ... of which these withdraw an earlier report: only what comes before them in the sentence is denied
-PREVIOUS_REPORT_WITHDRAWN = {"disregard my last", "disregard the last report", "ignore my last", "cancel my last",
-                             "disregard my last message", "disregard previous", "never mind", "nevermind",
-                             "disregard all of it", "disregard all of that", "disregard all that", "ignore all of that",
-                             "ignore all of it", "ignore me",
-                             "withdraw my earlier warning", "withdraw my warning", "withdraw my earlier report", "withdraw my last", "withdraw that warning", "withdraw the warning", "withdraw my report"}
-
 # ... of which these withdraw everything said before them, in earlier sentences as well
 WHOLE_REPORT_WITHDRAWN = {"disregard all of it", "disregard all of that", "disregard all that", "ignore all of that",
-                          "ignore all of it", "ignore me",
-                          "withdraw my earlier warning", "withdraw my warning", "withdraw my earlier report", "withdraw my last", "withdraw that warning", "withdraw the warning", "withdraw my report"}
+                          "ignore all of it", "ignore me", *_WITHDRAWN_WARNINGS}
+# ... and these, with those, an earlier report: only what comes before them in the sentence is denied
+PREVIOUS_REPORT_WITHDRAWN = {"disregard my last", "disregard the last report", "ignore my last", "cancel my last",
+                             "disregard my last message", "disregard previous", "never mind", "nevermind",
+                             *WHOLE_REPORT_WITHDRAWN}
 
 # Self-repair markers. Strong ones reach back into the previous sentence.
 STRONG_REPAIR = [
@@ -1011,6 +1012,9 @@ OTHER_TIMES = [("this", "morning"), ("earlier",), ("yesterday",), ("last", "nigh
 AREA_HEADS = {"square", "green", "street", "precinct", "quay", "quayside", "marketplace", "plaza", "common", "prom",
               "promenade", "seafront", "front", "estate", "high"}
 
+# Who may be the subject of "came down from": people moving from a place, no thing fallen from it.
+MOVING_PEOPLE = LAY_PERSONS | {"who", "us", "we", "they", "everyone", "everybody", "folk"}
+
 # What people do when they need help ("people on the balconies shouting").
 DISTRESS_VERBS = {"shouting", "yelling", "screaming", "waving", "crying", "banging", "calling", "hammering"}
 
@@ -1030,9 +1034,8 @@ VICTIM_NOUNS = {"victims", "victim", "survivors", "evacuees", "refugees"}
 ROUTE_PREPOSITIONS = {"through", "via", "onto", "along", "across", "past", "towards", "toward", "by", "into", "of", "over"}
 
 # Verbs that make the person before them the one telling ("a man in the cafe says ..."), not one to rescue.
-TELLING_VERBS = {"say", "says", "said", "swear", "swears", "swore", "reckon", "reckons", "reckoned", "tell", "tells",
-                 "told", "report", "reports", "reported", "claim", "claims", "claimed", "insist", "insists", "insisted",
-                 "rang", "phoned", "texted", "radioed"}
+TELLING_VERBS = HEARSAY_VERBS - {"think", "thinks", "thought", "hear", "heard"} | {
+    "swore", "tells", "insisted", "rang", "phoned", "texted", "radioed"}
 
 # What a speaker says to contradict what they were told: "... but it isn't", "it's still standing".
 CONTRADICTIONS = [("it", "isnt"), ("its", "not"), ("it", "wasnt"), ("it", "is", "not"), ("its", "still", "standing"),
