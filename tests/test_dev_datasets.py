@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev42) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev43) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -64,6 +64,7 @@ HOSPITAL_TOWER = ROOT / "knowledge_bases" / "hospital_tower"
 COUNTY_PRISON = ROOT / "knowledge_bases" / "county_prison"
 COAST_ROAD = ROOT / "knowledge_bases" / "coast_road"
 FOREST_PARK = ROOT / "knowledge_bases" / "forest_park"
+DOCKSIDE = ROOT / "knowledge_bases" / "dockside_estate"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -238,6 +239,13 @@ SETS = {
     "dev42/riverbend": _set("dev42/riverbend.jsonl", RIVERBEND, "d42r",
                             {"standard": 20, "messy": 20, "advanced_messy": 20}),
     "dev42/forest_park": _set("dev42/forest_park.jsonl", FOREST_PARK, "d42f", THIRTY),
+    "dev43/market_square": _set("dev43/market_square.jsonl", MARKET_SQUARE, "d43m",
+                                {"standard": 20, "messy": 40, "advanced_messy": 30}),
+    "dev43/market_square_b": _set("dev43/market_square_b.jsonl", MARKET_SQUARE, "d43b",
+                                  {"standard": 25, "messy": 35, "advanced_messy": 30}),
+    "dev43/riverbend": _set("dev43/riverbend.jsonl", RIVERBEND, "d43r",
+                            {"standard": 25, "messy": 35, "advanced_messy": 30}),
+    "dev43/dockside_estate": _set("dev43/dockside_estate.jsonl", DOCKSIDE, "d43d", THIRTY),
 }
 
 
