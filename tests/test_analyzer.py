@@ -2704,3 +2704,78 @@ def test_dev42_forest_park(kb_analyzers, text, expected):
 def test_people_hurt_and_places_left(kb_analyzers, analyzer, kb, text, expected):
     an = analyzer if kb == "ms" else kb_analyzers[kb]
     assert claims(an, text) == expected
+
+
+@pytest.mark.parametrize("kb,text,expected", [
+    # a dismissal said as "was only ...", an echoed rumour withdrawn, a danger that has not happened yet
+    ("ms", "the smoke by the church earlier was only the caretaker burning leaves, all out now", []),
+    ("riverbend", "the smoke I called in at the mill was only them burning off brash", []),
+    ("ms", "heard the hotel's on fire, is that right? my aunt is staying there", []),
+    ("ms", "earlier I reported a casualty at the bank, that was wrong, it was a man asleep on the steps", []),
+    ("ms", "keep people back from the garage, there's fuel stored there. Nothing's happened yet.", []),
+    # a correction said later, and by another ("he says it's not the bank, it's the bakery")
+    ("ms", "Smoke at the bank. The manager says it's not the bank, it's the bakery.", [("bakery", "hazard")]),
+    ("ms", "water in the cellar of the, of the bank. Caller rang back: it's not the bank, it's the hotel.",
+     [("hotel", "hazard")]),
+    ("riverbend", "I thought it was the quarry but it's the mill that's on fire", [("mill", "threat")]),
+    ("riverbend", "the rest centre's at the school, the academy, no wait, they moved it, it's at the abbey",
+     [("abbey", "shelter")]),
+    ("ms", "Correction on the school: it's no longer a rest centre, the roof is sagging", [("school", "hazard")]),
+    ("ms", "The bank, we'd marked it as a hot zone, but it's been checked, it's our staging area now.",
+     [("bank", "safe_zone")]),
+    # who the people are and where they came from; where the speaker works
+    ("riverbend", "Landlady at the Red Lion, it's warm and dry here and we've got ten folk from the almshouses in",
+     [("red lion", "shelter")]),
+    ("ms", "Families from the flats have been taken in at the hotel.", [("hotel", "safe_zone")]),
+    ("ms", "the children from the school are trapped on the first floor", [("school", "victim")]),
+    ("ms", "I run the bakery. The fire's spread into our kitchen.", [("bakery", "hazard")]),
+    # a place said untouched and then used; a danger it was kept from
+    ("ms", "The library's unaffected and we're using it as a reception centre.", [("library", "safe_zone")]),
+    ("ms", "the school is untouched by the flood, it's the rest centre now", [("school", "safe_zone")]),
+    ("ms", "evacuees are at the supermarket, a safe distance from the fire", [("supermarket", "safe_zone")]),
+    ("ms", "someone said the church was burning. It isn't, it's smoke drifting from somewhere else.", []),
+    # vocabulary: shelter, people hurt, dangers
+    ("ms", "folk are bedding down in St Mary's tonight", [("church", "safe_zone")]),
+    ("ms", "people can wait it out in the storehouse", [("warehouse", "safe_zone")]),
+    ("ms", "the clerk at the post office took a nasty knock to the head", [("post office", "victim")]),
+    ("ms", "a delivery driver snapped his leg at the side of the garage", [("garage", "victim")]),
+    ("riverbend", "a child went through the ice on the green", [("village green", "casualty")]),
+    ("riverbend", "a worker at the sawmill has lost two fingers", [("timber yard", "casualty")]),
+    ("riverbend", "someone's gone under at the jetty and not come up", [("ferry landing", "casualty")]),
+    ("riverbend", "priority one patient at the tannery with chemical burns", [("tannery", "casualty")]),
+    ("riverbend", "a boy scalded by a burst pipe in the brewhouse", [("brewery", "casualty")]),
+    ("ms", "the water tower's split and the road outside is a river", [("water tower", "hazard")]),
+    ("riverbend", "the river's coming in under the door of the Red Lion", [("red lion", "threat")]),
+    ("ms", "the flat upstairs has come down into the chemist's", [("pharmacy", "hazard")]),
+    # things that are no claim: a speaker's role, a fire in a hearth, waiting for a road to clear, a comparison
+    ("riverbend", "flood warden here, the academy is open as the rest centre", [("academy", "shelter")]),
+    ("riverbend", "I'm at the mill gate waiting for the road to clear", []),
+    ("ms", "the fire's lit at the hotel and the doors are open, it's a warm space", [("hotel", "safe_zone")]),
+    ("ms", "flames higher than the water tower at the warehouse", [("warehouse", "hazard")]),
+    ("ms", "the school and the library: both sound, safe to occupy.", [("library", "safe_zone"), ("school", "safe_zone")]),
+    ("ms", "my son's at the library for after school club and he's hurt his arm", [("library", "victim")]),
+    ("ms", "we're at the hotel, two casualties on the second floor", [("hotel", "victim")]),
+    ("ms", "we're not opening the church as a rest centre after all, the school is open and warm",
+     [("school", "safe_zone")]),
+    ("riverbend", "gritting the road past the caravan park and there's smoke coming from the mill",
+     [("mill", "threat")]),
+])
+def test_dev43_phenomena(kb_analyzers, analyzer, kb, text, expected):
+    an = analyzer if kb == "ms" else kb_analyzers[kb]
+    assert claims(an, text) == expected
+
+
+@pytest.mark.parametrize("text,expected", [
+    # an unseen KB: a nickname without its article, the first word of a name, a list's shared adjective
+    ("I live in toast rack, water is coming in our kitchen", [("brunel court", "flood_and_fall")]),
+    ("the bin chute fire at Kestrel has spread", [("kestrel tower", "flames_and_fumes")]),
+    ("my uncle went to fix his car in the lock-ups and he is not come back", [("viaduct garages", "help_needed")]),
+    ("three cars burning under the arches", [("viaduct garages", "flames_and_fumes")]),
+    ("water's come up over the playground at the primary school", [("wharf lane primary school", "flood_and_fall")]),
+    ("the snake's ok, it's the adventure that's flooded", [("jubilee adventure playground", "flood_and_fall")]),
+    ("I'm scared the cladding might come off onto the tyre park", []),
+    ("a lad's burnt his hands trying to put out the fire at the boatyard",
+     [("mercer's boatyard", "flames_and_fumes"), ("mercer's boatyard", "help_needed")]),
+])
+def test_dev43_dockside_estate(kb_analyzers, text, expected):
+    assert claims(kb_analyzers["dockside_estate"], text) == expected

@@ -333,8 +333,13 @@ class ReportAnalyzer:
         # 2. words listed in category descriptions, e.g. "(fire, gas, collapse, flooding)"
         for cat in self.kb.categories:
             for inner in re.findall(r"\(([^)]*)\)", cat.description):
-                for part in re.split(r",|;|\bor\b|\band\b", inner):
+                shared = None  # "(burning bins, cars, tyres, a gas leak)": "burning" goes with the bare nouns after it
+                for n, part in enumerate(re.split(r",|;|\bor\b|\band\b", inner)):
                     key = norm_phrase(part)
+                    if n == 0 and len(key) == 2 and key[0].endswith("ing"):
+                        shared = key[0]
+                    elif shared is not None and len(key) == 1 and not key[0].endswith("ing"):
+                        key = (shared, key[0])
                     if 0 < len(key) <= 3 and not (set(key) & {"e", "g", "eg", "etc"}):
                         entries[key] = (cat.name, "category")
         # 2b. a list after a colon or a dash: "Structural damage - collapsed or loose masonry, fallen trees"; the
@@ -627,7 +632,9 @@ class ReportAnalyzer:
             heading = (a == 0 or toks.sentence_start[a]) and b < len(norms) and toks.gaps[b].strip().startswith(":")
             if norms[a:b] in self._needs_article and prev not in lx.DETERMINERS | {"our", "your", "my", "his", "her"} \
                     and not acronym and not heading and not self._telegraphic_subject(toks, norms, a, b) \
-                    and not (log and (b - a >= 2 or prev in lx.PREPOSITIONS and len(norms[a]) >= 5)):
+                    and not (log and (b - a >= 2 or prev in lx.PREPOSITIONS and len(norms[a]) >= 5)) \
+                    and not (b - a >= 2 and prev in ("in", "at", "from") and a >= 2 and norms[a - 2] in ("live", "living", "lives", "stay", "staying")):
+                # ("I live in toast rack, number 14": the article a learner of the language leaves out)
                 # the KB wrote "the tower": "bell tower" is not it (a log drops articles: "fire LPG plant",
                 # "leak at bldg at mouth of galleria")
                 continue
@@ -653,6 +660,14 @@ class ReportAnalyzer:
                     and all(norm_phrase(f)[-1:] != norms[a:b] or f.lower().endswith("s") for f in
                             self.kb.landmark_by_name[landmark].surface_forms):
                 continue  # "a customer's fainted in there, flat on the floor": the singular of "flats", no name
+            if prev == "after" and b < len(norms) and norms[b] in ("club", "clubs", "care", "activities", "session"):
+                continue  # "he's at the library for after school club": when, not where
+            if b - a == 1 and not raw.endswith("s") and (
+                    b < len(norms) and norms[b] in ("upstair", "downstair", "upstairs", "downstairs", "above", "below", "overhead")
+                    or prev == "whole") \
+                    and all(norm_phrase(f)[-1:] != norms[a:b] or f.lower().endswith("s") for f in
+                            self.kb.landmark_by_name[landmark].surface_forms):
+                continue  # "the whole flat upstairs has come down through it": one home, not the "flats"
             if b - a == 1 and prev in ("a", "an", "one") and not raw.endswith("s") and all(
                     f.lower().endswith("s") for f in self.kb.landmark_by_name[landmark].surface_forms
                     if norm_phrase(f)[-1:] == norms[a:b]):
@@ -732,6 +747,7 @@ class ReportAnalyzer:
         self._apply_hesitation_chains(ex, norms)
         self._apply_first_was_right(ex, norms)
         self._apply_written_corrections(ex)
+        self._apply_mistaken_first(ex, norms)
         self._apply_confirmations(ex, norms)
         self._apply_transit(ex)
         self._apply_cut_off(ex, norms)
@@ -871,7 +887,10 @@ class ReportAnalyzer:
             word = norms[i]
             # "...; both are marked safe": "both" opening its clause before its verb
             bare = word == "both" and i not in taken and toks.clause_start[i] and i > 0 \
-                and norms[i + 1:i + 2] in (("are",), ("were",), ("have",), ("had",), ("need",), ("look",), ("re",))
+                and (norms[i + 1:i + 2] in (("are",), ("were",), ("have",), ("had",), ("need",), ("look",), ("re",))
+                     or i + 1 < len(norms) and (self._cues.match_at(norms, i + 1) is not None
+                                                or norms[i + 1] in lx.PREDICATIVE_CUES)
+                     and any(d in toks.gaps[i] for d in (":", "—", "–", " - ", "--")))  # ("the library and the school: both sound")
             of_them = word in ("both", "neither") and norms[i + 1:i + 3] in (("of", "them"), ("of", "those"),
                                                                               ("of", "these"))
             every = bare or of_them
@@ -1067,11 +1086,17 @@ class ReportAnalyzer:
                 continue
             contracted = toks.tokens[i].text.lower().endswith(("'s", "’s"))
             raw = toks.tokens[i].text.lower()
+            if i + 2 < len(norms) and norms[i + 1] in ("at", "of") and not contracted \
+                    and any(t in taken for t in range(i + 2, min(len(norms), i + 5))):
+                continue  # "the playground at the primary school": that place's own, not the adventure playground
             if raw.endswith("s") and not contracted and not raw.endswith("ss") and raw != w and not any(
                     name_words(f)[-1:] and f.lower().rstrip().endswith("s")
                     for f in self.kb.landmark_by_name[self._heads[w]].surface_forms):
                 continue  # "walking wounded off the trails": many trails, not the one "skyline trail"
-            said_of = contracted or i + 1 >= len(norms) or toks.clause_start[i + 1] or norms[i + 1] in lx.COPULAS
+            said_of = contracted or i + 1 >= len(norms) or toks.clause_start[i + 1] or norms[i + 1] in lx.COPULAS \
+                or norms[i + 1] in ("and", "but") and norms[i + 2:i + 3] in (
+                    ("theres",), ("there",), ("its",), ("it",), ("i",), ("we",), ("hes",), ("shes",), ("theyre",))
+            # ("collapsed across the yard and there's a lad pinned under it": a clause of its own follows)
             if w in lx.UNNAMING_HEADS or (w in lx.GENERIC_HEADS or w in lx.DESCRIPTION_HEADS) and (i - 1) not in rel_ends \
                     and not (said_of and (w in lx.GENERIC_HEADS and (contracted or w not in lx.DESCRIPTION_HEADS)
                                           or w in self._sole_heads and w not in lx.UNNAMING_HEADS
@@ -1207,8 +1232,11 @@ class ReportAnalyzer:
             for form in lm.surface_forms:
                 key = name_words(form)[:-1]
                 last = key[-1] if key else ""
-                if any(f" {' '.join(key)} " in d for name, d in described.items() if name != lm.name):
+                own = [" " + " ".join(name_words(f)) + " " for f in lm.surface_forms] if len(key) == 1 else []
+                if any(f" {' '.join(key)} " in functools.reduce(lambda t, o: t.replace(o, " "), own, d)
+                       for name, d in described.items() if name != lm.name):
                     continue  # "at High Garth farm" in other places' descriptions: the name of something larger
+                    # (not this landmark's own name there: "the laundrette at the foot of Kestrel Tower")
                 if len(owners.get(key, ())) == 1 and key not in whole and len(last) >= 4 and last.isalpha() \
                         and last not in banned and not _direction_word(last) \
                         and not (len(key) == 1 and self._name_word_owners.get(last, set()) != {lm.name}):
@@ -1228,7 +1256,7 @@ class ReportAnalyzer:
                 end = i + n
                 if len(key) < n or key not in self._headless_forms or any(j in taken for j in range(i, end)):
                     continue
-                if n == 1 and (toks.sentence_start[i] or norms[i - 1] != "the"):
+                if n == 1 and (toks.sentence_start[i] or norms[i - 1] not in ("the", "at", "in", "inside", "from", "not")):
                     continue  # (one capitalised word where a sentence starts, or "Mr Rowley", names no place)
                 if not all(toks.tokens[j].text[:1].isupper() for j in range(i, end)):
                     continue  # ("the valley primary concern": a plain phrase, not a name)
@@ -1453,7 +1481,8 @@ class ReportAnalyzer:
                 # named before; "a firefighter at the fire hall reports ... across the road from his station"
                 mine = [p for p in places if p.end_tok <= i - 1 and p.status == "active" and any(
                     name_words(f)[-1:] == (norms[i],) for f in self.kb.landmark_by_name[p.landmark].surface_forms)]
-                if not mine and norms[i - 1] in ("my", "our") and norms[i] in ("building", "place", "premises"):
+                if not mine and norms[i - 1] in ("my", "our") and norms[i] in ("building", "place", "premises", "storeroom",
+                                                                          "stockroom", "kitchen", "cellar", "shop"):
                     # "I'm at the pharmacy. The shop our building's built onto": where the speaker is
                     mine = [p for p in places if p.end_tok <= i - 1 and p.status == "active"
                             and self._speaker_here(norms, p)]
@@ -1620,11 +1649,13 @@ class ReportAnalyzer:
             words = {w for bucket in self._relations._by_first.values() for key, _ in bucket for w in key}
             words |= set(lx.GENERIC_HEADS)
             # and the danger and person words of the vocabulary ("an old man colapsed by the counter")
-            words |= {w for key in self._cue_keys() for w in key if len(w) >= 6}
+            cue_words = {w for key in self._cue_keys() for w in key}
+            words |= {w for w in cue_words if len(w) >= 6}
             named = {key for key, _ in self._name_keys()} | {
                 w for lm in self.kb.landmarks for form in lm.surface_forms for w in name_words(form)}
             self._respellings = sorted(w for w in words - named if len(w) >= self.RESPELL_MIN_CHARS and w.isalpha())
             self._named_words = named
+            self._vocabulary_words = cue_words  # ("bedding down" is no slip of "bending")
             self._to_after = {key[i] for bucket in self._relations._by_first.values() for key, _ in bucket
                               for i in range(len(key) - 1) if key[i + 1] == "to"}
         known = self.embedder.vocabulary()
@@ -1646,7 +1677,7 @@ class ReportAnalyzer:
                 fixed[t.i] = replace(t, norm="to")  # "the building next too the clinic"
                 continue
             if len(w) < self.RESPELL_MIN_CHARS or not w.isalpha() or w in known or t.text.lower() in known \
-                    or w in self._named_words:
+                    or w in self._named_words or w in self._vocabulary_words:
                 continue
             hits = [r for r in self._respellings if r[0] == w[0] and abs(len(r) - len(w)) <= 1 and _one_edit(w, r)
                     and not w.startswith(r) and not r.startswith(w)]  # ("fenced" is no slip of "fence")
@@ -1751,6 +1782,9 @@ class ReportAnalyzer:
             if words == ("no", "no") and b < len(norms) and not pause_after and self._cues.match_at(norms, b) is not None:
                 b -= 1  # "No, no fire.": the second "no" negates the cue; the first answers
                 words, nxt, pause_after = words[:1], norms[b], True
+            if words in (("correction",),) and nxt in ("on", "about", "regarding", "re") \
+                    and toks.sentence_start[a]:
+                continue  # "Correction on the sports hall as well: ...": news of that place, no repair of the last
             if words[-1:] in (("no",), ("nope",)) and all(w in lx.FILLERS for w in words[:-1]):
                 # ("uh no casualties": a filler before it changes nothing)
                 # "no, the bakery" / "no no" is a repair; "no fire" / "no one" is negation;
@@ -1774,6 +1808,10 @@ class ReportAnalyzer:
                     continue
                 if not (toks.clause_start[a] or pause_after or nxt in ("the", "its", "it", "make")):
                     continue
+                if words == ("wait",) and not toks.clause_start[a] and a > 0 \
+                        and norms[a - 1] in lx.PLAN_WORDS | {"and", "please", "just", "we", "they", "you", "people"} \
+                        and nxt in ("it", "for", "in", "at", "here", "there", "inside"):
+                    continue  # "people can wait it out in the storehouse", "we'll wait for you at the gate": the verb
             out.append((a, b, strong))
         # adjacent markers ("no, actually", "sorry, I mean", "no, sorry") act as one
         merged: list[tuple[int, int, bool]] = []
@@ -2096,6 +2134,8 @@ class ReportAnalyzer:
                 if not (between[0] in lx.PREPOSITIONS | lx.RELATION_ENDINGS | lx.DESCRIPTION_OPENERS
                         or between[0].endswith(("s", "ed", "ing"))):
                     continue  # "a tank wagon on the siding": the noun goes on, it heads nothing
+                if between[0] == "past":
+                    continue  # "gritting the hill road past the caravan park": a way that goes by it, no relation
             else:
                 # "the tube the shaft draws from": the linking verb comes after the anchor
                 if norms[head] in lx.WHATEVER or head == 0 or norms[head - 1] not in lx.ARTICLES:
@@ -2737,7 +2777,13 @@ class ReportAnalyzer:
     @classmethod
     def _speaker_here(cls, norms: tuple[str, ...], p: PlaceMention) -> bool:
         """The place the speaker says they are at: "I'm at the pharmacy", "Coastguard lookout here"."""
-        return cls._speaker_at(norms, p) or norms[p.end_tok:p.end_tok + 1] == ("here",)
+        if cls._speaker_at(norms, p) or norms[p.end_tok:p.end_tok + 1] == ("here",):
+            return True
+        j = p.start_tok - 1
+        while j >= 0 and norms[j] in lx.DETERMINERS | lx.FILLERS:
+            j -= 1
+        # "I run the ironmonger's", "we manage the hotel": the speaker's own place
+        return j >= 1 and norms[j] in ("run", "own", "manage", "keep") and norms[j - 1] in ("i", "we")
 
     def _head_before(self, toks: Tokens, norms: tuple[str, ...], head_end: int, place_tokens: set[int],
                      marker_tokens: set[int]) -> tuple[int, list[str]]:
@@ -2942,6 +2988,19 @@ class ReportAnalyzer:
                 return cands[int(order[0])]
         return None, None
 
+    def _desirable_cue_in_sentence(self, toks: Tokens, norms: tuple[str, ...], start: int) -> bool:
+        """A cue of the desirable role follows ``start`` in its sentence ("the school is unaffected and we're using it
+        as the rest centre": said to be untouched and then used, not the place denied)."""
+        sent = toks.sentence_of[start] if start < len(norms) else None
+        for k in range(start, len(norms)):
+            if toks.sentence_of[k] != sent:
+                return False
+            h = self._cues.match_at(norms, k)
+            if h is not None and h[1][0] in self.kb.category_by_name \
+                    and self.kb.category_by_name[h[1][0]].role == Role.DESIRABLE:
+                return True
+        return False
+
     def _apply_place_negation(self, ex: Extraction) -> None:
         toks = ex.tokens
         norms = toks.norms(0, len(toks))
@@ -2958,10 +3017,11 @@ class ReportAnalyzer:
             tail = norms[p.end_tok : p.end_tok + 4]
             if tail[:1] == ("itself",):  # "Square itself unaffected."
                 tail = norms[p.end_tok + 1 : p.end_tok + 5]
+            untouched = tail[:1] in (("untouched",), ("unaffected",)) \
+                or tail[:2] in ((v, w) for v in ("is", "was", "s") for w in ("untouched", "unaffected"))
             not_the_one = tail[:3] in (("isnt", "the", "one"), ("wasnt", "the", "one"), ("aint", "the", "one")) \
                 or tail[:4] in (("is", "not", "the", "one"), ("s", "not", "the", "one"), ("was", "not", "the", "one")) \
-                or tail[:1] in (("untouched",), ("unaffected",)) \
-                or tail[:2] in ((v, w) for v in ("is", "was", "s") for w in ("untouched", "unaffected")) \
+                or untouched and not self._desirable_cue_in_sentence(toks, norms, p.end_tok) \
                 or tail[:2] in ((v, w) for v in ("isnt", "wasnt", "not") for w in ("affected", "involved")) \
                 or tail[:3] in ((v, "not", w) for v in ("is", "was", "s") for w in ("affected", "involved"))
             if j < 0 and not_the_one:
@@ -2997,6 +3057,9 @@ class ReportAnalyzer:
             after = norms[p.end_tok : p.end_tok + 2]
             if norms[j] in ("take", "taking", "took") and after[:1] and after[0] in ("off", "out", "back", "away"):
                 neg = True  # "take the garage off that list"
+            if neg and norms[j] in ("isnt", "wasnt", "arent", "werent") and any(
+                    d in toks.gaps[i] for i in range(j + 1, p.start_tok + 1) for d in ("—", "–", "--", " - ")):
+                neg = False  # "says the bridge is the safe way but it isn't - the crossing below the mill is cracking"
             if not_the_one:
                 neg = True  # "the school isn't the one"
             if neg and any(ma <= j < mb for ma, mb, _ in ex.markers) and norms[j + 1 : j + 2] == ("that",):
@@ -3032,6 +3095,11 @@ class ReportAnalyzer:
                            and (q.start_tok - p.end_tok <= 3 or q.start_tok - p.end_tok <= 8 and not any(
                                toks.sentence_start[i] for i in range(p.end_tok, q.start_tok + 1)))),
                           key=lambda q: q.start_tok, default=None)
+                if not earlier and not corrects and norms[j] == "not" and j > 0 \
+                        and norms[j - 1] in ("its", "s", "is", "was", "thats") and nxt is not None \
+                        and set(norms[p.end_tok:nxt.start_tok]) & {"its", "it", "thats"}:
+                    corrects = True  # "Fire at the bank. ... he says it's not the bank, it's the bakery": said as
+                    # a correction, of the bank said before
                 if corrects:
                     # "16:12 T2 corrects previous msg: NOT lower field, it was the upper caravan field": a
                     # correction retracts the place from any earlier sentence when a place said next, in this
@@ -3094,6 +3162,27 @@ class ReportAnalyzer:
                 ex.places[i] = replace(r, status="retracted", reason=reason)
             elif new is not None and same(r, new) and r.replaces is None:
                 ex.places[i] = replace(r, replaces=old.start_tok)
+
+    def _apply_mistaken_first(self, ex: Extraction, norms: tuple[str, ...]) -> None:
+        """"I thought it was the pit but it's, it's the pump house": what the speaker first took it for is taken
+        back, and the place after "but it's" takes its claims."""
+        toks = ex.tokens
+        for p in sorted((q for q in ex.places if q.status == "active"), key=lambda q: q.start_tok):
+            j = p.start_tok
+            while j > 0 and norms[j - 1] in lx.DETERMINERS:
+                j -= 1
+            if not (j >= 3 and norms[j - 3:j] in (("thought", "it", "was"), ("thought", "that", "was"),
+                                                   ("thought", "it", "s"), ("assumed", "it", "was"))):
+                continue
+            after = norms[p.end_tok:p.end_tok + 3]
+            if after[:1] != ("but",) or not ({"its", "it", "thats"} & set(after[1:])):
+                continue
+            nxt = min((q for q in ex.places if q.status == "active" and q.landmark != p.landmark
+                       and p.end_tok < q.start_tok <= p.end_tok + 10
+                       and toks.sentence_of[q.start_tok] == toks.sentence_of[p.start_tok]),
+                      key=lambda q: q.start_tok, default=None)
+            if nxt is not None:
+                self._take_back(ex, p, nxt, f"mistaken at first, then '{nxt.text}'")
 
     @staticmethod
     def _struck_tokens(toks: Tokens) -> set[int]:
@@ -3279,6 +3368,42 @@ class ReportAnalyzer:
                         break  # "dont go to the bakery, theres a fire": a warning about the place, not a move
                     ex.places[idx] = replace(p, status="reference", reason=f"in transit ('{hit[1]}'): no claim")
                     break
+        # "that long shed in front of the park — the park the flats look across at": the reference point said again
+        # to describe it is still only the reference point
+        for idx, p in enumerate(ex.places):
+            if p.status != "active" or p.via is not None:
+                continue
+            j = p.start_tok
+            while j > 0 and norms[j - 1] in lx.DETERMINERS:
+                j -= 1
+            ref = next((q for q in ex.places if q.status == "reference" and q.landmark == p.landmark and q.via is None
+                        and 0 <= j - q.end_tok <= 2 and all(norms[i] in lx.FILLERS for i in range(q.end_tok, j))
+                        and any(d in toks.gaps[i] for i in range(q.end_tok, j + 1) for d in ("—", "–", "--", " - ", ","))
+                        and q.reason.startswith("reference point:")), None)
+            own = p.end_tok >= len(norms) or norms[p.end_tok] in lx.COPULAS | lx.ANAPHOR_VERBS | {"itself"} \
+                or toks.tokens[p.end_tok - 1].text.lower().endswith(("'s", "’s")) or toks.clause_start[p.end_tok]
+            if ref is not None and not own:  # (not "..., the park is safe though": said of it)
+                ex.places[idx] = replace(p, status="reference", reason=f"the reference point said again ({ref.text})")
+        # "we've got twenty folk from the almshouses in already", "kids from the primary": where people came from is
+        # no claim, unless what follows says what is wrong with them there ("the kids from the school are stuck
+        # on the first floor")
+        starts = {q.start_tok for q in ex.places}
+        for idx, p in enumerate(ex.places):
+            if p.status != "active" or p.via is not None:
+                continue
+            j = p.start_tok
+            while j > 0 and norms[j - 1] in lx.DETERMINERS:
+                j -= 1
+            if j >= 2 and norms[j - 1] == "than" and norms[j - 2] in lx.COMPARATIVES:
+                ex.places[idx] = replace(p, status="reference", reason="a comparison: no claim")
+                continue  # "flames going higher than the arches"
+            if not (j >= 2 and norms[j - 1] == "from" and norms[j - 2] in lx.ORIGIN_PEOPLE):
+                continue
+            ahead = range(p.end_tok, min(len(norms), p.end_tok + 12))
+            stop = next((i for i in ahead if i in starts or toks.sentence_start[i]), ahead.stop)
+            if any(self._person_cue_at(norms, i) for i in range(p.end_tok, stop)):
+                continue
+            ex.places[idx] = replace(p, status="reference", reason="where people came from: no claim")
         # "and the deanery, well, we haven't been to the deanery yet": a place not visited yet, and the same
         # place said just before as what the clause is about, claim nothing
         for idx, p in enumerate(ex.places):
@@ -3772,6 +3897,24 @@ class ReportAnalyzer:
             if norms[a:b] == ("clear",) and toks.sentence_start[a] and b < len(norms) \
                     and norms[b] in ("everyone", "everybody", "people", "all", "out", "the", "them"):
                 continue  # "Clear everyone out of the building": an order, not a place said to be clear
+            k = a - 1
+            while k >= 0 and norms[k] in lx.ARTICLES:
+                k -= 1
+            if k >= 3 and norms[k] == "as" and norms[k - 1] == "it" and norms[k - 2] in ("marked", "had", "flagged", "logged") \
+                    and (norms[k - 2] == "had" or norms[k - 3] in ("wed", "had", "d", "theyd", "id")):
+                continue  # "we'd marked it as a hot zone, but ... it's stable": what it was taken for before
+            if self.kb.category_by_name[cat].role == Role.DESIRABLE and k >= 0 and norms[k] == "as" and any(
+                    norms[v] in ("opening", "open", "using", "use", "setting", "set", "designating", "keeping")
+                    and any(norms[m] in ("not", "nt", "never", "arent", "wont", "isnt", "dont") for m in range(max(0, v - 2), v))
+                    for v in range(max(0, k - 8), k)):
+                continue  # "we're not opening the food bank as a rest centre after all": what it will not be
+            if norms[b - 1] == "clear" and norms[b:b + 2] == ("on", "the") and b + 2 < len(norms) and any(
+                    (h := self._cues.match_at(norms, m)) is not None and h[1][0] in self.kb.category_by_name
+                    and self.kb.category_by_name[h[1][0]].role == Role.UNDESIRABLE for m in range(b + 2, min(len(norms), b + 5))):
+                continue  # "all clear on the tyre fire at Doyle's": the danger is over, no place said safe
+            if norms[a:b] == ("clear",) and a >= 3 and norms[a - 1] == "to" and any(
+                    norms[m] in ("waiting", "wait", "waited", "for") for m in range(max(0, a - 6), a - 1)):
+                continue  # "waiting for the road to clear": not clear yet
             if self._kept_clear_for(toks, norms, a):
                 continue  # "keep the road clear for the aerial ladder coming down from the fire station": who it is for
             undesirable = self.kb.category_by_name[cat].role == Role.UNDESIRABLE
@@ -3782,6 +3925,8 @@ class ReportAnalyzer:
                                        reason="the cause of an injury"))
                 continue
             if undesirable and self._danger_not_here(norms, a, b):
+                continue
+            if undesirable and self._danger_kept_off(norms, a, b):
                 continue
             if norms[a:b] == ("flooded", "out") and norms[b:b + 1] == ("of",):
                 continue  # "families flooded out of their homes": who they are, no place flooded
@@ -3866,7 +4011,7 @@ class ReportAnalyzer:
             if cue.category == self._person_category and norms[a:b] in (("gone", "under"), ("going", "under"),
                                                                          ("went", "under")) \
                     and any(i in self._place_tokens for i in range(max(0, a - 3), a)) \
-                    and not any(norms[i] in lx.PERSON_SUBJECTS for i in range(max(0, a - 3), a)):
+                    and not any(norms[i] in lx.PERSON_SUBJECTS or norms[i] in _PERSON_WORDS for i in range(max(0, a - 3), a)):
                 und = self._category_for_role(lx.UNDESIRABLE, "flooded, under water")
                 if und is not None:  # "whatever the Fleece looks out over has gone under": the place, flooded
                     cue = replace(cue, category=und, reason="a place gone under")
@@ -3874,6 +4019,9 @@ class ReportAnalyzer:
                     norms[j] in ("it", "its") for j in range(max(0, a - 3), a)) \
                     and not any(norms[j] in lx.PERSON_SUBJECTS for j in range(max(0, a - 3), a)):
                 continue  # "it's got a span down, it's hanging in the water": a thing in the water, no person
+            if norms[b:b + 1] in (("burns",), ("burn",), ("inhalation",)) and cue.category != self._person_category \
+                    and self.kb.category_by_name[cue.category].role == Role.UNDESIRABLE:
+                continue  # "chemical burns to the face", "acid burns": the injury, the person's claim
             if "knocked" in norms[a:b] and any(norms[j] in ("that", "it", "its", "thats", "fire", "flames")
                                                for j in range(max(0, a - 3), a)):
                 continue  # "the station had a fire earlier but that's been knocked down": the fire put out
@@ -4348,6 +4496,10 @@ class ReportAnalyzer:
                 continue  # "we were told it had blown, but that's wrong": taken back at once, no claim to guess at
             if any(norms[i:i + len(key)] == key for _, key in _FALSE_ALARM_KEYS for i in range(a, b)):
                 continue  # "it's just fog round the bell tower": a dismissal is no claim to guess at
+            sent = [i for i in range(len(norms)) if toks.sentence_of[i] == toks.sentence_of[p.start_tok]]
+            if {norms[i] for i in sent} & {"scared", "worried", "afraid", "fear", "frightened"} \
+                    and {norms[i] for i in range(a, b)} & {"might", "could", "may", "will", "ll"}:
+                continue  # "I'm scared the cladding might come off onto the playground": feared, no claim to guess at
             if self._says_who_and_where(toks, norms, p):
                 continue  # "Scaffolder on the roof of the hotel, over.": who is calling and from where
             if self._kept_clear_for(toks, norms, p.start_tok):
@@ -4637,7 +4789,9 @@ class ReportAnalyzer:
                     if earlier is not None:
                         start, first = earlier, earlier
                 words = [w for w in norms[a:b] if w not in lx.FILLERS]
-                if words[-2:] in (["or", "no"], ["or", "not"], ["or", "what"]) or any(
+                if words[-2:] in (["or", "no"], ["or", "not"], ["or", "what"]) \
+                        or [w for w in norms[a:b] if w not in lx.FILLERS - {"right"}][-3:] in (["is", "that", "right"], ["is", "that", "true"], ["is", "it", "true"],
+                                          ["is", "that", "correct"]) or any(
                         words[i:i + 3] in (["want", "to", "ask"], ["wanted", "to", "ask"], ["can", "i", "ask"])
                         for i in range(len(words))):
                     asked.update(range(a, b))  # "the fire, it is at the garage or no?": the whole sentence asks
@@ -4770,7 +4924,9 @@ class ReportAnalyzer:
                     places = {p.start_tok for p in places_now}
                     but = next((j for j in range(i + len(key), len(norms)) if sentence_of[j] == sentence_of[i]
                                 and norms[j] in ("but", "however", "whereas")
-                                and any(t in places for t in range(j + 1, min(len(norms), j + 12)))), None)
+                                and (any(t in places for t in range(j + 1, min(len(norms), j + 12)))
+                                     or norms[j + 1:j + 2] in (("theres",), ("there",)))), None)
+                    # ("it was just the alarm going, but there's a dude in there who's cut his hand": news after it)
                     if but is not None and until == len(norms):
                         until = but
                     # "someone trapped in the supermarket but no, false alarm — it's the gym, someone's trapped
@@ -4919,6 +5075,8 @@ class ReportAnalyzer:
                 if k > 0 and (norms[k - 1] in ("not", "nt", "isnt", "hasnt", "wasnt", "never")
                               or norms[k - 1] == "been" and k > 1 and norms[k - 2] in ("not", "hasnt", "havent")):
                     break  # "fire at the bakery is NOT knocked down": the cancellation denied
+                if k > 1 and norms[k - 1] == "to" and norms[k - 2] in ("trying", "try", "tried", "tries", "attempting"):
+                    break  # "a lad's burnt his hands trying to put it out": tried, not done
                 cancelled_by = h[1]
                 break
             undesirable = self.kb.category_by_name[cue.category].role == Role.UNDESIRABLE
@@ -5053,6 +5211,22 @@ class ReportAnalyzer:
         return (a >= 2 and norms[a - 1] == "for" and any(norms[m] in lx.CHECK_VERBS for m in range(max(0, a - 4), a - 1))
                 or norms[max(0, a - 2):a] == ("from", "the") and norms[b:b + 1] in (("area",), ("zone",), ("site",))
                 or a >= 2 and ("cleared", "of") in (norms[a - 2:a], norms[a - 3:a - 1]))
+
+    def _danger_kept_off(self, norms: tuple[str, ...], a: int, b: int) -> bool:
+        """A danger word at ``a:b`` that a place is kept from: "untouched by the flood", "a safe distance from the
+        fire", "well away from the smoke" (no place named right after it: "away from the fire at the bakery" says
+        where the fire is)."""
+        j = a - 1
+        while j >= 0 and norms[j] in lx.ARTICLES:
+            j -= 1
+        kept = j >= 1 and a - j <= 3 and norms[j] == "by" and norms[j - 1] in ("untouched", "unaffected", "spared", "unharmed", "undamaged") \
+            or j >= 1 and a - j <= 3 and norms[j] == "from" and norms[j - 1] in (
+                "distance", "away", "far", "safe", "clear", "sheltered", "protected", "shielded")
+        if not kept:
+            after = norms[b:b + 6]
+            return any(after[i:i + 3] == ("from", "somewhere", "else") or after[i:i + 2] == ("from", "elsewhere")
+                       for i in range(len(after)))  # "it's just smoke blowing over from somewhere else"
+        return not any(i in self._place_tokens for i in range(b, min(len(norms), b + 4)))
 
     @staticmethod
     def _kept_clear_for(toks: Tokens, norms: tuple[str, ...], a: int) -> bool:
@@ -5258,7 +5432,7 @@ class ReportAnalyzer:
                                 and q.start_tok > p.end_tok and toks.sentence_of[q.start_tok] == toks.sentence_of[p.start_tok]
                                 and [w for w in norms[max(0, q.start_tok - 3):q.start_tok] if w not in lx.ARTICLES][-1:]
                                 in (["its"], ["is"])), None)
-                elif nxt is None and p.reason.startswith(("false start", "restarted")):
+                elif nxt is None and p.reason.startswith(("false start", "restarted", "self-repair of '")):
                     # "fire at the hot-- / ... / hotel": a name cut off or said again is the same place, named
                     # in full later
                     nxt = next((q for q in usable if q.landmark == p.landmark and q.start_tok > p.start_tok), None)
@@ -5347,9 +5521,19 @@ class ReportAnalyzer:
                 # ("but it's flooded out, so ...": the cue's own word; "man down, warehouse" still leads on)
                 nxt = k + 1
                 skipped = 0
+                taken_back = None
                 while nxt < len(segs) and (nxt in hollow or (not seg_places.get(nxt) and not seg_cues.get(nxt) and skipped < 2)):
+                    taken_back = next((went for q in ex.places if q.status == "retracted" and q.reason.startswith("then '")
+                                       and segs[nxt][0] <= q.start_tok < segs[nxt][1]
+                                       and (went := forward(q)) is not None), None)
+                    if taken_back is not None:
+                        break  # "flooding in the basement of the, of the bank ... it's not the bank, it's the hotel"
                     skipped += nxt not in hollow
                     nxt += 1
+                if taken_back is not None:
+                    pairs.extend(Claim(taken_back, c) for c in cs)
+                    claimed_places.add(taken_back.start_tok)
+                    continue
                 if seg_places.get(nxt):
                     pairs.extend(Claim(p, c) for p in seg_places[nxt] for c in cs)
                     claimed_places.update(p.start_tok for p in seg_places[nxt])
@@ -5371,13 +5555,23 @@ class ReportAnalyzer:
                 continue
             first_at = next((i for i in range(a, b) if norms[i] not in lx.FILLERS and norms[i] not in ("and", "so")), b)
             first = norms[first_at] if first_at < b else ""
-            if first in ("it", "its", "there", "thats", "theres") and k > 0:
+            storey = first not in ("it", "its", "there", "thats", "theres") and any(
+                norms[i] in lx.STOREY_WORDS and ("on", "the") in (norms[i - 2:i], norms[i - 3:i - 1])
+                for i in range(max(a, 3), b))  # ("we're at the guest house, two casualties on the second floor")
+            if (first in ("it", "its", "there", "thats", "theres") or storey) and k > 0:
                 # "standing by at the garage, it is safe": a position names the place the pronoun claims
                 # ("we're at the bank and it's on fire"; "We're at the bank. It's on fire.")
                 opens = toks.sentence_start[first_at] if first_at < b else False
-                here = [p for p in ex.places if p.reason.startswith("in transit") and segs[k - 1][0] <= p.start_tok < a
+                back = k - 1
+                while back > 0 and k - back < 3 and not seg_places.get(back) and not seg_cues.get(back) \
+                        and not any(segs[back][0] <= ma < segs[back][1] for ma, _, _ in ex.markers):
+                    back -= 1  # ("we're at the health centre, and the doctors say it's safe": past who says so)
+                here = [p for p in ex.places if p.reason.startswith("in transit") and segs[back][0] <= p.start_tok < a
                         and not (first in ("there", "theres")
                                  and p.reason.endswith((" to'): no claim", " towards'): no claim")))  # (where one goes)
+                        and not (p.reason.startswith(("in transit ('past'", "in transit ('passing'"))
+                                 and "from" in [norms[i] for i in range(a, len(norms)) if sentence_of[i] == sentence_of[a]])
+                        # ("past the caravan park and there's smoke, loads of smoke, from the -": from somewhere else)
                         and (sentence_of[p.start_tok] == sentence_of[a]
                              or opens and sentence_of[p.start_tok] == sentence_of[a] - 1)]
                 if here and not seg_usable.get(k - 1):
@@ -5522,8 +5716,8 @@ class ReportAnalyzer:
                                                   and q.status == "active" for q in ex.places):
                 continue  # "im outside the school the school yard is the assembly point ...": where the caller stands
             tail = [w for w in norms[p.end_tok:segs[k][1]] if w not in lx.FILLERS]
-            if (tail[:1] in (["dry"], ["untouched"], ["unaffected"]) or tail[:2] in (["is", "dry"], ["s", "dry"],
-                                                                                     ["still", "dry"])) \
+            if (tail[:1] in (["dry"], ["untouched"], ["unaffected"], ["solid"]) or tail[:2] in (
+                    ["is", "dry"], ["s", "dry"], ["still", "dry"], ["is", "solid"], ["s", "solid"], ["still", "solid"])) \
                     and len(seg_places.get(k, [])) == 1:
                 continue  # "the gift shop, that's where the water's coming in... the tea room's dry": its own word
             if tail[:1] and tail[0] in ("evacuated", "evacuating", "closed", "shut", "locked") and len(tail) <= 2 \
@@ -5540,6 +5734,11 @@ class ReportAnalyzer:
                 continue  # "the hotel's got the gas leak, the bank's just got its alarm ringing": a predicate of its own
             donor = self._donor_for_places(k, segs, seg_places, seg_cues, sentence_of, hollow,
                                            [self._opening(norms, a, b) for a, b in segs])
+            if donor is not None and any(q.landmark == p.landmark and q.start_tok >= p.start_tok
+                                         and sentence_of[q.start_tok] == sentence_of[p.start_tok]
+                                         and set(norms[q.end_tok:q.end_tok + 2]) & {"fine", "okay", "ok", "alright", "grand"}
+                                         for q in ex.places):
+                continue  # "the snake is -- nah nah the snake's ok -- its the adventure thats flooded"
             if donor is not None and tail[:1] and tail[0] in lx.COPULAS | {"looks", "seems", "has", "got"} and any(
                     _anchored_at(q, p.landmark) for q in seg_places.get(donor, [])):
                 continue  # "the library is quiet but the hall next to it is burning": its own word, then the anchor
@@ -6001,7 +6200,8 @@ class ReportAnalyzer:
             if seg_places.get(j):
                 start = next(i for i in range(segs[j][0], -1, -1) if i == 0 or sentence_of[i - 1] != n)
                 words = [w for w in norms[start:segs[j][1]] if w not in lx.FILLERS]
-                said_alone = sent_words.get(n, 99) <= 3 or _place_fragment(n, seg_places[j], sentence_of, norms)
+                said_alone = sent_words.get(n, 99) <= 3 or _place_fragment(
+                    n, [q for qs in seg_places.values() for q in qs if sentence_of[q.start_tok] == n], sentence_of, norms)
                 own = [w for w in norms[segs[j][0]:segs[j][1]] if w not in lx.FILLERS]
                 named = words[:2] in (["it", "is"], ["this", "is"]) or words[:1] in (["its"], ["thats"]) \
                     or own[:2] == ["its", "the"] \
@@ -6058,7 +6258,7 @@ class ReportAnalyzer:
 
 _FRAGMENT_WORDS = frozenset(lx.STOREY_WORDS | lx.PART_NOUNS | lx.LOCATIVE_PARTS) | {
     "ground", "first", "second", "third", "top", "upper", "lower", "back", "inside", "outside", "upstairs",
-    "downstairs", "room", "number", "flat", "one", "two", "three", "four", "five", "six"}
+    "downstairs", "room", "number", "flat", "one", "two", "three", "four", "five", "six", "corner"}
 
 
 def _place_fragment(n: int, places: list[PlaceMention], sentence_of: list[int], norms: tuple[str, ...]) -> bool:

@@ -32,6 +32,9 @@ def _add(role: str, phrases: str) -> None:
 
 
 _add(UNDESIRABLE, """
+come crashing down|came crashing down|crashing down|crashed down|crashed through|handrail's gone|handrail has gone|railings have gone|railing's gone|bridge is shaking|it's shaking|s shaking|
+water all over it|water all over the|water's got into|water has got into|water got into|river's coming in|river is coming in|river coming in|water is coming in|water's coming in|water coming in|water is getting in|water's getting in|water pouring in|
+walkway s twisting|is twisting|s twisting|bolts pinging|going to go|s going to go|
 fire|fires|on fire|burning|burnt|burned|burned out|burnt out|blaze|blazing|ablaze|flames|flame|in flames|
 engulfed|inferno|smoke|smoking|smoky|smoke everywhere|thick smoke|fumes|toxic fumes|
 gas|gas leak|leaking gas|smell of gas|smells of gas|leak|leaking|explosion|exploded|explosive|blast|
@@ -112,6 +115,8 @@ sending people there|moving evacuees there|send them there|
 undamaged|casualty clearing point|casualty clearing post|casualty clearing centre|clearing point|
 treatment area|treatment centre|treatment center|treatment point|treatment tent|stand-down area|stand down area|
 stand-down point|designated holding area|
+rest point|rest area|letting people in|free tea|free food|bedding down|bedded down|been taken in at|been taken in by|taken in at|feeding station|feeding centre|rendezvous|rendezvous with|
+can stay put|can stay where they are|stay put in there|no risk there|is no risk|s no risk|wait it out|wait it out in|sit it out in|safe to stay|
 """.replace("\n", ""))
 
 _add(CRITICAL, """
@@ -191,6 +196,14 @@ had a fall|has had a fall|taken a fall|had a nasty fall|tripped over|tripped and
 slipped over|slipped on|cut by|been cut|needs evacuating|need evacuating|needs moving|need moving|needs moving out|
 need moving out|needs getting out|need getting out|needs carrying out|need carrying out|hit by falling|
 hit by a falling|struck by falling|struck by a falling|overdosed|taken an overdose|
+snapped his leg|snapped her leg|snapped his arm|snapped her arm|snapped his ankle|snapped her ankle|snapped his wrist|snapped her wrist|
+knock to the head|knock on the head|taken a knock|took a knock|blow to the head|gone dizzy|went dizzy|feeling dizzy|come over dizzy|
+can't get his wheelchair|can't get her wheelchair|cannot get his wheelchair|cannot get her wheelchair|can't get up the stairs|can't manage the stairs|
+there's folk in|theres folk in|folk in them|folk in there|people in them|there's people in|theres people in|folk still in|
+gone in off the|someone's gone in|somebody's gone in|went in off the|gone in the water|went in the water|
+not come back|is not come back|look for him|look for her|search for him|search for her|had a fit|s had a fit|not with it|
+cut badly|cut really badly|lot of blood|lots of blood|loads of blood|who's fallen|
+through the ice|lost a finger|lost two fingers|lost his fingers|lost her fingers|lost some fingers|severed|mangled|
 """.replace("\n", ""))
 
 # "collapsed" alone is structural (hazard); "collapsed inside" / "passed out" is a person.
@@ -302,6 +315,11 @@ NEUTRAL_PHRASES = ["roof is still on", "roof's still on", "been found safe", "fo
                    "smoke alarm", "smoke alarms", "smoke machine", "smoke machines", "fog machine", "haze machine", "fire alarm", "fire alarms", "fire exit", "fire escape",
                    "fire brigade", "fire crew", "fire engine", "fire truck", "fire service", "fire department",
                    "fire team", "firefighter", "firefighters", "fire fighter", "fire fighters", "fire hydrant",
+                   "fire's lit", "fire is lit", "fires lit", "lit the fire", "wood burner",
+                   "quiet now", "is quiet", "all quiet", "walked home", "gone home", "went home", "got himself out",
+                   "got herself out", "got themselves out",
+                   "flood warden", "flood wardens", "fire warden", "fire wardens", "fire marshal", "fire marshals",
+                   "fire officer", "fire officers", "flood team", "flood officer", "flood defence team",
                    "fire door", "gas mask", "gas masks", "gas company", "gas board", "gas man", "gas men",
                    "gas engineer", "gas engineers", "gas crew", "gas team", "gas network", "gas fitter",
                    "hazmat crew", "hazmat team", "hazmat unit", "hazmat officer", "hazmat crews", "hazmat teams",
@@ -338,6 +356,9 @@ FALSE_ALARM = ["false alarm", "never mind", "nevermind", "disregard my last", "d
                "theres nothing", "there is nothing", "i've got nothing", "got nothing here", "all normal",
                "all looks normal", "everything normal", "everything's normal", "it's a long way off",
                "its a long way off", "it's miles away", "its miles away", "it's a long way away", "its a long way away",
+               "was only the", "was only them", "was just them", "were only", "was only someone", "was only some",
+               "ignore it", "all sorted", "nothing's happened yet", "nothing has happened yet", "nothing happened yet",
+               "nothing's fallen yet", "nothing has fallen yet", "nothing's come down yet", "nothing has come down yet", "it's all sorted", "that was wrong",
                *_WITHDRAWN_WARNINGS]
 # ... unless the words after them go on to say what there is none of ("there's nothing left of it", "it's nothing
 # serious", "there's nothing we can do")
@@ -370,6 +391,8 @@ STRONG_REPAIR = [
     "what am i on about", "i'm getting mixed up", "im getting mixed up", "getting mixed up", "i've got that wrong",
     "ive got that wrong", "got that wrong", "hold up", "edit", "corrects her", "corrects him", "corrected her",
     "corrected him", "corrects me", "corrected me", "rewind", "back up", "start again", "let me start again",
+    "change of plan", "change of plans", "plans have changed", "withdrawing that", "i'm withdrawing that",
+    "i withdraw that", "i take that back", "tell a lie", "wrong block",
 ]
 WEAK_REPAIR = ["sorry", "actually", "or rather", "rather", "wait", "no", "nope", "nah", "naw", "er no", "uh no", "well no",
                "oops", "whoops", "hang on", "hold on"]
@@ -511,7 +534,8 @@ GENERIC_HEADS = {
 }
 
 FILLERS = {"uh", "um", "er", "erm", "ah", "eh", "hmm", "like", "so", "okay", "ok", "well", "yeah", "right",
-           "just", "basically", "kinda", "sorta", "literally", "over", "copy", "roger", "base", "team"}
+           "just", "basically", "kinda", "sorta", "literally", "over", "copy", "roger", "base", "team",
+           "whatsit", "wotsit", "thingy", "thingummy", "whatchamacallit", "whatsitsname"}
 # Words a speaker may drop inside a cue phrase without changing it ("roof's partly down", "on, uh, fire").
 CUE_SKIPPABLE = {"uh", "um", "er", "erm", "ah", "eh", "hmm", "like", "partly", "partially", "completely", "totally",
                  "fully", "badly", "really", "very", "now", "still", "already", "entirely", "half", "kinda", "sorta",
@@ -548,7 +572,7 @@ COPULAS = {"is", "are", "was", "were", "s", "re", "has", "have", "had", "got", "
            "confirmed", "showing", "shows", "looking", "sounds", "sound", "feels", "very", "really",
            "pretty", "quite", "heavily", "seriously", "apparently", "probably", "possibly", "maybe"}
 # Adjectives that are cues only when used predicatively ("the library is sound", "bank is red").
-PREDICATIVE_CUES = {"sound": DESIRABLE, "green": DESIRABLE, "red": UNDESIRABLE}
+PREDICATIVE_CUES = {"sound": DESIRABLE, "green": DESIRABLE, "red": UNDESIRABLE, "split": UNDESIRABLE}
 # ... and these only where the KB's description of a category of that role uses the word ("A dry, safe place")
 DESCRIBED_PREDICATIVE_CUES = {"dry": DESIRABLE}
 
@@ -604,7 +628,8 @@ TRANSIT = ["people in off", "taking people in off", "in off the", "walked up fro
            "standing down at",
            "about to check", "searching", "sweeping", "en route", "route via", "routing via", "routed via",
            "route through", "routing through", "routed through", "go via", "called out to", "been called out to", "got called out to", "keep clear of", "stay clear of",
-           "keep away from", "stay away from", "keep everyone away from", "keep people away from"]
+           "keep away from", "stay away from", "keep everyone away from", "keep people away from",
+           "got everyone out onto", "everyone out onto", "got everyone out into", "got them out onto"]
 
 # Head nouns of a description of a landmark ("the building with the two engine bays").
 DESCRIPTION_HEADS = {"building", "place", "shop", "store", "tower", "block", "house", "hall", "premises", "structure",
@@ -1018,8 +1043,18 @@ MOVING_PEOPLE = LAY_PERSONS | {"who", "us", "we", "they", "everyone", "everybody
 # What people do when they need help ("people on the balconies shouting").
 DISTRESS_VERBS = {"shouting", "yelling", "screaming", "waving", "crying", "banging", "calling", "hammering"}
 
+# People said to come from a place ("twenty folk from the almshouses"): the place is where they came from.
+# (as the tokenizer normalises them: "families" -> "familie", "residents" -> "resident")
+ORIGIN_PEOPLE = {"people", "folk", "resident", "familie", "family", "evacuee", "guest", "kid", "children", "pupil",
+                 "everyone", "everybody", "patient", "survivor", "tenant", "villager", "camper", "local",
+                 "occupant", "staff", "neighbour", "neighbor", "passenger", "customer", "shopper", "visitor"}
+
+# Comparatives before "than": "flames higher than the arches" measures by a place, claims nothing of it.
+COMPARATIVES = {"higher", "taller", "bigger", "larger", "worse", "further", "farther", "closer", "nearer",
+                "deeper", "louder", "brighter", "more", "less", "above", "over"}
+
 # Verbs of being hurt by something ("hit by falling slates"): what follows "by" is the cause, not a claim.
-INJURY_VERBS = {"hit", "hurt", "injured", "struck", "cut", "knocked"}
+INJURY_VERBS = {"hit", "hurt", "injured", "struck", "cut", "knocked", "scalded", "burned", "burnt", "caught", "wounded"}
 
 # Verbs of checking a place for a danger ("checked it for gas"): the danger looked for, not found.
 CHECK_VERBS = {"checked", "checking", "check", "tested", "testing", "test", "swept", "sweeping", "monitored", "monitoring",
