@@ -2759,6 +2759,21 @@ def test_people_hurt_and_places_left(kb_analyzers, analyzer, kb, text, expected)
      [("school", "safe_zone")]),
     ("riverbend", "gritting the road past the caravan park and there's smoke coming from the mill",
      [("mill", "threat")]),
+    # where people were taken and what a relative clause is said of; a shop joined on; a body part
+    ("riverbend", "the campsite's been evacuated up to the quarry car park, which is safe ground", [("quarry", "shelter")]),
+    ("ms", "the shop stuck to the side of the bakery, no, the bakery itself, is burning", [("bakery", "hazard")]),
+    ("ms", "a worker's fallen through the roof of the warehouse", [("warehouse", "victim")]),
+    ("ms", "a pensioner's had a funny turn at the bank", [("bank", "victim")]),
+    ("ms", "there's a diabetic having a hypo in the library", [("library", "victim")]),
+    ("riverbend", "water's lapping at the doors of the almshouses", [("almshouses", "threat")]),
+    ("riverbend", "the abbey is open for anyone flooded out", [("abbey", "shelter")]),
+    ("riverbend", "she's at the surgery, no, she's at home, in the almshouses, and she can't breathe",
+     [("almshouses", "casualty")]),
+    ("ms", "We're at the bank. Fire on the top floor.", [("bank", "hazard")]),
+    ("ms", "fire in the hardware store, wait, no, that's the bakery's smoke blowing over, the hardware store is fine",
+     [("bakery", "hazard")]),
+    ("ms", "a man collapsed at the cafe, and the church across, no, it's fine", [("cafe", "victim")]),
+    ("riverbend", "someone said a kid fell in at the weir, that's not right, we counted them all", []),
 ])
 def test_dev43_phenomena(kb_analyzers, analyzer, kb, text, expected):
     an = analyzer if kb == "ms" else kb_analyzers[kb]
@@ -2774,6 +2789,10 @@ def test_dev43_phenomena(kb_analyzers, analyzer, kb, text, expected):
     ("water's come up over the playground at the primary school", [("wharf lane primary school", "flood_and_fall")]),
     ("the snake's ok, it's the adventure that's flooded", [("jubilee adventure playground", "flood_and_fall")]),
     ("I'm scared the cladding might come off onto the tyre park", []),
+    ("smoke in the bin store at Kestrel, and old Mr Khan at the bungalows has collapsed",
+     [("kestrel tower", "flames_and_fumes"), ("salt quay bungalows", "help_needed")]),
+    ("the towpath's under", [("basin towpath", "flood_and_fall")]),
+    ("the pub that watches over the lock is letting people in, it's warm", [("lock keeper's arms", "rally_point")]),
     ("a lad's burnt his hands trying to put out the fire at the boatyard",
      [("mercer's boatyard", "flames_and_fumes"), ("mercer's boatyard", "help_needed")]),
 ])

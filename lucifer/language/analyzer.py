@@ -664,7 +664,7 @@ class ReportAnalyzer:
                 continue  # "he's at the library for after school club": when, not where
             if b - a == 1 and not raw.endswith("s") and (
                     b < len(norms) and norms[b] in ("upstair", "downstair", "upstairs", "downstairs", "above", "below", "overhead")
-                    or prev == "whole") \
+                    or prev in ("whole", "his", "her", "their")) \
                     and all(norm_phrase(f)[-1:] != norms[a:b] or f.lower().endswith("s") for f in
                             self.kb.landmark_by_name[landmark].surface_forms):
                 continue  # "the whole flat upstairs has come down through it": one home, not the "flats"
@@ -2529,6 +2529,10 @@ class ReportAnalyzer:
                     e += 1
             words = {w for w in norms[s_:e] if w not in lx.DESCRIPTION_STOPWORDS and w not in closed}
             scores = sorted(((len(words & ws), name) for name, ws in desc.items()), reverse=True)
+            head_of = {name for name, ws in desc.items() if norms[i] in ws} if norms[i] not in lx.DESCRIPTION_STOPWORDS else set()
+            if scores and head_of and scores[0][1] not in head_of:
+                i += 1  # "the pub that watches over whatever lets the water down": a pub, whatever else it shares
+                continue
             if scores and scores[0][0] >= 2 and (len(scores) == 1 or scores[0][0] > scores[1][0]):
                 a = s_ - 1 if has_det else s_
                 while e - 1 > i and norms[e - 1] in lx.DETERMINERS:
@@ -3165,8 +3169,22 @@ class ReportAnalyzer:
 
     def _apply_mistaken_first(self, ex: Extraction, norms: tuple[str, ...]) -> None:
         """"I thought it was the pit but it's, it's the pump house": what the speaker first took it for is taken
-        back, and the place after "but it's" takes its claims."""
+        back, and the place after "but it's" takes its claims. "she's at the doctors', no, she's at home, ... in the
+        almshouses": a repair to a place the KB does not name takes the one before back all the same."""
         toks = ex.tokens
+        for ma, mb, _ in ex.markers:
+            k = mb
+            while k < len(norms) and (norms[k] in lx.FILLERS or norms[k] in lx.PERSON_SUBJECTS | {"were", "im", "is", "s"}):
+                k += 1
+            if norms[k:k + 2] not in (("at", "home"), ("in", "bed"), ("at", "work")):
+                continue
+            last = max((q for q in ex.places if q.status == "active" and q.end_tok <= ma and ma - q.end_tok <= 3
+                        and toks.sentence_of[q.start_tok] == toks.sentence_of[ma]), key=lambda q: q.end_tok, default=None)
+            if last is not None:
+                nxt = min((q for q in ex.places if q.status == "active" and k + 2 <= q.start_tok <= k + 10
+                           and q.landmark != last.landmark and toks.sentence_of[q.start_tok] == toks.sentence_of[ma]),
+                          key=lambda q: q.start_tok, default=None)
+                self._take_back(ex, last, nxt, f"self-repair: '{norms[k]} {norms[k + 1]}', no place the KB names")
         for p in sorted((q for q in ex.places if q.status == "active"), key=lambda q: q.start_tok):
             j = p.start_tok
             while j > 0 and norms[j - 1] in lx.DETERMINERS:
@@ -3908,6 +3926,9 @@ class ReportAnalyzer:
                     and any(norms[m] in ("not", "nt", "never", "arent", "wont", "isnt", "dont") for m in range(max(0, v - 2), v))
                     for v in range(max(0, k - 8), k)):
                 continue  # "we're not opening the food bank as a rest centre after all": what it will not be
+            if norms[a:b] in (("stuck",), ("attached",)) and norms[b:b + 1] in (("to",), ("onto",)) and not any(
+                    norms[m] in _PERSON_WORDS or norms[m] in lx.PERSON_SUBJECTS for m in range(max(0, a - 3), a)):
+                continue  # "the shop stuck to the side of the bread shop": joined on, no one stuck
             if norms[b - 1] == "clear" and norms[b:b + 2] == ("on", "the") and b + 2 < len(norms) and any(
                     (h := self._cues.match_at(norms, m)) is not None and h[1][0] in self.kb.category_by_name
                     and self.kb.category_by_name[h[1][0]].role == Role.UNDESIRABLE for m in range(b + 2, min(len(norms), b + 5))):
@@ -3928,7 +3949,8 @@ class ReportAnalyzer:
                 continue
             if undesirable and self._danger_kept_off(norms, a, b):
                 continue
-            if norms[a:b] == ("flooded", "out") and norms[b:b + 1] == ("of",):
+            if norms[a:b] == ("flooded", "out") and (norms[b:b + 1] == ("of",) or a > 0 and norms[a - 1] in lx.ORIGIN_PEOPLE
+                                                      | {"anyone", "anybody", "those", "families", "the"}):
                 continue  # "families flooded out of their homes": who they are, no place flooded
             if norms[b - 1] == "fall" and norms[b:b + 1] == ("of",):
                 continue  # "the top bench has had a fall of ground": a fall of rock, no person's fall
@@ -4366,7 +4388,12 @@ class ReportAnalyzer:
         if j > 0 and norms[j - 1] in ("mr", "mrs", "ms", "miss", "dr", "keeper", "nurse", "officer", "sister"):
             return True  # "keeper Mills has collapsed": a name after a title
         counted = j > 0 and (norms[j - 1] in lx.NUMBER_WORDS or norms[j - 1].isdigit())
-        return counted and w.endswith(("er", "ent", "ist", "or", "ian"))
+        if counted and w.endswith(("er", "ent", "ist", "or", "ian")):
+            return True
+        # "old Mr Reid at the end cottage has collapsed": the person before where they are
+        at = next((m for m in range(j - 1, max(-1, j - 5), -1) if norms[m] in ("at", "in", "inside")), None)
+        return at is not None and at > 1 and norms[at - 2] in ("mr", "mrs", "ms", "miss", "dr") and not any(
+            norms[m] in lx.STRUCTURE_WORDS for m in range(at, j + 1))  # (a named person only)
 
     PAIR_LINKS = {"is", "are", "s", "re", "was", "were", "has", "have", "been", "still", "now", "all", "badly"}
 
@@ -4471,7 +4498,7 @@ class ReportAnalyzer:
         all_cues = getattr(self, "_all_cues_now", [])
         kept = []
         norms = toks.norms(0, len(toks))
-        negated = {i for i, w in enumerate(norms) if w in lx.NEGATORS or w in ("couldnt", "wouldnt", "wont", "shouldnt")
+        negated = {i for i, w in enumerate(norms) if w in lx.NEGATORS or w in ("couldnt", "wouldnt", "wont", "shouldnt", "stopped")
                    or w in ("evacuated", "evacuating")}  # ("the water treatment works has been evacuated": no guess)
         for a, b, _ in self._negators.find_all(norms):
             negated.update(range(a, b))
@@ -4731,7 +4758,9 @@ class ReportAnalyzer:
                                      "structurally", "totally", "all", "thats", "its", "theyre", "whos")
                     or i in ends and (i + 1 >= len(norms) or toks.clause_start[i + 1] or after in lx.COORDINATORS)):
                 continue  # ("in the HGV park, green liquid running": an adjective of what follows)
-            cat = self._category_for_role(role, w)
+            if w == "under" and not (i + 1 >= len(norms) or toks.clause_start[i + 1]) or w == "under" and i not in ends:
+                continue  # "the towpath's under.": flooded; not "the fire is under control"
+            cat = self._category_for_role(role, "flooded, under water" if w == "under" else w)
             if cat:
                 t = toks.tokens[i]
                 out.append(CueMention(i, i + 1, t.start, t.end, t.text, cat, "lexicon"))
@@ -5556,7 +5585,8 @@ class ReportAnalyzer:
             first_at = next((i for i in range(a, b) if norms[i] not in lx.FILLERS and norms[i] not in ("and", "so")), b)
             first = norms[first_at] if first_at < b else ""
             storey = first not in ("it", "its", "there", "thats", "theres") and any(
-                norms[i] in lx.STOREY_WORDS and ("on", "the") in (norms[i - 2:i], norms[i - 3:i - 1])
+                (norms[i] in lx.STOREY_WORDS and ("on", "the") in (norms[i - 2:i], norms[i - 3:i - 1])
+                 or norms[i] in ("first", "second", "third", "fourth", "fifth", "top") and norms[i - 2:i] == ("on", "the"))
                 for i in range(max(a, 3), b))  # ("we're at the guest house, two casualties on the second floor")
             if (first in ("it", "its", "there", "thats", "theres") or storey) and k > 0:
                 # "standing by at the garage, it is safe": a position names the place the pronoun claims
@@ -5566,7 +5596,10 @@ class ReportAnalyzer:
                 while back > 0 and k - back < 3 and not seg_places.get(back) and not seg_cues.get(back) \
                         and not any(segs[back][0] <= ma < segs[back][1] for ma, _, _ in ex.markers):
                     back -= 1  # ("we're at the health centre, and the doctors say it's safe": past who says so)
-                here = [p for p in ex.places if p.reason.startswith("in transit") and segs[back][0] <= p.start_tok < a
+                lower = segs[back][0]
+                if opens and storey:  # ("We're at the guest house, ... . Fire's on the third floor.")
+                    lower = min(lower, next((i for i in range(a) if sentence_of[i] == sentence_of[a] - 1), lower))
+                here = [p for p in ex.places if p.reason.startswith("in transit") and lower <= p.start_tok < a
                         and not (first in ("there", "theres")
                                  and p.reason.endswith((" to'): no claim", " towards'): no claim")))  # (where one goes)
                         and not (p.reason.startswith(("in transit ('past'", "in transit ('passing'"))
@@ -5621,6 +5654,11 @@ class ReportAnalyzer:
                         for i in range(min(q.end_tok for q in told), max(q.start_tok for q in told))):
                     # "The steeple has collapsed into the minster ... a verger is trapped under the rubble in there":
                     # the place the first one fell into
+                    told = [max(told, key=lambda q: q.start_tok)]
+                first_word = next((w for w in norms[a:b] if w not in lx.FILLERS), "")
+                if first_word in ("which", "where") and len(told) > 1 and target == k - 1:
+                    # "the caravan park's been evacuated up to the quarry car park, which is safe ground": the
+                    # relative clause is said of the place right before it
                     told = [max(told, key=lambda q: q.start_tok)]
                 for q in told:
                     if len(seg_usable[target]) > 1 and self._origin(norms, q):
@@ -5736,12 +5774,19 @@ class ReportAnalyzer:
                                            [self._opening(norms, a, b) for a, b in segs])
             if donor is not None and any(q.landmark == p.landmark and q.start_tok >= p.start_tok
                                          and sentence_of[q.start_tok] == sentence_of[p.start_tok]
-                                         and set(norms[q.end_tok:q.end_tok + 2]) & {"fine", "okay", "ok", "alright", "grand"}
+                                         and (set(norms[q.end_tok:q.end_tok + 2]) & {"fine", "okay", "ok", "alright", "grand"}
+                                              and {"its", "thats"} & set(norms[q.end_tok + 1:q.end_tok + 5])
+                                              or any(norms[m] in ("fine", "okay", "ok", "alright") and norms[m - 1] in (
+                                                  "its", "thats") and "no" in norms[q.end_tok:m - 1]
+                                                  for m in range(q.end_tok + 1, min(len(norms), q.end_tok + 5))))
                                          for q in ex.places):
                 continue  # "the snake is -- nah nah the snake's ok -- its the adventure thats flooded"
             if donor is not None and tail[:1] and tail[0] in lx.COPULAS | {"looks", "seems", "has", "got"} and any(
                     _anchored_at(q, p.landmark) for q in seg_places.get(donor, [])):
                 continue  # "the library is quiet but the hall next to it is burning": its own word, then the anchor
+            if donor is not None and next((w for w in norms[segs[donor][0]:segs[donor][1]] if w not in lx.FILLERS), "") \
+                    in ("which", "where") and any(p.end_tok <= q.start_tok < segs[donor][0] for q in active):
+                continue  # "..., evacuated up to the quarry car park, which is safe ground": said of the place before it
             if donor is not None:
                 for c in seg_cues[donor]:
                     if c.start_tok >= counted:
@@ -6014,6 +6059,8 @@ class ReportAnalyzer:
 
     @staticmethod
     def _bind_cost(norms: tuple[str, ...], c: CueMention, p: PlaceMention) -> float:
+        if c.reason == "people were taken there":  # "the caravan park's been evacuated up to the quarry": where to
+            return -10.0 if c.end_tok <= p.start_tok <= c.end_tok + 4 else 10.0
         if c.end_tok <= p.start_tok:  # cue before place: "fire at the bakery"
             between = norms[c.end_tok : p.start_tok]
             glue = all(w in lx.PREPOSITIONS or w in lx.DETERMINERS or w in lx.FILLERS or w in lx.COPULAS for w in between)
@@ -6112,6 +6159,9 @@ class ReportAnalyzer:
                         else None
                 if place is None:
                     continue
+                if any(norms[m] in ("fine", "ok", "okay", "alright", "untouched", "unaffected") and norms[m - 1] in (
+                        "is", "s", "its", "are", "still") for m in range(place.end_tok, min(len(norms), place.end_tok + 3))):
+                    continue  # "the bakery's smoke blowing over, the hardware store is fine": not reached
                 prior = [c for c in cues if c.end_tok <= i and c.polarity == "affirmed" and c.status == "active"
                          and toks.sentence_of[c.start_tok] == toks.sentence_of[i]
                          and self.kb.category_by_name[c.category].role == Role.UNDESIRABLE]

@@ -32,7 +32,8 @@ def _add(role: str, phrases: str) -> None:
 
 
 _add(UNDESIRABLE, """
-come crashing down|came crashing down|crashing down|crashed down|crashed through|handrail's gone|handrail has gone|railings have gone|railing's gone|bridge is shaking|it's shaking|s shaking|
+water's lapping|water lapping|lapping at the doors|full to the rafters|full of water|filled with water|filling with water|filling up with water|
+groaning and tilting|is tilting|s tilting|tilting towards|tilting badly|about to topple|going to topple|come crashing down|came crashing down|crashing down|crashed down|crashed through|handrail's gone|handrail has gone|railings have gone|railing's gone|bridge is shaking|it's shaking|s shaking|
 water all over it|water all over the|water's got into|water has got into|water got into|river's coming in|river is coming in|river coming in|water is coming in|water's coming in|water coming in|water is getting in|water's getting in|water pouring in|
 walkway s twisting|is twisting|s twisting|bolts pinging|going to go|s going to go|
 fire|fires|on fire|burning|burnt|burned|burned out|burnt out|blaze|blazing|ablaze|flames|flame|in flames|
@@ -202,6 +203,7 @@ can't get his wheelchair|can't get her wheelchair|cannot get his wheelchair|cann
 there's folk in|theres folk in|folk in them|folk in there|people in them|there's people in|theres people in|folk still in|
 gone in off the|someone's gone in|somebody's gone in|went in off the|gone in the water|went in the water|
 not come back|is not come back|look for him|look for her|search for him|search for her|had a fit|s had a fit|not with it|
+isn't getting up|isnt getting up|not getting up|won't get up|having a hypo|had a hypo|funny turn|had a turn|dangling from|left dangling|
 cut badly|cut really badly|lot of blood|lots of blood|loads of blood|who's fallen|
 through the ice|lost a finger|lost two fingers|lost his fingers|lost her fingers|lost some fingers|severed|mangled|
 """.replace("\n", ""))
@@ -221,7 +223,7 @@ NEGATOR_PHRASES = ["no one", "no longer", "not any", "free of", "clear of", "no 
                    "refuge from the"]
 
 # Phrases after a hazard cue that cancel it ("the fire is out").
-CANCEL_AFTER = ["hasn't got that far", "hasnt got that far", "not got that far", "hasn't got this far", "hasnt got this far",
+CANCEL_AFTER = ["not any more", "not anymore", "hasn't got that far", "hasnt got that far", "not got that far", "hasn't got this far", "hasnt got this far",
                 "not got this far", "hasn't reached us", "hasnt reached us", "blowing the other way", "blowing away from", "going the other way", "never reached", "didn't reach", "didnt reach", "hasn't reached", "hasnt reached", "never got to",
                 "been cleared", "been cleared away", "been towed", "been towed away", "turned up", "has turned up", "s turned up", "turned up safe", "is out", "s out", "are out", "was out", "put out", "out now", "been put out",
                 "has cleared", "have cleared", "s cleared", "has lifted", "s lifted", "has gone down", "s gone down",
@@ -358,7 +360,7 @@ FALSE_ALARM = ["false alarm", "never mind", "nevermind", "disregard my last", "d
                "its a long way off", "it's miles away", "its miles away", "it's a long way away", "its a long way away",
                "was only the", "was only them", "was just them", "were only", "was only someone", "was only some",
                "ignore it", "all sorted", "nothing's happened yet", "nothing has happened yet", "nothing happened yet",
-               "nothing's fallen yet", "nothing has fallen yet", "nothing's come down yet", "nothing has come down yet", "it's all sorted", "that was wrong",
+               "nothing's fallen yet", "nothing has fallen yet", "nothing's come down yet", "nothing has come down yet", "it's all sorted", "that was wrong it was a", "that was wrong it was just",
                *_WITHDRAWN_WARNINGS]
 # ... unless the words after them go on to say what there is none of ("there's nothing left of it", "it's nothing
 # serious", "there's nothing we can do")
@@ -572,7 +574,7 @@ COPULAS = {"is", "are", "was", "were", "s", "re", "has", "have", "had", "got", "
            "confirmed", "showing", "shows", "looking", "sounds", "sound", "feels", "very", "really",
            "pretty", "quite", "heavily", "seriously", "apparently", "probably", "possibly", "maybe"}
 # Adjectives that are cues only when used predicatively ("the library is sound", "bank is red").
-PREDICATIVE_CUES = {"sound": DESIRABLE, "green": DESIRABLE, "red": UNDESIRABLE, "split": UNDESIRABLE}
+PREDICATIVE_CUES = {"sound": DESIRABLE, "green": DESIRABLE, "red": UNDESIRABLE, "split": UNDESIRABLE, "under": UNDESIRABLE}
 # ... and these only where the KB's description of a category of that role uses the word ("A dry, safe place")
 DESCRIBED_PREDICATIVE_CUES = {"dry": DESIRABLE}
 
@@ -629,7 +631,8 @@ TRANSIT = ["people in off", "taking people in off", "in off the", "walked up fro
            "about to check", "searching", "sweeping", "en route", "route via", "routing via", "routed via",
            "route through", "routing through", "routed through", "go via", "called out to", "been called out to", "got called out to", "keep clear of", "stay clear of",
            "keep away from", "stay away from", "keep everyone away from", "keep people away from",
-           "got everyone out onto", "everyone out onto", "got everyone out into", "got them out onto"]
+           "got everyone out onto", "everyone out onto", "got everyone out into", "got them out onto",
+           "driven round to", "being driven to", "being driven round to", "driven to"]
 
 # Head nouns of a description of a landmark ("the building with the two engine bays").
 DESCRIPTION_HEADS = {"building", "place", "shop", "store", "tower", "block", "house", "hall", "premises", "structure",
@@ -738,8 +741,13 @@ PERSON_NOUNS = ["man", "woman", "person", "someone", "somebody", "firefighter", 
                 "receptionist", "owner", "manager", "caller", "mother", "father", "dad", "mum", "wife", "husband",
                 "son", "daughter", "baby", "pensioner", "visitor", "cleaner", "guard", "volunteer", "medic",
                 "patient", "resident", "worker", "officer", "lady", "guy", "bloke", "fella", "casualty", "boy", "girl",
-                "customer", "driver", "student", "teacher", "nurse", "someone's", "somebody's"]
+                "customer", "driver", "student", "teacher", "nurse", "someone's", "somebody's", "chap", "lad", "roofer",
+                "builder", "labourer", "painter", "climber"]
 for _p in PERSON_NOUNS:
+    ROLE_CUES[f"{_p} fallen through"] = CRITICAL  # ("a worker's fallen through the roof"; a roof that fell is none)
+    ROLE_CUES[f"{_p} has fallen through"] = CRITICAL
+    ROLE_CUES[f"{_p} fell through"] = CRITICAL
+    ROLE_CUES[f"{_p} gone down"] = CRITICAL
     ROLE_CUES[f"{_p} fell down"] = CRITICAL  # ("my teacher fell down"; "the wall fell down" is no person)
     ROLE_CUES[f"{_p} has fallen"] = CRITICAL
     ROLE_CUES[f"{_p} collapsed"] = CRITICAL
@@ -1023,7 +1031,7 @@ for _phrases in DANGER_KINDS.values():
 # Verbs that give a claim as someone else's word, which the speaker may then contradict.
 HEARSAY_VERBS = {"say", "says", "said", "reckon", "reckons", "reckoned", "think", "thinks", "thought", "report", "reported",
                  "reports", "tell", "told", "claim", "claims", "claimed", "insist", "insists", "swear", "swears", "heard",
-                 "hear"}
+                 "hear", "saying", "talk", "rumour", "rumor"}
 
 # Verbs of seeing and hearing: "... at the town hall and I seen the roof of the sports hall fold in".
 PERCEPTION_VERBS = {"seen", "saw", "see", "watched", "watch", "noticed", "notice", "heard", "hear", "spotted", "spot",
@@ -1069,7 +1077,7 @@ VICTIM_NOUNS = {"victims", "victim", "survivors", "evacuees", "refugees"}
 ROUTE_PREPOSITIONS = {"through", "via", "onto", "along", "across", "past", "towards", "toward", "by", "into", "of", "over"}
 
 # Verbs that make the person before them the one telling ("a man in the cafe says ..."), not one to rescue.
-TELLING_VERBS = HEARSAY_VERBS - {"think", "thinks", "thought", "hear", "heard"} | {
+TELLING_VERBS = HEARSAY_VERBS - {"think", "thinks", "thought", "hear", "heard", "talk", "rumour", "rumor"} | {
     "swore", "tells", "insisted", "rang", "phoned", "texted", "radioed"}
 
 # What a speaker says to contradict what they were told: "... but it isn't", "it's still standing".
