@@ -2774,6 +2774,25 @@ def test_people_hurt_and_places_left(kb_analyzers, analyzer, kb, text, expected)
      [("bakery", "hazard")]),
     ("ms", "a man collapsed at the cafe, and the church across, no, it's fine", [("cafe", "victim")]),
     ("riverbend", "someone said a kid fell in at the weir, that's not right, we counted them all", []),
+    # a safe place and a danger said of it that is over, elsewhere or only its past
+    ("ms", "the school is the rest centre, it had a bit of smoke earlier but that's cleared now", [("school", "safe_zone")]),
+    ("ms", "the church was flooded last week but it's dried out, it's safe to use", [("church", "safe_zone")]),
+    ("ms", "people from the fire are at the library, it's safe there", [("library", "safe_zone")]),
+    ("ms", "the cafe's safe, they've put the fire out", [("cafe", "safe_zone")]),
+    ("ms", "the clinic's a safe haven, out of the way of the floodwater", [("clinic", "safe_zone")]),
+    ("ms", "the fire's well away from the library, it's safe for now", [("library", "safe_zone")]),
+    ("ms", "the library is safe, fire's contained to the bakery", [("bakery", "hazard"), ("library", "safe_zone")]),
+    ("ms", "the police station is safe, it's upstream of the flooding", [("police station", "safe_zone")]),
+    ("ms", "the church is fire-proofed and safe to shelter in", [("church", "safe_zone")]),
+    # where a danger comes from; what harmed a person is no danger of the place
+    ("ms", "a man at the bakery reported smoke coming from the bank", [("bank", "hazard")]),
+    ("ms", "a woman at the clinic with smoke in her lungs", [("clinic", "victim")]),
+    ("riverbend", "at the tannery a worker has chemical splashes in his eyes", [("tannery", "casualty")]),
+    ("riverbend", "at the academy a pupil with an asthma attack brought on by the smoke", [("academy", "casualty")]),
+    ("ms", "a lady tripped on the rubble outside the church and broke her wrist", [("church", "victim")]),
+    ("ms", "an old man is confused and wandering at the park", [("park", "victim")]),
+    ("riverbend", "a canoeist's been pulled out of the water at the boathouse", [("boathouse", "casualty")]),
+    ("ms", "the fire crew at the warehouse say the roof is about to go", [("warehouse", "hazard")]),
 ])
 def test_dev43_phenomena(kb_analyzers, analyzer, kb, text, expected):
     an = analyzer if kb == "ms" else kb_analyzers[kb]

@@ -3926,6 +3926,20 @@ class ReportAnalyzer:
                     and any(norms[m] in ("not", "nt", "never", "arent", "wont", "isnt", "dont") for m in range(max(0, v - 2), v))
                     for v in range(max(0, k - 8), k)):
                 continue  # "we're not opening the food bank as a rest centre after all": what it will not be
+            o = b + 1 if b + 1 < len(norms) and norms[b] not in ("in", "on", "to") and norms[b + 1] in ("in", "on") \
+                and norms[b].isalpha() and self._cues.match_at(norms, b) is None else b  # ("chemical splashes in his eyes")
+            if self._person_category and norms[o:o + 1] in (("in",), ("on",), ("to",)) \
+                    and norms[o + 1:o + 2] in (("her",), ("his",), ("their",), ("my",)) \
+                    and (norms[o + 2:o + 3] in (("lung",), ("lungs",)) or norms[o + 2] in lx.BODY_PARTS if o + 2 < len(norms) else False) \
+                    and (o + 3 >= len(norms) or toks.clause_start[o + 3] or norms[o + 3] in lx.FUNCTION_WORDS):
+                # (not "a leak in their back room")
+                start, end = toks.tokens[a].start, toks.tokens[o + 2].end
+                cues.append(CueMention(a, o + 3, start, end, toks.text[start:end], self._person_category, source,
+                                       reason="what harmed a person"))
+                continue  # "a woman with smoke in her lungs": the person's harm, no danger there
+            if norms[b:b + 1] == ("out",) and any(norms[m] in ("put", "putting", "got", "getting") for m in range(max(0, a - 3), a)) \
+                    and self.kb.category_by_name[cat].role == Role.UNDESIRABLE:
+                continue  # "they've put the fire out": over
             if norms[a:b] in (("stuck",), ("attached",)) and norms[b:b + 1] in (("to",), ("onto",)) and not any(
                     norms[m] in _PERSON_WORDS or norms[m] in lx.PERSON_SUBJECTS for m in range(max(0, a - 3), a)):
                 continue  # "the shop stuck to the side of the bread shop": joined on, no one stuck
@@ -5106,6 +5120,8 @@ class ReportAnalyzer:
                     break  # "fire at the bakery is NOT knocked down": the cancellation denied
                 if k > 1 and norms[k - 1] == "to" and norms[k - 2] in ("trying", "try", "tried", "tries", "attempting"):
                     break  # "a lad's burnt his hands trying to put it out": tried, not done
+                if h[1] == "contained" and norms[h[0]:h[0] + 1] in (("to",), ("within",), ("in",), ("inside",)):
+                    break  # "fire's contained to the bakery": still burning, there
                 cancelled_by = h[1]
                 break
             undesirable = self.kb.category_by_name[cue.category].role == Role.UNDESIRABLE
@@ -5227,10 +5243,13 @@ class ReportAnalyzer:
         while j >= 0 and a - j <= 3 and norms[j] in lx.ARTICLES | {"falling", "flying", "some", "loose"}:
             j -= 1
         if not (j >= 1 and (norms[j] == "by" and norms[j - 1] in lx.INJURY_VERBS
-                            or norms[j] == "in" and norms[j - 1] in ("hurt", "injured") and norms[j + 1:j + 2] == ("the",))):
-            return False
+                            or norms[j] == "in" and norms[j - 1] in ("hurt", "injured") and norms[j + 1:j + 2] == ("the",)
+                            or norms[j] in ("on", "over") and norms[j - 1] in ("tripped", "slipped", "stumbled", "fell")
+                            or norms[j] == "by" and norms[j - 1] in ("on", "caused", "triggered", "worsened"))):
+            return False  # ("tripped on the rubble outside the church", "an asthma attack brought on by the smoke")
+        reach = 10 if norms[j - 1] in ("on", "caused", "triggered", "worsened") else 6
         return any(norms[m] in _PERSON_WORDS or norms[m].isdigit() or norms[m] in lx.NUMBER_WORDS
-                   for m in range(max(0, j - 6), j - 1))  # (a person hurt: "the bakery was hit by fire" is no one)
+                   for m in range(max(0, j - reach), j - 1))  # (a person hurt: "the bakery was hit by fire" is no one)
 
     @staticmethod
     def _danger_not_here(norms: tuple[str, ...], a: int, b: int) -> bool:
@@ -5250,7 +5269,14 @@ class ReportAnalyzer:
             j -= 1
         kept = j >= 1 and a - j <= 3 and norms[j] == "by" and norms[j - 1] in ("untouched", "unaffected", "spared", "unharmed", "undamaged") \
             or j >= 1 and a - j <= 3 and norms[j] == "from" and norms[j - 1] in (
-                "distance", "away", "far", "safe", "clear", "sheltered", "protected", "shielded")
+                "distance", "away", "far", "safe", "clear", "sheltered", "protected", "shielded") \
+            or j >= 1 and a - j <= 3 and norms[j] == "of" and norms[j - 1] in ("upstream", "upwind", "uphill", "above", "way")
+        # ("upstream of the flooding", "out of the way of the floodwater"); people who came from it ("people from
+        # the fire are at the library")
+        if j >= 1 and a - j <= 3 and norms[j] == "from" and norms[j - 1] in lx.ORIGIN_PEOPLE:
+            return True
+        if norms[b:b + 3] in (("well", "away", "from"), ("away", "from", "the")) or norms[b:b + 4] == ("s", "well", "away", "from"):
+            return True  # "the fire's well away from the library": where it is not
         if not kept:
             after = norms[b:b + 6]
             return any(after[i:i + 3] == ("from", "somewhere", "else") or after[i:i + 2] == ("from", "elsewhere")
@@ -6061,6 +6087,10 @@ class ReportAnalyzer:
     def _bind_cost(norms: tuple[str, ...], c: CueMention, p: PlaceMention) -> float:
         if c.reason == "people were taken there":  # "the caravan park's been evacuated up to the quarry": where to
             return -10.0 if c.end_tok <= p.start_tok <= c.end_tok + 4 else 10.0
+        if c.end_tok <= p.start_tok and c.reason != "what harmed a person" and "from" in norms[c.end_tok:p.start_tok] \
+                and set(norms[c.end_tok:p.start_tok]) <= {
+                "coming", "pouring", "billowing", "from", "out", "of", "the", "a", "rising", "blowing"}:
+            return -5.0  # "a man at the bakery reported smoke coming from the bank": where it comes from
         if c.end_tok <= p.start_tok:  # cue before place: "fire at the bakery"
             between = norms[c.end_tok : p.start_tok]
             glue = all(w in lx.PREPOSITIONS or w in lx.DETERMINERS or w in lx.FILLERS or w in lx.COPULAS for w in between)
@@ -6405,7 +6435,7 @@ def _cue_list_into(k: int, later: int, segs: list[tuple[int, int]], seg_cues: di
 
 
 _PERSON_WORDS = frozenset(lx.PERSON_NOUNS) | {"pensioner", "residents", "neighbour", "neighbor", "tenant", "tenants",
-                                              "lady", "gentleman", "family"}
+                                              "lady", "gentleman", "family", "pupil", "kid", "child", "children"}
 _LIST_OPENERS = frozenset({"and", "there", "theres", "is", "are", "lots", "of", "loads", "some", "also", "got", "weve"})
 
 

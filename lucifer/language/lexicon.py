@@ -32,6 +32,7 @@ def _add(role: str, phrases: str) -> None:
 
 
 _add(UNDESIRABLE, """
+roof is about to go|roof s about to go|wall is about to go|about to give way|going to give way|could go any minute|
 water's lapping|water lapping|lapping at the doors|full to the rafters|full of water|filled with water|filling with water|filling up with water|
 groaning and tilting|is tilting|s tilting|tilting towards|tilting badly|about to topple|going to topple|come crashing down|came crashing down|crashing down|crashed down|crashed through|handrail's gone|handrail has gone|railings have gone|railing's gone|bridge is shaking|it's shaking|s shaking|
 water all over it|water all over the|water's got into|water has got into|water got into|river's coming in|river is coming in|river coming in|water is coming in|water's coming in|water coming in|water is getting in|water's getting in|water pouring in|
@@ -203,6 +204,8 @@ can't get his wheelchair|can't get her wheelchair|cannot get his wheelchair|cann
 there's folk in|theres folk in|folk in them|folk in there|people in them|there's people in|theres people in|folk still in|
 gone in off the|someone's gone in|somebody's gone in|went in off the|gone in the water|went in the water|
 not come back|is not come back|look for him|look for her|search for him|search for her|had a fit|s had a fit|not with it|
+pulled out of the water|pulled from the water|pulled out of the river|pulled from the river|been pulled out|fell in the river|fell into the river|fallen in the river|fallen into the river|fell in the water|fell into the water|
+being treated|being treated there|confused and wandering|wandering about|very confused|disorientated|disoriented|
 isn't getting up|isnt getting up|not getting up|won't get up|having a hypo|had a hypo|funny turn|had a turn|dangling from|left dangling|
 cut badly|cut really badly|lot of blood|lots of blood|loads of blood|who's fallen|
 through the ice|lost a finger|lost two fingers|lost his fingers|lost her fingers|lost some fingers|severed|mangled|
@@ -223,7 +226,8 @@ NEGATOR_PHRASES = ["no one", "no longer", "not any", "free of", "clear of", "no 
                    "refuge from the"]
 
 # Phrases after a hazard cue that cancel it ("the fire is out").
-CANCEL_AFTER = ["not any more", "not anymore", "hasn't got that far", "hasnt got that far", "not got that far", "hasn't got this far", "hasnt got this far",
+CANCEL_AFTER = ["not any more", "not anymore", "that's cleared", "thats cleared", "it's cleared", "dried out", "has dried out",
+                "s dried out", "hasn't got that far", "hasnt got that far", "not got that far", "hasn't got this far", "hasnt got this far",
                 "not got this far", "hasn't reached us", "hasnt reached us", "blowing the other way", "blowing away from", "going the other way", "never reached", "didn't reach", "didnt reach", "hasn't reached", "hasnt reached", "never got to",
                 "been cleared", "been cleared away", "been towed", "been towed away", "turned up", "has turned up", "s turned up", "turned up safe", "is out", "s out", "are out", "was out", "put out", "out now", "been put out",
                 "has cleared", "have cleared", "s cleared", "has lifted", "s lifted", "has gone down", "s gone down",
@@ -317,6 +321,7 @@ NEUTRAL_PHRASES = ["roof is still on", "roof's still on", "been found safe", "fo
                    "smoke alarm", "smoke alarms", "smoke machine", "smoke machines", "fog machine", "haze machine", "fire alarm", "fire alarms", "fire exit", "fire escape",
                    "fire brigade", "fire crew", "fire engine", "fire truck", "fire service", "fire department",
                    "fire team", "firefighter", "firefighters", "fire fighter", "fire fighters", "fire hydrant",
+                   "fire proofed", "fire-proofed", "fireproofed", "fireproof", "fire proof", "fire resistant",
                    "fire's lit", "fire is lit", "fires lit", "lit the fire", "wood burner",
                    "quiet now", "is quiet", "all quiet", "walked home", "gone home", "went home", "got himself out",
                    "got herself out", "got themselves out",
