@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev43) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev44) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -65,6 +65,7 @@ COUNTY_PRISON = ROOT / "knowledge_bases" / "county_prison"
 COAST_ROAD = ROOT / "knowledge_bases" / "coast_road"
 FOREST_PARK = ROOT / "knowledge_bases" / "forest_park"
 DOCKSIDE = ROOT / "knowledge_bases" / "dockside_estate"
+HILL_FARM = ROOT / "knowledge_bases" / "hill_farm_show"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -246,6 +247,11 @@ SETS = {
     "dev43/riverbend": _set("dev43/riverbend.jsonl", RIVERBEND, "d43r",
                             {"standard": 25, "messy": 35, "advanced_messy": 30}),
     "dev43/dockside_estate": _set("dev43/dockside_estate.jsonl", DOCKSIDE, "d43d", THIRTY),
+    "dev44/market_square": _set("dev44/market_square.jsonl", MARKET_SQUARE, "d44m",
+                                {"standard": 20, "messy": 40, "advanced_messy": 30}),
+    "dev44/riverbend": _set("dev44/riverbend.jsonl", RIVERBEND, "d44r",
+                            {"standard": 20, "messy": 30, "advanced_messy": 25}),
+    "dev44/hill_farm_show": _set("dev44/hill_farm_show.jsonl", HILL_FARM, "d44h", THIRTY),
 }
 
 
