@@ -2817,3 +2817,37 @@ def test_dev43_phenomena(kb_analyzers, analyzer, kb, text, expected):
 ])
 def test_dev43_dockside_estate(kb_analyzers, text, expected):
     assert claims(kb_analyzers["dockside_estate"], text) == expected
+
+
+@pytest.mark.parametrize("kb,text,expected", [
+    # corrections by someone else, later or as "it's the Y, not the X"
+    ("ms", "Smoke from the clinic. My wife's saying no, it's the police station.", [("police station", "hazard")]),
+    ("ms", "Live wire at the hotel. Hang on — it's the bank, not the hotel, he mixed them up.", [("bank", "hazard")]),
+    ("ms", "There's a fire at the cafe, well, smoke, no flames really", [("cafe", "hazard")]),
+    ("ms", "I can see a smoke plume coming off the roof of the flats. Nothing wrong at the library.",
+     [("apartment block", "hazard")]),
+    ("ms", "my cousin texted that the bank is flooding but I'm stood outside it and it's bone dry", []),
+    ("ms", "i dunno if this matters but there's smoke coming out of the gym", [("sports hall", "hazard")]),
+    ("ms", "paint tins going up like fireworks in the tool shop", [("hardware store", "hazard")]),
+    ("ms", "my dad is in the shop stuck to the bakery, he fell and he's not waking up", [("pharmacy", "victim")]),
+    # people in the water, hurt, unaccounted for; rumours called rubbish
+    ("riverbend", "an angler's gone in off the weir and he's not swimming", [("weir", "casualty")]),
+    ("riverbend", "a worker at the brewery has had his arm squashed under a barrel", [("brewery", "casualty")]),
+    ("riverbend", "a landslip has hit the caravan park and two families we can't account for", [
+        ("caravan park", "casualty"), ("caravan park", "threat")]),
+    ("riverbend", "the smoke at the granary was somebody's garden bonfire", []),
+    ("riverbend", "the rumour about a sinkhole on the green is rubbish", []),
+    ("riverbend", "they're saying the footbridge has gone, the middle bit's dropped into the river", [("footbridge", "threat")]),
+    # an unseen KB: a plural of a name is something else; a crush of one person; a tent holding
+    ("hill_farm_show", "the fergie line is dry standing, we've moved the Fords up the top end",
+     [("vintage-tractor line", "safe_standing")]),
+    ("hill_farm_show", "the bar marquee's guy ropes are smouldering", [("beer tent", "smoke_and_burning")]),
+    ("hill_farm_show", "the frog field's a lake", [("beck meadow", "spate_and_slurry")]),
+    ("hill_farm_show", "a lad crushed against the rails in the sheep ring", [("sheep ring", "folk_in_need")]),
+    ("hill_farm_show", "disregard the man down at the horsebox park, he was just asleep in his cab", []),
+    ("hill_farm_show", "we got everybody out of the beer tent and into the show office, that's the safe place",
+     [("secretary's cabin", "safe_standing")]),
+])
+def test_dev44_phenomena(kb_analyzers, analyzer, kb, text, expected):
+    an = analyzer if kb == "ms" else kb_analyzers[kb]
+    assert claims(an, text) == expected

@@ -668,6 +668,11 @@ class ReportAnalyzer:
                     and all(norm_phrase(f)[-1:] != norms[a:b] or f.lower().endswith("s") for f in
                             self.kb.landmark_by_name[landmark].surface_forms):
                 continue  # "the whole flat upstairs has come down through it": one home, not the "flats"
+            if b - a == 1 and raw.endswith("s") and not raw.endswith(("'s", "’s", "ss")) and raw != norms[a] \
+                    and toks.tokens[a].text[:1].isupper() and all(
+                        not norm_phrase(f)[-1:] == norms[a:b] or not f.lower().endswith("s")
+                        for f in self.kb.landmark_by_name[landmark].surface_forms):
+                continue  # "we've shunted the Fords and Fergies up the top end": tractors, not the ford
             if b - a == 1 and prev in ("a", "an", "one") and not raw.endswith("s") and all(
                     f.lower().endswith("s") for f in self.kb.landmark_by_name[landmark].surface_forms
                     if norm_phrase(f)[-1:] == norms[a:b]):
@@ -699,6 +704,7 @@ class ReportAnalyzer:
         for idx, p in enumerate(places):
             if p.end_tok < len(norms) and norms[p.end_tok] in lx.MODIFIED_BY and not toks.clause_start[p.end_tok] \
                     and norms[p.end_tok : p.end_tok + 2] not in lx.PART_OF_PLACE \
+                    and norms[p.end_tok : p.end_tok + 2] not in (("guy", "rope"), ("guy", "ropes")) \
                     and not (norms[p.end_tok] in lx.CARRIAGE_WORDS and p.landmark in self._conveyances) \
                     and not self._people_of_place_hurt(toks, norms, p.end_tok):
                 # ("the funicular car has come off its rails": the car is part of the railway)
@@ -1782,6 +1788,8 @@ class ReportAnalyzer:
             if words == ("no", "no") and b < len(norms) and not pause_after and self._cues.match_at(norms, b) is not None:
                 b -= 1  # "No, no fire.": the second "no" negates the cue; the first answers
                 words, nxt, pause_after = words[:1], norms[b], True
+            if words == ("wrong",) and a > 0 and norms[a - 1] in ("nothing", "anything", "something", "whats"):
+                continue  # "Nothing wrong on our job at the library": no repair
             if words in (("correction",),) and nxt in ("on", "about", "regarding", "re") \
                     and toks.sentence_start[a]:
                 continue  # "Correction on the sports hall as well: ...": news of that place, no repair of the last
@@ -3104,6 +3112,14 @@ class ReportAnalyzer:
                         and set(norms[p.end_tok:nxt.start_tok]) & {"its", "it", "thats"}:
                     corrects = True  # "Fire at the bank. ... he says it's not the bank, it's the bakery": said as
                     # a correction, of the bank said before
+                if not earlier and not corrects and norms[j] == "not":
+                    said = next((q for q in ex.places if q.status == "active" and j - 2 <= q.end_tok <= j
+                                 and q.landmark != p.landmark and toks.sentence_of[q.start_tok] == toks.sentence_of[j]
+                                 and [w for w in norms[max(0, q.start_tok - 3):q.start_tok] if w not in lx.ARTICLES][-1:]
+                                 in (["its"], ["thats"])), None)
+                    if said is not None and any(q.status == "active" and q.landmark == p.landmark
+                                                and toks.sentence_of[q.start_tok] < toks.sentence_of[j] for q in ex.places):
+                        corrects, nxt = True, said  # "Live wire at the hotel. ... it's the bank, not the hotel"
                 if corrects:
                     # "16:12 T2 corrects previous msg: NOT lower field, it was the upper caravan field": a
                     # correction retracts the place from any earlier sentence when a place said next, in this
@@ -3373,6 +3389,9 @@ class ReportAnalyzer:
                     continue  # "my son and his friend were at the gym": "were", not "we're"
                 if hit is not None and hit[1].startswith("route ") and k > 0 and not toks.clause_start[k]:
                     continue  # "evacuation route through the square is clear": a route said to be safe; "route via" orders
+                if hit is not None and hit[1] == "in off the" and k > 0 and norms[k - 1] in (
+                        "gone", "went", "fallen", "fell", "slipped", "jumped", "go"):
+                    continue  # "a fisherman's gone in off the weir": into the water there, no one passing
                 if hit is not None and hit[1].split()[0] in ("came", "come", "coming") and len(hit[1].split()) == 3 \
                         and not any(norms[m] in lx.MOVING_PEOPLE for m in range(max(0, k - 4), k)):
                     continue  # "debris came down from the roof": a thing fallen, not people who came from there
@@ -3643,7 +3662,11 @@ class ReportAnalyzer:
                 link_to = None
             start = self._repair_window_start(ex, k)
             before = [p for p in ex.places if start <= p.start_tok < a and p.status == "active"]
-            if not before and _strong:
+            s_open = max((t for t in range(0, a + 1) if toks.sentence_start[t]), default=0)
+            relayed = 0 < a - s_open <= 6 and any(norms[t] in lx.HEARSAY_VERBS for t in range(s_open, a)) \
+                and not any(s_open <= p.start_tok < a for p in ex.places)
+            # ("Smoke coming out of the clinic — what? My husband's saying no, it's the police station")
+            if not before and (_strong or relayed):
                 # "Man collapsed in the library. ... Okafor again, wrong building, apologies -- he's in the one
                 # next door to it": a strong marker whose sentence names no place before it reaches the last
                 # sentence that does, up to two back
@@ -4016,6 +4039,11 @@ class ReportAnalyzer:
             if source == "lexicon" and norms[a:b] in lx.PERSON_STATE_CUES and self._person_category \
                     and self._person_before(norms, a):
                 cue = replace(cue, category=self._person_category, reason=f"a person {norms[a]}")
+            if norms[a:b] == ("crushed", "against") and self._person_category and next(
+                    (w for w in reversed(norms[max(0, a - 3):a]) if w not in lx.FILLERS), "") in (
+                    "man", "woman", "lad", "kid", "child", "boy", "girl", "he", "she", "hes", "shes", "bloke"):
+                cue = replace(cue, category=self._person_category, reason="one person crushed")  # ("a young lad, crushed
+                # against the rails"; a crowd pressed against a barrier stays a crush)
             if source == "category" and norms[a:b] in lx.PERSON_STATE_CUES \
                     and self.kb.category_by_name[cat].role == Role.CRITICAL and self._thing_before(norms, a, self._place_tokens):
                 # the critical category's description lists "collapsed" (a person who has): the wall that has
@@ -4888,9 +4916,9 @@ class ReportAnalyzer:
             if not opens:
                 continue
             j = i + 1
-            while j < n and not toks.clause_start[j] and norms[j] != "then" \
+            while j < n and not toks.clause_start[j] and norms[j] not in ("then", "but") \
                     and not (j - i > 2 and norms[j] in lx.CONDITION_END_SUBJECTS):
-                j += 1
+                j += 1  # ("i dunno if this counts but there's smoke coming out of the gym": the news after "but")
             out.update(range(i, j))
         return out
 
@@ -5780,7 +5808,7 @@ class ReportAnalyzer:
                                                   and q.status == "active" for q in ex.places):
                 continue  # "im outside the school the school yard is the assembly point ...": where the caller stands
             tail = [w for w in norms[p.end_tok:segs[k][1]] if w not in lx.FILLERS]
-            if (tail[:1] in (["dry"], ["untouched"], ["unaffected"], ["solid"]) or tail[:2] in (
+            if (tail[:1] in (["dry"], ["untouched"], ["unaffected"], ["solid"], ["holding"]) or tail[:2] in (
                     ["is", "dry"], ["s", "dry"], ["still", "dry"], ["is", "solid"], ["s", "solid"], ["still", "solid"])) \
                     and len(seg_places.get(k, [])) == 1:
                 continue  # "the gift shop, that's where the water's coming in... the tea room's dry": its own word
@@ -5854,6 +5882,10 @@ class ReportAnalyzer:
                                                or c.cue.reason == NEITHER):
                 continue  # "she can't get past the smoke on the stairs" revokes nothing, nor does "the first has a
                 # chemical spill ... neither of them has a fire"
+            if c.cue.polarity == "denied" and any(
+                    q.key == c.key and q.cue.polarity == "affirmed" and 0 <= c.cue.start_tok - q.cue.end_tok <= 1
+                    and norms[q.cue.start_tok:q.cue.end_tok] != norms[c.cue.start_tok:c.cue.end_tok] for q in pairs):
+                continue  # "well, smoke, no flames really": a kind denied right after the kind there is
             last[c.key] = (c.cue.start_tok, c.cue.polarity == "affirmed")
         for landmark, at in self._people_revoked(ex, norms, cues):
             # "1012 STILT VLG - 3 stranded on rf. 1014 UPD STILT VLG - all 3 lifted off": no cue is said

@@ -32,7 +32,9 @@ def _add(role: str, phrases: str) -> None:
 
 
 _add(UNDESIRABLE, """
-roof is about to go|roof s about to go|wall is about to go|about to give way|going to give way|could go any minute|
+s a lake|is a lake|like a lake|turned into a lake|come clean over|gone over the top|come over the top|overtopped|
+dropped into the river|dropped into the water|gone into the river|bridge has gone|bridge s gone|
+going up like|tins going up|bottles going up|roof is about to go|roof s about to go|wall is about to go|about to give way|going to give way|could go any minute|
 water's lapping|water lapping|lapping at the doors|full to the rafters|full of water|filled with water|filling with water|filling up with water|
 groaning and tilting|is tilting|s tilting|tilting towards|tilting badly|about to topple|going to topple|come crashing down|came crashing down|crashing down|crashed down|crashed through|handrail's gone|handrail has gone|railings have gone|railing's gone|bridge is shaking|it's shaking|s shaking|
 water all over it|water all over the|water's got into|water has got into|water got into|river's coming in|river is coming in|river coming in|water is coming in|water's coming in|water coming in|water is getting in|water's getting in|water pouring in|
@@ -205,6 +207,7 @@ there's folk in|theres folk in|folk in them|folk in there|people in them|there's
 gone in off the|someone's gone in|somebody's gone in|went in off the|gone in the water|went in the water|
 not come back|is not come back|look for him|look for her|search for him|search for her|had a fit|s had a fit|not with it|
 pulled out of the water|pulled from the water|pulled out of the river|pulled from the river|been pulled out|fell in the river|fell into the river|fallen in the river|fallen into the river|fell in the water|fell into the water|
+squashed|arm squashed|leg squashed|crushed under|can't account for|cannot account for|can't account for them|falling down the stairs|blood on his head|blood on her head|cold and confused|very cold and|
 being treated|being treated there|confused and wandering|wandering about|very confused|disorientated|disoriented|
 isn't getting up|isnt getting up|not getting up|won't get up|having a hypo|had a hypo|funny turn|had a turn|dangling from|left dangling|
 cut badly|cut really badly|lot of blood|lots of blood|loads of blood|who's fallen|
@@ -226,7 +229,7 @@ NEGATOR_PHRASES = ["no one", "no longer", "not any", "free of", "clear of", "no 
                    "refuge from the"]
 
 # Phrases after a hazard cue that cancel it ("the fire is out").
-CANCEL_AFTER = ["not any more", "not anymore", "that's cleared", "thats cleared", "it's cleared", "dried out", "has dried out",
+CANCEL_AFTER = ["not any more", "not anymore", "cleared off", "it's cleared off", "wind's changed", "wind has changed", "that's cleared", "thats cleared", "it's cleared", "dried out", "has dried out",
                 "s dried out", "hasn't got that far", "hasnt got that far", "not got that far", "hasn't got this far", "hasnt got this far",
                 "not got this far", "hasn't reached us", "hasnt reached us", "blowing the other way", "blowing away from", "going the other way", "never reached", "didn't reach", "didnt reach", "hasn't reached", "hasnt reached", "never got to",
                 "been cleared", "been cleared away", "been towed", "been towed away", "turned up", "has turned up", "s turned up", "turned up safe", "is out", "s out", "are out", "was out", "put out", "out now", "been put out",
@@ -321,7 +324,7 @@ NEUTRAL_PHRASES = ["roof is still on", "roof's still on", "been found safe", "fo
                    "smoke alarm", "smoke alarms", "smoke machine", "smoke machines", "fog machine", "haze machine", "fire alarm", "fire alarms", "fire exit", "fire escape",
                    "fire brigade", "fire crew", "fire engine", "fire truck", "fire service", "fire department",
                    "fire team", "firefighter", "firefighters", "fire fighter", "fire fighters", "fire hydrant",
-                   "fire proofed", "fire-proofed", "fireproofed", "fireproof", "fire proof", "fire resistant",
+                   "cleared off", "it's cleared off", "fire proofed", "fire-proofed", "fireproofed", "fireproof", "fire proof", "fire resistant",
                    "fire's lit", "fire is lit", "fires lit", "lit the fire", "wood burner",
                    "quiet now", "is quiet", "all quiet", "walked home", "gone home", "went home", "got himself out",
                    "got herself out", "got themselves out",
@@ -365,7 +368,9 @@ FALSE_ALARM = ["false alarm", "never mind", "nevermind", "disregard my last", "d
                "its a long way off", "it's miles away", "its miles away", "it's a long way away", "its a long way away",
                "was only the", "was only them", "was just them", "were only", "was only someone", "was only some",
                "ignore it", "all sorted", "nothing's happened yet", "nothing has happened yet", "nothing happened yet",
-               "nothing's fallen yet", "nothing has fallen yet", "nothing's come down yet", "nothing has come down yet", "it's all sorted", "that was wrong it was a", "that was wrong it was just",
+               "nothing's fallen yet", "nothing has fallen yet", "nothing's come down yet", "nothing has come down yet", "it's all sorted", "garden bonfire", "was somebody's", "is rubbish", "is nonsense",
+               "nothing happening at", "there's nothing there", "nothing there at all", "that was ages ago", "was just asleep",
+               "nothing doing there", "disregard the man", "disregard the woman", "disregard the casualty", "that was wrong it was a", "that was wrong it was just",
                *_WITHDRAWN_WARNINGS]
 # ... unless the words after them go on to say what there is none of ("there's nothing left of it", "it's nothing
 # serious", "there's nothing we can do")
@@ -408,7 +413,7 @@ WEAK_REPAIR = ["sorry", "actually", "or rather", "rather", "wait", "no", "nope",
 # matched verbatim ("attached_to" -> "attached to") and through these synonyms.
 RELATION_SYNONYMS: dict[str, list[str]] = {
     "attached to": ["attached to", "built onto", "built on to", "joined to", "joined onto", "joined on to",
-                    "connected to", "adjoining", "adjoins", "adjoin", "attached onto", "stuck onto",
+                    "connected to", "adjoining", "adjoins", "adjoin", "attached onto", "stuck onto", "stuck to",
                     "sharing a wall with", "shares a wall with", "that shares a wall with", "built against",
                     "abutting", "abuts", "butting onto", "bolted onto", "tacked onto", "stuck on to",
                     "built up against", "fixed onto", "part of the same building as", "joined up with",
@@ -637,7 +642,8 @@ TRANSIT = ["people in off", "taking people in off", "in off the", "walked up fro
            "route through", "routing through", "routed through", "go via", "called out to", "been called out to", "got called out to", "keep clear of", "stay clear of",
            "keep away from", "stay away from", "keep everyone away from", "keep people away from",
            "got everyone out onto", "everyone out onto", "got everyone out into", "got them out onto",
-           "driven round to", "being driven to", "being driven round to", "driven to"]
+           "driven round to", "being driven to", "being driven round to", "driven to", "got everybody out of",
+           "got everyone out of", "everybody out of", "got them all out of"]
 
 # Head nouns of a description of a landmark ("the building with the two engine bays").
 DESCRIPTION_HEADS = {"building", "place", "shop", "store", "tower", "block", "house", "hall", "premises", "structure",
@@ -1036,7 +1042,7 @@ for _phrases in DANGER_KINDS.values():
 # Verbs that give a claim as someone else's word, which the speaker may then contradict.
 HEARSAY_VERBS = {"say", "says", "said", "reckon", "reckons", "reckoned", "think", "thinks", "thought", "report", "reported",
                  "reports", "tell", "told", "claim", "claims", "claimed", "insist", "insists", "swear", "swears", "heard",
-                 "hear", "saying", "talk", "rumour", "rumor"}
+                 "hear", "saying", "talk", "rumour", "rumor", "texted", "messaged", "posted", "wrote"}
 
 # Verbs of seeing and hearing: "... at the town hall and I seen the roof of the sports hall fold in".
 PERCEPTION_VERBS = {"seen", "saw", "see", "watched", "watch", "noticed", "notice", "heard", "hear", "spotted", "spot",
