@@ -2838,6 +2838,12 @@ def test_dev43_dockside_estate(kb_analyzers, text, expected):
     ("riverbend", "the smoke at the granary was somebody's garden bonfire", []),
     ("riverbend", "the rumour about a sinkhole on the green is rubbish", []),
     ("riverbend", "they're saying the footbridge has gone, the middle bit's dropped into the river", [("footbridge", "threat")]),
+    ("riverbend", "we heard from the folk in the next caravan that the abbey had collapsed, but we're by it now and it is "
+                  "standing", []),
+    ("riverbend", "there's a man lying on the green, hit by a branch, and our doctor's gone out to him",
+     [("village green", "casualty")]),
+    ("riverbend", "my husband went up to the old workings overlooking the holiday park and he's fallen",
+     [("quarry", "casualty")]),
     # an unseen KB: a plural of a name is something else; a crush of one person; a tent holding
     ("hill_farm_show", "the fergie line is dry standing, we've moved the Fords up the top end",
      [("vintage-tractor line", "safe_standing")]),
@@ -2845,6 +2851,8 @@ def test_dev43_dockside_estate(kb_analyzers, text, expected):
     ("hill_farm_show", "the frog field's a lake", [("beck meadow", "spate_and_slurry")]),
     ("hill_farm_show", "a lad crushed against the rails in the sheep ring", [("sheep ring", "folk_in_need")]),
     ("hill_farm_show", "disregard the man down at the horsebox park, he was just asleep in his cab", []),
+    ("hill_farm_show", "Jam tent's gone up.", [("produce marquee", "smoke_and_burning")]),
+    ("riverbend", "tell 'em the mill's safe, we've cleared it and it's dry", [("mill", "shelter")]),
     ("hill_farm_show", "we got everybody out of the beer tent and into the show office, that's the safe place",
      [("secretary's cabin", "safe_standing")]),
 ])

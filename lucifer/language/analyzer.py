@@ -23,7 +23,7 @@ import difflib
 import functools
 import re
 import threading
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass, field, replace
 from typing import Literal
 
@@ -633,7 +633,10 @@ class ReportAnalyzer:
             if norms[a:b] in self._needs_article and prev not in lx.DETERMINERS | {"our", "your", "my", "his", "her"} \
                     and not acronym and not heading and not self._telegraphic_subject(toks, norms, a, b) \
                     and not (log and (b - a >= 2 or prev in lx.PREPOSITIONS and len(norms[a]) >= 5)) \
-                    and not (b - a >= 2 and prev in ("in", "at", "from") and a >= 2 and norms[a - 2] in ("live", "living", "lives", "stay", "staying")):
+                    and not (b - a >= 2 and prev in ("in", "at", "from") and a >= 2 and norms[a - 2] in ("live", "living", "lives", "stay", "staying")) \
+                    and not (b - a >= 2 and (a == 0 or toks.sentence_start[a])
+                             and toks.tokens[b - 1].text.lower().replace("’", "'").endswith("'s")):
+                # ("Jam tent's gone up": a name that opens its sentence as the subject, "the" left off)
                 # ("I live in toast rack, number 14": the article a learner of the language leaves out)
                 # the KB wrote "the tower": "bell tower" is not it (a log drops articles: "fire LPG plant",
                 # "leak at bldg at mouth of galleria")
@@ -660,6 +663,9 @@ class ReportAnalyzer:
                     and all(norm_phrase(f)[-1:] != norms[a:b] or f.lower().endswith("s") for f in
                             self.kb.landmark_by_name[landmark].surface_forms):
                 continue  # "a customer's fainted in there, flat on the floor": the singular of "flats", no name
+            if b - a == 1 and prev in ("our", "my", "your", "his", "her") and raw.endswith(("'s", "’s")) \
+                    and b < len(norms) and norms[b] in ("gone", "come", "been", "just", "said", "says", "coming", "going"):
+                continue  # "our doctor's gone out to him": a person, not "the doctors'"
             if prev == "after" and b < len(norms) and norms[b] in ("club", "clubs", "care", "activities", "session"):
                 continue  # "he's at the library for after school club": when, not where
             if b - a == 1 and not raw.endswith("s") and (
@@ -1482,7 +1488,9 @@ class ReportAnalyzer:
         taken = {i for p in places for i in range(p.start_tok, p.end_tok)}
         for i in range(1, len(norms)):
             if norms[i - 1] in ("my", "our", "his", "her", "their") and i not in taken and norms[i].isalpha() \
-                    and len(norms[i]) >= 3:
+                    and len(norms[i]) >= 3 and norms[i + 1:i + 2] not in (
+                        ("gone",), ("come",), ("been",), ("just",), ("said",), ("says",), ("coming",), ("going",)):
+                # (not "our doctor's gone out to him": a person)
                 # "Mrs Kay from the village shop here, the place my shop is tucked in beside": the speaker's own,
                 # named before; "a firefighter at the fire hall reports ... across the road from his station"
                 mine = [p for p in places if p.end_tok <= i - 1 and p.status == "active" and any(
@@ -2321,7 +2329,10 @@ class ReportAnalyzer:
         head_text = " ".join(toks.tokens[j].text for j in range(head_start, head_end))
         generic = bool(words) and any(w in lx.GENERIC_HEADS for w in words[-2:]) \
             and self._cues.match_at(norms, head_end - 1) is None
-        if not generic and words and len(words) <= 3 and head_start > 0 and norms[head_start - 1] in lx.ARTICLES \
+        after_article = head_start > 0 and (norms[head_start - 1] in lx.ARTICLES or head_start > 1 and norms[head_start - 2]
+                                            in lx.ARTICLES and norms[head_start - 1] in lx.DETERMINERS | lx.NAME_ADJECTIVES)
+        # ("the old workings overlooking the holiday park": an adjective between)
+        if not generic and words and len(words) <= 3 and after_article \
                 and (norms[a:b] not in lx.AMBIGUOUS_HEADLESS or (words[-1],) in self._shared_tails()):
             # ("the platform underneath us": a word several names end in heads a description even before
             # a bare "underneath")
@@ -3183,6 +3194,18 @@ class ReportAnalyzer:
             elif new is not None and same(r, new) and r.replaces is None:
                 ex.places[i] = replace(r, replaces=old.start_tok)
 
+    @staticmethod
+    def _bare_places(ex: Extraction, norms: tuple[str, ...]) -> Iterator[tuple[int, PlaceMention, int]]:
+        """(index, place, where its noun phrase starts, past its determiners) for each place still active and named
+        directly (no relational description): what the words right before it say of it."""
+        for idx, p in enumerate(ex.places):
+            if p.status != "active" or p.via is not None:
+                continue
+            j = p.start_tok
+            while j > 0 and norms[j - 1] in lx.DETERMINERS:
+                j -= 1
+            yield idx, p, j
+
     def _apply_mistaken_first(self, ex: Extraction, norms: tuple[str, ...]) -> None:
         """"I thought it was the pit but it's, it's the pump house": what the speaker first took it for is taken
         back, and the place after "but it's" takes its claims. "she's at the doctors', no, she's at home, ... in the
@@ -3407,12 +3430,7 @@ class ReportAnalyzer:
                     break
         # "that long shed in front of the park — the park the flats look across at": the reference point said again
         # to describe it is still only the reference point
-        for idx, p in enumerate(ex.places):
-            if p.status != "active" or p.via is not None:
-                continue
-            j = p.start_tok
-            while j > 0 and norms[j - 1] in lx.DETERMINERS:
-                j -= 1
+        for idx, p, j in self._bare_places(ex, norms):
             ref = next((q for q in ex.places if q.status == "reference" and q.landmark == p.landmark and q.via is None
                         and 0 <= j - q.end_tok <= 2 and all(norms[i] in lx.FILLERS for i in range(q.end_tok, j))
                         and any(d in toks.gaps[i] for i in range(q.end_tok, j + 1) for d in ("—", "–", "--", " - ", ","))
@@ -3425,12 +3443,7 @@ class ReportAnalyzer:
         # no claim, unless what follows says what is wrong with them there ("the kids from the school are stuck
         # on the first floor")
         starts = {q.start_tok for q in ex.places}
-        for idx, p in enumerate(ex.places):
-            if p.status != "active" or p.via is not None:
-                continue
-            j = p.start_tok
-            while j > 0 and norms[j - 1] in lx.DETERMINERS:
-                j -= 1
+        for idx, p, j in self._bare_places(ex, norms):
             if j >= 2 and norms[j - 1] == "than" and norms[j - 2] in lx.COMPARATIVES:
                 ex.places[idx] = replace(p, status="reference", reason="a comparison: no claim")
                 continue  # "flames going higher than the arches"
@@ -3443,12 +3456,7 @@ class ReportAnalyzer:
             ex.places[idx] = replace(p, status="reference", reason="where people came from: no claim")
         # "and the deanery, well, we haven't been to the deanery yet": a place not visited yet, and the same
         # place said just before as what the clause is about, claim nothing
-        for idx, p in enumerate(ex.places):
-            if p.status != "active" or p.via is not None:
-                continue
-            j = p.start_tok
-            while j > 0 and norms[j - 1] in lx.DETERMINERS:
-                j -= 1
+        for idx, p, j in self._bare_places(ex, norms):
             if not any(norms[max(0, j - len(k)):j] == k for k in lx.NOT_VISITED):
                 continue
             ex.places[idx] = replace(p, status="reference", reason="not been there yet: no claim")
@@ -4811,7 +4819,7 @@ class ReportAnalyzer:
         for i in range(1, len(norms) - 1):
             # "the bakery's going up", "the building opposite that's going up": burning, said of a place;
             # not "a tent going up at the school"
-            if norms[i : i + 2] != ("going", "up") or i in blocked or i + 1 in blocked:
+            if norms[i : i + 2] not in (("going", "up"), ("gone", "up")) or i in blocked or i + 1 in blocked:
                 continue
             prev = toks.tokens[i - 1].text.lower().replace("’", "'")
             if not (norms[i - 1] in ("is", "s", "are") or prev.endswith("'s") and (i - 1) in last_words
@@ -5148,6 +5156,8 @@ class ReportAnalyzer:
                     break  # "fire at the bakery is NOT knocked down": the cancellation denied
                 if k > 1 and norms[k - 1] == "to" and norms[k - 2] in ("trying", "try", "tried", "tries", "attempting"):
                     break  # "a lad's burnt his hands trying to put it out": tried, not done
+                if h[1] == "gone" and norms[h[0]:h[0] + 2] in (("out", "to"), ("over", "to"), ("to",), ("in", "to")):
+                    break  # "our doctor's gone out to him": gone to help, nothing over
                 if h[1] == "contained" and norms[h[0]:h[0] + 1] in (("to",), ("within",), ("in",), ("inside",)):
                     break  # "fire's contained to the bakery": still burning, there
                 cancelled_by = h[1]
@@ -5338,7 +5348,9 @@ class ReportAnalyzer:
     def _hearsay_before(toks: Tokens, norms: tuple[str, ...], a: int) -> bool:
         """Someone else's word opens the cue's sentence: "a woman here says the bakery's flooded"."""
         j = a - 1
-        while j >= 0 and toks.sentence_of[j] == toks.sentence_of[a] and a - j <= 10:
+        while j >= 0 and toks.sentence_of[j] == toks.sentence_of[a] and a - j <= 14:
+            if norms[j] == "tell" and (j == 0 or toks.sentence_start[j] or norms[j - 1] in ("please", "just", "so")):
+                return False  # "tell 'em the mill's safe": an order to pass it on, the speaker's own word
             if norms[j] in lx.HEARSAY_VERBS and not (j > 0 and norms[j - 1] in ("i", "we") and norms[j] not in ("heard", "hear")):
                 return True
             j -= 1

@@ -775,7 +775,7 @@ THING_SUBJECTS = {"car", "vehicle", "van", "truck", "lorry", "bus", "road", "tra
 SPREAD_PHRASES = [("has", "reached"), ("have", "reached"), ("reached",), ("spread", "to"), ("spreading", "to"),
                   ("spread", "into"), ("spreading", "into"), ("now", "covering"), ("covering",), ("its", "into"),
                   ("s", "into"), ("got", "into"), ("drifting", "over"), ("drifting", "across"), ("blowing", "across"),
-                  ("blowing", "over"), ("reaching",)]
+                  ("blowing", "over"), ("reaching",), ("gone", "through")]
 # Cues that say a place is shut: a danger only where a category is about access.
 LOCK_CUES = {("locked",), ("padlocked",), ("chained",), ("chained", "shut"), ("locked", "up")}
 # Parts of a structure that can be the subject of "collapsed" (no person is).
@@ -1092,7 +1092,7 @@ TELLING_VERBS = HEARSAY_VERBS - {"think", "thinks", "thought", "hear", "heard", 
     "swore", "tells", "insisted", "rang", "phoned", "texted", "radioed"}
 
 # What a speaker says to contradict what they were told: "... but it isn't", "it's still standing".
-CONTRADICTIONS = [("it", "isnt"), ("its", "not"), ("it", "wasnt"), ("it", "is", "not"), ("its", "still", "standing"),
+CONTRADICTIONS = [("it", "isnt"), ("its", "not"), ("it", "is", "standing"), ("its", "standing"), ("it", "is", "still", "standing"), ("it", "wasnt"), ("it", "is", "not"), ("its", "still", "standing"),
                   ("its", "fine"), ("its", "ok"), ("its", "okay"), ("its", "not", "true"), ("thats", "wrong"),
                   ("they", "arent"), ("theyre", "not"), ("it", "hasnt"), ("it", "has", "not"), ("it", "didnt"),
                   ("it", "hadnt"), ("they", "havent"), ("they", "didnt"), ("its", "intact"),
