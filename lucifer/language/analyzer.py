@@ -208,11 +208,14 @@ class ReportAnalyzer:
                              if any(set(norm_phrase(f)) & lx.CONVEYANCE_WORDS for f in lm.surface_forms)}
 
     # ------------------------------------------------------------------ vocabulary
+    def _role_cue_at(self, norms: tuple[str, ...], i: int, role: Role) -> bool:
+        """Does a cue of a category with ``role`` start at token ``i``?"""
+        h = self._cues.match_at(norms, i) if i < len(norms) else None
+        return h is not None and h[1][0] in self.kb.category_by_name and self.kb.category_by_name[h[1][0]].role == role
+
     def _person_cue_at(self, norms: tuple[str, ...], i: int) -> bool:
         """Does a cue of the critical role start at token ``i`` ("the baker | trapped")?"""
-        h = self._cues.match_at(norms, i) if i < len(norms) else None
-        return h is not None and h[1][0] in self.kb.category_by_name \
-            and self.kb.category_by_name[h[1][0]].role == Role.CRITICAL
+        return self._role_cue_at(norms, i, Role.CRITICAL)
 
     def _compound_forms(self) -> list[tuple[tuple[str, ...], str]]:
         """Names recombined from a landmark's own forms: "bus terminal" from "bus station" and "the terminal".
@@ -3018,9 +3021,7 @@ class ReportAnalyzer:
         for k in range(start, len(norms)):
             if toks.sentence_of[k] != sent:
                 return False
-            h = self._cues.match_at(norms, k)
-            if h is not None and h[1][0] in self.kb.category_by_name \
-                    and self.kb.category_by_name[h[1][0]].role == Role.DESIRABLE:
+            if self._role_cue_at(norms, k, Role.DESIRABLE):
                 return True
         return False
 
@@ -3975,8 +3976,7 @@ class ReportAnalyzer:
                     norms[m] in _PERSON_WORDS or norms[m] in lx.PERSON_SUBJECTS for m in range(max(0, a - 3), a)):
                 continue  # "the shop stuck to the side of the bread shop": joined on, no one stuck
             if norms[b - 1] == "clear" and norms[b:b + 2] == ("on", "the") and b + 2 < len(norms) and any(
-                    (h := self._cues.match_at(norms, m)) is not None and h[1][0] in self.kb.category_by_name
-                    and self.kb.category_by_name[h[1][0]].role == Role.UNDESIRABLE for m in range(b + 2, min(len(norms), b + 5))):
+                    self._role_cue_at(norms, m, Role.UNDESIRABLE) for m in range(b + 2, min(len(norms), b + 5))):
                 continue  # "all clear on the tyre fire at Doyle's": the danger is over, no place said safe
             if norms[a:b] == ("clear",) and a >= 3 and norms[a - 1] == "to" and any(
                     norms[m] in ("waiting", "wait", "waited", "for") for m in range(max(0, a - 6), a - 1)):
@@ -5300,26 +5300,22 @@ class ReportAnalyzer:
 
     def _danger_kept_off(self, norms: tuple[str, ...], a: int, b: int) -> bool:
         """A danger word at ``a:b`` that a place is kept from: "untouched by the flood", "a safe distance from the
-        fire", "well away from the smoke" (no place named right after it: "away from the fire at the bakery" says
-        where the fire is)."""
+        fire", "upstream of the flooding" (no place named right after it: "away from the fire at the bakery" says
+        where the fire is), "the fire's well away from the library", "smoke blowing over from somewhere else"; or
+        where people came from ("people from the fire are at the library")."""
         j = a - 1
         while j >= 0 and norms[j] in lx.ARTICLES:
             j -= 1
-        kept = j >= 1 and a - j <= 3 and norms[j] == "by" and norms[j - 1] in ("untouched", "unaffected", "spared", "unharmed", "undamaged") \
-            or j >= 1 and a - j <= 3 and norms[j] == "from" and norms[j - 1] in (
-                "distance", "away", "far", "safe", "clear", "sheltered", "protected", "shielded") \
-            or j >= 1 and a - j <= 3 and norms[j] == "of" and norms[j - 1] in ("upstream", "upwind", "uphill", "above", "way")
-        # ("upstream of the flooding", "out of the way of the floodwater"); people who came from it ("people from
-        # the fire are at the library")
-        if j >= 1 and a - j <= 3 and norms[j] == "from" and norms[j - 1] in lx.ORIGIN_PEOPLE:
+        word, link = (norms[j - 1], norms[j]) if j >= 1 and a - j <= 3 else ("", "")
+        if link == "from" and word in lx.ORIGIN_PEOPLE:
             return True
-        if norms[b:b + 3] in (("well", "away", "from"), ("away", "from", "the")) or norms[b:b + 4] == ("s", "well", "away", "from"):
-            return True  # "the fire's well away from the library": where it is not
-        if not kept:
-            after = norms[b:b + 6]
-            return any(after[i:i + 3] == ("from", "somewhere", "else") or after[i:i + 2] == ("from", "elsewhere")
-                       for i in range(len(after)))  # "it's just smoke blowing over from somewhere else"
-        return not any(i in self._place_tokens for i in range(b, min(len(norms), b + 4)))
+        after = norms[b:b + 6]
+        if after[:3] in (("well", "away", "from"), ("away", "from", "the")) or after[:4] == ("s", "well", "away", "from"):
+            return True
+        if word in lx.DANGER_KEPT_OFF.get(link, ()):
+            return not any(i in self._place_tokens for i in range(b, min(len(norms), b + 4)))
+        return any(after[i:i + 3] == ("from", "somewhere", "else") or after[i:i + 2] == ("from", "elsewhere")
+                   for i in range(len(after)))
 
     @staticmethod
     def _kept_clear_for(toks: Tokens, norms: tuple[str, ...], a: int) -> bool:
@@ -5830,7 +5826,7 @@ class ReportAnalyzer:
             if tail[:1] == ["empty"] and len(seg_places.get(k, [])) == 1:
                 continue  # "the gas cage is on fire, reception's empty, we checked it": said of it, its own
             nxt_words = [w for w in norms[segs[k][1]:min(len(norms), segs[k][1] + 8)] if w not in lx.FILLERS]
-            if set(tail[:2]) & {"fine", "okay", "ok", "alright", "grand"} and len(seg_places.get(k, [])) == 1 \
+            if set(tail[:2]) & lx.FINE_WORDS and len(seg_places.get(k, [])) == 1 \
                     and nxt_words[:2] in (["its", "the"], ["it", "is"]):
                 continue  # "the bridge is fine, it's the acoustic barn where the water's coming in": the contrast
             if len(tail) >= 3 and set(tail[:3]) & {"got", "has", "have", "is", "was", "are", "had"} \
@@ -5840,7 +5836,7 @@ class ReportAnalyzer:
                                            [self._opening(norms, a, b) for a, b in segs])
             if donor is not None and any(q.landmark == p.landmark and q.start_tok >= p.start_tok
                                          and sentence_of[q.start_tok] == sentence_of[p.start_tok]
-                                         and (set(norms[q.end_tok:q.end_tok + 2]) & {"fine", "okay", "ok", "alright", "grand"}
+                                         and (set(norms[q.end_tok:q.end_tok + 2]) & lx.FINE_WORDS
                                               and {"its", "thats"} & set(norms[q.end_tok + 1:q.end_tok + 5])
                                               or any(norms[m] in ("fine", "okay", "ok", "alright") and norms[m - 1] in (
                                                   "its", "thats") and "no" in norms[q.end_tok:m - 1]

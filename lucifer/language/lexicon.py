@@ -1068,6 +1068,15 @@ ORIGIN_PEOPLE = {"people", "folk", "resident", "familie", "family", "evacuee", "
                  "everyone", "everybody", "patient", "survivor", "tenant", "villager", "camper", "local",
                  "occupant", "staff", "neighbour", "neighbor", "passenger", "customer", "shopper", "visitor"}
 
+# What a speaker says of a place that is all right, and not a safe place ("the bridge is fine, it's the barn ...").
+FINE_WORDS = frozenset({"fine", "okay", "ok", "alright", "grand"})
+
+# Words before a danger that keep a place from it, by the word that links them: "untouched by the flood", "a safe
+# distance from the fire", "upstream of the flooding", "out of the way of the floodwater".
+DANGER_KEPT_OFF = {"by": {"untouched", "unaffected", "spared", "unharmed", "undamaged"},
+                   "from": {"distance", "away", "far", "safe", "clear", "sheltered", "protected", "shielded"},
+                   "of": {"upstream", "upwind", "uphill", "above", "way"}}
+
 # Comparatives before "than": "flames higher than the arches" measures by a place, claims nothing of it.
 COMPARATIVES = {"higher", "taller", "bigger", "larger", "worse", "further", "farther", "closer", "nearer",
                 "deeper", "louder", "brighter", "more", "less", "above", "over"}
