@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev44) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev45) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -66,6 +66,8 @@ COAST_ROAD = ROOT / "knowledge_bases" / "coast_road"
 FOREST_PARK = ROOT / "knowledge_bases" / "forest_park"
 DOCKSIDE = ROOT / "knowledge_bases" / "dockside_estate"
 HILL_FARM = ROOT / "knowledge_bases" / "hill_farm_show"
+DISTILLERY = ROOT / "knowledge_bases" / "distillery_glen"
+RETIREMENT = ROOT / "knowledge_bases" / "retirement_village"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -252,6 +254,12 @@ SETS = {
     "dev44/riverbend": _set("dev44/riverbend.jsonl", RIVERBEND, "d44r",
                             {"standard": 20, "messy": 30, "advanced_messy": 25}),
     "dev44/hill_farm_show": _set("dev44/hill_farm_show.jsonl", HILL_FARM, "d44h", THIRTY),
+    "dev45/market_square": _set("dev45/market_square.jsonl", MARKET_SQUARE, "d45m",
+                                {"standard": 20, "messy": 40, "advanced_messy": 30}),
+    "dev45/riverbend": _set("dev45/riverbend.jsonl", RIVERBEND, "d45r",
+                            {"standard": 20, "messy": 30, "advanced_messy": 25}),
+    "dev45/distillery_glen": _set("dev45/distillery_glen.jsonl", DISTILLERY, "dg", THIRTY),
+    "dev45/retirement_village": _set("dev45/retirement_village.jsonl", RETIREMENT, "rvg", THIRTY),
 }
 
 
