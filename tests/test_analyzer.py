@@ -13,7 +13,7 @@ from lucifer.embeddings import get_embedder
 from lucifer.kb import load_kb
 from lucifer.language import lexicon as lx
 from lucifer.language.analyzer import ReportAnalyzer, analyze
-from lucifer.language.text import norm
+from lucifer.language.text import norm, tokenize
 
 HARBOURSIDE = ROOT / "knowledge_bases" / "harbourside"
 NORTHGATE = ROOT / "knowledge_bases" / "northgate"
@@ -2857,5 +2857,108 @@ def test_dev43_dockside_estate(kb_analyzers, text, expected):
      [("secretary's cabin", "safe_standing")]),
 ])
 def test_dev44_phenomena(kb_analyzers, analyzer, kb, text, expected):
+    an = analyzer if kb == "ms" else kb_analyzers[kb]
+    assert claims(an, text) == expected
+
+
+@pytest.mark.parametrize(("kb", "text", "expected"), [
+    # where the speaker is: pulled in to, standing at, or named by a call sign; a stutter inside a name
+    ("ms", "we've just pulled into the bus station and the police station roof has come down",
+     [("police station", "hazard")]),
+    ("ms", "this is Engine 2 at the b-b-bakery, the back wall has partially collapsed", [("bakery", "hazard")]),
+    ("ms", "my dad's trapped in the lift at the flats and I'm in the park with my nan", [("apartment block", "victim")]),
+    ("hill_farm_show", "First-aid tent to control: a man collapsed in the ring we're tucked in the lee of",
+     [("sheep ring", "folk_in_need")]),
+    ("riverbend", "Night watchman at the tannery. Fumes right across the yard.", [("tannery", "threat")]),
+    ("retirement_village", "base this is the warden at foxglove house, a resident is stuck between floors in the lift",
+     [("foxglove house", "resident_in_trouble")]),
+    # questions asked or told: no report
+    ("ms", "someone said there's smoke near the school? is that true?", []),
+    ("ms", "the manager at the hotel is asking which roads are open", []),
+    ("riverbend", "is the red lion still the rendezvous point? ... ok, it's the green now, not the pub",
+     [("village green", "shelter")]),
+    # repairs: "it's Y, not X" after a pause word, "caller corrects", a place the speaker cannot see
+    ("ms", "a man's collapsed in the chemist. Sorry, it's the clinic, not the chemist.", [("clinic", "victim")]),
+    ("riverbend", "casualty at the surgery, caller corrects, casualty is at the rowing club", [("boathouse", "casualty")]),
+    ("riverbend", "smoke at the tavern, I meant it's the surgery, I'm on the wrong side of the green",
+     [("surgery", "threat")]),
+    ("riverbend", "the mill is flooded and the granary next to it, actually I can't see the granary from here",
+     [("mill", "threat")]),
+    ("retirement_village", "disregard my last about the lodge being a rest point; rest point is the chapel",
+     [("st fiacre's chapel", "cool_refuge")]),
+    ("retirement_village", "stand down on the live cable at the bowling green, it's been isolated", []),
+    ("retirement_village", "fire on the embankment, it hasn't reached the allotments yet",
+     [("railway embankment", "heat_and_flame")]),
+    # words for people in need and for dangers
+    ("ms", "we're in the warehouse, the ceiling's coming in, one of my crew is down",
+     [("warehouse", "hazard"), ("warehouse", "victim")]),
+    ("riverbend", "the caravan park is under water and there's a lad on the roof of a caravan waving",
+     [("caravan park", "casualty"), ("caravan park", "threat")]),
+    ("riverbend", "logs washing out of the sawmill into the lane", [("timber yard", "threat")]),
+    ("distillery_glen", "a stillman is missing, last seen going into the mash house", [("mash house", "people_in_peril")]),
+    ("distillery_glen", "the spate is undercutting the manse", [("manse", "spate_damage")]),
+    ("retirement_village", "Mrs Lowe in heron court has fallen in her kitchen", [("heron court", "resident_in_trouble")]),
+    ("retirement_village", "we're taking residents into the clubhouse to cool down", [("clubhouse", "cool_refuge")]),
+    # the speaker's own place as an anchor; people from a place; relations said in a relative clause
+    ("ms", "I run the bakery. The shop built onto our back wall has a girl inside with a cut hand",
+     [("pharmacy", "victim")]),
+    ("ms", "we've brought the elderly from the square into the library, it's our shelter", [("library", "safe_zone")]),
+    ("ms", "staging area is the building that the park across from the flats sits behind", [("warehouse", "safe_zone")]),
+    ("hill_farm_show", "muster point is now the cabin that calls the classes for the ring",
+     [("secretary's cabin", "safe_standing")]),
+    ("distillery_glen", "we're at the kirk, everyone's here, kirk's our rest centre", [("parish church", "gathering_place")]),
+    ("distillery_glen", "The mill the lade drives is flooding", [("malt mill", "spate_damage")]),
+    ("distillery_glen", "The place the maltings empties into is alight", [("pagoda kiln", "spirit_blaze")]),
+    ("distillery_glen", "The school that uses the hall as its gym is open as a rest centre",
+     [("primary school", "gathering_place")]),
+    ("retirement_village", "a lady's collapsed in the building the boiler house runs",
+     [("heron court", "resident_in_trouble")]),
+    # what was believed and found all right, a dismissal of the place taken back, a name given up for another
+    ("ms", "we thought the school was on fire but it's fine", []),
+    ("distillery_glen", "the copper house is burning, and the pagoda, no scratch the pagoda, that's just steam, just the "
+                        "copper house", [("still house", "spirit_blaze")]),
+    ("distillery_glen", "fire at the mash — at the still house", [("still house", "spirit_blaze")]),
+    ("retirement_village", "the pendant alarm from foxglove, that was Mrs Patel leaning on it, she's ok, cancel that", []),
+    # a tent put up is a shelter there; things in the water are debris; comforts the KB's safe places offer
+    ("riverbend", "the ferry landing, that's where the welfare tent's gone up", [("ferry landing", "shelter")]),
+    ("riverbend", "the timber yard is a mess, logs everywhere in the water", [("timber yard", "threat")]),
+    ("retirement_village", "the clubhouse has its generator running", [("clubhouse", "cool_refuge")]),
+    ("distillery_glen", "the village hall's got the generator going", []),  # (its safe places name no generator)
+])
+def test_dev45_phenomena(kb_analyzers, analyzer, kb, text, expected):
+    an = analyzer if kb == "ms" else kb_analyzers[kb]
+    assert claims(an, text) == expected
+
+
+def test_a_stutter_is_no_word_of_its_own():
+    """"st-station", "c-c-control": the stuttered start of a word goes; its span stays in the token's offsets."""
+    toks = tokenize("C-c-control, at the fire st-station, no-no, the co-op")
+    assert [t.text for t in toks.tokens] == ["control", "at", "the", "fire", "station", "no", "no", "the", "co", "op"]
+    assert toks.tokens[0].start == 0 and toks.tokens[4].start == len("C-c-control, at the fire ")
+    assert not toks.clause_start[4]  # ("fire station" stays one name)
+
+
+@pytest.mark.parametrize(("kb", "text", "expected"), [
+    # the words professionals and lay people use for each category, past the obvious ones
+    ("ms", "GCS 8, query head bleed, at the library front desk", [("library", "victim")]),
+    ("ms", "readings at forty percent LEL outside the garage", [("garage", "hazard")]),
+    ("ms", "black plumes off the roof of the hotel", [("hotel", "hazard")]),
+    ("ms", "exposed conductors in the school boiler room, treat as energised", [("school", "hazard")]),
+    ("ms", "evacuees are being fed and counted at the church", [("church", "safe_zone")]),
+    ("ms", "the library's opened up for folk to get warm", [("library", "safe_zone")]),
+    ("riverbend", "mill race is roaring and it's over the sill of the mill door", [("mill", "threat")]),
+    ("riverbend", "the surgery's drying them off and handing out cups of tea", [("surgery", "shelter")]),
+    ("riverbend", "two lads on the footbridge can't get off", [("footbridge", "casualty")]),
+    # the same words where nothing is claimed: an exercise, another year, what a place used to be, a home
+    ("ms", "exercise exercise exercise, casualty at the bank, end exercise", []),
+    ("ms", "in the floods of 2007 the school was the rest centre", []),
+    ("ms", "I never said the bank was burning, it's the cafe that's burning", [("cafe", "hazard")]),
+    ("ms", "opposite the church there used to be a bank; it's a cafe now", []),
+    ("riverbend", "the lock keeper's cottage is empty, he's stopping at his daughter's", []),
+    ("riverbend", "scratch my earlier call, the shape in the water at the weir was a log, nobody's gone in", []),
+    # a relation that ends its clause, then the place it meant said after a pause
+    ("ms", "the shop the chemist's is stuck onto — the bread place — is on fire", [("bakery", "hazard")]),
+])
+def test_dev46_vocabulary(kb_analyzers, analyzer, kb, text, expected):
     an = analyzer if kb == "ms" else kb_analyzers[kb]
     assert claims(an, text) == expected

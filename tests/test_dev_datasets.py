@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev45) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev47) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -260,6 +260,11 @@ SETS = {
                             {"standard": 20, "messy": 30, "advanced_messy": 25}),
     "dev45/distillery_glen": _set("dev45/distillery_glen.jsonl", DISTILLERY, "dg", THIRTY),
     "dev45/retirement_village": _set("dev45/retirement_village.jsonl", RETIREMENT, "rvg", THIRTY),
+    "dev46/market_square_vocab": _set("dev46/market_square_vocab.jsonl", MARKET_SQUARE, "d46v", EVEN),
+    "dev46/riverbend_vocab": _set("dev46/riverbend_vocab.jsonl", RIVERBEND, "d46rv", THIRTY),
+    "dev47/market_square": _set("dev47/market_square.jsonl", MARKET_SQUARE, "d47m", THIRTY),
+    "dev47/riverbend": _set("dev47/riverbend.jsonl", RIVERBEND, "d47r",
+                            {"standard": 20, "messy": 20, "advanced_messy": 20}),
 }
 
 

@@ -359,12 +359,24 @@ class ReportAnalyzer:
             if len(named) == 1:
                 for phrase in phrases:
                     entries.setdefault(norm_phrase(phrase), (named[0].name, "category"))
+        # 2d. comforts a KB's one safe-place category names ("out of the heat ..., with shade, water, clean air or
+        # generator power": "the generator's running" there)
+        desirable = self.kb.categories_with_role(Role.DESIRABLE)
+        if len(desirable) == 1:
+            said = set(norm_phrase(desirable[0].description))
+            for triggers, phrases in lx.DESCRIBED_COMFORTS.values():
+                if said & {w for t in triggers for w in norm_phrase(t)}:
+                    for phrase in phrases:
+                        entries.setdefault(norm_phrase(phrase), (desirable[0].name, "category"))
         # 3. category names themselves ("hazard", "safe zone")
         for cat in self.kb.categories:
             entries[norm_phrase(cat.name.replace("_", " "))] = (cat.name, "category")
         # 4. the glossary (strongest: the KB says so explicitly)
         for term in self.kb.glossary:
             entries[norm_phrase(term.term)] = (term.category, "glossary")
+        for term in self.kb.glossary:
+            for form in _verb_forms(term.term):  # "undercut": "the spate is undercutting its back wall"
+                entries.setdefault(norm_phrase(form), (term.category, "glossary"))
         for phrase in lx.NEUTRAL_PHRASES:
             entries[norm_phrase(phrase)] = ("", "neutral")
         for key, val in entries.items():
@@ -638,7 +650,10 @@ class ReportAnalyzer:
                     and not (log and (b - a >= 2 or prev in lx.PREPOSITIONS and len(norms[a]) >= 5)) \
                     and not (b - a >= 2 and prev in ("in", "at", "from") and a >= 2 and norms[a - 2] in ("live", "living", "lives", "stay", "staying")) \
                     and not (b - a >= 2 and (a == 0 or toks.sentence_start[a])
-                             and toks.tokens[b - 1].text.lower().replace("’", "'").endswith("'s")):
+                             and toks.tokens[b - 1].text.lower().replace("’", "'").endswith("'s")) \
+                    and not (toks.clause_start[a] and toks.tokens[b - 1].text.lower().replace("’", "'").endswith("'s")
+                             and any(norms[i - 1] == "the" and norms[i:i + b - a] == norms[a:b] for i in range(1, a))):
+                # ("we're at the kirk, ..., kirk's our rest centre now": said again, without its article)
                 # ("Jam tent's gone up": a name that opens its sentence as the subject, "the" left off)
                 # ("I live in toast rack, number 14": the article a learner of the language leaves out)
                 # the KB wrote "the tower": "bell tower" is not it (a log drops articles: "fire LPG plant",
@@ -752,6 +767,7 @@ class ReportAnalyzer:
         self._relative_clause_anchors(ex, norms)
         self._resolve_containers(ex, norms)
         ex.places.extend(self._definite_heads(toks, norms, ex.places))  # again, after descriptions ("the portal with ...")
+        self._speakers_premises(ex, norms)
         self._ordinal_anaphora(toks, norms, ex)
         self._apply_place_negation(ex)
         self._apply_pronoun_negation(ex, norms)
@@ -764,10 +780,67 @@ class ReportAnalyzer:
         self._apply_written_corrections(ex)
         self._apply_mistaken_first(ex, norms)
         self._apply_confirmations(ex, norms)
+        self._apply_unseen(ex, norms)
         self._apply_transit(ex)
         self._apply_cut_off(ex, norms)
         ex.places.sort(key=lambda p: p.start_tok)
         return ex
+
+    def _speakers_premises(self, ex: Extraction, norms: tuple[str, ...]) -> None:
+        """"Night watchman at the leather works. ... a stink right through the yard": a report that opens by
+        saying whose premises the speaker is on (a short first sentence naming one place and no claim) reads a
+        later bare "the yard" as that place's yard, not as the landmark whose name ends in "yard"."""
+        toks = ex.tokens
+        first = [p for p in ex.places if toks.sentence_of[p.start_tok] == 0 and p.status == "active"]
+        if len({p.landmark for p in first}) != 1 or not first[0].start_tok <= 6:
+            return
+        opener = first[0]
+        end = next((i for i in range(1, len(norms)) if toks.sentence_of[i] > 0), len(norms))
+        if end == len(norms) or end > 10 or any(self._cues.match_at(norms, i) is not None for i in range(end)):
+            return
+        for idx, p in enumerate(ex.places):
+            w = norms[p.start_tok]
+            if p.status != "active" or p.via is not None or p.end_tok - p.start_tok != 1 or p.start_tok < end \
+                    or w not in lx.PREMISES_PARTS or norms[p.start_tok - 1] != "the" or p.landmark == opener.landmark \
+                    or any(name_words(f) == (w,) for f in self.kb.landmark_by_name[p.landmark].surface_forms):
+                continue
+            ex.places[idx] = replace(self._mention(toks, p.start_tok, p.end_tok, opener.landmark),
+                                     reason=f"the {w} of '{opener.text}', where the speaker is")
+
+    @staticmethod
+    def _apply_unseen(ex: Extraction, norms: tuple[str, ...]) -> None:
+        """"the granary next to it -- actually I can't see the granary from here": the speaker cannot see the
+        place, so says nothing of it; named just before and taken back by a repair, that mention goes too."""
+        toks = ex.tokens
+        marker_starts = {a for a, _, _ in ex.markers}
+        for idx, p in enumerate(ex.places):
+            j = p.start_tok
+            while j > 0 and norms[j - 1] in lx.DETERMINERS:
+                j -= 1
+            if p.status == "active" and j >= 3 and norms[j - 3:j] == ("used", "to", "be"):
+                ex.places[idx] = replace(p, status="reference", reason="what a place used to be: no claim")
+                continue  # "across from the church there used to be a bank ...; it's the coffee place now"
+            if p.status == "active" and j >= 2 and norms[j - 1] == "said" and norms[j - 2] in ("never", "didnt", "not"):
+                ex.places[idx] = replace(p, status="negated", reason="the speaker never said it")
+                continue  # "I never said the bank was burning, I said the grocer's"
+            if p.status == "active" and j >= 2 and norms[j - 1] in ("reached", "got", "hit", "touched") and any(
+                    norms[m] in ("hasnt", "havent", "hadnt", "not", "nt", "never") for m in range(max(0, j - 4), j - 1)):
+                # "fire on the embankment, it hasn't reached the allotments yet": nothing there yet
+                ex.places[idx] = replace(p, status="reference", reason="not reached yet: no claim")
+                continue
+            if p.status != "active" or j < 2 or norms[j - 1] != "see" \
+                    or norms[j - 2] not in ("cant", "cannot", "couldnt", "not") or p.via is not None:
+                continue
+            ex.places[idx] = replace(p, status="reference", reason="the speaker cannot see it: no claim")
+            k = j - 2
+            while k > 0 and norms[k - 1] in {"i", "we", "you"} | lx.FILLERS:
+                k -= 1
+            if not any(k - 3 <= m <= k for m in marker_starts):
+                continue
+            for idx2, q in enumerate(ex.places):
+                if q.status == "active" and q.landmark == p.landmark and q.end_tok <= k and k - q.end_tok <= 8 \
+                        and toks.sentence_of[q.start_tok] == toks.sentence_of[p.start_tok]:
+                    ex.places[idx2] = replace(q, status="retracted", reason="taken back: the speaker cannot see it")
 
     @staticmethod
     def _apply_other_times(ex: Extraction, norms: tuple[str, ...]) -> None:
@@ -866,9 +939,29 @@ class ReportAnalyzer:
         active = sorted((p for p in ex.places if p.status == "active" and p.via is None), key=lambda p: p.start_tok)
         for p1, p2 in zip(active, active[1:], strict=False):
             gap = norms[p1.end_tok:p2.start_tok]
+            if (p1.landmark, p2.landmark) in related and 3 <= len(gap) <= 5 and gap[0] in ("that", "which") \
+                    and gap[-1] in lx.ARTICLES and toks.tokens[p1.end_tok + 1].text.lower().endswith(("s", "ed")) \
+                    and norms[p1.end_tok + 1] not in lx.COPULAS | {"has", "had"} and not toks.gaps[p1.end_tok].strip() \
+                    and not any(toks.clause_start[i] for i in range(p1.end_tok + 1, p2.end_tok)) \
+                    and (norms[p1.end_tok + 1] == "use" or not any(
+                        self._cues.match_at(norms, i) is not None for i in range(p1.end_tok + 1, p2.start_tok))):
+                # "the school that uses the hall as its gym": the hall only says which school
+                ex.places[ex.places.index(p2)] = replace(p2, status="reference",
+                                                         reason=f"reference point of a relative clause describing '{p1.text}'")
+                continue
             if (p1.landmark, p2.landmark) not in related or len(gap) > 2 \
                     or not all(w in lx.ARTICLES or w in ("that", "which") for w in gap) \
                     or any(toks.clause_start[i] for i in range(p1.end_tok, p2.start_tok + 1)):
+                continue
+            v = p2.end_tok
+            if v + 1 < len(norms) and norms[v].isalpha() and len(norms[v]) >= 4 \
+                    and toks.tokens[v].text.lower().endswith(("s", "ed")) \
+                    and norms[v] not in lx.COPULAS and (norms[v + 1] in lx.COPULAS | {"has", "have", "had"}
+                                                       or toks.clause_start[v + 1]) \
+                    and not toks.clause_start[v] and self._cues.match_at(norms, v) is None:
+                # "the mill the lade drives is on fire": a transitive verb closes the relative clause
+                ex.places[ex.places.index(p2)] = replace(p2, status="reference",
+                                                         reason=f"reference point of a relative clause describing '{p1.text}'")
                 continue
             end = p2.end_tok
             while end < len(norms) and end - p2.end_tok < 7 and not toks.clause_start[end] \
@@ -1036,6 +1129,8 @@ class ReportAnalyzer:
                     continue
                 if not gap[:1].isspace() or len(" ".join(key)) < 4:
                     continue  # "st--" is a word cut off (a false start), not a short name
+                if i >= 2 and end < len(norms) and norms[end] == norms[i - 2] and norms[end] in lx.PREPOSITIONS:
+                    continue  # "fire at the mash -- at the still house": the frame said again, the name given up
                 out.append(self._mention(toks, i, end, self._prefixes[key]))
                 taken.update(range(i, end))
                 break
@@ -1121,9 +1216,12 @@ class ReportAnalyzer:
                 continue
             if i + 1 < len(norms) and norms[i + 1] in ("that", "which", "where", "who") and not toks.clause_start[i + 1]:
                 continue  # "the compound that supplies it": a description for the relation passes
+            verb_next = i + 2 < len(norms) and i >= 2 and norms[i - 2] in lx.GENERIC_HEADS | lx.DESCRIPTION_HEADS \
+                and toks.tokens[i + 1].text.lower().endswith(("s", "ed")) \
+                and norms[i + 2] in lx.RELATION_ENDINGS | {"into", "in", "at"} and not toks.clause_start[i + 2]  # ("the maltings empties into")
             if i + 1 < len(norms) and not toks.clause_start[i + 1] and norms[i + 1].isalpha() \
                     and norms[i + 1] not in lx.FUNCTION_WORDS and self._relations.match_at(norms, i + 1) is None \
-                    and not toks.tokens[i].text.lower().endswith(("'s", "’s")):
+                    and not toks.tokens[i].text.lower().endswith(("'s", "’s")) and not verb_next:
                 continue  # "the lodge gate": a longer noun phrase ("the barn's out now" is the barn)
             out.append(self._mention(toks, i, i + 1, self._heads[w]))
         # "the car park" for "valley car park" / "the big car park": a two-word tail only one landmark's names end in
@@ -1498,8 +1596,10 @@ class ReportAnalyzer:
                 # named before; "a firefighter at the fire hall reports ... across the road from his station"
                 mine = [p for p in places if p.end_tok <= i - 1 and p.status == "active" and any(
                     name_words(f)[-1:] == (norms[i],) for f in self.kb.landmark_by_name[p.landmark].surface_forms)]
-                if not mine and norms[i - 1] in ("my", "our") and norms[i] in ("building", "place", "premises", "storeroom",
-                                                                          "stockroom", "kitchen", "cellar", "shop"):
+                part = norms[i] in lx.SIDE_WORDS | {"back", "side"} and norms[i + 1:i + 2] in (("wall",), ("side",), ("gable",)) \
+                    or norms[i] in ("wall", "gable")  # "the little shop built onto our east wall"
+                if not mine and norms[i - 1] in ("my", "our") and (part or norms[i] in (
+                        "building", "place", "premises", "storeroom", "stockroom", "kitchen", "cellar", "shop")):
                     # "I'm at the pharmacy. The shop our building's built onto": where the speaker is
                     mine = [p for p in places if p.end_tok <= i - 1 and p.status == "active"
                             and self._speaker_here(norms, p)]
@@ -1511,9 +1611,11 @@ class ReportAnalyzer:
                         continue
                 if mine:
                     last = max(mine, key=lambda p: p.end_tok)
-                    out.append(replace(self._mention(toks, i - 1, i + 1, last.landmark),
-                                       reason=f"the speaker's '{norms[i]}', '{last.text}'"))
-                    taken.update(range(i - 1, i + 1))
+                    end = i + 2 if norms[i] in lx.SIDE_WORDS | {"back", "side"} and norms[i + 1:i + 2] in (
+                        ("wall",), ("side",), ("gable",)) else i + 1
+                    out.append(replace(self._mention(toks, i - 1, end, last.landmark),
+                                       reason=f"the speaker's '{' '.join(norms[i:end])}', '{last.text}'"))
+                    taken.update(range(i - 1, end))
                     continue
             names = shared.get(norms[i])
             if not names or i in taken or (i - 1) in taken or norms[i - 1] not in ("the", "that", "this"):
@@ -1628,6 +1730,8 @@ class ReportAnalyzer:
                     continue
                 if not word.isalnum() or len(word) < self.MISHEARD_MIN_CHARS - 1 or any(j in cue_tokens for j in span):
                     continue
+                if i > 0 and (norms[i - 1] in ("a", "an", "another", "one") or norms[i - 1] in lx.NUMBER_WORDS):
+                    continue  # "a stillman is missing": a counted thing, no slip of a name ("St Fillan's")
                 head = norms[i]
                 scores = sorted(((difflib.SequenceMatcher(None, word, key).ratio(), name)
                                  for key, name in self._spellings.items()
@@ -1793,6 +1897,9 @@ class ReportAnalyzer:
             pause_after = b >= len(norms) or toks.clause_start[b]
             if words[-1:] == ("wrong",) and nxt in ("word", "words"):
                 continue  # "gas leak, sorry, gas leak, wrong word": said of the word already repaired
+            if words == ("wrong",) and nxt in ("side", "end", "bank") and norms[b + 1:b + 2] == ("of",) and a > 0 \
+                    and norms[a - 1] == "the":
+                continue  # "I'm looking at it from the wrong side of the green": where from, no repair
             if words == ("disregard",) and (b >= len(norms) or toks.sentence_start[b]
                                             or not pause_after and nxt in lx.FALSE_ALARM_OBJECTS):
                 continue  # "that's not smoke, it's steam, disregard. The tower's still leaking": it closes its sentence
@@ -1891,11 +1998,35 @@ class ReportAnalyzer:
                 for a, b, (phrase, flipped) in ordered:
                     self._resolve_one(ex, toks, norms, a, b, phrase, flipped, place_tokens, marker_tokens,
                                       inverse_pass=False)
+        if self.kb.relations and rel_hits:
+            self._unresolved_own_heads(ex, toks, norms, rel_hits)
         for d in [p for p in ex.places if p.via is not None and p.status == "active"]:
             for idx, p in enumerate(ex.places):
                 if p.via is None and p.status == "active" and d.start_tok <= p.start_tok and p.end_tok <= d.end_tok:
                     # "the landing it faces": the head word named the place the description reaches
                     ex.places[idx] = replace(p, status="reference", reason=f"part of the description '{d.text}'")
+
+    def _unresolved_own_heads(self, ex: Extraction, toks: Tokens, norms: tuple[str, ...],
+                              rel_hits: list[tuple[int, int, tuple[str, bool]]]) -> None:
+        """"the cabin that calls the classes for the ring": a head word only one landmark's name ends in, then a
+        relative clause saying one of that landmark's own KB relations, whose anchor did not resolve (two
+        rings). The head names the place; the description only agrees with it."""
+        heads = getattr(self, "_heads", {})
+        covered = {i for p in ex.places for i in range(p.start_tok, p.end_tok)}
+        for i in range(1, len(norms) - 1):
+            w = norms[i]
+            if w not in heads or i in covered or norms[i - 1] != "the" or norms[i + 1] not in ("that", "which") \
+                    or toks.gaps[i + 1].strip() or w in lx.UNNAMING_HEADS:
+                continue
+            name = heads[w]
+            said = [(a, phrase, flipped) for a, _b, (phrase, flipped) in rel_hits if i + 1 <= a <= i + 4
+                    and not any(toks.gaps[k].strip() for k in range(i + 2, a + 1))]
+            if not any(rel.phrase == phrase and (rel.object if flipped else rel.subject) == name
+                       for _a, phrase, flipped in said for rel in self.kb.relations):
+                continue
+            ex.places.append(replace(self._mention(toks, i - 1, i + 1, name),
+                                     reason=f"'{toks.tokens[i].text}' names it; the description after it only agrees"))
+            covered.update((i - 1, i))
 
     def _shared_tails(self) -> dict[tuple[str, ...], set[str]]:
         """Last words of names that several landmarks share ("escalator shaft": main and deep escalator
@@ -2163,8 +2294,13 @@ class ReportAnalyzer:
                         and not toks.clause_start[end] and norms[end] not in lx.COORDINATORS:
                     end += 1
                 after = norms[anchor.end_tok:end]
+                # a verb closes the description: the last word of the clause or one before a preposition ("the building
+                # the boiler house runs,": key "run"; not "the surgery's windows are all blown in")
+                verb = any((w.endswith("s") or w.endswith("ed")) and (i + 1 == end or norms[i + 1] in lx.RELATION_ENDINGS)
+                           for i in range(anchor.end_tok, end) if (w := toks.tokens[i].text.lower()).isalpha()
+                           and norms[i] not in lx.FUNCTION_WORDS | lx.CLAUSE_SUBJECTS | {"there", "here"})
                 if not after or after[0] in lx.COPULAS | lx.PREPOSITIONS \
-                        or not any(w.endswith("s") or w.endswith("ed") or w in lx.RELATION_ENDINGS for w in after):
+                        or not (verb or any(w.endswith("s") or w.endswith("ed") or w in lx.RELATION_ENDINGS for w in after)):
                     continue  # ("a tank wagon on the loading siding is leaking": the anchor's own predicate)
             outer = next((q for q in ex.places if q is not anchor and q.via is not None and q.status == "active"
                           and q.start_tok <= anchor.start_tok and anchor.end_tok <= q.end_tok), None)
@@ -2278,6 +2414,13 @@ class ReportAnalyzer:
                     prev = max(earlier, key=lambda p: p.end_tok)
                     if self._follow(prev.landmark, phrase, "", inverse=flipped)[0] == anchor.landmark:
                         anchor = prev
+        if anchor is not None and not pronoun and anchor.start_tok >= b and anchor.via is None \
+                and any(d in toks.gaps[k] for k in range(b, anchor.start_tok + 1) for d in ("—", "–", "--", " - ")) \
+                and (found := self._inverse_anchor(ex, norms, a, phrase)) is not None and found[2] is False \
+                and found[0].end_tok < a and found[1] < found[0].start_tok:
+            # "the shop the chemist's is stuck onto -- the bread place --": the relation ends its clause; the place
+            # after the pause says which place was meant, it anchors nothing
+            anchor = None
         if (anchor is None) != inverse_pass:
             return
         head_end = a
@@ -2355,6 +2498,11 @@ class ReportAnalyzer:
             # inverse: "the one (that) the garage sits behind", "the row it shares a wall with"
             if generic and not (words and words[-1] in ("it", "they", "theyre", "we", "i")):
                 return
+            k = b
+            while k < len(norms) and norms[k] in lx.ARTICLES and not toks.clause_start[k]:
+                k += 1
+            if k > b and any(p.start_tok == k for p in ex.places):
+                return  # "the park across from the flats": the relation has its object, it is not left stranded
             found = self._inverse_anchor(ex, norms, a, phrase)
             if found is None:
                 return
@@ -2805,6 +2953,9 @@ class ReportAnalyzer:
         """The place the speaker says they are at: "I'm at the pharmacy", "Coastguard lookout here"."""
         if cls._speaker_at(norms, p) or norms[p.end_tok:p.end_tok + 1] == ("here",):
             return True
+        if norms[p.end_tok:p.end_tok + 1] == ("to",) and norms[p.end_tok + 1:p.end_tok + 2] in lx.CALL_RECEIVERS \
+                and all(w in lx.DETERMINERS | lx.FILLERS for w in norms[:p.start_tok]):
+            return True  # a call sign opening the report: "St John's tent to control: ..."
         j = p.start_tok - 1
         while j >= 0 and norms[j] in lx.DETERMINERS | lx.FILLERS:
             j -= 1
@@ -2842,7 +2993,17 @@ class ReportAnalyzer:
                 and a - j < 3 and not any(p.end_tok == j and p.status == "active" for p in ex.places):
             j -= 1  # (not past a name's own last word: "car park A lies downhill of")
         anchor = next((p for p in ex.places if p.end_tok == j and p.status == "active"), None)
-        if anchor is None and j > 1 and norms[j - 1] in ("it", "its", "they", "theyre", "we", "i") \
+        if anchor is None:
+            # "the building that the park across from the flats sits behind": the anchor is the place the
+            # reference point before the verb only said where it is
+            ref = next((p for p in ex.places if p.end_tok == j and p.status == "reference"
+                        and p.reason.startswith("reference point for '")), None)
+            owner = max((p for p in ex.places if ref is not None and p.status == "active" and p.via is None
+                         and p.end_tok <= ref.start_tok), key=lambda p: p.end_tok, default=None)
+            if ref is not None and owner is not None and ref.start_tok - owner.end_tok <= 4:
+                anchor = owner
+        we_are = j > 1 and norms[j - 1] == "were" and "'" in ex.tokens.tokens[j - 1].text.replace("’", "'")
+        if anchor is None and j > 1 and (norms[j - 1] in ("it", "its", "they", "theyre", "we", "i") or we_are) \
                 and (norms[j - 2] in lx.GENERIC_HEADS | {"that", "which"} or self._plain_head(norms, j - 2)):
             # "the building it sits next to": the pronoun is the anchor; "Coastguard lookout here. The building
             # we share the headland with": the speaker's place is
@@ -2852,7 +3013,7 @@ class ReportAnalyzer:
             while hs > 0 and norms[hs - 1] in lx.DETERMINERS and not (norms[hs - 1] == "its" and (
                     "'" in ex.tokens.tokens[hs - 1].text.replace("’", "'") or norms[hs] in lx.ARTICLES)):
                 hs -= 1  # (not "it's the shop it's stuck onto", "its the shop its on")
-            if norms[j - 1] in ("we", "i"):
+            if norms[j - 1] in ("we", "i") or we_are:  # ("the ring we're tucked in the lee of")
                 at = [p for p in ex.places if p.end_tok <= hs and p.status != "retracted" and self._speaker_here(norms, p)]
                 return (max(at, key=lambda p: p.end_tok), hs, "pronoun") if at else None  # type: ignore[return-value]
             # the antecedent is spoken before the head ("the landing it faces": not the landing)
@@ -3124,7 +3285,7 @@ class ReportAnalyzer:
                         and set(norms[p.end_tok:nxt.start_tok]) & {"its", "it", "thats"}:
                     corrects = True  # "Fire at the bank. ... he says it's not the bank, it's the bakery": said as
                     # a correction, of the bank said before
-                if not earlier and not corrects and norms[j] == "not":
+                if not earlier and (not corrects or nxt is None) and norms[j] == "not":
                     said = next((q for q in ex.places if q.status == "active" and j - 2 <= q.end_tok <= j
                                  and q.landmark != p.landmark and toks.sentence_of[q.start_tok] == toks.sentence_of[j]
                                  and [w for w in norms[max(0, q.start_tok - 3):q.start_tok] if w not in lx.ARTICLES][-1:]
@@ -3303,6 +3464,9 @@ class ReportAnalyzer:
     def _called_station(self, toks: Tokens, norms: tuple[str, ...], p: PlaceMention) -> bool:
         """"Red Watch to TCC, we're at the east portal": a call sign, "to", the station called, a pause."""
         a = p.start_tok
+        if norms[p.end_tok:p.end_tok + 2] == ("this", "is") and toks.sentence_of[a] == 0 \
+                and all(w in lx.FILLERS | lx.DETERMINERS for w in norms[:a]):
+            return True  # "uh base this is Sue at Heron Court": the station called, then who calls
         if a < 2 or norms[a - 1] != "to" or toks.sentence_of[a] != 0 or p.end_tok >= len(norms) \
                 or not toks.clause_start[p.end_tok]:
             return False
@@ -3406,6 +3570,8 @@ class ReportAnalyzer:
             if self._evacuated_to(toks, norms, p.end_tok):
                 ex.places[idx] = replace(p, status="reference", reason="evacuated to another place: no claim")
                 continue
+            if any(norms[k:k + 2] == ("last", "seen") for k in range(max(0, j - 7), j)):
+                continue  # "Last seen going into the still house": where the missing were last, no passing through
             for k in range(max(0, j - 5), j):
                 hit = self._transit.match_at(norms, k)
                 if hit is not None and norms[k] == "were" and "'" not in toks.tokens[k].text.replace("’", "'") \
@@ -3997,6 +4163,22 @@ class ReportAnalyzer:
             if norms[a:b] == ("flooded", "out") and (norms[b:b + 1] == ("of",) or a > 0 and norms[a - 1] in lx.ORIGIN_PEOPLE
                                                       | {"anyone", "anybody", "those", "families", "the"}):
                 continue  # "families flooded out of their homes": who they are, no place flooded
+            if norms[a:b] == ("stuck",) and any(norms[k:k + n] in lx.HELD_UP for k in range(b, min(len(norms), b + 8))
+                                                 for n in (2, 3)
+                                                 if not any(toks.clause_start[m] for m in range(b, k + 1))):
+                continue  # "we've been stuck in traffic outside the town hall": held up, in no danger
+            if norms[a:b] == ("use",) and toks.tokens[a].text.lower() in ("uses", "used") and any(
+                    norms[k:k + 2] in (("as", "its"), ("as", "their"), ("as", "his"), ("as", "her"))
+                    for k in range(b, min(len(norms), b + 7))):
+                continue  # "the school that uses the hall as its gym": what one place uses another for, no refuge
+            if norms[a:b] in (("collapsed",), ("collapsing",), ("fallen",)) and b < len(norms) \
+                    and not toks.clause_start[b] and norms[b].isalpha() and norms[b] != "in" \
+                    and not {"roof", "building", "ceiling"} & set(norms[b:b + 3]) \
+                    and next((w for w in reversed(norms[max(0, a - 3):a]) if w not in lx.ARTICLES | {"some", "big"}), "") \
+                    in ("under", "beneath", "underneath"):
+                continue  # "a postman under a collapsed shelving unit": what pins the person, no danger of the place
+            if norms[a:b] in (("leaning",), ("leaning", "on")) and self._person_before(norms, a):
+                continue  # "that was Mrs Patel leaning on it": a person leaning, nothing giving way
             if norms[b - 1] == "fall" and norms[b:b + 1] == ("of",):
                 continue  # "the top bench has had a fall of ground": a fall of rock, no person's fall
             if norms[a:b] in (("everyone", "out"), ("everybody", "out")) and norms[b:b + 2] == ("of", "the") \
@@ -4091,6 +4273,13 @@ class ReportAnalyzer:
                     norms[j] in ("it", "its") for j in range(max(0, a - 3), a)) \
                     and not any(norms[j] in lx.PERSON_SUBJECTS for j in range(max(0, a - 3), a)):
                 continue  # "it's got a span down, it's hanging in the water": a thing in the water, no person
+            if cue.category == self._person_category and norms[a] == "in" and any(
+                    norms[j] in lx.FLOATING_THINGS for j in range(max(0, a - 3), a)) \
+                    and not any(norms[j] in lx.PERSON_SUBJECTS or norms[j] in _PERSON_WORDS for j in range(max(0, a - 4), a)):
+                und = self._category_for_role(lx.UNDESIRABLE, "debris in the flood water")
+                if und is None:
+                    continue
+                cue = replace(cue, category=und, reason="things in the water, no person")  # "logs everywhere in the water"
             if norms[b:b + 1] in (("burns",), ("burn",), ("inhalation",)) and cue.category != self._person_category \
                     and self.kb.category_by_name[cue.category].role == Role.UNDESIRABLE:
                 continue  # "chemical burns to the face", "acid burns": the injury, the person's claim
@@ -4121,11 +4310,13 @@ class ReportAnalyzer:
         cues.extend(self._predicative_cues(ex, norms, blocked | {i for c in cues for i in range(c.start_tok, c.end_tok)}))
         cues.extend(self._person_cues(ex, norms, blocked | neutral | {i for c in cues for i in range(c.start_tok, c.end_tok)}))
         cues.extend(self._another_one_cues(toks, norms, cues, blocked))
+        cues.extend(self._people_down(toks, norms, blocked | {i for c in cues for i in range(c.start_tok, c.end_tok)}))
         cues = self._evacuation_destinations(ex, norms, cues)
         cues.sort(key=lambda c: c.start_tok)
         cues = self._apply_cue_repairs(ex, cues)
         cues = self._drop_restarted_cues(toks, norms, cues)
         cues = self._apply_false_alarms(toks, norms, cues)
+        cues = self._mistaken_beliefs(toks, norms, cues)
         self._markers_now = ex.markers
         cues = self._apply_non_reports(toks, norms, cues)
         cues = self._unknown_source(ex, norms, cues)
@@ -4219,6 +4410,22 @@ class ReportAnalyzer:
                     or any(cl.cue is c for cl in claims):
                 continue
             n = toks.sentence_of[c.start_tok]
+            asked_of = {p.landmark for p in ex.places if p.status in ("active", "retracted")
+                        and toks.sentence_of[p.start_tok] == n}
+            denied = [p for p in ex.places if p.status == "negated" and p.landmark in asked_of
+                      and n < toks.sentence_of[p.start_tok] <= n + 2]
+            if denied:
+                # "are we still using the red lion as the rendezvous point? ... so it's the green now, not the pub":
+                # the answer puts another place in the asked one's stead
+                d = denied[0]
+                instead = max((p for p in ex.places if p.status == "active" and p.landmark not in asked_of
+                               and toks.sentence_of[p.start_tok] == toks.sentence_of[d.start_tok]
+                               and p.end_tok <= d.start_tok), key=lambda p: p.end_tok, default=None)
+                if instead is not None and not any(cl.place.landmark == instead.landmark and cl.cue.category == c.category
+                                                   for cl in claims):
+                    out.append(Claim(instead, replace(c, status="active", reason=f"the answer: '{instead.text}', "
+                                                                                 f"not '{d.text}'")))
+                continue
             sent = [i for i in range(len(norms)) if toks.sentence_of[i] == n]
             words = [norms[i] for i in sent]
             if not any(words[k:k + 2] == ["location", "of"] for k in range(len(words))) and "where" not in words:
@@ -4505,6 +4712,12 @@ class ReportAnalyzer:
             if any(q.end_tok == start for q in ex.places):
                 break
             start -= 1
+        norms = toks.norms(0, len(toks))
+        if self._speaker_at(norms, p):
+            # "she's crying and I'm in the park": what is said before the speaker says where they are is not
+            # said of that place
+            start = max(start, max((i for i in range(start, p.start_tok) if norms[i] in ("i", "im", "we", "were")),
+                                   default=start))
         return start, end
 
     def _semantic_claims(self, ex: Extraction, claims: list[Claim], denied: list[Claim]) -> list[Claim]:
@@ -4579,6 +4792,12 @@ class ReportAnalyzer:
                 continue  # "I'm scared the cladding might come off onto the playground": feared, no claim to guess at
             if self._says_who_and_where(toks, norms, p):
                 continue  # "Scaffolder on the roof of the hotel, over.": who is calling and from where
+            if any(q.landmark == p.landmark and q.status == "retracted" and q.reason.startswith("restarted")
+                   and q.end_tok <= p.start_tok and any(
+                       norms[k] in ("im", "were") and norms[k + 1] in ("at", "on", "in", "by", "up")
+                       and not any(toks.clause_start[m] for m in range(k + 1, q.start_tok + 1))
+                       for k in range(max(0, q.start_tok - 9), q.start_tok - 1)) for q in ex.places):
+                continue  # "I'm on the quad at the top of the pit, the gravel pit, and ...": where the speaker is
             if self._kept_clear_for(toks, norms, p.start_tok):
                 continue  # "keep the road clear for the ladder coming down from the fire station": no claim to guess
             after = [w for w in norms[p.end_tok:p.end_tok + 5] if w not in lx.FILLERS]
@@ -4670,6 +4889,53 @@ class ReportAnalyzer:
         return CueMention(b, end, start, stop, toks.text[start:stop], label, "embedding", replaces=old.start_tok,
                           reason=f"MiniLM reading of the repair {score:.2f} (runner-up {runner:.2f})")
 
+    @staticmethod
+    def _mistaken_beliefs(toks: Tokens, norms: tuple[str, ...], cues: list[CueMention]) -> list[CueMention]:
+        """"we thought the school was on fire but it's fine", "we thought Mr Hale was missing ... but he's -- no
+        he's fine": what was believed, then found all right, is denied."""
+        out = list(cues)
+        for idx, c in enumerate(out):
+            if c.status != "active" or c.polarity != "affirmed":
+                continue
+            n = toks.sentence_of[c.start_tok]
+            thought = next((k for k in range(c.start_tok - 1, max(-1, c.start_tok - 9), -1)
+                            if norms[k] == "thought" and k > 0 and norms[k - 1] in ("we", "i", "they", "wed", "id", "had")
+                            and toks.sentence_of[k] == n), None)
+            if thought is None:
+                continue
+            but = next((k for k in range(c.end_tok, min(len(norms), c.end_tok + 10))
+                        if norms[k] == "but" and toks.sentence_of[k] == n), None)
+            if but is None or not any(norms[m] in lx.FINE_WORDS for m in range(but + 1, min(len(norms), but + 8))
+                                      if toks.sentence_of[m] == n):
+                continue
+            out[idx] = replace(c, polarity="denied", reason="believed, then found all right")
+        return out
+
+    def _people_down(self, toks: Tokens, norms: tuple[str, ...], blocked: set[int]) -> list[CueMention]:
+        """"two of my crew are down", "firefighter down, need assistance": a person down, hurt or out cold."""
+        cat = self._person_category
+        if cat is None:
+            return []
+        out = []
+        for i in range(2, len(norms)):
+            if norms[i] in ("fallen", "fell") and i not in blocked and norms[i - 1] in ("has", "have", "s", "just") \
+                    and self._person_before(norms, i) and (i + 1 == len(norms) or toks.clause_start[i + 1] or norms[
+                        i + 1] in ("on", "down", "over", "in", "at", "and", "badly", "again", "off")):
+                # "Mr Bowen in the flats has fallen on the stairs": a person fallen
+                start, end = toks.tokens[i].start, toks.tokens[i].end
+                out.append(CueMention(i, i + 1, start, end, toks.text[start:end], cat, "lexicon", reason="a person fallen"))
+        for i in range(1, len(norms)):
+            if norms[i] != "down" or i in blocked or not (
+                    i + 1 == len(norms) or toks.clause_start[i + 1]
+                    or norms[i + 1] in ("need", "needs", "and", "in", "at", "inside", "here", "there")):
+                continue
+            if not self._person_before(norms, i) or norms[i - 1] not in ("is", "are", "s", "re") \
+                    and norms[i - 1] not in lx.CREW_NOUNS | lx.WORKER_PERSONS | {"man", "men", "woman", "person"}:
+                continue
+            start, end = toks.tokens[i].start, toks.tokens[i].end
+            out.append(CueMention(i, i + 1, start, end, toks.text[start:end], cat, "lexicon", reason="a person down"))
+        return out
+
     def _person_cues(self, ex: Extraction, norms: tuple[str, ...], blocked: set[int]) -> list[CueMention]:
         """"a person at the window", "there's someone under it", "a woman clinging to a fence post":
         a member of the public placed somewhere in a report is someone to rescue."""
@@ -4708,8 +4974,13 @@ class ReportAnalyzer:
                                                                 "apparently", "certainly", "stuck"}:
                 k += 1
             if k >= len(norms) or norms[k] not in lx.PERSON_SITUATIONS or toks.clause_start[k] \
-                    or worker and norms[k] not in lx.PINNED_SITUATIONS:
-                continue
+                    or worker and norms[k] not in lx.PINNED_SITUATIONS and not any(
+                        norms[m] in ("waving", "stranded", "screaming", "shouting", "clinging") for m in range(k, min(
+                            len(norms), k + 7)) if not any(toks.clause_start[t] for t in range(k, m + 1))):
+                continue  # ("a lad on the roof of one waving at me": in distress there, whatever his work)
+            if toks.tokens[i].text.lower().replace("’", "'").endswith("'s") and i >= 2 \
+                    and norms[i - 1] in ("his", "her", "their", "my", "our", "your") and norms[i - 2] in ("at", "to", "from"):
+                continue  # "the keeper's been stopping at his daughter's in town": her home, no person in need
             if norms[k] == "left" and k + 1 < len(norms) and norms[k + 1] in lx.ARTICLES | {"his", "her", "their", "it", "them"}:
                 continue  # "somebody's left a van right across the entrance": left something, not left behind
             if any(norms[m] in lx.NEGATORS and not toks.clause_start[m + 1] for m in range(max(0, j - 2), i)):
@@ -4868,9 +5139,10 @@ class ReportAnalyzer:
                     if earlier is not None:
                         start, first = earlier, earlier
                 words = [w for w in norms[a:b] if w not in lx.FILLERS]
+                nxt = sentences[n + 1] if n + 1 < len(sentences) and n + 1 in questions else None
                 if words[-2:] in (["or", "no"], ["or", "not"], ["or", "what"]) \
-                        or [w for w in norms[a:b] if w not in lx.FILLERS - {"right"}][-3:] in (["is", "that", "right"], ["is", "that", "true"], ["is", "it", "true"],
-                                          ["is", "that", "correct"]) or any(
+                        or _asks_if_true(norms[a:b]) or nxt is not None and _asks_if_true(norms[nxt[0]:nxt[1]], alone=True) \
+                        or any(
                         words[i:i + 3] in (["want", "to", "ask"], ["wanted", "to", "ask"], ["can", "i", "ask"])
                         for i in range(len(words))):
                     asked.update(range(a, b))  # "the fire, it is at the garage or no?": the whole sentence asks
@@ -4896,6 +5168,11 @@ class ReportAnalyzer:
             first = norms[opener] if opener < b else ""
             if first in lx.INSTRUCTION_VERBS and set(norms[a:b]) & lx.INSTRUCTION_WORDS:
                 dropped[n] = "an instruction to the system, not a report"
+            elif any(norms[k].isdigit() and len(norms[k]) == 4 and 1900 <= int(norms[k]) <= 2025
+                     and norms[k - 1] in ("in", "of", "back") for k in range(max(a, 1), b)) \
+                    and set(norms[a:b]) & {"was", "were", "used"}:
+                dropped[n] = "said of another year, not a report"  # "In the big snow of 2009 the hall was the warm room"
+        asked |= _indirect_questions(toks, norms)
         supposed = self._conditional_tokens(toks, norms)
         self._non_report_tokens = ({i for n, (a, b) in enumerate(sentences) if n in dropped for i in range(a, b)}
                                    | asked | supposed)
@@ -4990,12 +5267,25 @@ class ReportAnalyzer:
                         and norms[i + len(key)] in lx.FALSE_ALARM_NOT_BEFORE and "nothing" in key \
                         and not toks.clause_start[i + len(key)]:
                     continue  # "there's nothing left of the bakery": what is gone, not a false alarm
+                if (norms[i : i + len(key)] == key or stutter) and any(
+                        p.status == "negated" and 0 <= i - p.end_tok <= 3
+                        and p.reason.removeprefix("negated by '").rstrip("'").lower() in lx.RETRACT_VERBS
+                        and all(w in ("thats", "that", "s", "its", "it", "was", "is") for w in norms[p.end_tok:i])
+                        and any(q.status == "active" and q.start_tok >= i + len(key) and sentence_of[q.start_tok] == sentence_of[i]
+                                and any(o.landmark == q.landmark and o.status == "active" and o.end_tok <= p.start_tok
+                                        for o in places_now) for q in places_now)
+                        for p in places_now):
+                    # "the copper house is burning, ... scratch the pagoda, that's just steam, just the copper house":
+                    # said of the place taken back; the place said before it is said again and keeps its claim
+                    continue
                 if norms[i : i + len(key)] == key or stutter:
                     # "disregard my last, the spill is at the store": an earlier report is withdrawn and
                     # what follows replaces it
                     until = i if phrase in lx.PREVIOUS_REPORT_WITHDRAWN else len(norms)
                     if until == i and norms[i + len(key):i + len(key) + 1] in (("about",), ("regarding",), ("re",)):
-                        until = len(norms)  # "disregard my last about water in the sheds": what it was about
+                        # "disregard my last about water in the sheds": what it was about (up to a semicolon: "...;
+                        # rest point is now the chapel" is the new report)
+                        until = next((j for j in range(i + len(key), len(norms)) if ";" in toks.gaps[j]), len(norms))
                     if phrase in lx.DISMISSED_BEFORE:
                         until = i + len(key)  # ("'supermarket smoke was a barbecue' ...; 'water tower leaking'")
                     # "no fire at the chip shop, it's just steam, but the hotel's got a proper fire going": a
@@ -5158,6 +5448,9 @@ class ReportAnalyzer:
                     break  # "a lad's burnt his hands trying to put it out": tried, not done
                 if h[1] == "gone" and norms[h[0]:h[0] + 2] in (("out", "to"), ("over", "to"), ("to",), ("in", "to")):
                     break  # "our doctor's gone out to him": gone to help, nothing over
+                if h[1] == "gone" and norms[h[0]:h[0] + 1] == ("up",) \
+                        and self.kb.category_by_name[cue.category].role == Role.DESIRABLE:
+                    break  # "that's where the welfare tent's gone up": put up, not gone
                 if h[1] == "contained" and norms[h[0]:h[0] + 1] in (("to",), ("within",), ("in",), ("inside",)):
                     break  # "fire's contained to the bakery": still burning, there
                 cancelled_by = h[1]
@@ -6054,6 +6347,11 @@ class ReportAnalyzer:
             for n in range(len(ahead) - 2):
                 if ahead[n:n + 3] == ("not", "there", "yet") or ahead[n:n + 2] in (("hasnt", "reached"),
                                                                                    ("not", "reached")):
+                    r = p.end_tok + n + 2
+                    while r < len(norms) and norms[r] in lx.DETERMINERS:
+                        r += 1
+                    if ahead[n + 1] == "reached" and any(q.start_tok == r for q in ex.places):
+                        break  # "fire on the embankment, it hasn't reached the allotments yet": those not reached
                     out.append((p.landmark, p.end_tok + n))
                     break
         return out
@@ -6215,6 +6513,9 @@ class ReportAnalyzer:
                 b = i + len(key)
                 if norms[i:b] != key or any(j in cue_tokens for j in range(i, b)) or b >= len(norms):
                     continue
+                if any(norms[m] in lx.NEGATORS | {"hasnt", "havent", "hadnt", "isnt", "not", "nt", "never", "wont"}
+                       for m in range(max(0, i - 3), i) if not any(toks.clause_start[t] for t in range(m + 1, i + 1))):
+                    continue  # "it hasn't reached the plots yet": not spread there
                 k = b
                 while k < len(norms) and norms[k] in lx.DETERMINERS and k - b < 2:
                     k += 1
@@ -6402,6 +6703,54 @@ _FIRST_WAS_RIGHT_STARTS = frozenset(key[0] for key in _FIRST_WAS_RIGHT)
 def _first_was_right_at(norms: tuple[str, ...], i: int) -> bool:
     """Does one of ``_FIRST_WAS_RIGHT`` begin at token ``i``?"""
     return norms[i] in _FIRST_WAS_RIGHT_STARTS and any(norms[i:i + len(key)] == key for key in _FIRST_WAS_RIGHT)
+
+
+def _verb_forms(term: str) -> list[str]:
+    """Other forms of a one-word glossary term that may be a verb: "undercut" -> "undercuts", "undercutting",
+    "undercutted"; "flood" -> "flooding", "flooded"; "collapse" -> "collapsing", "collapsed"."""
+    w = term.strip().lower()
+    if not w.isalpha() or len(w) < 4 or " " in w:
+        return []
+    if w.endswith("e"):
+        return [w + "s", w[:-1] + "ing", w + "d"]
+    forms = [w + "s", w + "ing", w + "ed"]
+    if w[-1] not in "aeiouwxy" and w[-2] in "aeiou" and w[-3] not in "aeiou":
+        forms += [w + w[-1] + "ing", w + w[-1] + "ed"]  # ("undercutting")
+    return forms
+
+
+def _indirect_questions(toks: Tokens, norms: tuple[str, ...]) -> set[int]:
+    """"guests asking which roads are open", "wondering if the hall is safe", "can you tell me whether the bridge
+    is passable": a question told, not asked; what it asks is no report. The tokens from the question word to
+    the end of its clause."""
+    out: set[int] = set()
+    wh = {"which", "whether", "if", "where", "what", "when", "how"}
+    for i in range(1, len(norms) - 1):
+        w, q = norms[i - 1], norms[i]
+        told = w in ("asking", "ask", "asked", "wondering", "wondered") and q in wh \
+            or w == "know" and (q in ("if", "whether") or i >= 3 and norms[i - 3:i - 1] in (
+                ("do", "you"), ("does", "anyone"), ("does", "anybody"), ("anyone", "d"))) and q in wh \
+            or w == "me" and i >= 2 and norms[i - 2] in ("tell", "telling", "show") and q in wh \
+            or w in ("check", "checking", "confirm") and q in ("if", "whether")
+        if not told:
+            continue
+        # (to the end of the sentence, past commas of speech, "if the west road is, er, passable", up to a new
+        # clause with a subject of its own or one joined by "and" / "but")
+        end = next((k for k in range(i + 1, len(norms)) if toks.sentence_start[k]
+                    or toks.clause_start[k] and norms[k] in lx.CLAUSE_SUBJECTS
+                    or norms[k] in ("and", "but", "so") and norms[k - 1] not in wh), len(norms))
+        out.update(range(i, end))
+    return out
+
+
+def _asks_if_true(words: tuple[str, ...], alone: bool = False) -> bool:
+    """"..., is that right?", "is it true?": the sentence asks whether what it says is so. ``alone``: the
+    sentence is only that check ("... by the square? is that, is that true?" asks about the one before)."""
+    kept = [w for w in words if w not in lx.FILLERS - {"right"}]
+    checks = (["is", "that", "right"], ["is", "that", "true"], ["is", "it", "true"], ["is", "that", "correct"])
+    if kept[-3:] not in checks:
+        return False
+    return not alone or all(w in ("is", "that", "it", "true", "right", "correct") for w in kept)
 
 
 def _anchored_at(q: PlaceMention, landmark: str) -> bool:

@@ -32,6 +32,12 @@ def _add(role: str, phrases: str) -> None:
 
 
 _add(UNDESIRABLE, """
+water has gone over|water's gone over|gone over both ends|is roaring|brown and boiling|over the sill|stopper|
+half under|are afloat|is afloat|afloat and|drifting into|jammed against|starting to bow|stones pinging off|
+thick black stuff|black plumes|plumes of|plume of|exposed conductors|treat as energised|energised|
+fractured main|fractured gas main|lel|percent lel|stinging smell|chemically smell|chemical smell|eyes stream|
+eyes are streaming|eyes streaming|vapour's that strong|hanging by a thread|hanging by one bolt|hanging off its brackets|
+hanging off its bracket|swinging in the wind|oak down|big tree down|branches down|write-off|oven's gone up|
 s a lake|is a lake|like a lake|turned into a lake|come clean over|gone over the top|come over the top|overtopped|
 dropped into the river|dropped into the water|gone into the river|bridge has gone|bridge s gone|
 going up like|tins going up|bottles going up|roof is about to go|roof s about to go|wall is about to go|about to give way|going to give way|could go any minute|
@@ -88,6 +94,14 @@ uprooted|windthrown|windthrow|blown down|
 """.replace("\n", ""))
 
 _add(DESIRABLE, """
+turned the waiting room over|drying them off|drying people off|cups of tea|camp beds|the dry place|a dry place|
+put the kettle on|kettle's on|heating's up|heating is on|making sandwiches|ticking names off|ticking people off|
+got everyone gathered|everyone gathered|everybody gathered|fed and counted|being fed|being counted|reception point|roll call|warm room|warm up|
+get warm|a warm and a brew|teas going|tea going|ticked off a list|being ticked off|being registered|registered and fed|
+being looked after|looked after there|marshalling there|are marshalling|taking in anyone|taking in everyone|
+handing out blankets|blankets and brews|blankets and tea|welfare point|we're gathering|we are gathering|gathering everyone|gathering everybody|gathering the visitors|gathering the residents|
+gathering the evacuees|gathering people in|to cool down|to cool off|nice and cool|cool and shady|shady and cool|in the shade|it's shady|it s shady|cold drinks|
+air conditioned|air-conditioned|air con|
 room for maybe|room for about|room for another|got room for|have room for|plenty of room|room for more|room for a few more|room for three or four more|room for plenty more|dry and solid|the walls held|walls have held|the roof held|roof has held|waiting safely|sheltering safely|safely inside|blankets out|dry and warm|warm and dry|put the families in there|put everyone in there|
 put them in there|put people in there|
 air's clean|air is clean|the air is clean|clean air|air's okay|air is okay|air's ok|air is ok|air's fine|air is fine|
@@ -124,6 +138,13 @@ can stay put|can stay where they are|stay put in there|no risk there|is no risk|
 """.replace("\n", ""))
 
 _add(CRITICAL, """
+can't get off|cant get off|won't answer|wont answer|can't open the doors|cant open the doors|never came back|
+hasn't come back|hasnt come back|up to his knees|up to her knees|head bleed|query head bleed|can't feel his legs|can't feel her legs|cant feel his legs|cant feel her legs|
+can't feel their legs|come off the ladder|came off the ladder|fallen off the ladder|fell off the ladder|gcs|
+got it in his eyes|got it in her eyes|in his eyes|in her eyes|very muddled|she's muddled|he's muddled|dehydrated|hasn't had a drink|hasnt had a drink|not had a drink|drowsy and confused|clammy|
+without his insulin|without her insulin|without their insulin|without his medication|without her medication|
+without their medication|without his tablets|without her tablets|shaking and sweating|stuck between floors|
+stuck between two floors|last seen going into|last seen heading into|last seen at|last seen in|last seen near|won't come out|wont come out|refusing to come out|refuses to come out|won't leave|wont leave|refusing to leave|refuses to leave|
 swept off his feet|swept off her feet|swept off their feet|hanging on to|hanging onto|
 stretcher needed|need a stretcher|needs a stretcher|stretcher required|stretcher to|
 need to get them out|need hands to get them out|to get them out|can't get them out|cannot get them out|
@@ -308,7 +329,8 @@ BACK_REFERENCE_WORDS = {"it", "its", "s", "is", "has", "been", "thats", "that", 
                         "ive"}
 
 # Phrases that contain cue words but claim nothing ("the smoke alarm went off", "fire crew on site").
-NEUTRAL_PHRASES = ["roof is still on", "roof's still on", "been found safe", "found safe and well", "found safe at", "stable staff", "stable lads", "stable lad", "stable hands", "stable hand", "stable girls",
+NEUTRAL_PHRASES = ["went under in the crash", "went bust", "gone bust", "above the flood line", "above the waterline", "above the water line", "above the flood level",
+                   "above the high water mark", "roof is still on", "roof's still on", "been found safe", "found safe and well", "found safe at", "stable staff", "stable lads", "stable lad", "stable hands", "stable hand", "stable girls",
                    "stable block", "stable door", "stable doors", "use it to bring", "use it to get", "use it to take", "use it to move", "use it to evacuate",
                    "use that to bring", "use that to get", "out of use", "out of action", "out of service", "out of the smoke", "away from the smoke", "out of the rain", "out of the water", "out of the fumes",
                    "people sitting in here", "people sitting in there", "sitting in here", "waiting in here",
@@ -346,7 +368,11 @@ _WITHDRAWN_WARNINGS = ["withdraw my earlier warning", "withdraw my warning", "wi
                        "withdraw that warning", "withdraw the warning", "withdraw my report"]
 
 # Whole-report "nothing to see" markers that cancel every claim in their sentence.
-FALSE_ALARM = ["false alarm", "never mind", "nevermind", "disregard my last", "disregard the last report",
+FALSE_ALARM = ["false alarm", "scratch their earlier call", "scratch my earlier call", "scratch our earlier call",
+               "nobody's gone in", "no one's gone in", "nobody went in", "nothing's happened at ours",
+               "nothing has happened at ours", "that was yesterday's call", "that was yesterday", "exercise exercise", "for the exercise only", "that's for the exercise",
+               "none of this is real", "this is a test message", "the scenario has", "tomorrow's exercise",
+               "in the exercise", "stand down on the", "standing down on the", "stood down on the", "never mind", "nevermind", "disregard my last", "disregard the last report",
                "nothing in it", "nothing to it", "just steam", "only steam", "just fog", "only fog", "just mist", "only mist", "extractor fan", "was just a", "was only a",
                "was just their", "was just the", "its just their", "is just their", "its only their", "nothing to worry about", "ignore my last", "cancel my last",
                "disregard my last message", "disregard previous", "disregard my earlier report",
@@ -404,7 +430,8 @@ STRONG_REPAIR = [
     "ive got that wrong", "got that wrong", "hold up", "edit", "corrects her", "corrects him", "corrected her",
     "corrected him", "corrects me", "corrected me", "rewind", "back up", "start again", "let me start again",
     "change of plan", "change of plans", "plans have changed", "withdrawing that", "i'm withdrawing that",
-    "i withdraw that", "i take that back", "tell a lie", "wrong block",
+    "i withdraw that", "i take that back", "tell a lie", "wrong block", "caller corrects", "caller corrected",
+    "caller correcting", "caller now says", "he corrects", "she corrects", "they correct", "crew corrects",
 ]
 WEAK_REPAIR = ["sorry", "actually", "or rather", "rather", "wait", "no", "nope", "nah", "naw", "er no", "uh no", "well no",
                "oops", "whoops", "hang on", "hold on"]
@@ -526,6 +553,21 @@ INVERSE_PHRASES = {"in front of": "behind", "behind": "in front of", "above": "b
 # Words between an anchor and a trailing relation: "the one the garage sits behind".
 INVERSE_VERBS = {"sits", "sit", "is", "s", "stands", "stand", "lies", "lie", "located", "situated", "are", "was",
                  "right", "directly", "just"}
+# Parts of any premises: after a report opens on where the speaker is, "the yard" is that place's yard.
+PREMISES_PARTS = {"yard", "courtyard", "forecourt", "garden", "gardens", "grounds", "lawn", "playground", "kitchen",
+                  "cellar", "carpark"}
+# Words that open a clause with a subject of its own ("..., we've got smoke").
+CLAUSE_SUBJECTS = {"i", "im", "ive", "we", "were", "weve", "he", "hes", "she", "shes", "they", "theyre", "theyve",
+                   "it", "its", "there", "theres", "you", "youre", "everyone", "someone", "nobody"}
+# "stuck ... for ages", "stuck in traffic": held up on the way, not trapped.
+HELD_UP = {("in", "traffic"), ("in", "the", "traffic"), ("in", "a", "queue"), ("in", "the", "queue"), ("in", "a", "jam"),
+           ("in", "a", "tailback"), ("in", "the", "tailback")}
+# Things said to be "in the water" that are no person: debris of a flood ("logs everywhere in the water").
+FLOATING_THINGS = {"log", "logs", "timber", "debris", "car", "cars", "caravan", "caravans", "barrel", "barrels", "bin",
+                   "bins", "tree", "trees", "branch", "branche", "pallet", "pallets", "rubbish", "plank", "planks",
+                   "drum", "drums"}
+# Who a call sign calls ("Station two to control"): a place said just before "to" one of these is the caller's.
+CALL_RECEIVERS = {("control",), ("base",), ("dispatch",), ("command",), ("all",), ("ops",), ("hq",), ("comms",)}
 # Relation words too common to resolve without a head noun ("blocked by the bank").
 AMBIGUOUS_HEADLESS = {("by",), ("inside",), ("within",), ("near",), ("above",), ("below",), ("before",), ("under",),
                       ("over",), ("underneath",), ("beneath",), ("on", "top", "of")}
@@ -623,6 +665,8 @@ RETRACT_VERBS = {"scratch", "strike", "forget", "cancel", "remove", "minus", "dr
 TRANSIT = ["people in off", "taking people in off", "in off the", "walked up from", "walked down from", "walked over from", "walked from", "drove from", "drove up from",
            "driven from", "ran from", "run from", "cycled from", "anyone coming off", "anybody coming off", "everyone coming off", "people coming off", "evacuated from", "moved out of", "moved from", "relocated from", "decanted from", "brought out of",
            "heading to", "heading for", "heading towards", "heading toward", "headed to", "headed for", "head to",
+           "heading up towards", "heading down towards", "creeping towards",
+           "spreading towards", "moving up towards",
            "passing", "passed", "moving past", "going past", "driving past", "walking past", "past",
            "on our way to", "on the way to", "our way to", "on my way to", "my way to", "on his way to", "on her way to", "on their way to", "en route to", "enroute to", "going to", "driving to",
            "walking to", "moving to", "moving towards", "proceeding to", "approaching", "leaving",
@@ -631,13 +675,14 @@ TRANSIT = ["people in off", "taking people in off", "in off the", "walked up fro
            "watching from", "watching it from", "looking on from", "see it from", "seen from",
            "returning from", "parked at", "parked by", "parked near", "parked the truck at", "parked the truck by",
            "staged at", "regrouping at", "relocating to", "diverting to", "rerouting to", "going round",
-           "we're at", "we are at", "currently at", "positioned at", "standing by at", "checking", "will check",
+           "we're at", "we are at", "currently at", "and i'm in", "and i'm at", "and we're in", "and i am in",
+           "and i am at", "positioned at", "standing by at", "checking", "will check",
            "we're outside", "we are outside", "we're by", "we are by", "we're in front of", "we're opposite",
            "we're standing at", "we're standing outside", "we are standing outside", "standing outside",
            "nobody's been in", "no one's been in", "nobody has been in", "no one has been in",
            "we're parked at", "outside of", "went via", "going via", "came via", "parked up at",
            "parked up by", "parked up outside", "walking from", "driving from", "came out of", "stood down at",
-           "standing down at",
+           "standing down at", "pulled into", "pulling into", "pulled up at", "pulled up outside", "pulled in at",
            "about to check", "searching", "sweeping", "en route", "route via", "routing via", "routed via",
            "route through", "routing through", "routed through", "go via", "called out to", "been called out to", "got called out to", "keep clear of", "stay clear of",
            "keep away from", "stay away from", "keep everyone away from", "keep people away from",
@@ -1064,9 +1109,8 @@ DISTRESS_VERBS = {"shouting", "yelling", "screaming", "waving", "crying", "bangi
 
 # People said to come from a place ("twenty folk from the almshouses"): the place is where they came from.
 # (as the tokenizer normalises them: "families" -> "familie", "residents" -> "resident")
-ORIGIN_PEOPLE = {"people", "folk", "resident", "familie", "family", "evacuee", "guest", "kid", "children", "pupil",
-                 "everyone", "everybody", "patient", "survivor", "tenant", "villager", "camper", "local",
-                 "occupant", "staff", "neighbour", "neighbor", "passenger", "customer", "shopper", "visitor"}
+ORIGIN_PEOPLE = MOVED_PEOPLE | {"folk", "family", "villager", "camper", "local", "neighbour", "neighbor", "passenger",
+                                "visitor"}
 
 # What a speaker says of a place that is all right, and not a safe place ("the bridge is fine, it's the barn ...").
 FINE_WORDS = frozenset({"fine", "okay", "ok", "alright", "grand"})
@@ -1074,7 +1118,7 @@ FINE_WORDS = frozenset({"fine", "okay", "ok", "alright", "grand"})
 # Words before a danger that keep a place from it, by the word that links them: "untouched by the flood", "a safe
 # distance from the fire", "upstream of the flooding", "out of the way of the floodwater".
 DANGER_KEPT_OFF = {"by": {"untouched", "unaffected", "spared", "unharmed", "undamaged"},
-                   "from": {"distance", "away", "far", "safe", "clear", "sheltered", "protected", "shielded"},
+                   "from": {"distance", "away", "far", "safe", "clear", "sheltered", "protected", "shielded", "back"},
                    "of": {"upstream", "upwind", "uphill", "above", "way"}}
 
 # Comparatives before "than": "flames higher than the arches" measures by a place, claims nothing of it.
@@ -1198,6 +1242,18 @@ DESCRIBED_KINDS: dict[str, tuple[frozenset[str], list[str]]] = {
                "lights went out", "lights have gone out", "in the dark", "blackout"]),
 }
 
+# Comforts a KB's safe-place category may name ("... with shade, water, clean air or generator power"): where
+# the one desirable category's description has a trigger word, these phrases say a place is such a place.
+DESCRIBED_COMFORTS: dict[str, tuple[frozenset[str], list[str]]] = {
+    "generator": (frozenset({"generator", "generators"}),
+                  ["generator running", "generator going", "generator's running", "generator is running",
+                   "got the generator going", "has its generator running", "on the generator", "generator on"]),
+    "shade": (frozenset({"shade", "shaded", "shady"}),
+              ["in the shade", "it's shady", "nice and shady", "under the trees", "out of the sun"]),
+    "cool": (frozenset({"heat", "cool", "cooling"}),
+             ["fans going", "fans on", "fans running", "fans and all", "it's cool", "cool in there", "cool inside"]),
+}
+
 # More phrases of the kinds above that read as their kind but do not vote on which category a kind is (so the
 # kinds map onto a KB's categories as they did before these were added).
 DANGER_KIND_EXTRA: dict[str, list[str]] = {
@@ -1211,8 +1267,13 @@ DANGER_KIND_EXTRA: dict[str, list[str]] = {
                  "conductors are on", "conductor down", "conductors down", "feeder is down", "feeder down", "lines down",
                  "line down", "lines are down", "line is down"],
     "gas": ["rotten egg", "rotten eggs", "rotten-egg smell", "rotten egg smell", "eggy smell", "smell like eggs", "smells like eggs", "smell of eggs", "smells of eggs", "smell like rotten eggs", "there's a hiss", "a loud hiss", "hissing out of", "h2s", "so2", "co2", "sulphur dioxide", "hydrogen sulphide", "carbon dioxide", "methane", "methane leak", "natural gas", "co detected", "co reading", "co readings", "co levels", "high co", "carbon monoxide", "carbon monoxide alarm", "co alarm"],
-    "collapse": ["coming off in chunks", "coming away in chunks", "falling off in chunks", "in chunks", "breaking up", "is breaking up", "coming adrift", "come adrift", "broken adrift", "peeling off", "coming off in slabs", "coming away in slabs", "roof fall on", "roof fall in", "roof has split", "roof split", "is bending", "it's bending", "is fall down", "has fall down", "fallen down"],
-    "water": ["yard's a lake", "is a lake", "'s a lake", "like a lake", "completely under", "cut off by water", "cut off by the water", "cut off by floodwater", "cut off by the flood", "over its banks", "over the banks", "out of its banks", "broken its banks", "burst their banks", "bursting its banks", "scoured", "scoured out", "water coming through the ceiling", "water through the ceiling", "water pouring through the ceiling",
+    "collapse": ["roof's coming in", "roof is coming in", "ceiling's coming in", "ceiling is coming in", "coming off in chunks", "coming away in chunks", "falling off in chunks", "in chunks", "breaking up", "is breaking up", "coming adrift", "come adrift", "broken adrift", "peeling off", "coming off in slabs", "coming away in slabs", "roof fall on", "roof fall in", "roof has split", "roof split", "is bending", "it's bending", "is fall down", "has fall down", "fallen down"],
+    "water": ["washing out", "washing away", "logs floating", "floating away",
+              "water coming through", "water's coming through", "water is coming through", "seeping through the walls",
+              "water at the front door", "water at the door", "water's at the door", "water's at the front door",
+              "water at the windows", "water's at the windows", "water is at the windows", "water's right round",
+              "water right round", "water all round", "water's all round", "water all around", "water's all around",
+              "yard's a lake", "is a lake", "'s a lake", "like a lake", "completely under", "cut off by water", "cut off by the water", "cut off by floodwater", "cut off by the flood", "over its banks", "over the banks", "out of its banks", "broken its banks", "burst their banks", "bursting its banks", "scoured", "scoured out", "water coming through the ceiling", "water through the ceiling", "water pouring through the ceiling",
               "water coming through the roof", "ceiling's leaking", "ceiling is leaking", "water pouring through"],
     "access": ["rocks across", "rocks across it", "rocks across the road", "debris across", "debris right across", "fallen oak", "fallen beech", "fallen ash", "fallen branch", "fallen branches"],
     "ground": ["hole opened up", "hole has opened up", "hole just opened up", "floor has opened", "floor's opened", "sinkhole", "sink hole", "ash a foot deep", "ash is knee deep", "ash knee deep", "ash's knee deep", "ash is ankle deep", "a foot of ash", "feet of ash", "inches of ash", "deep in ash", "covered in ash", "heaped with ash", "buried in ash", "under the ash", "drifts of ash", "ash drifts", "half buried", "half-buried", "slurry", "full of slurry", "sludge", "silt", "full of silt"],

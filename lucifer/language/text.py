@@ -118,13 +118,25 @@ def _spans_break(norms: tuple[str, ...], i: int, end: int) -> bool:
     return bool(breaks) and any(i < k < end for k in breaks)
 
 
+def _stutter_of(fragment: str, word: str) -> bool:
+    """Is ``fragment`` a stuttered start of ``word`` ("st" of "station", "c" of "control")?"""
+    f, w = fragment.lower(), word.lower()
+    return f.isalpha() and len(f) <= 3 and len(f) < len(w) and w.startswith(f)
+
+
 def tokenize(text: str) -> Tokens:
     toks: list[Token] = []
     gaps: list[str] = []
     prev_end = 0
-    for i, m in enumerate(_TOKEN.finditer(text)):
-        toks.append(Token(i, m.group(), norm(m.group()), m.start(), m.end()))
-        gaps.append(text[prev_end : m.start()])
+    for m in _TOKEN.finditer(text):
+        word, gap = m.group(), text[prev_end : m.start()]
+        m_start = m.start()
+        while gap == "-" and toks and _stutter_of(toks[-1].text, word):
+            # "st-station", "c-c-control": a stuttered start of the word after it is no word of its own
+            m_start = toks.pop().start
+            gap = gaps.pop()
+        toks.append(Token(len(toks), word, norm(word), m_start, m.end()))
+        gaps.append(gap)
         prev_end = m.end()
     sent: list[bool] = []
     clause: list[bool] = []
