@@ -682,7 +682,7 @@ TRANSIT = ["people in off", "taking people in off", "in off the", "walked up fro
            "nobody's been in", "no one's been in", "nobody has been in", "no one has been in",
            "we're parked at", "outside of", "went via", "going via", "came via", "parked up at",
            "parked up by", "parked up outside", "walking from", "driving from", "came out of", "stood down at",
-           "standing down at", "pulled into", "pulling into", "pulled up at", "pulled up outside", "pulled in at",
+           "standing down at", "pulled into", "pulling into",
            "about to check", "searching", "sweeping", "en route", "route via", "routing via", "routed via",
            "route through", "routing through", "routed through", "go via", "called out to", "been called out to", "got called out to", "keep clear of", "stay clear of",
            "keep away from", "stay away from", "keep everyone away from", "keep people away from",
