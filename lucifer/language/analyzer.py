@@ -780,7 +780,7 @@ class ReportAnalyzer:
         self._apply_written_corrections(ex)
         self._apply_mistaken_first(ex, norms)
         self._apply_confirmations(ex, norms)
-        self._apply_unseen(ex, norms)
+        self._apply_no_claim_frames(ex, norms)
         self._apply_transit(ex)
         self._apply_cut_off(ex, norms)
         ex.places.sort(key=lambda p: p.start_tok)
@@ -808,9 +808,14 @@ class ReportAnalyzer:
                                      reason=f"the {w} of '{opener.text}', where the speaker is")
 
     @staticmethod
-    def _apply_unseen(ex: Extraction, norms: tuple[str, ...]) -> None:
-        """"the granary next to it -- actually I can't see the granary from here": the speaker cannot see the
-        place, so says nothing of it; named just before and taken back by a repair, that mention goes too."""
+    def _apply_no_claim_frames(ex: Extraction, norms: tuple[str, ...]) -> None:
+        """Frames that name a place and claim nothing of it:
+
+        * what a place used to be ("across from the church there used to be a bank");
+        * a place the speaker never said ("I never said the bank was burning, I said the grocer's");
+        * a place a danger has not reached ("fire on the embankment, it hasn't reached the allotments yet");
+        * a place the speaker cannot see ("the granary next to it -- actually I can't see the granary from here");
+          named just before and taken back by a repair, that mention goes too."""
         toks = ex.tokens
         marker_starts = {a for a, _, _ in ex.markers}
         for idx, p in enumerate(ex.places):
@@ -4912,7 +4917,8 @@ class ReportAnalyzer:
         return out
 
     def _people_down(self, toks: Tokens, norms: tuple[str, ...], blocked: set[int]) -> list[CueMention]:
-        """"two of my crew are down", "firefighter down, need assistance": a person down, hurt or out cold."""
+        """"two of my crew are down", "firefighter down, need assistance": a person down, hurt or out cold; and
+        "Mr Bowen in the flats has fallen on the stairs": a person fallen."""
         cat = self._person_category
         if cat is None:
             return []
