@@ -2924,6 +2924,12 @@ def test_dev44_phenomena(kb_analyzers, analyzer, kb, text, expected):
     ("riverbend", "the timber yard is a mess, logs everywhere in the water", [("timber yard", "threat")]),
     ("retirement_village", "the clubhouse has its generator running", [("clubhouse", "cool_refuge")]),
     ("distillery_glen", "the village hall's got the generator going", []),  # (its safe places name no generator)
+    # another word for the one place of its kind; "a box" is no "the box"; a place the public is kept back from
+    ("retirement_village", "smoke pouring out of the little church", [("st fiacre's chapel", "heat_and_flame")]),
+    ("ms", "smoke coming out of the chapel", [("church", "hazard")]),
+    ("hill_farm_show", "a horse is down in a box at the horsebox park, the groom's trapped with it",
+     [("horsebox park", "folk_in_need")]),
+    ("hill_farm_show", "please keep the public back from the crossing below the old bridge as a precaution", []),
 ])
 def test_dev45_phenomena(kb_analyzers, analyzer, kb, text, expected):
     an = analyzer if kb == "ms" else kb_analyzers[kb]

@@ -176,6 +176,9 @@ class ReportAnalyzer:
             self._places.add(key, name)
         for key, name in _phonetic_forms(kb, keys, labelled):
             self._places.add(key, name)
+        for key, name in _synonym_forms(kb):
+            self._places.add(key, name)
+            self._needs_article.add(key)  # ("the little stone church" for the one chapel; "church services" no name)
         self._role_category = self._map_roles()
         self._cues: PhraseMatcher[tuple[str, str]] = PhraseMatcher(lx.CUE_SKIPPABLE)
         self._build_cues()
@@ -645,6 +648,9 @@ class ReportAnalyzer:
             acronym = b == a + 1 and a > 0 and len(toks.tokens[a].text) >= 2 and toks.tokens[a].text.isupper()
             # (not the first word: "ECR to bridge" is who calls)
             heading = (a == 0 or toks.sentence_start[a]) and b < len(norms) and toks.gaps[b].strip().startswith(":")
+            if norms[a:b] in self._needs_article and prev in ("a", "an", "another") and b - a == 1 \
+                    and toks.tokens[a - 1].text.islower():  # (not a letter that labels it: "the A cabins")
+                continue  # "a horse down in a box": the KB's "the box" is one place, "a box" any
             if norms[a:b] in self._needs_article and prev not in lx.DETERMINERS | {"our", "your", "my", "his", "her"} \
                     and not acronym and not heading and not self._telegraphic_subject(toks, norms, a, b) \
                     and not (log and (b - a >= 2 or prev in lx.PREPOSITIONS and len(norms[a]) >= 5)) \
@@ -4797,6 +4803,9 @@ class ReportAnalyzer:
                 continue  # "I'm scared the cladding might come off onto the playground": feared, no claim to guess at
             if self._says_who_and_where(toks, norms, p):
                 continue  # "Scaffolder on the roof of the hotel, over.": who is calling and from where
+            if any((h := self._transit.match_at(norms, k)) is not None and h[0] == _noun_phrase_start(norms, p)
+                   for k in range(max(0, p.start_tok - 8), p.start_tok)):
+                continue  # "keep the public back from the crossing below the old bridge": passed or kept from
             if any(q.landmark == p.landmark and q.status == "retracted" and q.reason.startswith("restarted")
                    and q.end_tok <= p.start_tok and any(
                        norms[k] in ("im", "were") and norms[k + 1] in ("at", "on", "in", "by", "up")
@@ -6709,6 +6718,23 @@ _FIRST_WAS_RIGHT_STARTS = frozenset(key[0] for key in _FIRST_WAS_RIGHT)
 def _first_was_right_at(norms: tuple[str, ...], i: int) -> bool:
     """Does one of ``_FIRST_WAS_RIGHT`` begin at token ``i``?"""
     return norms[i] in _FIRST_WAS_RIGHT_STARTS and any(norms[i:i + len(key)] == key for key in _FIRST_WAS_RIGHT)
+
+
+def _synonym_forms(kb: KnowledgeBase) -> list[tuple[tuple[str, ...], str]]:
+    """Another word for a one-word form of a landmark ("church" for the chapel, "tavern" for the inn), from
+    ``lexicon.PLACE_SYNONYMS``: only where exactly one landmark has a one-word form in the group and no
+    landmark's name or alias uses the other word at all."""
+    used = {w for lm in kb.landmarks for f in lm.surface_forms for w in name_words(f)}
+    out = []
+    for group in lx.PLACE_SYNONYMS:
+        keys = {norm(w) for w in group}
+        owners = {lm.name for lm in kb.landmarks for f in lm.surface_forms if len(name_words(f)) == 1
+                  and name_words(f)[0] in keys}
+        if len(owners) != 1:
+            continue
+        name = next(iter(owners))
+        out.extend(((k,), name) for k in sorted(keys - used))
+    return out
 
 
 def _verb_forms(term: str) -> list[str]:

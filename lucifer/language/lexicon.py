@@ -566,6 +566,10 @@ HELD_UP = {("in", "traffic"), ("in", "the", "traffic"), ("in", "a", "queue"), ("
 FLOATING_THINGS = {"log", "logs", "timber", "debris", "car", "cars", "caravan", "caravans", "barrel", "barrels", "bin",
                    "bins", "tree", "trees", "branch", "branche", "pallet", "pallets", "rubbish", "plank", "planks",
                    "drum", "drums"}
+# Other words for the same kind of place: a KB whose one chapel is "the chapel" is meant by "the church" too,
+# where no landmark is called a church (see ``analyzer._synonym_forms``).
+PLACE_SYNONYMS = [{"church", "chapel", "kirk"}, {"cafe", "café", "tearoom", "caff"},
+                  {"pharmacy", "chemist", "drugstore"}, {"school", "academy"}]
 # Who a call sign calls ("Station two to control"): a place said just before "to" one of these is the caller's.
 CALL_RECEIVERS = {("control",), ("base",), ("dispatch",), ("command",), ("all",), ("ops",), ("hq",), ("comms",)}
 # Relation words too common to resolve without a head noun ("blocked by the bank").
@@ -686,6 +690,7 @@ TRANSIT = ["people in off", "taking people in off", "in off the", "walked up fro
            "about to check", "searching", "sweeping", "en route", "route via", "routing via", "routed via",
            "route through", "routing through", "routed through", "go via", "called out to", "been called out to", "got called out to", "keep clear of", "stay clear of",
            "keep away from", "stay away from", "keep everyone away from", "keep people away from",
+           "keep the public back from", "keep people back from", "keep everyone back from", "keep them back from",
            "got everyone out onto", "everyone out onto", "got everyone out into", "got them out onto",
            "driven round to", "being driven to", "being driven round to", "driven to", "got everybody out of",
            "got everyone out of", "everybody out of", "got them all out of"]
