@@ -948,6 +948,10 @@ class ReportAnalyzer:
         toks = ex.tokens
         related = self._related_pairs
         active = sorted((p for p in ex.places if p.status == "active" and p.via is None), key=lambda p: p.start_tok)
+
+        def only_describes(p1: PlaceMention, p2: PlaceMention) -> None:
+            ex.places[ex.places.index(p2)] = replace(p2, status="reference",
+                                                     reason=f"reference point of a relative clause describing '{p1.text}'")
         for p1, p2 in zip(active, active[1:], strict=False):
             gap = norms[p1.end_tok:p2.start_tok]
             if (p1.landmark, p2.landmark) in related and 3 <= len(gap) <= 5 and gap[0] in ("that", "which") \
@@ -957,8 +961,7 @@ class ReportAnalyzer:
                     and (norms[p1.end_tok + 1] == "use" or not any(
                         self._cues.match_at(norms, i) is not None for i in range(p1.end_tok + 1, p2.start_tok))):
                 # "the school that uses the hall as its gym": the hall only says which school
-                ex.places[ex.places.index(p2)] = replace(p2, status="reference",
-                                                         reason=f"reference point of a relative clause describing '{p1.text}'")
+                only_describes(p1, p2)
                 continue
             if (p1.landmark, p2.landmark) not in related or len(gap) > 2 \
                     or not all(w in lx.ARTICLES or w in ("that", "which") for w in gap) \
@@ -971,8 +974,7 @@ class ReportAnalyzer:
                                                        or toks.clause_start[v + 1]) \
                     and not toks.clause_start[v] and self._cues.match_at(norms, v) is None:
                 # "the mill the lade drives is on fire": a transitive verb closes the relative clause
-                ex.places[ex.places.index(p2)] = replace(p2, status="reference",
-                                                         reason=f"reference point of a relative clause describing '{p1.text}'")
+                only_describes(p1, p2)
                 continue
             end = p2.end_tok
             while end < len(norms) and end - p2.end_tok < 7 and not toks.clause_start[end] \
@@ -985,8 +987,7 @@ class ReportAnalyzer:
             closed = nxt >= len(norms) or toks.clause_start[nxt] or norms[nxt] in lx.COPULAS | {"has", "have", "had"}
             if closed and (verb.endswith(("s", "ed")) or verb in ("look", "take", "draw", "feed", "face")) \
                     and verb not in lx.COPULAS:
-                ex.places[ex.places.index(p2)] = replace(p2, status="reference",
-                                                         reason=f"reference point of a relative clause describing '{p1.text}'")
+                only_describes(p1, p2)
 
     def _ordinal_anaphora(self, toks: Tokens, norms: tuple[str, ...], ex: Extraction) -> None:
         """"the chemist's and the coffee shop. The first one -- a woman on the floor": an ordinal, "the
@@ -1607,8 +1608,8 @@ class ReportAnalyzer:
                 # named before; "a firefighter at the fire hall reports ... across the road from his station"
                 mine = [p for p in places if p.end_tok <= i - 1 and p.status == "active" and any(
                     name_words(f)[-1:] == (norms[i],) for f in self.kb.landmark_by_name[p.landmark].surface_forms)]
-                part = norms[i] in lx.SIDE_WORDS | {"back", "side"} and norms[i + 1:i + 2] in (("wall",), ("side",), ("gable",)) \
-                    or norms[i] in ("wall", "gable")  # "the little shop built onto our east wall"
+                sided = norms[i] in lx.SIDE_WORDS | {"back", "side"} and norms[i + 1:i + 2] in (("wall",), ("side",), ("gable",))
+                part = sided or norms[i] in ("wall", "gable")  # "the little shop built onto our east wall"
                 if not mine and norms[i - 1] in ("my", "our") and (part or norms[i] in (
                         "building", "place", "premises", "storeroom", "stockroom", "kitchen", "cellar", "shop")):
                     # "I'm at the pharmacy. The shop our building's built onto": where the speaker is
@@ -1622,8 +1623,7 @@ class ReportAnalyzer:
                         continue
                 if mine:
                     last = max(mine, key=lambda p: p.end_tok)
-                    end = i + 2 if norms[i] in lx.SIDE_WORDS | {"back", "side"} and norms[i + 1:i + 2] in (
-                        ("wall",), ("side",), ("gable",)) else i + 1
+                    end = i + 2 if sided else i + 1
                     out.append(replace(self._mention(toks, i - 1, end, last.landmark),
                                        reason=f"the speaker's '{' '.join(norms[i:end])}', '{last.text}'"))
                     taken.update(range(i - 1, end))
@@ -4710,7 +4710,7 @@ class ReportAnalyzer:
             self._ex_cache = (self.embedder.embed_fixed(texts), labels)
         return self._ex_cache
 
-    def _predicate_region(self, ex: Extraction, p: PlaceMention) -> tuple[int, int]:
+    def _predicate_region(self, ex: Extraction, p: PlaceMention, norms: tuple[str, ...]) -> tuple[int, int]:
         toks = ex.tokens
         marker_starts = {a for a, _, _ in ex.markers}
         others = [q.start_tok for q in ex.places if q.start_tok > p.start_tok and q.status == "active"]
@@ -4723,7 +4723,6 @@ class ReportAnalyzer:
             if any(q.end_tok == start for q in ex.places):
                 break
             start -= 1
-        norms = toks.norms(0, len(toks))
         if self._speaker_at(norms, p):
             # "she's crying and I'm in the park": what is said before the speaker says where they are is not
             # said of that place
@@ -4786,7 +4785,7 @@ class ReportAnalyzer:
                 nxt = next((w for w in norms[p.end_tok:] if w not in lx.FILLERS), "")
                 if nxt in lx.RADIO_CALL_WORDS:
                     continue  # "Port Control, uh, all stations, ...": the station called, no claim to guess at
-            a, b = self._predicate_region(ex, p)
+            a, b = self._predicate_region(ex, p, norms)
             if any(a <= c.start_tok < b for c in all_cues) or any(a <= ma < b for ma, _, _ in ex.markers) \
                     or any(a <= i < b for i in getattr(self, "_shut_tokens", ())) \
                     or any(a <= i < b for i in getattr(self, "_neutral_tokens", ())):
@@ -4841,7 +4840,7 @@ class ReportAnalyzer:
             kept.append(p)
         out = []
         for p in kept:
-            a, b = self._predicate_region(ex, p)
+            a, b = self._predicate_region(ex, p, norms)
             out.append((p, a, b, self._predicate_words(ex, p, a, b)))
         if all(b - a <= (p.end_tok - p.start_tok) + 1 for p, a, b, _ in out):
             return []  # nothing but the places' own words around them
