@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev47) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev49) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -68,6 +68,7 @@ DOCKSIDE = ROOT / "knowledge_bases" / "dockside_estate"
 HILL_FARM = ROOT / "knowledge_bases" / "hill_farm_show"
 DISTILLERY = ROOT / "knowledge_bases" / "distillery_glen"
 RETIREMENT = ROOT / "knowledge_bases" / "retirement_village"
+FERRY_TOWN = ROOT / "knowledge_bases" / "ferry_terminal_town"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -264,6 +265,15 @@ SETS = {
     "dev46/riverbend_vocab": _set("dev46/riverbend_vocab.jsonl", RIVERBEND, "d46rv", THIRTY),
     "dev47/market_square": _set("dev47/market_square.jsonl", MARKET_SQUARE, "d47m", THIRTY),
     "dev47/riverbend": _set("dev47/riverbend.jsonl", RIVERBEND, "d47r",
+                            {"standard": 20, "messy": 20, "advanced_messy": 20}),
+    "dev48/market_square": _set("dev48/market_square.jsonl", MARKET_SQUARE, "d48m",
+                                {"standard": 20, "messy": 45, "advanced_messy": 25}),
+    "dev48/riverbend": _set("dev48/riverbend.jsonl", RIVERBEND, "d48r",
+                            {"standard": 20, "messy": 35, "advanced_messy": 20}),
+    "dev48/ferry_terminal_town": _set("dev48/ferry_terminal_town.jsonl", FERRY_TOWN, "ft", THIRTY),
+    "dev49/market_square": _set("dev49/market_square.jsonl", MARKET_SQUARE, "d49m",
+                                {"standard": 25, "messy": 25, "advanced_messy": 25}),
+    "dev49/riverbend": _set("dev49/riverbend.jsonl", RIVERBEND, "d49r",
                             {"standard": 20, "messy": 20, "advanced_messy": 20}),
 }
 
