@@ -2968,3 +2968,58 @@ def test_a_stutter_is_no_word_of_its_own():
 def test_dev46_vocabulary(kb_analyzers, analyzer, kb, text, expected):
     an = analyzer if kb == "ms" else kb_analyzers[kb]
     assert claims(an, text) == expected
+
+
+@pytest.mark.parametrize(("kb", "text", "expected"), [
+    # a list that makes a sentence of its own, then what is said of all of it; a count leading on to its place
+    ("ms", "Bank, cafe and hotel all searched. All clear.", [("bank", "safe_zone"), ("cafe", "safe_zone"),
+                                                             ("hotel", "safe_zone")]),
+    ("ms", "so we were at the park and the library is flooded?? water everywhere", [("library", "hazard")]),
+    ("ms", "two patients at the bank and one at the, er, the cafe", [("bank", "victim"), ("cafe", "victim")]),
+    # repairs: "the actual fire", the same place said again with a dismissal, another voice, an aside
+    ("ms", "the fire's at the bank -- no I mean our crew's at the bank, the actual fire is at the hotel",
+     [("hotel", "hazard")]),
+    ("ms", "school is on fire -- no wait, it's not, it's only the alarm going off at the school", []),
+    ("ms", "smoke at the council building -- okay yeah she's right, it's the library", [("library", "hazard")]),
+    ("ms", "she's right outside the cafe and she's trapped", [("cafe", "victim")]),
+    ("riverbend", "water over the road outside the almshouses -- no, sorry, I'm all turned round, it's at the "
+                  "ambulance depot", [("ambulance depot", "threat")]),
+    ("riverbend", "Caller: smoke at the granary! Neighbour, taking the phone: no, it's the one the granary's joined "
+                  "onto", [("mill", "threat")]),
+    ("riverbend", "The lock cottage is dry. The weir's jammed. No, scrap what I said about the cottage, water's "
+                  "come in under its door",
+     [("lock keeper's cottage", "threat"), ("weir", "threat")]),
+    ("riverbend", "someone in the water at the weir? It was a log. There's no one, false alarm", []),
+    # who is where: the speaker's workplace, staff telling of their own place, people taken from a place
+    ("ms", "I work at the chemist's. The shop we're attached to is on fire", [("bakery", "hazard")]),
+    ("riverbend", "Brewery staff tell me their cellars are flooding", [("brewery", "threat")]),
+    ("riverbend", "Brewery staff tell me their manager is fine", []),
+    ("riverbend", "The vicar is opening the abbey as a rest centre. We've walked thirty people up there from the "
+                  "caravan park.", [("abbey", "shelter")]),
+    ("ms", "We've moved everyone out of the cafe and into the sports hall", [("sports hall", "safe_zone")]),
+    ("ms", "get everyone out of the cafe", [("cafe", "hazard")]),
+    ("riverbend", "so we've moved everyone into the vic— into the, the Red Lion", [("red lion", "shelter")]),
+    ("riverbend", "We've put the others in the ambulance depot -- I mean the surgery", [("surgery", "shelter")]),
+    ("ms", "Staging area for the rescue team is at the town hall", [("town hall", "safe_zone")]),
+    # words: a part of the ground slumped, "negative casualties", people gone into the water, one not yet
+    ("riverbend", "part of the face has slumped at the quarry", [("quarry", "threat")]),
+    ("riverbend", "a walker has slumped at the quarry", [("quarry", "casualty")]),
+    ("riverbend", "at the footbridge, negative casualties here, repeat negative", []),
+    ("riverbend", "Two people have gone into the water at the ferry landing", [("ferry landing", "casualty")]),
+    ("riverbend", "the ceiling's come down in the mill and my colleague, she's under it", [("mill", "casualty"),
+                                                                                         ("mill", "threat")]),
+    ("ms", "I can hear kids crying in the school", [("school", "victim")]),
+    ("ms", "a massive fire at the cinema on the bypass, out past the water tower, huge flames", []),
+    ("ms", "a young man's come staggering out of the bank holding his head", [("bank", "victim")]),
+    ("ms", "the park's been walked and checked, people can wait there", [("park", "safe_zone")]),
+    ("riverbend", "his neighbour's collapsed on the allotments", [("allotments", "casualty")]),
+    ("riverbend", "the quarry face is coming away, rocks rolling down, we've got everyone off the site",
+     [("quarry", "threat")]),
+    # relations: a description said again with "that", a head word naming the one related place
+    ("riverbend", "the tent's on the grass across from the surgery. The church looking down on that grass is "
+                  "shedding slates", [("abbey", "threat"), ("village green", "shelter")]),
+    ("riverbend", "the pub over the road from that church is on fire", [("red lion", "threat")]),
+])
+def test_dev47_dev48_phenomena(kb_analyzers, analyzer, kb, text, expected):
+    an = analyzer if kb == "ms" else kb_analyzers[kb]
+    assert claims(an, text) == expected

@@ -709,6 +709,8 @@ class ReportAnalyzer:
                 continue  # "we've a van nose-down in the drain": one van, not the caravan park's "the vans"
             if b - a == 1 and prev in lx.MODAL_BEFORE_VERB and not (a > 0 and toks.clause_start[a]):
                 continue  # "don't park anything round there": the word as a verb
+            if b - a == 1 and norms[a] in ("front", "back", "side", "top", "bottom", "end") and norms[b:b + 1] == ("of",):
+                continue  # "the glasshouse is burning, the whole front of it": a part of a place, not "the front"
             if b - a == 1 and a > 0 and toks.tokens[a - 1].text.lower() in ("its", "their", "his", "her") \
                     and toks.tokens[a].text.lower().endswith("s") and not any(
                         f.lower().endswith("s") for f in self.kb.landmark_by_name[landmark].surface_forms):
@@ -736,7 +738,8 @@ class ReportAnalyzer:
                     and norms[p.end_tok : p.end_tok + 2] not in lx.PART_OF_PLACE \
                     and norms[p.end_tok : p.end_tok + 2] not in (("guy", "rope"), ("guy", "ropes")) \
                     and not (norms[p.end_tok] in lx.CARRIAGE_WORDS and p.landmark in self._conveyances) \
-                    and not self._people_of_place_hurt(toks, norms, p.end_tok):
+                    and not self._people_of_place_hurt(toks, norms, p.end_tok) \
+                    and not self._people_of_place_tell(toks, norms, p.end_tok):
                 # ("the funicular car has come off its rails": the car is part of the railway)
                 places[idx] = replace(p, status="reference", reason=f"modifier of '{toks.tokens[p.end_tok].text}'")
             elif p.end_tok < len(norms) and norms[p.end_tok] in lx.PEOPLE_OF_PLACE and p.start_tok >= 2 \
@@ -768,7 +771,10 @@ class ReportAnalyzer:
         self._resolve_descriptions(ex)
         self._resolve_possessives(ex)
         self._resolve_relations(ex)
-        ex.places.extend(self._description_heads_again(ex, norms))
+        again = self._description_heads_again(ex, norms)
+        ex.places.extend(again)
+        if again:  # ("the old church looking down on that grass": a description anchored on the one said again)
+            self._resolve_relations(ex)
         self._resolve_itself(ex)
         self._relative_clause_anchors(ex, norms)
         self._resolve_containers(ex, norms)
@@ -1121,6 +1127,24 @@ class ReportAnalyzer:
         hit = self._cues.match_at(norms, j) if j < len(norms) and not toks.clause_start[j] else None
         return hit is not None and hit[1][0] == self._person_category
 
+    def _people_of_place_tell(self, toks: Tokens, norms: tuple[str, ...], w: int) -> bool:
+        """"Brewery staff tell me their cellars are flooding": the people the place's name modifies (token ``w``)
+        tell of their own place ("their" and a thing that is no person), and a cue says what it is."""
+        if norms[w] not in lx.PEOPLE_OF_PLACE_WORDS:
+            return False
+        j = w + 1
+        while j < len(norms) and j - w <= 2 and norms[j] in lx.FILLERS | {"have", "are", "just", "now"}:
+            j += 1
+        if j >= len(norms) or norms[j] not in lx.HEARSAY_VERBS - {"think", "thinks", "thought", "reckon", "reckons",
+                                                                  "reckoned", "heard", "hear", "rumour", "rumor"}:
+            return False
+        k = next((i for i in range(j + 1, min(len(norms), j + 5)) if norms[i] == "their"), None)
+        if k is None or k + 1 >= len(norms) or norms[k + 1] in _PERSON_WORDS or norms[k + 1] in lx.PERSON_NOUNS \
+                or any(toks.sentence_start[i] for i in range(w, k + 2)):
+            return False
+        return any(self._cues.match_at(norms, i) is not None for i in range(k + 2, min(len(norms), k + 6))
+                   if not any(toks.sentence_start[m] for m in range(k + 2, i + 1)))
+
     def _partial_names(self, toks: Tokens, norms: tuple[str, ...], taken: set[int]) -> list[PlaceMention]:
         """"the hardware —": the first words of a multi-word name, cut off by a pause."""
         if not hasattr(self, "_prefixes"):
@@ -1202,7 +1226,9 @@ class ReportAnalyzer:
                 continue
             if i == 0 or w not in self._heads or i in taken or (i - 1) in taken or not (
                     norms[i - 1] == "the" or norms[i - 1] in ("my", "our") and (i - 1) in rel_ends
-                    or _after_same(norms, i)):
+                    or _after_same(norms, i)
+                    # ("the place over the road from that church")
+                    or norms[i - 1] in ("that", "this") and i >= 2 and (norms[i - 2] in lx.PREPOSITIONS or (i - 1) in rel_ends)):
                 # ("the hall right below my cottage": the speaker's own, as a relation's anchor; not "my kitchen";
                 # "the road that same gully empties onto": the one said before)
                 continue
@@ -1672,7 +1698,10 @@ class ReportAnalyzer:
         out: list[PlaceMention] = []
         taken = {i for p in ex.places for i in range(p.start_tok, p.end_tok)}
         for p in ex.places:
-            head = norms[p.start_tok]
+            h = p.start_tok
+            while h + 1 < p.end_tok and norms[h] in lx.ARTICLES:
+                h += 1  # ("the grass across from the doctors' ... that grass")
+            head = norms[h]
             if p.via is None or head in lx.UNNAMING_HEADS or head in lx.DETERMINERS \
                     or not head.isalpha() or len(head) < 4 or self._place_head_word(head):
                 continue
@@ -1680,6 +1709,7 @@ class ReportAnalyzer:
                 if i in taken or norms[i] != head or norms[i - 1] not in ("the", "that"):
                     continue
                 if i + 1 < len(norms) and not toks.clause_start[i + 1] and norms[i + 1] not in lx.COPULAS \
+                        and norms[i + 1] not in ("has", "have", "had") \
                         and not toks.tokens[i].text.lower().endswith(("'s", "’s")):
                     continue  # "the green door": a longer noun phrase
                 out.append(replace(self._mention(toks, i - 1, i + 1, p.landmark),
@@ -1917,6 +1947,10 @@ class ReportAnalyzer:
             if words == ("no", "no") and b < len(norms) and not pause_after and self._cues.match_at(norms, b) is not None:
                 b -= 1  # "No, no fire.": the second "no" negates the cue; the first answers
                 words, nxt, pause_after = words[:1], norms[b], True
+            if words[-1:] == ("right",) and not (pause_after and nxt in ("its", "it", "thats", "the")):
+                continue  # "she's right outside the cafe": where she is; "okay she's right, it's the library": a repair
+            if words == ("second", "voice") and nxt not in ("its", "it", "thats", "the", "no", "not"):
+                continue  # "[second voice: it's the library, Jean!]": another speaker correcting
             if words == ("wrong",) and a > 0 and norms[a - 1] in ("nothing", "anything", "something", "whats"):
                 continue  # "Nothing wrong on our job at the library": no repair
             if words in (("correction",),) and nxt in ("on", "about", "regarding", "re") \
@@ -2129,6 +2163,8 @@ class ReportAnalyzer:
         order = np.argsort(-sims, kind="stable")
         best = float(sims[order[0]])
         if best < self.OPEN_RELATION_MIN_SIM:
+            if best >= self.OPEN_RELATION_HINT_SIM:
+                return self._related_by_head(anchor, head)
             return None, None
         for i in order:
             if sims[i] < max(self.OPEN_RELATION_MIN_SIM, best - self.OPEN_RELATION_MARGIN):
@@ -2140,6 +2176,25 @@ class ReportAnalyzer:
                 return target, via
         phrase, inv = meta[int(order[0])]
         return self._follow(anchor, phrase, head, inverse=_reads_backwards(link, phrase, inv) != inverse)
+
+    def _related_by_head(self, anchor: str, head: str) -> tuple[str | None, str | None]:
+        """"the quay that the ice plant makes the ice for": a linking phrase MiniLM only half knows, and a head word
+        that names exactly one of the places the anchor has a relation with (the fish quay), is that place."""
+        key = norm_phrase(head)
+        if len(key) != 1 or key[0] in ("place", "building", "one", "spot", "bit", "area", "site", "thing", "side", "end") \
+                or len(key[0]) < 3:
+            return None, None
+        found = {}
+        for rel in self.kb.relations:
+            if anchor not in (rel.subject, rel.object):
+                continue
+            other = rel.object if rel.subject == anchor else rel.subject
+            if other != anchor and any(key[0] in name_words(f) for f in self.kb.landmark_by_name[other].surface_forms):
+                found[other] = f"{rel.subject} {rel.phrase} {rel.object}"
+        if len(found) != 1:
+            return None, None
+        other, via = next(iter(found.items()))
+        return other, via
 
     def _resolve_open(self, ex: Extraction, toks: Tokens, norms: tuple[str, ...], place_tokens: set[int],
                       marker_tokens: set[int], cue_tokens: set[int]) -> None:
@@ -2158,8 +2213,8 @@ class ReportAnalyzer:
             j = anchor.start_tok
             while j > 0 and norms[j - 1] in lx.DETERMINERS and anchor.start_tok - j < 2:
                 j -= 1
-            if j == 0 or norms[j - 1] not in lx.RELATION_ENDINGS:
-                continue
+            if j == 0 or norms[j - 1] not in lx.RELATION_ENDINGS | {"for"}:
+                continue  # ("the building that keeps a key for the boat station")
             # walk back over the linking words to a generic head noun
             k = j - 1
             while k > 0 and j - k < 6:
@@ -2216,18 +2271,26 @@ class ReportAnalyzer:
                     or toks.clause_start[k] or not (norms[k - 1] in lx.GENERIC_HEADS or self._plain_head(norms, k - 1)):
                 continue
             hs = k - 1
+            if hs >= 2 and norms[hs - 2] in lx.ARTICLES and norms[hs - 1].isalpha() and norms[hs - 1] not in _NOT_HEADS \
+                    and (hs - 1) not in place_tokens and norms[hs] in self._place_nouns():
+                hs -= 1  # ("the car park the lorry park spills into": a head of two words)
             while hs > 0 and norms[hs - 1] in lx.DETERMINERS and (hs - 1) not in marker_tokens:
                 hs -= 1
-            if hs == k - 1 and norms[hs] not in lx.WHATEVER:
+            if hs >= k - 2 and norms[hs] not in lx.WHATEVER and norms[hs] not in lx.DETERMINERS:
                 continue  # "the shop the pharmacy ...", not "shop the pharmacy"
             e = anchor.end_tok
             m = None
             for end in range(e + 2, min(e + 6, len(norms)) + 1):
-                if any(i in place_tokens or i in marker_tokens or i in cue_tokens or (i > e and toks.clause_start[i])
+                # (a cue word as the clause's verb is a verb: "the car park the lorry park spills into")
+                if any(i in place_tokens or i in marker_tokens or (i > e and toks.clause_start[i])
+                       or i in cue_tokens and not (i == e and toks.tokens[i].text.lower().endswith("s")
+                                                   and not toks.tokens[i].text.lower().endswith(("'s", "’s")))
                        for i in range(e, end)):
                     break
-                if norms[end - 1] in lx.RELATION_ENDINGS and (
-                        end == len(norms) or toks.clause_start[end] or norms[end] in lx.COPULAS | {"as", "now", "theres"}
+                # ("the quay that the ice plant makes the ice for -", "the car park the lorry park spills into when
+                # it's full": a preposition that ends the clause)
+                if norms[end - 1] in lx.RELATION_ENDINGS | {"into", "for"} and (
+                        end == len(norms) or toks.clause_start[end] or norms[end] in lx.COPULAS | {"as", "now", "theres", "when"}
                         or norms[end:end + 2] in (("there", "s"), ("there", "is"), ("there", "are"))
                         or end in cue_tokens):
                     m = end
@@ -2509,6 +2572,9 @@ class ReportAnalyzer:
             # inverse: "the one (that) the garage sits behind", "the row it shares a wall with"
             if generic and not (words and words[-1] in ("it", "they", "theyre", "we", "i")):
                 return
+            if b - a == 1 and b < len(norms) and norms[b] in ("is", "s", "has", "was") \
+                    and toks.tokens[a].text.lower() in ("face", "front", "side", "back"):
+                return  # "the quarry face is coming away": a part of the place, no verb of a relation
             k = b
             while k < len(norms) and norms[k] in lx.ARTICLES and not toks.clause_start[k]:
                 k += 1
@@ -2970,6 +3036,8 @@ class ReportAnalyzer:
         j = p.start_tok - 1
         while j >= 0 and norms[j] in lx.DETERMINERS | lx.FILLERS:
             j -= 1
+        if j >= 2 and norms[j] in ("at", "in") and norms[j - 1] == "work" and norms[j - 2] in ("i", "we"):
+            return True  # "I work at the chemist's. The shop we're built onto ...": where the speaker works
         # "I run the ironmonger's", "we manage the hotel": the speaker's own place
         return j >= 1 and norms[j] in ("run", "own", "manage", "keep") and norms[j - 1] in ("i", "we")
 
@@ -3679,7 +3747,22 @@ class ReportAnalyzer:
         end = next((t for t in range(p.end_tok, len(norms)) if toks.sentence_start[t]), len(norms))
         if any(q is not p and p.end_tok <= q.start_tok < end for q in ex.places):  # (the sentence's end)
             return False
-        return self._cue_between(norms, p.end_tok, end)
+        after = {h[1][0] for k in range(p.end_tok, end) if (h := self._cues.match_at(norms, k)) is not None}
+        if not after:
+            return False
+        begin = next((t for t in range(p.start_tok, -1, -1) if toks.sentence_start[t]), 0)
+        for k in range(begin, p.start_tok):
+            h = self._cues.match_at(norms, k)
+            if h is None or h[1][0] not in after:
+                continue
+            j = h[0]
+            while j < p.start_tok and norms[j] in lx.FILLERS | {"at", "in", "on", "inside"} | lx.ARTICLES:
+                j += 1
+            if j > h[0] and j < p.start_tok and "at" in norms[h[0]:j] and norms[j].isalpha() \
+                    and not any(q.start_tok <= j < q.end_tok for q in ex.places):
+                return False  # "a massive fire at the cinema ..., out past the water tower, like huge flames": the
+                # same danger said again, at the place the KB does not name
+        return True
 
     @staticmethod
     def _evacuated_to(toks: Tokens, norms: tuple[str, ...], e: int) -> bool:
@@ -3704,7 +3787,11 @@ class ReportAnalyzer:
         k = j - 3
         if k > 0 and (norms[k].isdigit() or norms[k] in lx.NUMBER_WORDS or norms[k] == "one"):
             k -= 1
-        return norms[k] in lx.CREW_NOUNS
+        if norms[k] not in lx.CREW_NOUNS:
+            return False
+        # ("Staging area for the hazmat team is at the municipal building": the place the crew is given, the subject)
+        return not any(norms[i] == "for" and norms[i - 1] in ("area", "point", "post", "base", "centre", "center", "zone")
+                       for i in range(max(1, k - 4), k))
 
     def _apply_restarts(self, ex: Extraction) -> None:
         """"the church is — the church is being used": the first mention is a false start."""
@@ -3736,7 +3823,11 @@ class ReportAnalyzer:
         """Tokens of the first clause after marker ``k`` (up to a clause break, coordinator or marker)."""
         toks = ex.tokens
         norms = toks.norms(0, len(toks))
-        _, b, _ = ex.markers[k]
+        a, b, strong = ex.markers[k]
+        if not strong and b < len(toks) and toks.sentence_start[b] and k > 0 and norms[a:b] == ("sorry",) \
+                and toks.sentence_of[ex.markers[k - 1][0]] == toks.sentence_of[a]:
+            return b, b  # "actually no, it's not smoke, it's steam off the compost, sorry. But ...": the apology
+            # closes the repair already made; the next sentence is news, not its correction
         nxt_marker = ex.markers[k + 1][0] if k + 1 < len(ex.markers) else len(toks)
         end = b
         ran_on = False
@@ -3828,6 +3919,11 @@ class ReportAnalyzer:
                 # the repair before it
             b, end = self._after_clause(ex, k)
             after = [p for p in ex.places if b <= p.start_tok < end and p.status in ("active", "negated")]
+            said_of = next((t for t in range(b, min(end, b + 8)) if norms[t:t + 4] in (
+                ("what", "i", "said", "about"), ("what", "we", "said", "about"), ("what", "i", "told", "you"))), None)
+            if said_of is not None and all(q.start_tok > said_of for q in after):
+                continue  # "no, scrap what I said about the cottage, water's just come in": that place's word withdrawn,
+                # not the place just before the marker
             if not after:
                 # "belay that, in the mill — the mill": the new place was restarted; its repeat stands in
                 restarted = [p for p in ex.places if b <= p.start_tok < end and p.reason.startswith("restarted")]
@@ -3849,8 +3945,10 @@ class ReportAnalyzer:
             start = self._repair_window_start(ex, k)
             before = [p for p in ex.places if start <= p.start_tok < a and p.status == "active"]
             s_open = max((t for t in range(0, a + 1) if toks.sentence_start[t]), default=0)
-            relayed = 0 < a - s_open <= 6 and any(norms[t] in lx.HEARSAY_VERBS for t in range(s_open, a)) \
+            relayed = 0 < a - s_open <= 6 and any(norms[t] in lx.HEARSAY_VERBS or norms[t] == "phone"
+                                                  for t in range(s_open, a)) \
                 and not any(s_open <= p.start_tok < a for p in ex.places)
+            # ("Neighbour, taking the phone: no, it's the one the grain store's joined onto": another voice)
             # ("Smoke coming out of the clinic — what? My husband's saying no, it's the police station")
             if not before and (_strong or relayed):
                 # "Man collapsed in the library. ... Okafor again, wrong building, apologies -- he's in the one
@@ -4195,6 +4293,11 @@ class ReportAnalyzer:
             if norms[a:b] in (("everyone", "out"), ("everybody", "out")) and norms[b:b + 2] == ("of", "the") \
                     and norms[b + 2:b + 3] and norms[b + 2] in lx.ESCAPED_THINGS:
                 continue  # "moved everyone out of the smoke into the school": out of the danger, no order about a place
+            if norms[a:b] in (("everyone", "out"), ("everybody", "out")) and a > 0 \
+                    and norms[a - 1] in ("moved", "got", "taken", "took", "brought", "led", "walked", "ushered", "helped") \
+                    and (norms[b:b + 1] == ("of",) or b == len(norms) or toks.clause_start[b]) and a > 1 \
+                    and norms[a - 2] in ("weve", "we", "ive", "i", "theyve", "they", "have", "has", "s", "had", "all"):
+                continue  # "We've moved everyone out of the cafe and into the sports hall": done, where they left
             if b == a + 1 and norms[max(0, a - 3):a] == ("out", "of", "the") and norms[a] in lx.ESCAPED_THINGS:
                 continue  # "we've moved everyone out of the smoke into the school": what they left, not where they are
             if b == a + 1 and b < len(norms) and norms[b] in lx.VICTIM_NOUNS and norms[a] in lx.ESCAPED_THINGS | {
@@ -4252,6 +4355,13 @@ class ReportAnalyzer:
                 und = self._category_for_role(lx.UNDESIRABLE, " ".join(norms[a:b]))
                 if und is not None:
                     cue = replace(cue, category=und, source="lexicon", reason=f"a thing {norms[a]}")
+            if source == "lexicon" and norms[a:b] in (("slumped",), ("slumping",)) and cue.category == self._person_category \
+                    and (self._thing_before(norms, a, self._place_tokens) or next(
+                        (w for w in reversed(norms[max(0, a - 3):a]) if w not in ("has", "have", "s", "is", "just", "partly")
+                         and w not in lx.FILLERS), "") in lx.EARTHWORKS):
+                und = self._category_for_role(lx.UNDESIRABLE, "slumped, collapsed ground")
+                if und is not None:
+                    cue = replace(cue, category=und, reason="ground slumped")  # "part of the face has slumped"
             if source in ("lexicon", "category") and norms[a:b] == ("buried",) and a > 0 and (
                     norms[a - 1] in lx.THING_SUBJECTS or self._thing_before(norms, a, self._place_tokens)
                     or next((w for w in reversed(norms[max(0, a - 4):a]) if w not in lx.FILLERS and w != "all"), "")
@@ -4345,6 +4455,7 @@ class ReportAnalyzer:
             extra = [c for c in self._semantic_claims(ex, claims, denied) if c.key not in denied_keys]
             claims.extend(extra)
             cues.extend(c.cue for c in extra)
+        claims = self._the_actual_one(ex, norms, claims)
         return Classification(cues, self._not_from_us(ex, norms, self._drop_unspecific_dangers(claims)), denied)
 
     @staticmethod
@@ -4374,6 +4485,23 @@ class ReportAnalyzer:
             head = next((p for p in ex.places if p.end_tok == k - 1 and p.status == "active"), None)
             if head is not None:
                 out.append(Claim(head, c))
+        return out
+
+    @staticmethod
+    def _the_actual_one(ex: Extraction, norms: tuple[str, ...], claims: list[Claim]) -> list[Claim]:
+        """"the fire's at the fire station -- no I mean, our crew's at the fire station, the actual fire is at the
+        supermarket": after a repair, "the actual fire" is the one meant, and the same danger said of another place
+        before the repair is taken back."""
+        out = claims
+        for c in claims:
+            a = c.cue.start_tok
+            if c.cue.polarity != "affirmed" or a < 2 or norms[a - 1] not in ("actual", "real") or norms[a - 2] != "the":
+                continue
+            marks = [m for m, _, _ in ex.markers if m < a]
+            if marks:
+                m = max(marks)
+                out = [d for d in out if not (d.cue.category == c.cue.category and d.place.landmark != c.place.landmark
+                                              and d.cue.end_tok <= m)]
         return out
 
     @staticmethod
@@ -4653,6 +4781,9 @@ class ReportAnalyzer:
             return True  # ("one at the cafe who's collapsed")
         if w in lx.BODY_PARTS and j > 0 and norms[j - 1] in ("his", "her", "their", "my", "your"):
             return True  # "his arm is burned": a person's
+        if w in ("neighbour", "neighbor", "neighbours", "neighbors") and j > 0 \
+                and norms[j - 1] in ("his", "her", "their", "my", "your", "our"):
+            return True  # "his neighbour's collapsed" (not the post office's neighbour: the place next to it)
         if j > 0 and norms[j - 1] in ("mr", "mrs", "ms", "miss", "dr", "keeper", "nurse", "officer", "sister"):
             return True  # "keeper Mills has collapsed": a name after a title
         counted = j > 0 and (norms[j - 1] in lx.NUMBER_WORDS or norms[j - 1].isdigit())
@@ -4813,6 +4944,9 @@ class ReportAnalyzer:
                 continue  # "I'm on the quad at the top of the pit, the gravel pit, and ...": where the speaker is
             if self._kept_clear_for(toks, norms, p.start_tok):
                 continue  # "keep the road clear for the ladder coming down from the fire station": no claim to guess
+            if "from" in norms[max(0, p.start_tok - 3):p.start_tok] and any(
+                    norms[i] in lx.MOVE_VERBS | lx.EVACUATE_VERBS for i in sent if i < p.start_tok - 1):
+                continue  # "we've walked about forty people up there from the caravan park": where they came from
             after = [w for w in norms[p.end_tok:p.end_tok + 5] if w not in lx.FILLERS]
             if after[:2] in (["and", "i"], ["and", "we"]) and after[2:3] and after[2] in lx.PERCEPTION_VERBS:
                 continue  # "up on the scaffold at the town hall and i seen the roof of the sports hall fold in": where
@@ -4975,6 +5109,9 @@ class ReportAnalyzer:
                 # "an injured man at the water tower? -- no, ... the man's at the water tower": the one spoken of,
                 # placed again
                 introduced = True
+            if not introduced and j >= 0 and norms[j] in ("hear", "heard", "hearing", "see", "seen", "saw") \
+                    and k < len(norms) and norms[k] in lx.DISTRESS_VERBS:
+                introduced = True  # "I can hear kids crying in there"
             if not introduced and w not in ("someone", "somebody") and not (
                     toks.clause_start[j + 1] and any(norms[m] in lx.DISTRESS_VERBS and not toks.clause_start[m]
                                                      for m in range(k + 1, min(len(norms), k + 7)))):
@@ -5027,28 +5164,51 @@ class ReportAnalyzer:
         if cat is None:
             return cues
         toks = ex.tokens
-        starts = {p.start_tok for p in ex.places if p.status == "active"}
+        # (a place taken back by a repair leads to the one put in its stead: "put the others in the ambulance
+        # station -- I mean the doctors', the surgery")
+        starts = {p.start_tok for p in ex.places if p.status == "active"
+                  or p.status == "retracted" and p.reason.startswith("self-repair")}
         for i, w in enumerate(norms):
             evac = w in lx.EVACUATE_VERBS
-            if not (evac or w in lx.MOVE_VERBS):
+            # ("We've put the others in the surgery till it stops": people put somewhere to wait)
+            put = w in ("put", "putting") and i > 0 and norms[i - 1] in ("weve", "ive", "theyve", "have", "were", "been")
+            if not (evac or w in lx.MOVE_VERBS or put):
                 continue
+            into = ("to", "into", "in", "inside") if put else ("to", "into")
             k, people = i + 1, evac or any(norms[m] in lx.MOVED_PEOPLE for m in range(max(0, i - 3), i))
-            while k < len(norms) and k - i <= 6 and norms[k] not in ("to", "into") and not toks.clause_start[k] \
-                    and k not in starts:
-                people = people or norms[k] in lx.MOVED_PEOPLE or norms[k] == "them"
+            origins = {p.start_tok: p.end_tok for p in ex.places if p.status == "active"}
+            past_origin = None
+            while k < len(norms) and k - i <= 10 and norms[k] not in into and not toks.clause_start[k]:
+                if k in starts:
+                    if k in origins and k - i <= 8 and ("out", "of") in (norms[k - 2:k], norms[k - 3:k - 1]):
+                        k = past_origin = origins[k]  # "moved everyone out of the cafe and into the sports hall": from
+                        continue
+                    break
+                if k - i > 6:
+                    break
+                people = people or norms[k] in lx.MOVED_PEOPLE or norms[k] in ("them", "other", "others", "rest")
                 k += 1
-            if not people or k >= len(norms) or norms[k] not in ("to", "into") or toks.clause_start[k]:
+            if not people or k >= len(norms) or norms[k] not in into or toks.clause_start[k]:
                 continue
             j = k + 1
             while j < len(norms) and (norms[j] in lx.DETERMINERS or norms[j] in lx.FILLERS) and j - k <= 3:
                 j += 1
+            again = next((m for m in range(k + 1, min(len(norms), k + 5)) if norms[m] == norms[k]), None)
+            first = i if past_origin is None else past_origin  # (the cue does not span the place left)
+            if j not in starts and again is not None and any(
+                    d in toks.gaps[m] for m in range(k + 1, again + 1) for d in ("-", "—", "–", "...", "…")):
+                k = j = again  # "moved everyone across into the vic— into the, the Red Lion": the name said again
+                j += 1
+                first = k
+                while j < len(norms) and (norms[j] in lx.DETERMINERS or norms[j] in lx.FILLERS) and j - k <= 3:
+                    j += 1
             if j not in starts:
                 continue
             if any(c.start_tok < i < c.end_tok or i < c.start_tok < k for c in cues if c.source != "glossary"):
                 continue  # a cue of its own inside ("moved the injured to ...") speaks for itself
-            t0, t1 = toks.tokens[i], toks.tokens[k]
+            t0, t1 = toks.tokens[first], toks.tokens[k]
             cues = [c for c in cues if c.start_tok != i]  # "evacuating ... to": no hazard of the destination
-            cues.append(CueMention(i, k + 1, t0.start, t1.end, toks.text[t0.start:t1.end], cat, "lexicon",
+            cues.append(CueMention(first, k + 1, t0.start, t1.end, toks.text[t0.start:t1.end], cat, "lexicon",
                                    reason="people were taken there"))
         return cues
 
@@ -5090,7 +5250,7 @@ class ReportAnalyzer:
             if after in lx.GENERIC_HEADS or after in ("light", "zone", "tag", "line", "team", "of"):
                 continue
             if not (norms[i - 1] in ("is", "s", "are", "was", "now", "still", "as", "looks", "seems", "be", "completely",
-                                     "structurally", "totally", "all", "thats", "its", "theyre", "whos")
+                                     "structurally", "totally", "all", "thats", "its", "theyre", "whos", "both")
                     or i in ends and (i + 1 >= len(norms) or toks.clause_start[i + 1] or after in lx.COORDINATORS)):
                 continue  # ("in the HGV park, green liquid running": an adjective of what follows)
             if w == "under" and not (i + 1 >= len(norms) or toks.clause_start[i + 1]) or w == "under" and i not in ends:
@@ -5338,6 +5498,11 @@ class ReportAnalyzer:
                                  and not any(sentence_of[p.start_tok] == n for p in places_now)):
                         # "Fire at the bakery! ... oh, no, sorry, it's just steam off their ovens, false alarm."
                         alarms[n - 1] = len(norms)
+                        opens = [norms[j] for j in range(i) if sentence_of[j] == n - 1 and norms[j] not in lx.FILLERS][:2]
+                        if n > 1 and opens in (["it", "was"], ["that", "was"], ["turned", "out"], ["it", "turned"]):
+                            # "... someone in the water at the weir? It was a log with a coat snagged on it. There's
+                            # no one, it's a false alarm": what it was, then the alarm, for the sentence before both
+                            alarms[n - 2] = len(norms)
         # "... child stuck up a tree in the park. Update - child now down and unhurt, job closed.": a later
         # update that closes the job closes what was reported before it
         closed = [sentence_of[i] for i in range(len(norms) - 1) if norms[i + 1] == "closed"
@@ -5368,6 +5533,8 @@ class ReportAnalyzer:
         place_toks = self._place_tokens | self._marker_tokens
         if norms[cue.start_tok] in lx.NEGATORS:
             j = -1  # "he's not, he's not breathing": a cue that is itself a negation is not negated again
+        if cue.start_tok > 0 and norms[cue.start_tok - 1] == "negative" and cue.category == self._person_category:
+            return replace(cue, polarity="denied", reason="negated by 'negative'")  # "negative casualties here"
         saw_or = False  # "haven't seen any damage or anyone hurt": the negation runs on over "or"
         while j >= 0 and steps < (8 if saw_or else 4) and j not in place_toks:
             if norms[j] in ("or", "nor") and not toks.clause_start[j + 1]:
@@ -5673,6 +5840,18 @@ class ReportAnalyzer:
                     return True
         return False
 
+    @staticmethod
+    def _same_place_dismissed(ex: Extraction, norms: tuple[str, ...], a: int, b_after: int, e_after: int) -> bool:
+        """"bank is on fire -- no wait, it's not, it's just the alarm going off at the bank": the place after the
+        marker is the one before it, said again with a dismissal, so the claim is withdrawn, not moved."""
+        toks = ex.tokens
+        before = max((p for p in ex.places if p.end_tok <= a and toks.sentence_of[p.start_tok] == toks.sentence_of[a]),
+                     key=lambda p: p.end_tok, default=None)
+        after = [p for p in ex.places if b_after <= p.start_tok < e_after]
+        words = [w for w in norms[b_after:e_after] if w not in lx.FILLERS]
+        return before is not None and bool(after) and all(p.landmark == before.landmark for p in after) \
+            and words[:2] in (["its", "not"], ["it", "isnt"], ["thats", "not"]) and bool(set(norms[b_after:e_after]) & lx.DISMISSALS)
+
     def _apply_cue_repairs(self, ex: Extraction, cues: list[CueMention]) -> list[CueMention]:
         """A marker followed by a cue (and no new place) retracts the last cue before it."""
         toks = ex.tokens
@@ -5683,9 +5862,11 @@ class ReportAnalyzer:
             kind = self._repair_kind(ex, k, cue_spans)
             b_after, e_after = self._after_clause(ex, k)
             withdraw = _withdraws(norms_all[a:_b])
-            if kind == "place":
+            if kind == "place" and not (strong and self._same_place_dismissed(ex, norms_all, a, b_after, e_after)):
                 self._restated_category(ex, k, out, b_after, e_after, a, withdraw)
                 continue
+            if kind == "place":
+                kind = None
             just_said = [c for c in out if c.status == "active" and c.end_tok <= a
                          and all(w in lx.FILLERS for w in norms_all[c.end_tok:a])]
             taken_back = kind is None and strong and bool(just_said) and e_after > b_after \
@@ -5889,6 +6070,12 @@ class ReportAnalyzer:
                   or norms[a:b] in (("but", "it", "isnt"), ("but", "its", "not"), ("but", "it", "wasnt"),
                                     ("but", "it", "is", "not"))}  # "says the bakery's on fire but it isn't, it's ..."
 
+        # ("two at the bakery and one at the, uh, the chemist's": a count that leads on to its place)
+        counts = lx.NUMBER_WORDS | {"one", "another"}
+        counting = {k for k, (a, b) in enumerate(segs) if k not in hollow and any(norms[i] in counts for i in range(a, b))
+                    and all(norms[i] in counts or norms[i] in lx.FILLERS or norms[i] in lx.COORDINATORS
+                            or norms[i] in lx.DETERMINERS or norms[i] in lx.PREPOSITIONS for i in range(a, b))}
+
         # sentences a cue-only sentence may look back across to the place it talks about: the
         # dispatcher's questions, one-word answers ("Yes.", "Eight o'clock."), and sentences that go
         # on about the same place ("Fire at the bakery. The roof is sagging. Two people trapped inside.")
@@ -5915,7 +6102,11 @@ class ReportAnalyzer:
                 and not any(m in toks.gaps[b] for m in ("-", "—", "–", "...", "…"))
             if (norms[b - 1] in lx.PREPOSITIONS or norms[b - 1] in lx.DETERMINERS) and not closed \
                     and not self._particle_end(toks, norms, segs, seg_places, k, cs) \
-                    and not (norms[b - 1] in ("out", "off", "up", "over", "in") and any(c.end_tok == b for c in cs)):
+                    and not (norms[b - 1] in ("out", "off", "up", "over", "in") and any(c.end_tok == b for c in cs)) \
+                    and not (norms[b - 1] in ("down", "away") and any(c.end_tok == b for c in cs)
+                             and not seg_places.get(k + 1)):
+                # ("rocks rolling down, we've got everyone off the site": the cue's own word; "man down, warehouse"
+                # leads on to its place)
                 # ("but it's flooded out, so ...": the cue's own word; "man down, warehouse" still leads on)
                 nxt = k + 1
                 skipped = 0
@@ -5937,14 +6128,25 @@ class ReportAnalyzer:
                     claimed_places.update(p.start_tok for p in seg_places[nxt])
                     continue
             nxt, steps, opened = k + 1, 0, False
-            while nxt < len(segs) and steps < 4 and not seg_places.get(nxt) and not seg_cues.get(nxt) \
+            cats = {c.category for c in cs}
+            while nxt < len(segs) and steps < 4 and not seg_places.get(nxt) \
+                    and (not seg_cues.get(nxt) or {c.category for c in seg_cues[nxt]} <= cats) \
                     and segs[nxt][1] - segs[nxt][0] <= 4 and sentence_of[segs[nxt][0]] == sentence_of[a]:
+                # ("there's, er, smoke, loads of smoke, coming from the building next door to it": the same said again)
                 a2, b2 = segs[nxt]
                 opened = opened or (norms[b2 - 1] in lx.PREPOSITIONS | lx.DETERMINERS
                                     and any(norms[i] in lx.POSITION_PREPS for i in range(a2, b2))) \
                     or norms[b2 - 2:b2] in (("coming", "from"), ("pouring", "from"), ("pouring", "out"),
                                             ("coming", "out"))  # ("smoke, lots of it, coming from, er, the ...")
                 nxt, steps = nxt + 1, steps + 1
+            lead = tuple(w for w in norms[segs[nxt][0]:segs[nxt][1]] if w not in lx.FILLERS or w == "over")[:2] \
+                if nxt < len(segs) else ()
+            if seg_places.get(nxt) and sentence_of[segs[nxt][0]] == sentence_of[a] and (lead in (
+                    ("coming", "from"), ("pouring", "from"), ("billowing", "from"), ("pouring", "out"), ("coming", "out"))
+                    or lead[:1] in (("over",), ("at",), ("inside",)) and lead[1:] in (("the",), ("their",))
+                    and all(c.polarity == "affirmed" for c in cs)):
+                opened = True  # ("smoke, loads of smoke, coming from the building next door to it"; "a vapour cloud,
+                # just vapour, over the jetty")
             if opened and seg_places.get(nxt) and sentence_of[segs[nxt][0]] == sentence_of[a]:
                 # "there's this gas smell, like really strong, at the, you know, the bread shop": past the
                 # asides, the place the broken-off "at the" was leading to
@@ -6025,6 +6227,7 @@ class ReportAnalyzer:
                     # the place the first one fell into
                     told = [max(told, key=lambda q: q.start_tok)]
                 first_word = next((w for w in norms[a:b] if w not in lx.FILLERS), "")
+                told = told + self._list_opening(toks, norms, segs, target, seg_usable, seg_cues, told)
                 if first_word in ("which", "where") and len(told) > 1 and target == k - 1:
                     # "the caravan park's been evacuated up to the quarry car park, which is safe ground": the
                     # relative clause is said of the place right before it
@@ -6139,7 +6342,7 @@ class ReportAnalyzer:
             if len(tail) >= 3 and set(tail[:3]) & {"got", "has", "have", "is", "was", "are", "had"} \
                     and len(seg_places.get(k, [])) == 1 and not {"too", "also", "well", "same"} & set(tail):
                 continue  # "the hotel's got the gas leak, the bank's just got its alarm ringing": a predicate of its own
-            donor = self._donor_for_places(k, segs, seg_places, seg_cues, sentence_of, hollow,
+            donor = self._donor_for_places(k, segs, seg_places, seg_cues, sentence_of, hollow | counting,
                                            [self._opening(norms, a, b) for a, b in segs])
             if donor is not None and any(q.landmark == p.landmark and q.start_tok >= p.start_tok
                                          and sentence_of[q.start_tok] == sentence_of[p.start_tok]
@@ -6555,9 +6758,12 @@ class ReportAnalyzer:
                     continue
                 # what the place borrowed from a later clause ("..., and the staff car park is our welfare point")
                 # gives way to the danger that reached it
-                later_clause = [c for c in claims if c.place is place and c.cue.start_tok > place.end_tok and any(
+                # (people there are no claim against it: "it's reaching the lorry park now three drivers collapsed")
+                owned = [c for c in claims if c.place is place
+                         and self.kb.category_by_name[c.cue.category].role != Role.CRITICAL]
+                later_clause = [c for c in owned if c.cue.start_tok > place.end_tok and any(
                     toks.clause_start[j] for j in range(place.end_tok, c.cue.start_tok + 1))]
-                if len(later_clause) < len([c for c in claims if c.place is place]):
+                if len(later_clause) < len(owned):
                     continue  # it has a claim of its own
                 for c in later_clause:
                     claims.remove(c)
@@ -6648,6 +6854,35 @@ class ReportAnalyzer:
                     w in lx.POSITION_PREPS or w in ("inside", "lying", "sitting", "lies") for w in words[who + 1:who + 5])
                 return j if said_alone or named or placed else None
         return None
+
+    @staticmethod
+    def _list_opening(toks: Tokens, norms: tuple[str, ...], segs: list[tuple[int, int]], target: int,
+                      seg_places: dict[int, list[PlaceMention]], seg_cues: dict[int, list[CueMention]],
+                      told: list[PlaceMention]) -> list[PlaceMention]:
+        """The items before the last one of a list that makes a whole sentence and says nothing of its own
+        ("Hotel, cafe and bank all checked. All clear, all usable for shelter."): a later sentence about the
+        list is about all of them."""
+        sentence_of = toks.sentence_of
+        sent = sentence_of[segs[target][0]]
+        a, b = segs[target]
+        if len(told) != 1 or seg_cues.get(target) or next((w for w in norms[a:b] if w not in lx.FILLERS), "") != "and":
+            return []
+        if any(not told[0].start_tok <= i < told[0].end_tok and norms[i] not in lx.DETERMINERS | lx.FILLERS | {
+                "and", "all", "both", "checked", "searched", "done", "visited", "walked"} for i in range(a, b)):
+            return []  # ("were at the gardens yeah and like the fire station is flooded": no list, a clause)
+        mates: list[PlaceMention] = []
+        j = target - 1
+        while j >= 0 and sentence_of[segs[j][0]] == sent:
+            ps = seg_places.get(j, [])
+            a2, b2 = segs[j]
+            opens = j == 0 or sentence_of[segs[j - 1][0]] != sent  # ("I checked the hotel, the cafe and ...")
+            if len(ps) != 1 or seg_cues.get(j) or any(
+                    not ps[0].start_tok <= i < ps[0].end_tok and norms[i] not in lx.DETERMINERS | lx.FILLERS
+                    and not (opens and i < ps[0].start_tok) for i in range(a2, b2)):
+                return []
+            mates.append(ps[0])
+            j -= 1
+        return mates[::-1] if mates and all(q.status == "active" for q in mates) else []
 
     @staticmethod
     def _target_for_cues(k: int, segs: list[tuple[int, int]], seg_places: dict[int, list[PlaceMention]],

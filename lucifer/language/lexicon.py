@@ -120,7 +120,7 @@ reception centre|reception center|rest center|high ground|taking evacuees|taking
 opened as a rest centre|safe ground|dry and safe|bone dry|warming centre|warm and dry|sheltering there|
 meeting point|the meeting point|empty and checked|checked and empty|evacuated and checked|searched and clear|
 is open|s open|are open|still open|open again|reopened|open and usable|open for landing|
-decon point|decon area|decon tent|decontamination point|where we're putting everyone|putting everyone|high and dry|can shelter there|can shelter here|people can shelter|can come and wait|opened up for|opened its doors|
+decon point|decon area|decon tent|decontamination point|where we're putting everyone|putting everyone|high and dry|holding people in|holding everyone in|holding them in there|holding people there|we're holding people|place of safety|a place of safety|cots and blankets|put out cots|can shelter there|can shelter here|people can shelter|can come and wait|can wait there|can wait in there|can wait here|been walked and checked|walked and checked|opened up for|opened its doors|
 fine to walk through|fine to walk on|fine to cross|okay to walk through|ok to walk through|fine to pass through|
 fine for overflow|taking in families|taking in people|taking people in|can take people|we can take people|
 people are gathering there|people gathering there|everyone's gathering there|gathering there|taking in residents|
@@ -148,6 +148,9 @@ stuck between two floors|last seen going into|last seen heading into|last seen a
 swept off his feet|swept off her feet|swept off their feet|hanging on to|hanging onto|
 stretcher needed|need a stretcher|needs a stretcher|stretcher required|stretcher to|
 need to get them out|need hands to get them out|to get them out|can't get them out|cannot get them out|
+holding his head|holding her head|clutching his head|clutching her head|come staggering out|came staggering out|staggered out|staggering out|
+can't get her out|cannot get her out|can't get him out|cannot get him out|can't get her free|can't get him free|
+she's under it|he's under it|they're under it|she's underneath it|he's underneath it|
 toddlers inside|children inside|kids inside|still has children inside|
 ankle is broken|ankle's broken|wrist is broken|wrist's broken|hip is broken|leg's broken|arm's broken|
 can't put any weight|cannot put any weight|can't put weight|can't weight bear|cannot weight bear|heat exhaustion|
@@ -183,7 +186,7 @@ still on board|riders still on board|stuck at the top|stranded at the top|leg is
 broke her arm|broke his hip|broke her hip|broken ankle|broke his ankle|broke her ankle|burnt arm|burnt hand|burned arm|burned hand|burnt leg|burnt face|burned face|with burns|burns to his|
 burns to her|burnt his|burnt her|burned his|burned her|cracked his head|cracked her head|cracked their head|cracked his skull|cracked her skull|banged his head|
 banged her head|hit his head|hit her head|split his head|split her head|cut his hand|cut her hand|cut his head|
-cut her head|cut his leg|cut her leg|head wound|head injury|hurt bad|badly hurt|walking wounded|screaming inside|kids screaming|someone in the water|
+cut her head|cut his leg|cut her leg|head wound|head injury|hurt bad|badly hurt|walking wounded|screaming inside|kids screaming|someone in the water|people have gone into the water|have gone into the water|has gone into the water|gone in the water|went into the water|
 smoke inhalation|persons reported|person reported|p1|p2|p3|p1s|p2s|p1 patient|p2 patient|priority one|cpr|
 cpr in progress|a body|body|bodies|non ambulatory|non-ambulatory|overcome|officer down|firefighter down|
 occupants unaccounted for|entrapment|trapped occupant|casualty pinned|
@@ -432,6 +435,9 @@ STRONG_REPAIR = [
     "change of plan", "change of plans", "plans have changed", "withdrawing that", "i'm withdrawing that",
     "i withdraw that", "i take that back", "tell a lie", "wrong block", "caller corrects", "caller corrected",
     "caller correcting", "caller now says", "he corrects", "she corrects", "they correct", "crew corrects",
+    "she's right", "he's right", "you're right", "they're right", "second voice",
+    "i'm all turned round", "i'm all turned around", "all turned round", "all turned around", "i got confused",
+    "i'm confused", "got my bearings wrong",
 ]
 WEAK_REPAIR = ["sorry", "actually", "or rather", "rather", "wait", "no", "nope", "nah", "naw", "er no", "uh no", "well no",
                "oops", "whoops", "hang on", "hold on"]
@@ -833,6 +839,10 @@ STRUCTURE_WORDS = _keyed({"stair", "stairs", "staircase", "stairwell", "scaffold
                    "building", "fence", "canopy", "stand", "bridge", "balcony", "shelf", "shelving", "racking",
                    "tunnel", "shaft", "mezzanine", "platform", "awning", "shed", "barn", "enclosure", "gantry",
                    "ladder", "steps", "walkway", "roof", "ceiling", "floor", "wall", "chimney", "crane", "mast"})
+# Ground that can slump or slip ("part of the face has slumped into the pit").
+EARTHWORKS = {"face", "bank", "banking", "slope", "spoil", "tip", "heap", "embankment", "cutting", "cliff", "ground",
+              "earth", "hillside", "verge", "mound", "bund", "levee", "dyke", "dike"}
+
 PERSON_STATE_CUES = {("collapsed",), ("collapse",), ("collapsing",), ("burned",), ("burnt",), ("burned", "out"),
                      ("fallen", "in"), ("fell", "in"), ("slipped", "in"), ("falling", "in")}
 
@@ -847,7 +857,9 @@ LAY_PERSONS = {"man", "woman", "person", "people", "someone", "somebody", "child
                "teenager", "toddler", "infant", "couple", "mother", "father", "gentleman", "walker", "diver",
                "swimmer", "guest", "customer", "elderly", "youngster", "male", "female", "casualty", "adult",
                "survivor", "persons", "pedestrian", "cyclist", "jogger", "motorist", "camper", "hiker", "rambler",
-               "commuter", "holidaymaker"}
+               "commuter", "holidaymaker", "friend", "colleague", "grandad", "granddad",
+               "grandma", "granny", "nan", "nanna", "grandmother", "grandfather", "mum", "mam", "dad", "uncle",
+               "aunt", "auntie", "cousin", "brother", "boyfriend", "girlfriend"}
 # People at work there: a casualty only when pinned, under or hanging ("a forklift driver under it").
 WORKER_PERSONS = {"driver", "worker", "workman", "lad", "labourer", "passenger", "pupil", "shopper", "baker",
                   "cleaner", "operator", "builder", "steward", "stewardess", "crewman", "deckhand", "fitter",
@@ -1007,17 +1019,21 @@ DANGER_KINDS: dict[str, list[str]] = {
                "roof fell on", "fell on them", "came down on them", "come down on them", "collapsed on them",
                "smashed", "smashed up", "smashed to pieces", "smashed to matchwood", "full of wreckage", "wreckage",
                "a breach in it", "breach in the", "shedding stone", "shedding stones", "shedding masonry",
+               "masonry dropping", "masonry falling", "masonry coming down", "bits of masonry",
+               "windows are all in", "windows all in", "windows have come in", "windows have gone in",
                "roof's come off", "roof has come off", "roof come off", "roof came off"],
     "ground": ["is shifting", "s shifting", "its shifting", "keeps shifting", "started shifting", "sliding",
                "landslide", "mudslide", "mud slide", "landslip", "slipping", "sinkhole", "come away", "came away",
                "subsided into", "subsiding into", "subsidence", "has slipped", "face has slipped", "being undercut",
                "undercut", "being undermined", "undermined", "mud", "mud and rocks", "mud everywhere",
-               "full of mud", "rocks came down", "rocks have come down", "rockfall", "rock fall", "boulders"],
+               "full of mud", "rocks came down", "rocks have come down", "rockfall", "rock fall", "boulders",
+               "coming away", "rocks rolling down", "rocks coming down", "rocks falling", "rocks tumbling"],
     "water": ["sea's come over", "sea's come right over", "sea has come over", "sea came over", "sea's pouring in",
               "sea pouring in", "sea's coming in", "sea coming in", "sea's come in", "sea has come in", "under a metre of water",
               "a metre of water", "metres of water", "full of seawater", "seawater", "awash", "washout", "washed over",
               "water's come through", "water's come right through", "water's right through", "water right through",
-              "water through the", "water has come through", "water came through",
+              "water through the", "water has come through", "water came through", "sea's right through", "sea right through",
+              "sea's come through", "sea has come through", "sea came through",
               "water's come up", "water has come up", "water's come in", "water has come in", "river's come up", "river has come up", "river came up", "river's up", "river's risen", "river has risen",
               "flood", "floods", "flooded", "flooding", "underwater", "under water", "water rising", "rising water",
               "submerged", "knee deep", "waist deep", "chest deep", "ankle deep", "water's up", "water up to",
@@ -1034,6 +1050,8 @@ DANGER_KINDS: dict[str, list[str]] = {
               "burst main", "burst pipe", "pipe burst", "pipe's burst", "overflowing", "overflowed", "overtopped",
               "burst its", "burst its bank", "burst its south bank", "burst its north bank", "washed out",
               "washed clean away", "waves breaking over", "waves going over", "waves coming over", "waves over",
+              "waves are going right over", "waves going right over", "waves are going over", "waves crashing over",
+              "lost all its windows", "lost its windows", "seaweed right through", "seaweed through the",
               "going right over the top", "sea's come through", "sea's come right through", "sea's pouring through",
               "sea pouring through", "pouring through", "water right over", "water over", "water is over", "water's over", "water s over",
               "river's over", "river is over", "river's right over", "river s over", "river s right over",
@@ -1043,7 +1061,7 @@ DANGER_KINDS: dict[str, list[str]] = {
               "up to the second-floor windows", "water is rising", "water is still rising", "water's still rising", "still rising fast", "rising fast", "water's come up", "water has come up", "water came up", "water pouring",
               "water pouring down", "water pouring into", "water running", "inches deep", "inches of water",
               "foot deep", "feet deep", "ankle-deep", "knee-deep", "waist-deep", "got the water in",
-              "water's in", "water is in", "water in there",
+              "water's in", "water is in", "water in there", "water, it's in", "water, it's got into",
               # (added last: the kind's first twelve phrases are what MiniLM reads where no description names it)
               "water pooling", "water's pooling", "got the sea in", "sea's in", "sea in the house", "taking water",
               "taking in water", "under the tide", "waves breaking over", "waves breaking clean over",
