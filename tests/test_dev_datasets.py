@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev49) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev50) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -69,6 +69,7 @@ HILL_FARM = ROOT / "knowledge_bases" / "hill_farm_show"
 DISTILLERY = ROOT / "knowledge_bases" / "distillery_glen"
 RETIREMENT = ROOT / "knowledge_bases" / "retirement_village"
 FERRY_TOWN = ROOT / "knowledge_bases" / "ferry_terminal_town"
+MOORLAND = ROOT / "knowledge_bases" / "moorland_village"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -275,6 +276,11 @@ SETS = {
                                 {"standard": 25, "messy": 25, "advanced_messy": 25}),
     "dev49/riverbend": _set("dev49/riverbend.jsonl", RIVERBEND, "d49r",
                             {"standard": 20, "messy": 20, "advanced_messy": 20}),
+    "dev50/market_square": _set("dev50/market_square.jsonl", MARKET_SQUARE, "d50m",
+                                {"standard": 20, "messy": 40, "advanced_messy": 30}),
+    "dev50/riverbend": _set("dev50/riverbend.jsonl", RIVERBEND, "d50r",
+                            {"standard": 20, "messy": 30, "advanced_messy": 25}),
+    "dev50/moorland_village": _set("dev50/moorland_village.jsonl", MOORLAND, "mv", THIRTY),
 }
 
 
