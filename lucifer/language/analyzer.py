@@ -834,7 +834,9 @@ class ReportAnalyzer:
             j = p.start_tok
             while j > 0 and norms[j - 1] in lx.DETERMINERS:
                 j -= 1
-            if p.status == "active" and j >= 3 and norms[j - 3:j] == ("used", "to", "be"):
+            if p.status == "active" and j >= 3 and norms[j - 3:j] == ("used", "to", "be") \
+                    and not (j >= 4 and norms[j - 4] in ("that", "which") and p.via is not None):
+                # (not "the place that used to be low fold's stables": the place it is now, so described)
                 ex.places[idx] = replace(p, status="reference", reason="what a place used to be: no claim")
                 continue  # "across from the church there used to be a bank ...; it's the coffee place now"
             if p.status == "active" and j >= 2 and norms[j - 1] == "said" and norms[j - 2] in ("never", "didnt", "not"):
@@ -1200,6 +1202,10 @@ class ReportAnalyzer:
                     for i in range(len(words) - n + 1):
                         if n and tuple(words[i:i + n]) == key:
                             words[i:i + n] = [""] * n
+                for i in range(1, len(words)):  # (nor "below the lodge": the one lodge, named by its head word)
+                    if words[i - 1] == "the" and owners.get(words[i], set()) - {lm.name} \
+                            and len(owners.get(words[i], set())) == 1:
+                        words[i] = ""
                 for w in words:
                     described.setdefault(w, set()).add(lm.name)
             self._heads = {w: next(iter(names)) for w, names in owners.items()
@@ -1245,8 +1251,17 @@ class ReportAnalyzer:
                 or norms[i + 1] in ("and", "but") and norms[i + 2:i + 3] in (
                     ("theres",), ("there",), ("its",), ("it",), ("i",), ("we",), ("hes",), ("shes",), ("theyre",))
             # ("collapsed across the yard and there's a lad pinned under it": a clause of its own follows)
+            verb_next = i + 2 < len(norms) and i >= 2 and norms[i - 2] in lx.GENERIC_HEADS | lx.DESCRIPTION_HEADS \
+                and toks.tokens[i + 1].text.lower().endswith(("s", "ed")) \
+                and norms[i + 2] in lx.RELATION_ENDINGS | {"into", "in", "at"} and not toks.clause_start[i + 2]  # ("the maltings empties into")
+            # ("The stream the spillway feeds has burst its banks": a relative clause's verb, then the main clause's)
+            verb_next = verb_next or i >= 3 and i + 1 < len(norms) and norms[i - 3] in lx.ARTICLES \
+                and norms[i - 2].isalpha() and norms[i - 2] not in _NOT_HEADS and (i - 2) not in taken \
+                and toks.tokens[i + 1].text.lower().endswith(("s", "ed")) and not toks.clause_start[i + 1] \
+                and (i + 2 >= len(norms) or toks.clause_start[i + 2] or norms[i + 2] in lx.COPULAS | {"has", "have", "had"}
+                     or self._relations.match_at(norms, i + 1) is not None)  # ("the field the school plays its games on")
             if w in lx.UNNAMING_HEADS or (w in lx.GENERIC_HEADS or w in lx.DESCRIPTION_HEADS) and (i - 1) not in rel_ends \
-                    and not (said_of and (w in lx.GENERIC_HEADS and (contracted or w not in lx.DESCRIPTION_HEADS)
+                    and not ((said_of or verb_next) and (w in lx.GENERIC_HEADS and (contracted or w not in lx.DESCRIPTION_HEADS)
                                           or w in self._sole_heads and w not in lx.UNNAMING_HEADS
                                           and norms[i - 2:i - 1] != ("from",))):
                 # "the terrace" names the one terrace only as a relation's anchor ("back to back with the terrace"),
@@ -1254,9 +1269,6 @@ class ReportAnalyzer:
                 continue
             if i + 1 < len(norms) and norms[i + 1] in ("that", "which", "where", "who") and not toks.clause_start[i + 1]:
                 continue  # "the compound that supplies it": a description for the relation passes
-            verb_next = i + 2 < len(norms) and i >= 2 and norms[i - 2] in lx.GENERIC_HEADS | lx.DESCRIPTION_HEADS \
-                and toks.tokens[i + 1].text.lower().endswith(("s", "ed")) \
-                and norms[i + 2] in lx.RELATION_ENDINGS | {"into", "in", "at"} and not toks.clause_start[i + 2]  # ("the maltings empties into")
             if i + 1 < len(norms) and not toks.clause_start[i + 1] and norms[i + 1].isalpha() \
                     and norms[i + 1] not in lx.FUNCTION_WORDS and self._relations.match_at(norms, i + 1) is None \
                     and not toks.tokens[i].text.lower().endswith(("'s", "’s")) and not verb_next:
@@ -1465,7 +1477,10 @@ class ReportAnalyzer:
                 continue
             nxt = i + 1
             after = nxt + 1
-            if nxt < len(norms) and norms[nxt] in lx.VAGUE_PLACE_HEADS and not toks.clause_start[nxt] \
+            # (or the head its own description uses: "the caravan field" for a "caravan and camping field")
+            if nxt < len(norms) and (norms[nxt] in lx.VAGUE_PLACE_HEADS or norms[nxt] in self._place_nouns()
+                                     and norms[nxt] in self._description_words()[self._first_words[w]]) \
+                    and not toks.clause_start[nxt] \
                     and norms[i - 1] in lx.ARTICLES and nxt not in taken \
                     and (after >= len(norms) or toks.clause_start[after] or norms[after] in lx.COPULAS
                          or norms[after] in lx.PERSON_SUBJECTS | lx.COORDINATORS | {"theres", "there"}) \
@@ -1684,7 +1699,9 @@ class ReportAnalyzer:
         """"Pharmacist here.", "Librarian here,": a speaker who names their trade, and the one landmark the trade
         is named after (the word and a name's word share their first six letters)."""
         for i in range(len(norms) - 1):
-            if toks.sentence_start[i] and norms[i + 1] == "here" and len(norms[i]) >= 6 and norms[i].isalpha():
+            # ("Pharmacist. The building our shop is joined on to ...": the trade said as a sentence of its own)
+            if toks.sentence_start[i] and (norms[i + 1] == "here" or toks.sentence_start[i + 1] and i == 0) \
+                    and len(norms[i]) >= 6 and norms[i].isalpha():
                 owners = self._name_word_owners
                 hits = {lm for w, lms in owners.items() if len(w) >= 6 and w[:6] == norms[i][:6] and w != norms[i]
                         for lm in lms}
@@ -2037,6 +2054,7 @@ class ReportAnalyzer:
             cue_tokens = self._claim_cue_tokens(norms, place_tokens | marker_tokens)
             self._resolve_open(ex, toks, norms, place_tokens, marker_tokens, cue_tokens)
             self._resolve_open_inverse(ex, toks, norms, place_tokens, marker_tokens, cue_tokens)
+            self._resolve_open_ours(ex, toks, norms, place_tokens, marker_tokens, cue_tokens)
             if self._resolve_related(ex, toks, norms, place_tokens, marker_tokens, cue_tokens):
                 # "the path that winds down to the row after the A cabins": a description so resolved may anchor
                 # a listed one
@@ -2310,6 +2328,37 @@ class ReportAnalyzer:
             ex.places.append(self._mention(toks, hs, m, target, via=f"{via} ~ '{link}'"))
             place_tokens.update(range(hs, m))
 
+    def _resolve_open_ours(self, ex: Extraction, toks: Tokens, norms: tuple[str, ...], place_tokens: set[int],
+                           marker_tokens: set[int], cue_tokens: set[int]) -> None:
+        """"Landlord at the Bull here. We've opened up the hall we do the bar for": a head noun, "we", and a
+        linking phrase that ends the clause, from the place the speaker said they are at; the place meant is one
+        the KB relates to it, named by the head noun or read by MiniLM."""
+        here = [p for p in ex.places if p.status != "retracted" and p.via is None and self._speaker_here(norms, p)]
+        if len(here) != 1:
+            return
+        ours = here[0]
+        for i in range(3, len(norms) - 2):
+            if norms[i] not in ("we", "i") or i in place_tokens or i < ours.end_tok \
+                    or norms[i - 2] not in lx.ARTICLES or not self._plain_head(norms, i - 1) or toks.clause_start[i]:
+                continue
+            m = None
+            for end in range(i + 3, min(i + 7, len(norms)) + 1):
+                if any(t in place_tokens or t in marker_tokens or t in cue_tokens or toks.clause_start[t]
+                       for t in range(i + 1, end)):
+                    break
+                if norms[end - 1] in lx.RELATION_ENDINGS | {"into", "for"} and (
+                        end == len(norms) or toks.clause_start[end] or norms[end] in lx.COPULAS | {"as", "now"}):
+                    m = end
+                    break
+            if m is None:
+                continue
+            link = " ".join(toks.tokens[t].text.lower() for t in range(i + 1, m))
+            target, via = self._follow_link(ours.landmark, link, toks.tokens[i - 1].text, inverse=True)
+            if target is None or target == ours.landmark:
+                continue
+            ex.places.append(self._mention(toks, i - 2, m, target, via=f"{via} ~ '{link}' (from where the speaker is)"))
+            place_tokens.update(range(i - 2, m))
+
     RELATED_MARGIN = 0.04
 
     def _place_nouns(self) -> frozenset[str]:
@@ -2333,15 +2382,18 @@ class ReportAnalyzer:
         nouns = self._place_nouns()
         found = False
         blocked = place_tokens | marker_tokens | cue_tokens
+        # (a name that only modifies a noun may still anchor one: "the cottages they built for the bobbin mill's workers")
         for anchor in [p for p in ex.places if p.via is None and (p.status == "active" or p.status == "reference"
-                                                                  and p.reason.startswith("reference point of an unresolved"))]:
+                                                                  and p.reason.startswith(("reference point of an unresolved",
+                                                                                           "modifier of '")))]:
             a = anchor.start_tok
             while a > 0 and norms[a - 1] in lx.DETERMINERS and anchor.start_tok - a < 2:
                 a -= 1
             head = None
             for h in range(a - 1, max(-1, a - 9), -1):
-                if h in blocked or toks.clause_start[h + 1] and toks.gaps[h + 1] != "-" or norms[h] in lx.COORDINATORS:
-                    break  # (a hyphen inside a word, "cross-passage", ends no clause)
+                if h in blocked and not (h in cue_tokens and h not in place_tokens and "whose" in norms[max(0, h - 2):h]) \
+                        or toks.clause_start[h + 1] and toks.gaps[h + 1] != "-" or norms[h] in lx.COORDINATORS:
+                    break  # (a hyphen inside a word, "cross-passage", ends no clause; "whose old stables": no cue)
                 if norms[h] in nouns and h > 0 and (norms[h - 1] in lx.ARTICLES | lx.WHATEVER or h > 1
                                                     and norms[h - 2] in lx.ARTICLES and norms[h - 1].isalpha()
                                                     and (h - 1) not in blocked) or norms[h] in lx.WHATEVER:
@@ -2352,7 +2404,9 @@ class ReportAnalyzer:
                 continue
             between = [norms[i] for i in range(head + 1, a) if norms[i] not in lx.FILLERS]
             end = anchor.end_tok
-            if between:
+            if between and between[0] == "whose":
+                pass  # "the chapel whose old vicarage is now Dinsdale's", "the farm whose old stables the team hut was"
+            elif between:
                 if set(between) <= lx.LOCATIVE_LINKS or any(w in lx.COPULAS - {"s"} for w in between):
                     continue  # "the roof of the bakery", "the kiosk at the services": where it is, not another place
                 if not (between[0] in lx.PREPOSITIONS | lx.RELATION_ENDINGS | lx.DESCRIPTION_OPENERS
@@ -2571,6 +2625,19 @@ class ReportAnalyzer:
         if anchor is None:
             # inverse: "the one (that) the garage sits behind", "the row it shares a wall with"
             if generic and not (words and words[-1] in ("it", "they", "theyre", "we", "i")):
+                here = [p for p in ex.places if p.end_tok <= head_start and p.status != "retracted" and p.via is None
+                        and self._speaker_here(norms, p)]
+                if len(here) == 1 and b < len(norms) and (norms[b] in lx.COPULAS | {"has", "have"}) \
+                        and head_start > 0 and norms[head_start - 1] in lx.ARTICLES:
+                    # "I'm on the steps of St Mary's and the place directly opposite is going up": a relation left
+                    # without its object is said from where the speaker is
+                    target, via = self._follow(here[0].landmark, phrase, head_text, inverse=flipped)
+                    if target is not None and target != here[0].landmark:
+                        ex.places.append(self._mention(toks, head_start - 1, b, target,
+                                                       via=f"{via} (from where the speaker is)"))
+                        place_tokens.update(range(head_start - 1, b))
+                        idx = ex.places.index(here[0])
+                        ex.places[idx] = replace(here[0], status="reference", reason=f"reference point: {via}")
                 return
             if b - a == 1 and b < len(norms) and norms[b] in ("is", "s", "has", "was") \
                     and toks.tokens[a].text.lower() in ("face", "front", "side", "back"):
@@ -2671,6 +2738,11 @@ class ReportAnalyzer:
                     return  # "we're, uh, alongside the east quay with two survivors": where the crew is
                 if norms[b - 1] == "of" and set(norms[a:b]) & (lx.PART_NOUNS | lx.LOCATIVE_PARTS | lx.STOREY_WORDS):
                     return  # "acid spill on the ground floor of the chemistry annexe": a part of it, so in it
+                if norms[b - 1] == "of" and {"back", "front", "side"} & set(norms[a:b]) \
+                        and (norms[a] in ("out", "from", "through") or next(
+                            (w for w in reversed(norms[max(0, a - 3):a]) if w not in lx.ARTICLES | lx.FILLERS), "")
+                             in ("out", "from", "through")):
+                    return  # "flames coming out the back of the granary": out of its back, so at it
                 ex.places[idx] = replace(anchor, status="reference",
                                          reason=f"reference point of an unresolved '{phrase}' description")
                 return
@@ -3019,6 +3091,10 @@ class ReportAnalyzer:
         j = p.start_tok - 1
         while j >= 0 and norms[j] in lx.DETERMINERS | lx.FILLERS:
             j -= 1
+        if j >= 2 and norms[j] == "of" and norms[j - 1] in lx.LOCATIVE_PARTS | lx.PART_NOUNS | {"steps", "step"}:
+            j -= 2  # "I'm on the steps of St Mary's": at a part of it
+            while j >= 0 and norms[j] in lx.DETERMINERS | lx.FILLERS:
+                j -= 1
         if j >= 1 and norms[j] == "is" and norms[j - 1] == "this":
             return True  # "This is the pumping station. The building right below us ..."
         if j < 1 or norms[j] not in ("at", "in", "inside", "outside", "on"):
@@ -3038,6 +3114,9 @@ class ReportAnalyzer:
             j -= 1
         if j >= 2 and norms[j] in ("at", "in") and norms[j - 1] == "work" and norms[j - 2] in ("i", "we"):
             return True  # "I work at the chemist's. The shop we're built onto ...": where the speaker works
+        if j < 0 and p.end_tok + 1 < len(norms) and norms[p.end_tok] in lx.CALLER_ROLES | {"reception", "desk"} \
+                and norms[p.end_tok + 1] in lx.ARTICLES | {"we", "i", "weve", "ive", "were", "im"}:
+            return True  # "Clinic reception. The building next door to us ...": the place that calls
         # "I run the ironmonger's", "we manage the hotel": the speaker's own place
         return j >= 1 and norms[j] in ("run", "own", "manage", "keep") and norms[j - 1] in ("i", "we")
 
@@ -4927,6 +5006,9 @@ class ReportAnalyzer:
                 continue  # "we were told it had blown, but that's wrong": taken back at once, no claim to guess at
             if any(norms[i:i + len(key)] == key for _, key in _FALSE_ALARM_KEYS for i in range(a, b)):
                 continue  # "it's just fog round the bell tower": a dismissal is no claim to guess at
+            if any(norms[i] in ("just", "only") and (norms[i - 1] in ("s", "is", "its", "are", "thats") or toks.tokens[
+                    i - 1].text.lower().endswith(("'s", "’s"))) for i in range(a + 1, b)):
+                continue  # "The green's just puddles": what it only is, no claim to guess at
             sent = [i for i in range(len(norms)) if toks.sentence_of[i] == toks.sentence_of[p.start_tok]]
             if {norms[i] for i in sent} & {"scared", "worried", "afraid", "fear", "frightened"} \
                     and {norms[i] for i in range(a, b)} & {"might", "could", "may", "will", "ll"}:
@@ -5180,13 +5262,14 @@ class ReportAnalyzer:
             past_origin = None
             while k < len(norms) and k - i <= 10 and norms[k] not in into and not toks.clause_start[k]:
                 if k in starts:
-                    if k in origins and k - i <= 8 and ("out", "of") in (norms[k - 2:k], norms[k - 3:k - 1]):
+                    if k in origins and k - i <= 8 and (("out", "of") in (norms[k - 2:k], norms[k - 3:k - 1])
+                                                        or "from" in norms[k - 2:k]):
                         k = past_origin = origins[k]  # "moved everyone out of the cafe and into the sports hall": from
                         continue
                     break
-                if k - i > 6:
+                if k - i > (6 if past_origin is None else past_origin - i + 3):
                     break
-                people = people or norms[k] in lx.MOVED_PEOPLE or norms[k] in ("them", "other", "others", "rest")
+                people = people or norms[k] in lx.MOVED_PEOPLE or norms[k] in ("them", "other", "others", "rest", "us")
                 k += 1
             if not people or k >= len(norms) or norms[k] not in into or toks.clause_start[k]:
                 continue
@@ -6181,12 +6264,24 @@ class ReportAnalyzer:
                 if here and not seg_usable.get(k - 1):
                     pairs.extend(Claim(replace(here[-1], status="active"), c) for c in cs)
                     continue
+            if all(c.category == self._person_category for c in cs) and self._person_category is not None:
+                # "we're at the hotel, and the -- the groom's uncle has collapsed": a person said to need help, in
+                # the sentence that says where the speaker is and names no other place, is there
+                sent = sentence_of[a]
+                at = {q.landmark: q for q in ex.places if q.reason.startswith(("in transit ('we're at'",
+                                                                               "in transit ('we are at'"))
+                      and sentence_of[q.start_tok] == sent and q.start_tok < a}
+                others = [q for q in ex.places if sentence_of[q.start_tok] == sent and q.landmark not in at]
+                if len(at) == 1 and not others:
+                    q = next(iter(at.values()))
+                    pairs.extend(Claim(replace(q, status="active"), c) for c in cs)
+                    continue
             if "here" in norms[a:b]:
                 # "we're at the east portal, RVP established here": where the speaker said they are
                 sent = sentence_of[a]
                 at = {q.landmark: q for q in ex.places if (q.reason.startswith("in transit") and (
                     "at'" in q.reason or "in'" in q.reason) or (
-                    q.status == "active" and self._speaker_at(norms, q))) and sent - 1 <= sentence_of[q.start_tok] <= sent
+                    q.status == "active" and self._speaker_here(norms, q))) and sent - 1 <= sentence_of[q.start_tok] <= sent
                     and q.start_tok < a}
                 if len(at) == 1:
                     q = next(iter(at.values()))
@@ -6210,6 +6305,12 @@ class ReportAnalyzer:
                 if back >= 0 and sentence_of[segs[back][0]] == sentence_of[segs[target][0]] \
                         and any(q.status == "active" for q in seg_usable.get(back, [])) and not seg_cues.get(back):
                     target = back
+            if target is not None and sentence_of[segs[target][0]] < sentence_of[a] \
+                    and all(self._says_who_and_where(toks, norms, q) for q in seg_usable[target]) \
+                    and not {"here", "us", "we", "our", "it", "its", "there", "inside"} & set(norms[a:b]) \
+                    and any(sentence_of[q.start_tok] == sentence_of[a] for q in active):
+                target = None  # "Mechanic at the car workshop. A flash flood has come down the south road: ...": who
+                # is calling from where, not what the next sentence's news is about
             silent = getattr(self, "_non_report_tokens", set())
             if target is not None and all(q.start_tok in silent and sentence_of[q.start_tok] != sentence_of[a]
                                           for q in seg_usable[target]) \
@@ -6235,6 +6336,10 @@ class ReportAnalyzer:
                 for q in told:
                     if len(seg_usable[target]) > 1 and self._origin(norms, q):
                         continue
+                    if len(told) > 1 and "from" in norms[max(0, q.start_tok - 2):q.start_tok] and any(
+                            r.start_tok > q.end_tok and "to" in norms[q.end_tok:r.start_tok] for r in told):
+                        continue  # "walked all sixty of us from the hotel over to the town park and told us that's
+                        # the assembly point": said of where they were taken, not where they came from
                     if q.start_tok in denied_at and any(r.start_tok not in denied_at and r.status == "active"
                                                         for r in seg_usable[target]):
                         continue  # "the tool shop's not on fire it's the mechanics ... and there's a guy under a car in
@@ -6248,6 +6353,10 @@ class ReportAnalyzer:
         for p in sorted(active, key=lambda p: p.start_tok):
             if p.start_tok in claimed_places:
                 continue
+            if "from" in norms[max(0, p.start_tok - 2):p.start_tok] and any(
+                    r.start_tok > p.end_tok and seg_index[r.start_tok] == seg_index[p.start_tok]
+                    and "to" in norms[p.end_tok:r.start_tok] for r in active):
+                continue  # "walked all sixty of us from the hotel over to the town park": where they came from
             n = sentence_of[p.start_tok]
             if any(c.status == "retracted" and c.reason.startswith("withdrawn")
                    and p.end_tok <= c.start_tok <= p.end_tok + 3 and sentence_of[c.start_tok] == n for c in cues):
@@ -6343,7 +6452,8 @@ class ReportAnalyzer:
                     and len(seg_places.get(k, [])) == 1 and not {"too", "also", "well", "same"} & set(tail):
                 continue  # "the hotel's got the gas leak, the bank's just got its alarm ringing": a predicate of its own
             donor = self._donor_for_places(k, segs, seg_places, seg_cues, sentence_of, hollow | counting,
-                                           [self._opening(norms, a, b) for a, b in segs])
+                                           [self._opening(norms, a, b) for a, b in segs],
+                                           [norms[a:b] for a, b in segs])
             if donor is not None and any(q.landmark == p.landmark and q.start_tok >= p.start_tok
                                          and sentence_of[q.start_tok] == sentence_of[p.start_tok]
                                          and (set(norms[q.end_tok:q.end_tok + 2]) & lx.FINE_WORDS
@@ -6661,7 +6771,7 @@ class ReportAnalyzer:
     @staticmethod
     def _donor_for_places(k: int, segs: list[tuple[int, int]], seg_places: dict[int, list[PlaceMention]],
                           seg_cues: dict[int, list[CueMention]], sentence_of: list[int], hollow: set[int],
-                          first_norm: list[str]) -> int | None:
+                          first_norm: list[str], seg_words: list[tuple[str, ...]] | None = None) -> int | None:
         sent = sentence_of[segs[k][0]]
         if first_norm[k] in ("we", "i", "im", "were", "you", "youre", "because", "cos", "coz"):
             return None  # "...full of smoke; we are shifting to emergency steering in the tiller flat": no list item
@@ -6714,6 +6824,9 @@ class ReportAnalyzer:
                 break
             if not seg_places.get(j) and j not in hollow:
                 break
+            if seg_places.get(j) and seg_words is not None and {"is", "are", "was", "were", "where"} & set(seg_words[j]):
+                break  # "the butts, and er, the lodge is where we've put the beaters, it's safe up there": a clause
+                # of its own stands between, no list
             j += 1
         return None
 

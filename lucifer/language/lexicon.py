@@ -148,7 +148,7 @@ stuck between two floors|last seen going into|last seen heading into|last seen a
 swept off his feet|swept off her feet|swept off their feet|hanging on to|hanging onto|
 stretcher needed|need a stretcher|needs a stretcher|stretcher required|stretcher to|
 need to get them out|need hands to get them out|to get them out|can't get them out|cannot get them out|
-holding his head|holding her head|clutching his head|clutching her head|come staggering out|came staggering out|staggered out|staggering out|
+all cut up|badly cut up|cut to pieces|holding his head|holding her head|clutching his head|clutching her head|come staggering out|came staggering out|staggered out|staggering out|
 can't get her out|cannot get her out|can't get him out|cannot get him out|can't get her free|can't get him free|
 she's under it|he's under it|they're under it|she's underneath it|he's underneath it|
 toddlers inside|children inside|kids inside|still has children inside|
@@ -376,7 +376,7 @@ FALSE_ALARM = ["false alarm", "scratch their earlier call", "scratch my earlier 
                "nothing has happened at ours", "that was yesterday's call", "that was yesterday", "exercise exercise", "for the exercise only", "that's for the exercise",
                "none of this is real", "this is a test message", "the scenario has", "tomorrow's exercise",
                "in the exercise", "stand down on the", "standing down on the", "stood down on the", "never mind", "nevermind", "disregard my last", "disregard the last report",
-               "nothing in it", "nothing to it", "just steam", "only steam", "just fog", "only fog", "just mist", "only mist", "extractor fan", "was just a", "was only a",
+               "nothing in it", "nothing to it", "on purpose", "controlled burn", "just steam", "only steam", "just fog", "only fog", "just mist", "only mist", "extractor fan", "was just a", "was only a",
                "was just their", "was just the", "its just their", "is just their", "its only their", "nothing to worry about", "ignore my last", "cancel my last",
                "disregard my last message", "disregard previous", "disregard my earlier report",
                "ignore my earlier report", "disregard the earlier report", "disregard the earlier message",
@@ -868,7 +868,9 @@ WORKER_PERSONS = {"driver", "worker", "workman", "lad", "labourer", "passenger",
 # Who calls in, said before where they are ("Security guard at the savings bank."): a role, not a claim.
 CALLER_ROLES = {"guard", "warden", "officer", "patrol", "assistant", "attendant", "manager", "caretaker", "courier",
                 "inspector", "first-aider", "firstaider", "aider", "volunteer", "medic", "paramedic", "constable",
-                "firefighter", "watchman", "supervisor", "foreman", "receptionist", "janitor", "custodian"}
+                "firefighter", "watchman", "supervisor", "foreman", "receptionist", "janitor", "custodian",
+                "mechanic", "pharmacist", "landlord", "landlady", "publican", "postman", "postwoman", "postie",
+                "porter", "lifeguard", "verger", "vicar", "curate", "ranger", "keeper"}
 # Said before a place nobody has been to yet ("we haven't been to the deanery yet"): no claim there.
 NOT_VISITED = [("havent", "been", "to"), ("not", "been", "to"), ("havent", "been", "in"), ("not", "been", "in"),
                ("havent", "been", "into"), ("havent", "checked"), ("not", "checked"), ("havent", "reached"),
@@ -1019,7 +1021,10 @@ DANGER_KINDS: dict[str, list[str]] = {
                "roof fell on", "fell on them", "came down on them", "come down on them", "collapsed on them",
                "smashed", "smashed up", "smashed to pieces", "smashed to matchwood", "full of wreckage", "wreckage",
                "a breach in it", "breach in the", "shedding stone", "shedding stones", "shedding masonry",
-               "masonry dropping", "masonry falling", "masonry coming down", "bits of masonry",
+               "masonry dropping", "masonry falling", "masonry coming down", "bits of masonry", "trees are down",
+               "trees down", "tree is down", "power lines tangled", "lines tangled in", "half the ceiling's",
+               "has failed", "concrete's gone", "half gone", "ripped out the",
+               "ceiling's on the floor",
                "windows are all in", "windows all in", "windows have come in", "windows have gone in",
                "roof's come off", "roof has come off", "roof come off", "roof came off"],
     "ground": ["is shifting", "s shifting", "its shifting", "keeps shifting", "started shifting", "sliding",
@@ -1033,7 +1038,8 @@ DANGER_KINDS: dict[str, list[str]] = {
               "a metre of water", "metres of water", "full of seawater", "seawater", "awash", "washout", "washed over",
               "water's come through", "water's come right through", "water's right through", "water right through",
               "water through the", "water has come through", "water came through", "sea's right through", "sea right through",
-              "sea's come through", "sea has come through", "sea came through",
+              "sea's come through", "sea has come through", "sea came through", "a metre under", "metres under",
+              "a foot under", "feet under",
               "water's come up", "water has come up", "water's come in", "water has come in", "river's come up", "river has come up", "river came up", "river's up", "river's risen", "river has risen",
               "flood", "floods", "flooded", "flooding", "underwater", "under water", "water rising", "rising water",
               "submerged", "knee deep", "waist deep", "chest deep", "ankle deep", "water's up", "water up to",
