@@ -3063,6 +3063,15 @@ def test_dev47_dev48_phenomena(kb_analyzers, analyzer, kb, text, expected):
     ("riverbend", "fire at the timber yard, that's the foreman burning off brash on purpose", []),
     ("ferry_terminal_town", "the glasshouse is burning, the whole front of it", [("ferry terminal", "burning_or_fumes")]),
     ("moorland_village", "The spillway has failed at the third step", [("reservoir spillway", "washout_and_slip")]),
+    # a head noun the place's own description opens on ("The stream that runs from the spillway ...")
+    ("moorland_village", "someone in the stream that's fed by the overflow", [("hagg beck", "soul_at_risk")]),
+    # a pronoun anchored on a description resolved in the same pass; people moved onto a place
+    ("moorland_village", "Smoke in the school that the prims lend their schoolroom to, and the kids have been moved "
+                         "out onto the field it plays its games on", [("playing field", "haven_ground"),
+                                                                      ("village school", "scorch_and_smoke")]),
+    # the one place the report names, where the speaker said they are, for news with no place of its own
+    ("ms", "I'm at the pond in the park. A kid's lost -- no, mum's got her, false alarm. But the big trees by the "
+           "pond are down across the path with power lines tangled in them", [("park", "hazard")]),
     ("ferry_terminal_town", "the tanks are burning and it's reaching the lorry park now three drivers collapsed there",
      [("fuel tank farm", "burning_or_fumes"), ("lorry park", "burning_or_fumes"), ("lorry park", "person_needing_help")]),
 ])

@@ -2044,10 +2044,14 @@ class ReportAnalyzer:
         ordered = sorted(rel_hits, key=lambda h: -h[0])
         self._rel_tokens = {i for a, b, _ in rel_hits for i in range(a, b)}
         # forward descriptions, then inverse ones, then forward ones that anchor on an inverse one
-        for pass_no in (1, 2, 1):
+        # (an inverse one on a pronoun twice: "the field it plays its games on" after "the school that the prims
+        # lend ... to", resolved later in the same pass)
+        for pass_no in (1, 2, 3, 1):
             for a, b, (phrase, flipped) in ordered:
+                if pass_no == 3 and not (a > 0 and norms[a - 1] in ("it", "they", "its")):
+                    continue
                 self._resolve_one(ex, toks, norms, a, b, phrase, flipped, place_tokens, marker_tokens,
-                                  inverse_pass=pass_no == 2)
+                                  inverse_pass=pass_no in (2, 3))
         if self.kb.relations:
             self._resolve_shared_heads(ex, toks, norms, place_tokens, marker_tokens)
         if self.embedder is not None and self.kb.relations:
@@ -2367,6 +2371,7 @@ class ReportAnalyzer:
         if getattr(self, "_place_noun_cache", None) is None:
             heads = (_name_head(f) or "".join(name_words(f)[-1:]) for lm in self.kb.landmarks for f in lm.surface_forms)
             words = {head for head in heads if head.isalpha() and len(head) >= 3 and head not in lx.FUNCTION_WORDS}
+            words |= {w for lm in self.kb.landmarks if (w := _description_head(lm.description or ""))}
             self._place_noun_cache = frozenset(words | lx.GENERIC_HEADS)
         return self._place_noun_cache
 
@@ -5250,13 +5255,14 @@ class ReportAnalyzer:
         # station -- I mean the doctors', the surgery")
         starts = {p.start_tok for p in ex.places if p.status == "active"
                   or p.status == "retracted" and p.reason.startswith("self-repair")}
+        starts |= {s + 1 for s in starts if s + 1 < len(norms) and norms[s] in lx.ARTICLES}  # ("the field it plays ...")
         for i, w in enumerate(norms):
             evac = w in lx.EVACUATE_VERBS
             # ("We've put the others in the surgery till it stops": people put somewhere to wait)
             put = w in ("put", "putting") and i > 0 and norms[i - 1] in ("weve", "ive", "theyve", "have", "were", "been")
             if not (evac or w in lx.MOVE_VERBS or put):
                 continue
-            into = ("to", "into", "in", "inside") if put else ("to", "into")
+            into = ("to", "into", "in", "inside") if put else ("to", "into", "onto")
             k, people = i + 1, evac or any(norms[m] in lx.MOVED_PEOPLE for m in range(max(0, i - 3), i))
             origins = {p.start_tok: p.end_tok for p in ex.places if p.status == "active"}
             past_origin = None
@@ -6295,6 +6301,14 @@ class ReportAnalyzer:
             if target is None and not any(seg_usable.get(j) for j in range(k)):
                 person = all(self.kb.category_by_name[c.category].role == Role.CRITICAL for c in cs)
                 target = self._named_after(k, segs, seg_usable, seg_cues, sentence_of, norms, sent_words, person)
+            if target is None and len({q.landmark for q in ex.places if q.status != "retracted"}) == 1:
+                # "I'm at the pond in the, the park, and ... But the big trees by the pond are down across the path":
+                # where the speaker said they are, in a report that names no other place
+                at = [j for j in range(k) if any(q.status == "active" and (self._speaker_here(norms, q) or any(
+                    norms[t] in ("im", "were") and sentence_of[t] == sentence_of[q.start_tok]
+                    for t in range(max(0, q.start_tok - 9), q.start_tok))) for q in seg_usable.get(j, []))]
+                if at:
+                    target = at[-1]
             if target is not None and all(q.status == "negated" for q in seg_usable[target]):
                 # "the harbour master's office, not the ice house, has got a gas leak": past the negated aside
                 # to the place it was contrasted with, in the same sentence
@@ -7281,6 +7295,32 @@ _PERSON_KEYS = frozenset(w for p in lx.PERSON_NOUNS for w in norm_phrase(p))
 
 # The withdrawal markers ("scratch that") as token keys joined by spaces.
 _WITHDRAW_KEYS = frozenset(" ".join(norm_phrase(m)) for m in lx.WITHDRAW_MARKERS)
+
+
+def _description_head(description: str) -> str | None:
+    """The noun a landmark's description opens on: "The stream that runs from the spillway" -- "stream", "Tall stone
+    draw-off tower standing in the reservoir" -- "tower", "Terrace of low cottages" -- "terrace"."""
+    words = [w for w in norm_phrase(description)]
+    while words and words[0] in lx.ARTICLES:
+        words.pop(0)
+    head = None
+    for i, w in enumerate(words):
+        nxt = words[i + 1] if i + 1 < len(words) else ""
+        if w in ("that", "which", "with", "where", "who") or w in lx.PREPOSITIONS \
+                or w.endswith(("ing", "ed")) and len(w) > 5 and w not in lx.GENERIC_HEADS \
+                and nxt in lx.PREPOSITIONS | lx.ARTICLES:
+            break
+        if w == "and":
+            continue  # ("Caravan and camping field below the quarry face")
+        if w in lx.FUNCTION_WORDS:
+            return None  # ("Small pharmacy shop built onto ...": no plain noun phrase to read a head from)
+        head = w
+    else:
+        return None
+    if head is None or not head.isalpha() or len(head) < 4 or head in lx.DESCRIPTIVE_WORDS | lx.RELATION_ENDINGS \
+            or head in ("line", "group", "pair", "cluster", "series", "collection", "couple"):
+        return None  # (a collective noun: "A line of turf-and-stone shooting butts")
+    return head
 
 
 def _withdraws(marker: tuple[str, ...]) -> bool:

@@ -1023,7 +1023,7 @@ DANGER_KINDS: dict[str, list[str]] = {
                "a breach in it", "breach in the", "shedding stone", "shedding stones", "shedding masonry",
                "masonry dropping", "masonry falling", "masonry coming down", "bits of masonry", "trees are down",
                "trees down", "tree is down", "power lines tangled", "lines tangled in", "half the ceiling's",
-               "has failed", "concrete's gone", "half gone", "ripped out the",
+               "has failed", "concrete's gone", "half gone", "ripped out the", "doors burst in", "burst in by the",
                "ceiling's on the floor",
                "windows are all in", "windows all in", "windows have come in", "windows have gone in",
                "roof's come off", "roof has come off", "roof come off", "roof came off"],
