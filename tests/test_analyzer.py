@@ -3063,6 +3063,10 @@ def test_dev47_dev48_phenomena(kb_analyzers, analyzer, kb, text, expected):
     ("riverbend", "fire at the timber yard, that's the foreman burning off brash on purpose", []),
     ("ferry_terminal_town", "the glasshouse is burning, the whole front of it", [("ferry terminal", "burning_or_fumes")]),
     ("moorland_village", "The spillway has failed at the third step", [("reservoir spillway", "washout_and_slip")]),
+    ("ferry_terminal_town", "It's the building whose hall the school borrows that's got the casualties, not the "
+                            "school itself", [("leisure centre", "person_needing_help")]),
+    ("ferry_terminal_town", "The school's flooded, so take the kids to the leisure centre",
+     [("leisure centre", "muster_ground"), ("seaview primary school", "surge_and_debris")]),
     # a head noun the place's own description opens on ("The stream that runs from the spillway ...")
     ("moorland_village", "someone in the stream that's fed by the overflow", [("hagg beck", "soul_at_risk")]),
     # a pronoun anchored on a description resolved in the same pass; people moved onto a place

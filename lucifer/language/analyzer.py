@@ -1255,10 +1255,11 @@ class ReportAnalyzer:
                 and toks.tokens[i + 1].text.lower().endswith(("s", "ed")) \
                 and norms[i + 2] in lx.RELATION_ENDINGS | {"into", "in", "at"} and not toks.clause_start[i + 2]  # ("the maltings empties into")
             # ("The stream the spillway feeds has burst its banks": a relative clause's verb, then the main clause's)
-            verb_next = verb_next or i >= 3 and i + 1 < len(norms) and norms[i - 3] in lx.ARTICLES \
+            verb_next = verb_next or i >= 3 and i + 1 < len(norms) and norms[i - 3] in lx.ARTICLES | {"whose"} \
                 and norms[i - 2].isalpha() and norms[i - 2] not in _NOT_HEADS and (i - 2) not in taken \
                 and toks.tokens[i + 1].text.lower().endswith(("s", "ed")) and not toks.clause_start[i + 1] \
-                and (i + 2 >= len(norms) or toks.clause_start[i + 2] or norms[i + 2] in lx.COPULAS | {"has", "have", "had"}
+                and (i + 2 >= len(norms) or toks.clause_start[i + 2]
+                     or norms[i + 2] in lx.COPULAS | {"has", "have", "had", "that", "thats", "which"}
                      or self._relations.match_at(norms, i + 1) is not None)  # ("the field the school plays its games on")
             if w in lx.UNNAMING_HEADS or (w in lx.GENERIC_HEADS or w in lx.DESCRIPTION_HEADS) and (i - 1) not in rel_ends \
                     and not ((said_of or verb_next) and (w in lx.GENERIC_HEADS and (contracted or w not in lx.DESCRIPTION_HEADS)
@@ -5260,7 +5261,9 @@ class ReportAnalyzer:
             evac = w in lx.EVACUATE_VERBS
             # ("We've put the others in the surgery till it stops": people put somewhere to wait)
             put = w in ("put", "putting") and i > 0 and norms[i - 1] in ("weve", "ive", "theyve", "have", "were", "been")
-            if not (evac or w in lx.MOVE_VERBS or put):
+            # ("so take the kids to the leisure centre"; not "we were told to take the children to ...": a plan)
+            order = w in ("take", "bring") and not (i > 0 and norms[i - 1] in lx.PLAN_WORDS)
+            if not (evac or w in lx.MOVE_VERBS or put or order):
                 continue
             into = ("to", "into", "in", "inside") if put else ("to", "into", "onto")
             k, people = i + 1, evac or any(norms[m] in lx.MOVED_PEOPLE for m in range(max(0, i - 3), i))
