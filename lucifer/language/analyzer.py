@@ -2207,17 +2207,22 @@ class ReportAnalyzer:
         if len(key) != 1 or key[0] in ("place", "building", "one", "spot", "bit", "area", "site", "thing", "side", "end") \
                 or len(key[0]) < 3:
             return None, None
-        found = {}
-        for rel in self.kb.relations:
-            if anchor not in (rel.subject, rel.object):
-                continue
-            other = rel.object if rel.subject == anchor else rel.subject
-            if other != anchor and any(key[0] in name_words(f) for f in self.kb.landmark_by_name[other].surface_forms):
-                found[other] = f"{rel.subject} {rel.phrase} {rel.object}"
+        found = {other: via for other, (via, _) in self._related_to(anchor).items()
+                 if any(key[0] in name_words(f) for f in self.kb.landmark_by_name[other].surface_forms)}
         if len(found) != 1:
             return None, None
         other, via = next(iter(found.items()))
         return other, via
+
+    def _related_to(self, anchor: str) -> dict[str, tuple[str, str]]:
+        """The landmarks the KB relates to ``anchor``, either way round, each with the first relation joining them:
+        as the KB states it ("ice plant chills_the_catch_for fish quay") and its phrase."""
+        out: dict[str, tuple[str, str]] = {}
+        for rel in self.kb.relations:
+            if anchor in (rel.subject, rel.object) and rel.subject != rel.object:
+                other = rel.object if rel.subject == anchor else rel.subject
+                out.setdefault(other, (f"{rel.subject} {rel.relation} {rel.object}", rel.phrase))
+        return out
 
     def _resolve_open(self, ex: Extraction, toks: Tokens, norms: tuple[str, ...], place_tokens: set[int],
                       marker_tokens: set[int], cue_tokens: set[int]) -> None:
@@ -2440,13 +2445,9 @@ class ReportAnalyzer:
                           and q.start_tok <= anchor.start_tok and anchor.end_tok <= q.end_tok), None)
             if outer is not None:
                 anchor = outer  # "the house overlooking the lawn the north gate opens onto": the lawn so described
-            related: dict[str, str] = {}
-            phrases: dict[str, str] = {}
-            for rel in self.kb.relations:
-                if anchor.landmark in (rel.subject, rel.object) and rel.subject != rel.object:
-                    other = rel.object if rel.subject == anchor.landmark else rel.subject
-                    related.setdefault(other, f"{rel.subject} {rel.relation} {rel.object}")
-                    phrases.setdefault(other, rel.phrase)
+            joined = self._related_to(anchor.landmark)
+            related = {other: via for other, (via, _) in joined.items()}
+            phrases = {other: phrase for other, (_, phrase) in joined.items()}
             idx = ex.places.index(anchor)
             if not related:
                 continue
