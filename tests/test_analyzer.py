@@ -3067,6 +3067,10 @@ def test_dev47_dev48_phenomena(kb_analyzers, analyzer, kb, text, expected):
                             "school itself", [("leisure centre", "person_needing_help")]),
     ("ferry_terminal_town", "The school's flooded, so take the kids to the leisure centre",
      [("leisure centre", "muster_ground"), ("seaview primary school", "surge_and_debris")]),
+    # a sentence that opens on where the sentence before happened; a correction through "nothing at X, it's Y"
+    ("moorland_village", "Person in the water! In the beck, clinging onto a branch.", [("hagg beck", "soul_at_risk")]),
+    ("riverbend", "first caller reports fumes at the brewery. Second caller says no, nothing at the brewery, it's the "
+                  "tannery beside it", [("tannery", "threat")]),
     # a head noun the place's own description opens on ("The stream that runs from the spillway ...")
     ("moorland_village", "someone in the stream that's fed by the overflow", [("hagg beck", "soul_at_risk")]),
     # a pronoun anchored on a description resolved in the same pass; people moved onto a place

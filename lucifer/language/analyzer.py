@@ -3450,6 +3450,10 @@ class ReportAnalyzer:
                         and set(norms[p.end_tok:nxt.start_tok]) & {"its", "it", "thats"}:
                     corrects = True  # "Fire at the bank. ... he says it's not the bank, it's the bakery": said as
                     # a correction, of the bank said before
+                if not earlier and not corrects and norms[j] == "nothing" and nxt is not None \
+                        and set(norms[p.end_tok:nxt.start_tok]) & {"its", "it", "thats"}:
+                    corrects = True  # "fumes at the brewery. Second caller ... says no, nothing at the brewery, it's
+                    # the tannery beside it"
                 if not earlier and (not corrects or nxt is None) and norms[j] == "not":
                     said = next((q for q in ex.places if q.status == "active" and j - 2 <= q.end_tok <= j
                                  and q.landmark != p.landmark and toks.sentence_of[q.start_tok] == toks.sentence_of[j]
@@ -6346,6 +6350,9 @@ class ReportAnalyzer:
                     # the place the first one fell into
                     told = [max(told, key=lambda q: q.start_tok)]
                 first_word = next((w for w in norms[a:b] if w not in lx.FILLERS), "")
+                if target > k and len(told) > 1 and norms[segs[target][0]] in ("in", "at", "inside"):
+                    told = [min(told, key=lambda q: q.start_tok)]  # ("... In the stream that's fed by the overflow off
+                    # the top water": the place the fragment opens on)
                 told = told + self._list_opening(toks, norms, segs, target, seg_usable, seg_cues, told)
                 if first_word in ("which", "where") and len(told) > 1 and target == k - 1:
                     # "the caravan park's been evacuated up to the quarry car park, which is safe ground": the
@@ -6977,7 +6984,10 @@ class ReportAnalyzer:
                 own = [w for w in norms[segs[j][0]:segs[j][1]] if w not in lx.FILLERS]
                 named = words[:2] in (["it", "is"], ["this", "is"]) or words[:1] in (["its"], ["thats"]) \
                     or own[:2] == ["its", "the"] \
-                    or words[:2] in (["that", "at"], ["that", "in"], ["thats", "at"], ["thats", "in"])
+                    or words[:2] in (["that", "at"], ["that", "in"], ["thats", "at"], ["thats", "in"]) \
+                    or words[:2] in (["in", "the"], ["at", "the"], ["inside", "the"]) and start == segs[j][0] \
+                    and min(q.start_tok for q in seg_places[j]) <= start + 3
+                # ("Person in the water! In the beck, clinging onto a branch.": a sentence that opens on where)
                 # ("sorry, I keep saying guest house, it's the hotel"; "That's at the guest house.")
                 who = next((i for i, w in enumerate(words[:6]) if w in lx.PERSON_SUBJECTS or w in ("we", "i")), None)
                 # ("my husband ... his leg is broken. We are inside the guest house": where the caller is with him)
