@@ -2343,7 +2343,7 @@ class ReportAnalyzer:
         """"Landlord at the Bull here. We've opened up the hall we do the bar for": a head noun, "we", and a
         linking phrase that ends the clause, from the place the speaker said they are at; the place meant is one
         the KB relates to it, named by the head noun or read by MiniLM."""
-        here = [p for p in ex.places if p.status != "retracted" and p.via is None and self._speaker_here(norms, p)]
+        here = self._speaker_places(ex, norms)
         if len(here) != 1:
             return
         ours = here[0]
@@ -2368,6 +2368,11 @@ class ReportAnalyzer:
                 continue
             ex.places.append(self._mention(toks, i - 2, m, target, via=f"{via} ~ '{link}' (from where the speaker is)"))
             place_tokens.update(range(i - 2, m))
+
+    def _speaker_places(self, ex: Extraction, norms: tuple[str, ...]) -> list[PlaceMention]:
+        """The named places (no descriptions) the speaker says they are at, not taken back: the anchors of "the hall we
+        do the bar for" and of a relation left without its object ("the place directly opposite is going up")."""
+        return [p for p in ex.places if p.status != "retracted" and p.via is None and self._speaker_here(norms, p)]
 
     RELATED_MARGIN = 0.04
 
@@ -2632,8 +2637,7 @@ class ReportAnalyzer:
         if anchor is None:
             # inverse: "the one (that) the garage sits behind", "the row it shares a wall with"
             if generic and not (words and words[-1] in ("it", "they", "theyre", "we", "i")):
-                here = [p for p in ex.places if p.end_tok <= head_start and p.status != "retracted" and p.via is None
-                        and self._speaker_here(norms, p)]
+                here = [p for p in self._speaker_places(ex, norms) if p.end_tok <= head_start]
                 if len(here) == 1 and b < len(norms) and (norms[b] in lx.COPULAS | {"has", "have"}) \
                         and head_start > 0 and norms[head_start - 1] in lx.ARTICLES:
                     # "I'm on the steps of St Mary's and the place directly opposite is going up": a relation left
@@ -5959,11 +5963,11 @@ class ReportAnalyzer:
             kind = self._repair_kind(ex, k, cue_spans)
             b_after, e_after = self._after_clause(ex, k)
             withdraw = _withdraws(norms_all[a:_b])
-            if kind == "place" and not (strong and self._same_place_dismissed(ex, norms_all, a, b_after, e_after)):
+            if kind == "place" and strong and self._same_place_dismissed(ex, norms_all, a, b_after, e_after):
+                kind = None  # the place said again with a dismissal: a withdrawal of the cue, not a place repair
+            if kind == "place":
                 self._restated_category(ex, k, out, b_after, e_after, a, withdraw)
                 continue
-            if kind == "place":
-                kind = None
             just_said = [c for c in out if c.status == "active" and c.end_tok <= a
                          and all(w in lx.FILLERS for w in norms_all[c.end_tok:a])]
             taken_back = kind is None and strong and bool(just_said) and e_after > b_after \
@@ -6202,9 +6206,8 @@ class ReportAnalyzer:
                     and not (norms[b - 1] in ("out", "off", "up", "over", "in") and any(c.end_tok == b for c in cs)) \
                     and not (norms[b - 1] in ("down", "away") and any(c.end_tok == b for c in cs)
                              and not seg_places.get(k + 1)):
-                # ("rocks rolling down, we've got everyone off the site": the cue's own word; "man down, warehouse"
-                # leads on to its place)
-                # ("but it's flooded out, so ...": the cue's own word; "man down, warehouse" still leads on)
+                # ("but it's flooded out, so ...", "rocks rolling down, we've got everyone off the site": the cue's own
+                # word; "man down, warehouse" still leads on to its place)
                 nxt = k + 1
                 skipped = 0
                 taken_back = None
@@ -6361,8 +6364,7 @@ class ReportAnalyzer:
                 for q in told:
                     if len(seg_usable[target]) > 1 and self._origin(norms, q):
                         continue
-                    if len(told) > 1 and "from" in norms[max(0, q.start_tok - 2):q.start_tok] and any(
-                            r.start_tok > q.end_tok and "to" in norms[q.end_tok:r.start_tok] for r in told):
+                    if len(told) > 1 and _moved_from(norms, q, told):
                         continue  # "walked all sixty of us from the hotel over to the town park and told us that's
                         # the assembly point": said of where they were taken, not where they came from
                     if q.start_tok in denied_at and any(r.start_tok not in denied_at and r.status == "active"
@@ -6378,9 +6380,7 @@ class ReportAnalyzer:
         for p in sorted(active, key=lambda p: p.start_tok):
             if p.start_tok in claimed_places:
                 continue
-            if "from" in norms[max(0, p.start_tok - 2):p.start_tok] and any(
-                    r.start_tok > p.end_tok and seg_index[r.start_tok] == seg_index[p.start_tok]
-                    and "to" in norms[p.end_tok:r.start_tok] for r in active):
+            if _moved_from(norms, p, [r for r in active if seg_index[r.start_tok] == seg_index[p.start_tok]]):
                 continue  # "walked all sixty of us from the hotel over to the town park": where they came from
             n = sentence_of[p.start_tok]
             if any(c.status == "retracted" and c.reason.startswith("withdrawn")
@@ -7309,6 +7309,13 @@ _PERSON_KEYS = frozenset(w for p in lx.PERSON_NOUNS for w in norm_phrase(p))
 
 # The withdrawal markers ("scratch that") as token keys joined by spaces.
 _WITHDRAW_KEYS = frozenset(" ".join(norm_phrase(m)) for m in lx.WITHDRAW_MARKERS)
+
+
+def _moved_from(norms: tuple[str, ...], p: PlaceMention, others: list[PlaceMention]) -> bool:
+    """``p`` is where people were taken from: "from the hotel over to the town park" (another of ``others`` after
+    it, with "to" between)."""
+    return "from" in norms[max(0, p.start_tok - 2):p.start_tok] and any(
+        r.start_tok > p.end_tok and "to" in norms[p.end_tok:r.start_tok] for r in others)
 
 
 def _description_head(description: str) -> str | None:
