@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev50) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev51) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -70,6 +70,7 @@ DISTILLERY = ROOT / "knowledge_bases" / "distillery_glen"
 RETIREMENT = ROOT / "knowledge_bases" / "retirement_village"
 FERRY_TOWN = ROOT / "knowledge_bases" / "ferry_terminal_town"
 MOORLAND = ROOT / "knowledge_bases" / "moorland_village"
+GLASSHOUSE = ROOT / "knowledge_bases" / "glasshouse_suburb"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -281,6 +282,11 @@ SETS = {
     "dev50/riverbend": _set("dev50/riverbend.jsonl", RIVERBEND, "d50r",
                             {"standard": 20, "messy": 30, "advanced_messy": 25}),
     "dev50/moorland_village": _set("dev50/moorland_village.jsonl", MOORLAND, "mv", THIRTY),
+    "dev51/market_square": _set("dev51/market_square.jsonl", MARKET_SQUARE, "d51m",
+                                {"standard": 20, "messy": 40, "advanced_messy": 30}),
+    "dev51/riverbend": _set("dev51/riverbend.jsonl", RIVERBEND, "d51r",
+                            {"standard": 20, "messy": 30, "advanced_messy": 25}),
+    "dev51/glasshouse_suburb": _set("dev51/glasshouse_suburb.jsonl", GLASSHOUSE, "gs51", THIRTY),
 }
 
 
