@@ -3086,3 +3086,62 @@ def test_dev47_dev48_phenomena(kb_analyzers, analyzer, kb, text, expected):
 def test_dev48_dev50_relations_and_frames(kb_analyzers, analyzer, kb, text, expected):
     an = analyzer if kb == "ms" else kb_analyzers[kb]
     assert claims(an, text) == expected
+
+
+@pytest.mark.parametrize("kb,text,expected", [
+    # an exercise or training message claims nothing, in any sentence; "not a training scenario" does
+    ("glasshouse_suburb", "Exercise, exercise. Simulated casualty at the tin platform. Training message only.", []),
+    ("ms", "Radio check. The exercise scenario is smoke in the bakery with two hurt. Exercise only.", []),
+    ("glasshouse_suburb", "This is not a training scenario, people trapped at the halt", [("nettlecombe halt", "hands_in_need")]),
+    # words: a cut from glass, a fever, water "up to the knee", fast water, panes lost, stones dropping
+    ("glasshouse_suburb", "my brother is cut very bad from the glass, we are in the crystal palace",
+     [("hartwell glasshouse", "hands_in_need")]),
+    ("glasshouse_suburb", "in the tied cottages the water is come inside, up to the knee, and the baby has fever",
+     [("glasshouse row", "brookwash"), ("glasshouse row", "hands_in_need")]),
+    ("glasshouse_suburb", "the road bridge is under a foot of fast water", [("brook road bridge", "brookwash")]),
+    ("glasshouse_suburb", "hartwell's range has lost every pane", [("hartwell glasshouse", "shard_and_blast")]),
+    ("riverbend", "the abbey's east gable is still dropping stones", [("abbey", "threat")]),
+    # a relation-name noun said as a subject or a state is no relation ("lifts water out of", "heats the glass of")
+    ("glasshouse_suburb", "Water is up over the request stop", [("nettlecombe halt", "brookwash")]),
+    ("glasshouse_suburb", "the lower plots are flooded, the top plots are just er glass everywhere, frames smashed",
+     [("lower allotments", "brookwash"), ("upper allotments", "shard_and_blast")]),
+    # a bare head word another landmark's alias uses only as a modifier ("the church hall")
+    ("glasshouse_suburb", "the church has cracked right up the tower", [("st fiacre's church", "shard_and_blast")]),
+    # "for" and "to" after a noun of the relation's name; a relation's last word said twice
+    ("glasshouse_suburb", "the one holding the spare keys to the wet plots has lost its roof",
+     [("allotment society hut", "shard_and_blast")]),
+    ("glasshouse_suburb", "the pond that's topped up by — by the station that lifts water out of the brook — yeah, "
+                          "that pond, not the station itself — it's silt wash right across it",
+     [("irrigation lagoon", "brookwash")]),
+    # a resolved place keeps its claim when a word before it looks like another relation ("face" as "facing")
+    ("riverbend", "the rock face that looks down over the caravan park is slipping", [("quarry", "threat")]),
+    # where the speaker is: "I'm up on X", "what I can see from X", "we are in X" after a person's need
+    ("ms", "I'm up on the hardware store roof and the place directly behind it is giving off fumes", [("garage", "hazard")]),
+    ("riverbend", "What I can see from the sluice gate is smoke coming out of the sawmill", [("timber yard", "threat")]),
+    # a place named only to say where another is; "not that, that's X" names what was taken back
+    ("ms", "a fire at the pub round the corner from the square", []),
+    ("ms", "Manager of the coffee house on the east side of the square, we're safe in here", [("cafe", "safe_zone")]),
+    # repair and cancel words: "I beg your pardon", "is, er, out", an explanation before "ignore that",
+    # "somewhere" names no place, "from one end to the other" names no list item
+    ("riverbend", "smoke from the tannery, I beg your pardon, the brewhouse", [("brewery", "threat")]),
+    ("riverbend", "the fire at the granary is, er, out", []),
+    ("ms", "flames at the bank, no, sorry, that's the sun on the glass, ignore that", []),
+    ("riverbend", "is the footbridge open? I heard there's flooding somewhere in the village", []),
+    ("glasshouse_suburb", "The whole roof of the crystal palace has come in, there's glass from one end to the other.",
+     [("hartwell glasshouse", "shard_and_blast")]),
+    # a cue before a relation, not its head: "in the water", "in trouble"
+    ("riverbend", "person in the water downstream of whatever the lock cottage looks down on, launching now",
+     [("boathouse", "casualty")]),
+    ("riverbend", "two canoeists in trouble just upstream of the iron bridge", [("mill", "casualty")]),
+    # where the speaker lives anchors "the place we share a wall with"
+    ("riverbend", "I live in the alms cottages. The place we share a wall with has opened as a rest centre",
+     [("ambulance depot", "shelter")]),
+    # "the step" is any doorstep, not "the iron steps"; hurt people being carried out are still hurt
+    ("glasshouse_suburb", "water in the tearoom ankle deep and my nan can't get up the step",
+     [("potting shed cafe", "brookwash"), ("potting shed cafe", "hands_in_need")]),
+    ("glasshouse_suburb", "fire in the pack house, two casualties being carried out now",
+     [("cooperative packing shed", "hands_in_need"), ("cooperative packing shed", "shard_and_blast")]),
+])
+def test_dev51_phenomena(kb_analyzers, analyzer, kb, text, expected):
+    an = analyzer if kb == "ms" else kb_analyzers[kb]
+    assert claims(an, text) == expected

@@ -192,7 +192,7 @@ class ReportAnalyzer:
         self._negators: PhraseMatcher[str] = PhraseMatcher()
         for n in lx.NEGATOR_PHRASES:
             self._negators.add(norm_phrase(n), n)
-        self._cancel: PhraseMatcher[str] = PhraseMatcher()
+        self._cancel: PhraseMatcher[str] = PhraseMatcher(lx.HESITATIONS)
         for c in lx.CANCEL_AFTER:
             self._cancel.add(norm_phrase(c), c)
         self._transit: PhraseMatcher[str] = PhraseMatcher()
@@ -538,6 +538,8 @@ class ReportAnalyzer:
             word = toks.tokens[t].text
             if word.lower().endswith(("'s", "’s")) and toks.clause_start[t]:
                 continue  # "Water's pouring through ...": a subject, not "across_the_water_from"
+            if toks.clause_start[t] and t + 1 < len(norms) and norms[t + 1] in ("is", "are", "was", "were", "has", "s"):
+                continue  # "Water is up over the tin platform": a subject, not "lifts_water_out_of"
             if t > 0 and word[:1].isupper() and not word.isupper() and toks.tokens[t - 1].text[:1].isupper() \
                     and not toks.sentence_start[t]:
                 continue  # "Red Watch to TCC": a word of a name, not a relation's verb
@@ -557,6 +559,10 @@ class ReportAnalyzer:
             if toks.clause_start[t] and t + 1 < len(norms) and norms[t + 1] in lx.MOVED_PEOPLE | {
                     "them", "it", "clear", "away", "out", "back", "off", "everybody"}:
                 continue  # "..., keep everyone clear of them": an order, not "keeps_watch_over"
+            said = [w for w in norms[max(0, t - 4):t] if w not in lx.FILLERS | lx.SENTENCE_ADVERBS]
+            if said and said[-1] in ("is", "are", "was", "were", "s", "re") \
+                    and any(f"{art} {word.lower()}" in hit[0].replace("_", " ") for art in ("the", "a")):
+                continue  # "the top plots are just er glass everywhere": a noun of the relation's name said as a state
             back = [w for w in norms[max(0, t - 4):t] if w not in ("ve", "have", "had", "just", "now", "already", "d")]
             if back and back[-1] in ("i", "we", "they", "he", "she", "you", "ive", "weve", "theyve", "youve", "wed", "theyd") \
                     and norms[t + 1:t + 2] \
@@ -1084,8 +1090,8 @@ class ReportAnalyzer:
             if every:
                 landmark = listed[-1]
             elif word == "other":
-                if len(listed) != 2:
-                    continue
+                if len(listed) != 2 or {"from", "one"} <= set(norms[max(0, start - 6):start]):
+                    continue  # (not "glass from one end to the other": one thing and another, no place)
                 if any(end < p.start_tok <= end + 8 and toks.sentence_of[p.start_tok] == toks.sentence_of[start]
                        for p in places):
                     continue  # "no the other one, the one next to it, the school": the speaker goes on to name it
@@ -1208,12 +1214,24 @@ class ReportAnalyzer:
                         words[i] = ""
                 for w in words:
                     described.setdefault(w, set()).add(lm.name)
+            # (a word another landmark's alias holds only before its own head still heads this one: "the church"
+            # where "the church hall" is the hall's other name; the longer name is matched first when it is said.
+            # Not a word of another canonical name: "the windmill" where "windmill green" is one)
+            modifying: dict[str, set[str]] = {}
+            for lm in self.kb.landmarks:
+                canonical = set(name_words(lm.name))
+                for form in lm.surface_forms:
+                    for w in name_words(form)[:-1]:
+                        if w not in canonical:
+                            modifying.setdefault(w, set()).add(lm.name)
             self._heads = {w: next(iter(names)) for w, names in owners.items()
-                           if len(names) == 1 and words_elsewhere.get(w, set()) == names
+                           if len(names) == 1 and (words_elsewhere.get(w, set()) == names
+                                                   or words_elsewhere.get(w, set()) - modifying.get(w, set()) == names)
                            and (len(w) >= 4 or w in lx.SHORT_PLACE_NOUNS) and w.isalpha()
                            and len(described.get(w, set()) - names) < 3
                            and w not in cue_words and w not in rel_words and w not in lx.DESCRIPTIVE_WORDS
-                           and w not in lx.STOREY_WORDS and w not in lx.PART_NOUNS}  # ("the roof" of anything)
+                           and w not in lx.STOREY_WORDS and w not in lx.PART_NOUNS  # ("the roof" of anything)
+                           and w not in ("step", "steps")}  # ("can't get up the step": any doorstep)
             # heads no other landmark's description uses either: "the chapel is safe" where the castle chapel is
             # the one chapel the KB speaks of
             self._sole_heads = {w for w, name in self._heads.items() if not described.get(w, set()) - {name}}
@@ -2031,6 +2049,11 @@ class ReportAnalyzer:
         marker_tokens = {i for ma, mb, _ in ex.markers for i in range(ma, mb)}
         self._marker_cache = marker_tokens
         rel_hits = self._relations.find_all(norms, place_tokens)
+        # "the pond that's topped up by — by the station ...": the last word said twice is said once
+        # (a one-word relation only across a dash: "down by, by, uh, the police station" is where it is)
+        rel_hits = [(a, b + 1, h) if b < len(norms) and norms[b] == norms[b - 1] and norms[b] in lx.RELATION_ENDINGS
+                    and (b - a >= 2 or any(d in toks.gaps[b] for d in ("—", "–", "--", " - "))) else (a, b, h)
+                    for a, b, h in rel_hits]
         # "the park's under water": a word of a danger phrase, not a relation
         rel_hits = [h for h in rel_hits if not (h[1] - h[0] == 1 and (m := self._cues.match_at(norms, h[0])) is not None
                                                 and m[0] > h[1])]
@@ -2430,6 +2453,8 @@ class ReportAnalyzer:
                     continue  # "a tank wagon on the siding": the noun goes on, it heads nothing
                 if between[0] == "past":
                     continue  # "gritting the hill road past the caravan park": a way that goes by it, no relation
+                if norms[head] == "corner" and between[0] == "from":
+                    continue  # "the Red Lion, round the corner from the square": somewhere near it, no relation
             else:
                 # "the tube the shaft draws from": the linking verb comes after the anchor
                 if norms[head] in lx.WHATEVER or head == 0 or norms[head - 1] not in lx.ARTICLES:
@@ -2626,8 +2651,10 @@ class ReportAnalyzer:
             closed = lx.PREPOSITIONS | lx.COPULAS | lx.FILLERS | lx.PRONOUNS | lx.INVERSE_VERBS
             if len(words) == 1 and words[0] in self._name_word_owners:
                 closed = closed - {words[0]}  # "the stand that butts up against it": a word names end in, a noun here
+            # (nor a noun a cue ends on: "person in the water downstream of the weir" is in the water there)
             generic = all(w.isalpha() and w not in closed for w in words) and len(words[-1]) >= 3 \
-                and not any(self._cues.match_at(norms, j) is not None for j in range(head_start, head_end))
+                and not any((m := self._cues.match_at(norms, j)) is not None and m[0] > head_start
+                            for j in range(max(0, head_start - 3), head_end))
         if not generic and anchor is not None and words and words[-1] in lx.STOREY_WORDS | {"rooms", "room", "storeys"} \
                 and self._follow(anchor.landmark, phrase, head_text, inverse=flipped)[0] is not None:
             generic = True  # "people trapped on the floor above the corn exchange", where the KB puts a place above it
@@ -2754,6 +2781,9 @@ class ReportAnalyzer:
                             (w for w in reversed(norms[max(0, a - 3):a]) if w not in lx.ARTICLES | lx.FILLERS), "")
                              in ("out", "from", "through")):
                     return  # "flames coming out the back of the granary": out of its back, so at it
+                if anchor.via is not None and b < len(norms) and norms[b] in ("that", "which"):
+                    return  # "the rock face that looks down over the holiday park": the place resolved already; the
+                    # word before its "that" ("face", as in "facing") is its head, no relation of its own
                 ex.places[idx] = replace(anchor, status="reference",
                                          reason=f"reference point of an unresolved '{phrase}' description")
                 return
@@ -3123,8 +3153,8 @@ class ReportAnalyzer:
         j = p.start_tok - 1
         while j >= 0 and norms[j] in lx.DETERMINERS | lx.FILLERS:
             j -= 1
-        if j >= 2 and norms[j] in ("at", "in") and norms[j - 1] == "work" and norms[j - 2] in ("i", "we"):
-            return True  # "I work at the chemist's. The shop we're built onto ...": where the speaker works
+        if j >= 2 and norms[j] in ("at", "in") and norms[j - 1] in ("work", "live") and norms[j - 2] in ("i", "we"):
+            return True  # "I work at the chemist's. The shop we're built onto ...": where the speaker works or lives
         if j < 0 and p.end_tok + 1 < len(norms) and norms[p.end_tok] in lx.CALLER_ROLES | {"reception", "desk"} \
                 and norms[p.end_tok + 1] in lx.ARTICLES | {"we", "i", "weve", "ive", "were", "im"}:
             return True  # "Clinic reception. The building next door to us ...": the place that calls
@@ -3664,8 +3694,11 @@ class ReportAnalyzer:
     def _watch_point(toks: Tokens, norms: tuple[str, ...], p: PlaceMention) -> bool:
         """"From the abbey tower I can see the green is under water": where the speaker looks from."""
         k = _noun_phrase_start(norms, p)
+        see = (("i", "can", "see"), ("we", "can", "see"))
+        if k >= 4 and norms[k - 1] == "from" and any(norms[k - 4 - d:k - 1 - d] in see for d in range(2)):
+            return True  # "What I can see from the gate is smoke ... coming out of the sawmill"
         return k >= 1 and norms[k - 1] == "from" and bool(toks.sentence_start[k - 1]) and any(
-            norms[p.end_tok + d:p.end_tok + d + 3] in (("i", "can", "see"), ("we", "can", "see")) for d in range(3))
+            norms[p.end_tok + d:p.end_tok + d + 3] in see for d in range(3))
 
     @staticmethod
     def _person_from(toks: Tokens, norms: tuple[str, ...], p: PlaceMention, places: list[PlaceMention]) -> bool:
@@ -3678,6 +3711,23 @@ class ReportAnalyzer:
         n = toks.sentence_of[p.start_tok]
         return any(q.status == "active" and q.landmark != p.landmark and toks.sentence_of[q.start_tok] == n
                    and p.end_tok < q.start_tok <= p.end_tok + 5 for q in places)
+
+    @staticmethod
+    def _locates_other(norms: tuple[str, ...], p: PlaceMention, places: list[PlaceMention]) -> str:
+        """"the Red Lion, round the corner from the square", "the coffee house on the east side of the square":
+        a place named only to say where another is; the reason, or ""."""
+        k = _noun_phrase_start(norms, p)
+        if k >= 4 and norms[k - 3:k] == ("the", "corner", "from") and norms[k - 4] in ("round", "around"):
+            return "near it ('round the corner from'): no claim"
+        if k >= 3 and norms[k - 3:k] in (("not", "that", "thats"), ("not", "that", "that")):
+            return "what the place taken back was ('not that, that's X'): no claim"
+        if k < 3 or norms[k - 1] != "of" or norms[k - 2] not in ("side", "end", "edge"):
+            return ""
+        for q in places:
+            if q is not p and q.status == "active" and q.end_tok < k - 2 and k - q.end_tok <= 6 \
+                    and norms[q.end_tok] in ("on", "at") and all(w in _SIDE_WORDS for w in norms[q.end_tok:k]):
+                return f"where '{q.text}' stands ('{' '.join(norms[q.end_tok:k])}'): no claim"
+        return ""
 
     def _teller_at(self, toks: Tokens, norms: tuple[str, ...], p: PlaceMention, places: list[PlaceMention]) -> bool:
         """"Echo One at the fire station: the building across from our station ...", "Officers at the bank report the
@@ -3726,6 +3776,10 @@ class ReportAnalyzer:
             if self._person_from(toks, norms, p, ex.places):
                 ex.places[idx] = replace(p, status="reference", reason="where the person is from, not where they are")
                 continue
+            where = self._locates_other(norms, p, ex.places)
+            if where:
+                ex.places[idx] = replace(p, status="reference", reason=where)
+                continue
             if self._teller_at(toks, norms, p, ex.places):
                 ex.places[idx] = replace(p, status="reference", reason="where the teller is, the anchor of the place described")
                 continue
@@ -3738,7 +3792,7 @@ class ReportAnalyzer:
                     and norms[j - 2] in ("my", "his", "her", "our", "their"):
                 j -= 2  # "on my way to my mom's at Willow Court": to someone's home there
             if self._crew_position(norms, p.start_tok):
-                ex.places[idx] = replace(p, status="reference", reason="in transit (a crew's position): no claim")
+                ex.places[idx] = replace(p, status="reference", reason=_CREW_POSITION)
                 continue
             if self._evacuated_to(toks, norms, p.end_tok):
                 ex.places[idx] = replace(p, status="reference", reason="evacuated to another place: no claim")
@@ -3876,6 +3930,9 @@ class ReportAnalyzer:
         """"team two is at the park", "engine 4's outside the bank": where a crew stands claims nothing."""
         while j > 0 and norms[j - 1] in lx.DETERMINERS | lx.FILLERS:
             j -= 1
+        if j >= 3 and norms[j - 1] in lx.POSITION_PREPS and norms[j - 2] in ("up", "down", "out", "still", "now") \
+                and (norms[j - 3] == "im" or j >= 4 and norms[j - 4:j - 2] in (("i", "m"), ("i", "am"))):
+            return True  # "I'm up on the hardware store roof and the place directly behind it ...": where the speaker is
         if j < 3 or norms[j - 1] not in lx.POSITION_PREPS or norms[j - 2] not in ("is", "s", "are", "re"):
             return False
         k = j - 3
@@ -5453,6 +5510,9 @@ class ReportAnalyzer:
                                    | asked | supposed)
         cues = [replace(c, status="retracted", reason="a question, not a report") if c.start_tok in asked
                 else replace(c, status="retracted", reason="a condition, not a report") if c.start_tok in supposed
+                # "I've heard on the radio there's flooding somewhere in the village": nowhere it names
+                else replace(c, status="retracted", reason="said of somewhere unnamed")
+                if c.end_tok < len(norms) and norms[c.end_tok] == "somewhere" and c.source != "embedding"
                 else c for c in cues]
         if not dropped:
             return cues
@@ -5525,6 +5585,8 @@ class ReportAnalyzer:
     def _apply_false_alarms(self, toks: Tokens, norms: tuple[str, ...], cues: list[CueMention]) -> list[CueMention]:
         """"... the smoke was a false alarm": every claim of that sentence is denied."""
         sentence_of = toks.sentence_of
+        if _exercise_frame(norms):
+            return [replace(c, polarity="denied", reason="exercise or training message") for c in cues]
         alarms: dict[int, int] = {}  # sentence -> the token before which its claims are denied
         withdrawn: set[int] = set()  # sentences a withdrawal takes back whole, safe places with the rest
         places_now = getattr(self, "_places_now", [])
@@ -5728,6 +5790,9 @@ class ReportAnalyzer:
                     break  # "fire at the bakery is NOT knocked down": the cancellation denied
                 if k > 1 and norms[k - 1] == "to" and norms[k - 2] in ("trying", "try", "tried", "tries", "attempting"):
                     break  # "a lad's burnt his hands trying to put it out": tried, not done
+                if h[1].startswith("out") and k > 0 and norms[k - 1] in ("carried", "stretchered", "brought", "helped") \
+                        and norms[cue.start_tok].startswith(("casualt", "injured", "wounded")):
+                    break  # "two casualties being carried out now": hurt people being got out are still hurt
                 if h[1] == "gone" and norms[h[0]:h[0] + 2] in (("out", "to"), ("over", "to"), ("to",), ("in", "to")):
                     break  # "our doctor's gone out to him": gone to help, nothing over
                 if h[1] == "gone" and norms[h[0]:h[0] + 1] == ("up",) \
@@ -5978,6 +6043,14 @@ class ReportAnalyzer:
                 # "smoke at the cafe, correction, that's just steam": the claim is withdrawn
                 lo = self._repair_window_start(ex, k)
                 before = [c for c in out if lo <= c.start_tok < a and c.status == "active"]
+                if not before and withdraw and k > 0 and not any(lo <= p.start_tok < a for p in ex.places) \
+                        and toks.sentence_of[ex.markers[k - 1][0]] == toks.sentence_of[a] \
+                        and [w for w in norms_all[ex.markers[k - 1][1]:a] if w not in lx.FILLERS][:1] in (
+                            ["that"], ["thats"], ["it"], ["its"]):
+                    # "flames at the hardware store — no, sorry, that's the low sun on the glass, ignore that": what
+                    # the marker before it took up, when only an explanation stands between
+                    lo = self._repair_window_start(ex, k - 1)
+                    before = [c for c in out if lo <= c.start_tok < a and c.status == "active"]
                 if before:
                     last = max(before, key=lambda c: c.start_tok)
                     out[out.index(last)] = replace(last, status="retracted", reason="withdrawn by a correction")
@@ -6285,9 +6358,11 @@ class ReportAnalyzer:
                 # "we're at the hotel, and the -- the groom's uncle has collapsed": a person said to need help, in
                 # the sentence that says where the speaker is and names no other place, is there
                 sent = sentence_of[a]
-                at = {q.landmark: q for q in ex.places if q.reason.startswith(("in transit ('we're at'",
-                                                                               "in transit ('we are at'"))
-                      and sentence_of[q.start_tok] == sent and q.start_tok < a}
+                at = {q.landmark: q for q in ex.places if sentence_of[q.start_tok] == sent and (
+                    q.reason.startswith(("in transit ('we're at'", "in transit ('we are at'")) and q.start_tok < a
+                    # ("my friend is cut very bad from the glass, we are in the cucumber cathedral": said after)
+                    or q.reason == _CREW_POSITION and q.start_tok >= b
+                    and "we" in norms[max(0, _noun_phrase_start(norms, q) - 4):q.start_tok])}
                 others = [q for q in ex.places if sentence_of[q.start_tok] == sent and q.landmark not in at]
                 if len(at) == 1 and not others:
                     q = next(iter(at.values()))
@@ -7305,6 +7380,10 @@ _SOURCE_IS = _phrases(lx.SOURCE_IS)
 # Coordinating phrases and false-alarm markers as token keys, computed once.
 _COORDINATOR_KEYS = [norm_phrase(p) for p in lx.COORDINATOR_PHRASES]
 _FALSE_ALARM_KEYS = [(p, norm_phrase(p)) for p in lx.FALSE_ALARM]
+_EXERCISE_KEYS = [norm_phrase(p) for p in lx.EXERCISE_FRAME]
+_CREW_POSITION = "in transit (a crew's position): no claim"
+_SIDE_WORDS = frozenset({"on", "at", "the", "east", "west", "north", "south", "far", "other", "near", "side", "end",
+                         "edge", "of", "eastern", "western", "northern", "southern"})
 _PERSON_KEYS = frozenset(w for p in lx.PERSON_NOUNS for w in norm_phrase(p))
 
 # The withdrawal markers ("scratch that") as token keys joined by spaces.
@@ -7352,6 +7431,19 @@ def _withdraws(marker: tuple[str, ...]) -> bool:
 
 # Closed-class words that never head a description.
 _NOT_HEADS = lx.PREPOSITIONS | lx.COPULAS | lx.FILLERS | lx.PRONOUNS | lx.INVERSE_VERBS | lx.DETERMINERS
+
+
+def _exercise_frame(norms: tuple[str, ...]) -> bool:
+    """The report is an exercise or training message: it opens "Exercise, exercise" or says "this is an
+    exercise", "simulated casualty", "training scenario" (not "this is not a training scenario")."""
+    said = [w for w in norms if w not in lx.FILLERS]
+    if tuple(said[:2]) == lx.EXERCISE_OPENING:
+        return True
+    for key in _EXERCISE_KEYS:
+        for i in range(len(norms) - len(key) + 1):
+            if norms[i:i + len(key)] == key and not {"not", "no", "isnt", "never"} & set(norms[max(0, i - 2):i]):
+                return True
+    return False
 
 
 def _is_log(toks: Tokens) -> bool:
@@ -7533,6 +7625,12 @@ def _with_group_inverses(phrase: str, out: list[tuple[str, bool]]) -> list[tuple
             opposite = lx.INVERSE_PHRASES.get(canon)
             if opposite:
                 out.extend((syn, True) for syn in lx.RELATION_SYNONYMS.get(opposite, []))
+    # "holds the spare keys for" said "holding the spare keys to": a noun's "for" and "to" name the same object
+    words = phrase.split()
+    if len(words) >= 3 and words[-1] in ("for", "to") and words[-2] not in lx.ARTICLES and words[-2] not in lx.NOT_VERBS:
+        other = "to" if words[-1] == "for" else "for"
+        out.extend((f"{form[:-len(words[-1])]}{other}", inv) for form, inv in list(out)
+                   if form.endswith(f" {words[-1]}") and len(form.split()) >= 3)
     return list(dict.fromkeys(out))
 
 

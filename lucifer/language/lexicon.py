@@ -94,6 +94,7 @@ uprooted|windthrown|windthrow|blown down|
 """.replace("\n", ""))
 
 _add(DESIRABLE, """
+dry and open|open and dry|it's dry there|its dry there|it's dry in there|dry in there|dry over there|
 turned the waiting room over|drying them off|drying people off|cups of tea|camp beds|the dry place|a dry place|
 put the kettle on|kettle's on|heating's up|heating is on|making sandwiches|ticking names off|ticking people off|
 got everyone gathered|everyone gathered|everybody gathered|fed and counted|being fed|being counted|reception point|roll call|warm room|warm up|
@@ -200,7 +201,7 @@ gone under|went under|swept away by|in the river|in the sea|hypothermia|casualty
 still in there|still in there somewhere|can't find him|can't find her|can't find them|cannot find him|
 people coughing|few of them collapsed|some of them collapsed|collapsed on the floor|
 live find|a live find|indicating a find|can't get down|cannot get down|can't get downstairs|cut his arm|cut her arm|
-cut his hand|cut his head|cut her head|badly cut|bleeding heavily|can't get the doors open|can't get the door open|
+cut his hand|cut his head|cut her head|badly cut|in trouble|in difficulty|in difficulties|has fever|has a fever|has a high fever|got a fever|need doctor|needs doctor|need a doctor|needs a doctor|cut very bad|cut very badly|cut really bad|cut bad|cut from the glass|cut by the glass|cut by flying glass|can't get back down|cannot get back down|can't get back out|can't get up the step|cannot get up the step|bleeding heavily|can't get the doors open|can't get the door open|
 cannot stand up|can't stand up|can't walk|cannot walk|fell over|has fallen over|he fell|she fell|
 he fall|she fall|frostbite|frostbitten|frostbite case|is lost|he's lost|she's lost|got lost|lost child|lost kid|gone missing|has gone missing|is sick|are sick|sick inside|feeling sick|being sick|vomiting|throwing up|taken ill|feeling ill|
 cut by flying glass|cut by glass|cut by falling glass|hit by flying glass|hit by debris|hit by falling debris|
@@ -252,8 +253,10 @@ NEGATOR_PHRASES = ["no one", "no longer", "not any", "free of", "clear of", "no 
                    "fleeing the", "fled the", "escaping the", "escaped the", "sheltering from the", "shelter from the",
                    "refuge from the"]
 
+# Hesitations a cancelling phrase may hold ("the fire at the granary is, er, out").
+HESITATIONS = {"uh", "um", "er", "erm", "ah", "eh"}
 # Phrases after a hazard cue that cancel it ("the fire is out").
-CANCEL_AFTER = ["not any more", "not anymore", "cleared off", "it's cleared off", "wind's changed", "wind has changed", "that's cleared", "thats cleared", "it's cleared", "dried out", "has dried out",
+CANCEL_AFTER = ["aboard now", "is aboard", "now aboard", "on board now", "safely aboard", "not any more", "not anymore", "cleared off", "it's cleared off", "wind's changed", "wind has changed", "that's cleared", "thats cleared", "it's cleared", "dried out", "has dried out",
                 "s dried out", "hasn't got that far", "hasnt got that far", "not got that far", "hasn't got this far", "hasnt got this far",
                 "not got this far", "hasn't reached us", "hasnt reached us", "blowing the other way", "blowing away from", "going the other way", "never reached", "didn't reach", "didnt reach", "hasn't reached", "hasnt reached", "never got to",
                 "been cleared", "been cleared away", "been towed", "been towed away", "turned up", "has turned up", "s turned up", "turned up safe", "is out", "s out", "are out", "was out", "put out", "out now", "been put out",
@@ -311,7 +314,8 @@ ABILITY_NEGATIONS = ("negated by 'can't'", "negated by 'cant'", "negated by 'can
 CANCEL_CLAUSES = {"no sign of him", "no sign of her", "no sign of them", "no sign of anyone", "no sign of anybody",
                   "no one there", "nobody there"}
 # ... of which these revoke only a person in need ("gas leak at the police post, they evacuated" stands)
-CANCEL_PEOPLE_ONLY = {"brought down", "been brought down", "all been brought down", "got them down", "nobody left",
+CANCEL_PEOPLE_ONLY = {"aboard now", "is aboard", "now aboard", "on board now", "safely aboard", "brought down",
+                      "been brought down", "all been brought down", "got them down", "nobody left",
                       "all rescued", "rescued", "evacuated", "got out", "out safely", "accounted for",
                       "taken to hospital", "been taken to hospital", "been extracted", "been brought out",
                       "lifted off", "been lifted off", "winched up", "been winched up", "taken off", "been taken off",
@@ -332,7 +336,9 @@ BACK_REFERENCE_WORDS = {"it", "its", "s", "is", "has", "been", "thats", "that", 
                         "ive"}
 
 # Phrases that contain cue words but claim nothing ("the smoke alarm went off", "fire crew on site").
-NEUTRAL_PHRASES = ["went under in the crash", "went bust", "gone bust", "above the flood line", "above the waterline", "above the water line", "above the flood level",
+NEUTRAL_PHRASES = ["i'm shattered", "im shattered", "i am shattered", "we're shattered", "we are shattered",
+                   "keeping the children inside", "keeping the kids inside", "keeping everyone inside",
+                   "keeping them inside", "kept the children inside", "kept the kids inside", "went under in the crash", "went bust", "gone bust", "above the flood line", "above the waterline", "above the water line", "above the flood level",
                    "above the high water mark", "roof is still on", "roof's still on", "been found safe", "found safe and well", "found safe at", "stable staff", "stable lads", "stable lad", "stable hands", "stable hand", "stable girls",
                    "stable block", "stable door", "stable doors", "use it to bring", "use it to get", "use it to take", "use it to move", "use it to evacuate",
                    "use that to bring", "use that to get", "out of use", "out of action", "out of service", "out of the smoke", "away from the smoke", "out of the rain", "out of the water", "out of the fumes",
@@ -364,6 +370,14 @@ NEUTRAL_PHRASES = ["went under in the crash", "went bust", "gone bust", "above t
                    "nobody home", "no one home", "nobody at home", "no one at home",
                    "waiting for the all clear", "wait for the all clear", "awaiting the all clear",
                    "until the all clear", "until we get the all clear", "waiting on the all clear"]
+
+# A report framed as an exercise or a training message: nothing in it is real, in any sentence ("Exercise, exercise,
+# exercise. Simulated casualty on the footbridge. Exercise ends."). "exercise exercise" counts only as the opening.
+EXERCISE_OPENING = ("exercise", "exercise")
+EXERCISE_FRAME = ["this is an exercise", "this is a drill", "training scenario", "training message", "exercise scenario",
+                  "exercise only", "simulated casualty", "simulated casualties", "no actual persons", "no real persons",
+                  "nothing is actually happening", "nothing's actually happening", "exercise ends", "end of exercise",
+                  "endex"]
 
 # A warning or report taken back by name ("please withdraw my earlier warning"): a false alarm that withdraws
 # the whole report before it.
@@ -437,7 +451,7 @@ STRONG_REPAIR = [
     "caller correcting", "caller now says", "he corrects", "she corrects", "they correct", "crew corrects",
     "she's right", "he's right", "you're right", "they're right", "second voice",
     "i'm all turned round", "i'm all turned around", "all turned round", "all turned around", "i got confused",
-    "i'm confused", "got my bearings wrong",
+    "i'm confused", "got my bearings wrong", "i beg your pardon", "beg your pardon", "pardon me",
 ]
 WEAK_REPAIR = ["sorry", "actually", "or rather", "rather", "wait", "no", "nope", "nah", "naw", "er no", "uh no", "well no",
                "oops", "whoops", "hang on", "hold on"]
@@ -960,7 +974,7 @@ RELATIVE_COPULAS = {("that", "is"), ("which", "is"), ("that", "s"), ("which", "s
 # all the kind's words: "split open" is a collapse like "collapsed" and "cracked", whatever MiniLM
 # makes of the two words alone. Ambiguous words ("leak", "danger", "blocked") belong to no kind.
 # A kind of danger no category description names goes where its nearest kind goes.
-KIND_FALLBACK = {"smoke": "fire", "storm": "collapse", "fire": "explosion", "vehicle": "access", "disorder": "fire"}
+KIND_FALLBACK = {"breakage": "collapse", "smoke": "fire", "storm": "collapse", "fire": "explosion", "vehicle": "access", "disorder": "fire"}
 DANGER_KINDS: dict[str, list[str]] = {
     "crowd": ["crowd crush", "crowd surge", "surge at", "surge in", "surging", "crammed", "packed solid", "pressed flat",
               "pressed against", "pushed up against", "crushing", "pile-up", "pile up", "overcrowded", "stampede",
@@ -1033,7 +1047,7 @@ DANGER_KINDS: dict[str, list[str]] = {
                "undercut", "being undermined", "undermined", "mud", "mud and rocks", "mud everywhere",
                "full of mud", "rocks came down", "rocks have come down", "rockfall", "rock fall", "boulders",
                "coming away", "rocks rolling down", "rocks coming down", "rocks falling", "rocks tumbling"],
-    "water": ["sea's come over", "sea's come right over", "sea has come over", "sea came over", "sea's pouring in",
+    "water": ["water is come inside", "water is come in", "water came inside", "water come inside", "water has come inside", "until the knee", "up to the knee", "up to the knees", "up to my knees", "up to our knees", "sea's come over", "sea's come right over", "sea has come over", "sea came over", "sea's pouring in",
               "sea pouring in", "sea's coming in", "sea coming in", "sea's come in", "sea has come in", "under a metre of water",
               "a metre of water", "metres of water", "full of seawater", "seawater", "awash", "washout", "washed over",
               "water's come through", "water's come right through", "water's right through", "water right through",
@@ -1072,11 +1086,15 @@ DANGER_KINDS: dict[str, list[str]] = {
               "water pooling", "water's pooling", "got the sea in", "sea's in", "sea in the house", "taking water",
               "taking in water", "under the tide", "waves breaking over", "waves breaking clean over",
               "waves coming over", "over the bonnet", "over the bonnets"],
-    "current": ["strong current", "fierce current", "fast current", "swift current", "rip current", "undertow",
+    "current": ["strong current", "fast water", "foot of fast water", "feet of fast water", "fierce current", "fast current", "swift current", "rip current", "undertow",
                 "current's ripping", "current is ripping", "current ripping", "fast flowing water",
                 "fast-flowing water", "ripping through"],
     "electric": ["live cabling", "live cable", "live cables", "floor's live", "floor is live", "live wire", "live wires", "power line down", "power lines down", "downed lines", "sparking",
                  "sparks", "sparks everywhere", "electrified", "arcing", "electrical hazard", "exposed wiring"],
+    # glass and stone coming down ("Brackley's range has lost every pane"; "the west gable's still dropping stones")
+    "breakage": ["lost every pane", "lost all its panes", "lost all its glass", "lost its glass", "panes gone",
+                 "panes out", "panes smashed", "panes have gone", "shattered", "glass has shattered", "dropping stones",
+                 "dropping slates", "dropping masonry"],
     "storm": ["storm damage", "wind damage", "storm damaged", "windthrow", "windthrown", "uprooted", "blown down",
               "lifted clean off"],
     "access": ["impassable", "blocked off", "no access", "no vehicle access", "no way in", "no way through",
