@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev51) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev52) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -71,6 +71,7 @@ RETIREMENT = ROOT / "knowledge_bases" / "retirement_village"
 FERRY_TOWN = ROOT / "knowledge_bases" / "ferry_terminal_town"
 MOORLAND = ROOT / "knowledge_bases" / "moorland_village"
 GLASSHOUSE = ROOT / "knowledge_bases" / "glasshouse_suburb"
+ESTUARY = ROOT / "knowledge_bases" / "estuary_marina"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -287,6 +288,11 @@ SETS = {
     "dev51/riverbend": _set("dev51/riverbend.jsonl", RIVERBEND, "d51r",
                             {"standard": 20, "messy": 30, "advanced_messy": 25}),
     "dev51/glasshouse_suburb": _set("dev51/glasshouse_suburb.jsonl", GLASSHOUSE, "gs51", THIRTY),
+    "dev52/market_square": _set("dev52/market_square.jsonl", MARKET_SQUARE, "d52m", QUARTER),
+    "dev52/riverbend": _set("dev52/riverbend.jsonl", RIVERBEND, "d52r",
+                            {"standard": 20, "messy": 20, "advanced_messy": 20}),
+    "dev52/estuary_marina": _set("dev52/estuary_marina.jsonl", ESTUARY, "em52",
+                                 {"standard": 20, "messy": 20, "advanced_messy": 20}),
 }
 
 
