@@ -3145,3 +3145,25 @@ def test_dev48_dev50_relations_and_frames(kb_analyzers, analyzer, kb, text, expe
 def test_dev51_phenomena(kb_analyzers, analyzer, kb, text, expected):
     an = analyzer if kb == "ms" else kb_analyzers[kb]
     assert claims(an, text) == expected
+
+
+@pytest.mark.parametrize("kb,text,expected", [
+    # a kind of danger is read against the category descriptions without function words ("the fumes have drifted")
+    ("estuary_marina", "the boathouse is smashed to bits, the big doors are just gone", [("lifeboat station", "tide_wrack")]),
+    # a place that ends the sentence before heads no description: "at the boatyard. The paint shed at the back of X"
+    ("estuary_marina", "Crew in attendance at the boatyard. The paint shed at the back of Tarrant's is fully involved.",
+     [("paint store", "reek_and_flame")]),
+    # "and the slip's gone": more damage, no cancellation; "the fire's gone" still cancels
+    ("estuary_marina", "This is the lookout. The one we look down on, the sea's smashed its doors in and the slip's gone.",
+     [("lifeboat station", "tide_wrack")]),
+    ("estuary_marina", "flames at the chandlery and now the fire's gone", []),
+    # "is the local of" said "the pub that's the local for"
+    ("estuary_marina", "the pub that's the local for whatever the lookout looks down on is flooded",
+     [("ferryman inn", "tide_wrack")]),
+    # surge words; things, not people, half in the water
+    ("estuary_marina", "The saltings are one sheet of water", [("salt marsh", "tide_wrack")]),
+    ("estuary_marina", "The surge has torn two pontoons off their piles in the money pond", [("marina", "tide_wrack")]),
+    ("estuary_marina", "the diesel jetty has broken loose, pumps half in the water", [("fuel berth", "tide_wrack")]),
+])
+def test_dev52_phenomena(kb_analyzers, kb, text, expected):
+    assert claims(kb_analyzers[kb], text) == expected

@@ -291,9 +291,11 @@ class ReportAnalyzer:
         closest in MiniLM space to the kind's words together."""
         cache = self.__dict__.setdefault("_kind_cache", {})
         if kind not in cache:
-            described = [self._affirmed_words(c.description) for c in cats]
+            # (no function word votes: "the fumes have drifted" shares "have" with "have fallen into"; nor
+            # "shedding", whose stem is any shed)
+            described = [self._affirmed_words(c.description) - lx.KIND_VOTE_STOPWORDS for c in cats]
             words = {w for p in lx.DANGER_KINDS[kind] for w in norm_phrase(p)
-                     if len(w) >= 4 and w not in lx.DANGER_KIND_PARTS}
+                     if len(w) >= 4 and w not in lx.DANGER_KIND_PARTS and w not in lx.KIND_VOTE_STOPWORDS}
             # how many of its description's words the kind's words name
             votes = [sum(any(_same_stem(w, d) for w in words) for d in ds) for ds in described]
             near = lx.KIND_FALLBACK.get(kind)
@@ -2051,9 +2053,15 @@ class ReportAnalyzer:
         rel_hits = self._relations.find_all(norms, place_tokens)
         # "the pond that's topped up by — by the station ...": the last word said twice is said once
         # (a one-word relation only across a dash: "down by, by, uh, the police station" is where it is)
-        rel_hits = [(a, b + 1, h) if b < len(norms) and norms[b] == norms[b - 1] and norms[b] in lx.RELATION_ENDINGS
-                    and (b - a >= 2 or any(d in toks.gaps[b] for d in ("—", "–", "--", " - "))) else (a, b, h)
-                    for a, b, h in rel_hits]
+        def _said_again(a: int, b: int) -> int:
+            j = b
+            while j < len(norms) and norms[j] in lx.HESITATIONS and j - b < 2:
+                j += 1  # "the local for, er, for whatever ..."
+            if j < len(norms) and norms[j] == norms[b - 1] and norms[j] in lx.RELATION_ENDINGS \
+                    and (b - a >= 2 or any(d in toks.gaps[b] for d in ("—", "–", "--", " - "))):
+                return j + 1
+            return b
+        rel_hits = [(a, _said_again(a, b), h) for a, b, h in rel_hits]
         # "the park's under water": a word of a danger phrase, not a relation
         rel_hits = [h for h in rel_hits if not (h[1] - h[0] == 1 and (m := self._cues.match_at(norms, h[0])) is not None
                                                 and m[0] > h[1])]
@@ -3227,7 +3235,9 @@ class ReportAnalyzer:
         k = anchor.start_tok
         while k > 0 and norms[k - 1] in lx.DETERMINERS | {"that", "which", "where"} and anchor.start_tok - k < 3:
             k -= 1
-        named = next((p for p in ex.places if p.end_tok == k and p.status == "active" and p is not anchor), None)
+        # (not a place that ends the sentence before: "at the boatyard. The paint shed at the back of Tarrant's")
+        named = next((p for p in ex.places if p.end_tok == k and p.status == "active" and p is not anchor
+                      and not ex.tokens.sentence_start[k]), None)
         if named is not None and k < anchor.start_tok:
             # "the green the abbey overlooks": the head is named, the anchor is a reference
             return anchor, named.start_tok, True
@@ -5795,6 +5805,9 @@ class ReportAnalyzer:
                     break  # "two casualties being carried out now": hurt people being got out are still hurt
                 if h[1] == "gone" and norms[h[0]:h[0] + 2] in (("out", "to"), ("over", "to"), ("to",), ("in", "to")):
                     break  # "our doctor's gone out to him": gone to help, nothing over
+                if h[1] == "gone" and "and" in norms[cue.end_tok:k] and k > 0 and norms[k - 1] not in lx.PRONOUNS \
+                        and norms[k - 1] not in lx.ESCAPED_THINGS | {"s"} and self._cues.match_at(norms, k - 1) is None:
+                    break  # "the sea's smashed its doors in and the slip's gone": another thing gone, more damage
                 if h[1] == "gone" and norms[h[0]:h[0] + 1] == ("up",) \
                         and self.kb.category_by_name[cue.category].role == Role.DESIRABLE:
                     break  # "that's where the welfare tent's gone up": put up, not gone
@@ -7595,6 +7608,9 @@ def _relation_forms(phrase: str) -> list[tuple[str, bool]]:
     # a plural subject's verb ("flower stalls | huddle under the eaves of"; "river stairs | lead down to")
     plain_verb = len(words) >= 2 and verb.isalpha() and len(verb) >= 3 and verb not in lx.NOT_VERBS \
         and not verb.endswith(("ed", "ing", "ly", "s")) and not _direction_word(verb)
+    if verb in ("is", "are") and len(words) >= 3 and words[1] in lx.ARTICLES:
+        out.append((" ".join(words[1:]), False))  # "is the local of": "the pub that's the local of it"
+        return _with_group_inverses(phrase, out)
     if not (len(words) == 1 or verb.endswith("s") or plain_verb) or _direction_word(verb) or verb.endswith("ss"):
         return _with_group_inverses(phrase, out)
     stems = {verb[:-1]} if verb.endswith("s") and len(verb) > 3 else {verb}
@@ -7626,10 +7642,12 @@ def _with_group_inverses(phrase: str, out: list[tuple[str, bool]]) -> list[tuple
             if opposite:
                 out.extend((syn, True) for syn in lx.RELATION_SYNONYMS.get(opposite, []))
     # "holds the spare keys for" said "holding the spare keys to": a noun's "for" and "to" name the same object
+    # ("is the local of" said "the local for": a noun after an article takes "of" and "for" alike)
     words = phrase.split()
-    if len(words) >= 3 and words[-1] in ("for", "to") and words[-2] not in lx.ARTICLES and words[-2] not in lx.NOT_VERBS:
-        other = "to" if words[-1] == "for" else "for"
-        out.extend((f"{form[:-len(words[-1])]}{other}", inv) for form, inv in list(out)
+    if len(words) >= 3 and words[-1] in ("for", "to", "of") and words[-2] not in lx.ARTICLES \
+            and words[-2] not in lx.NOT_VERBS and (words[-1] != "of" or words[-3] in lx.ARTICLES):
+        others = {"for": ["to"], "to": ["for"], "of": ["for"]}[words[-1]]
+        out.extend((f"{form[:-len(words[-1])]}{other}", inv) for form, inv in list(out) for other in others
                    if form.endswith(f" {words[-1]}") and len(form.split()) >= 3)
     return list(dict.fromkeys(out))
 

@@ -336,7 +336,7 @@ BACK_REFERENCE_WORDS = {"it", "its", "s", "is", "has", "been", "thats", "that", 
                         "ive"}
 
 # Phrases that contain cue words but claim nothing ("the smoke alarm went off", "fire crew on site").
-NEUTRAL_PHRASES = ["i'm shattered", "im shattered", "i am shattered", "we're shattered", "we are shattered",
+NEUTRAL_PHRASES = ["fire drill", "evacuation drill", "fire practice", "half in the water", "i'm shattered", "im shattered", "i am shattered", "we're shattered", "we are shattered",
                    "keeping the children inside", "keeping the kids inside", "keeping everyone inside",
                    "keeping them inside", "kept the children inside", "kept the kids inside", "went under in the crash", "went bust", "gone bust", "above the flood line", "above the waterline", "above the water line", "above the flood level",
                    "above the high water mark", "roof is still on", "roof's still on", "been found safe", "found safe and well", "found safe at", "stable staff", "stable lads", "stable lad", "stable hands", "stable hand", "stable girls",
@@ -974,6 +974,10 @@ RELATIVE_COPULAS = {("that", "is"), ("which", "is"), ("that", "s"), ("which", "s
 # all the kind's words: "split open" is a collapse like "collapsed" and "cracked", whatever MiniLM
 # makes of the two words alone. Ambiguous words ("leak", "danger", "blocked") belong to no kind.
 # A kind of danger no category description names goes where its nearest kind goes.
+# Words that say nothing of a kind of danger when a kind's words are matched against category descriptions.
+KIND_VOTE_STOPWORDS = frozenset({"have", "with", "from", "that", "this", "been", "were", "into", "onto", "their",
+                                 "there", "they", "them", "what", "when", "where", "which", "while", "will", "would",
+                                 "shedding", "also", "just", "only", "some", "such", "than", "then", "very"})
 KIND_FALLBACK = {"breakage": "collapse", "smoke": "fire", "storm": "collapse", "fire": "explosion", "vehicle": "access", "disorder": "fire"}
 DANGER_KINDS: dict[str, list[str]] = {
     "crowd": ["crowd crush", "crowd surge", "surge at", "surge in", "surging", "crammed", "packed solid", "pressed flat",
@@ -1304,18 +1308,22 @@ DESCRIBED_COMFORTS: dict[str, tuple[frozenset[str], list[str]]] = {
 # More phrases of the kinds above that read as their kind but do not vote on which category a kind is (so the
 # kinds map onto a KB's categories as they did before these were added).
 DANGER_KIND_EXTRA: dict[str, list[str]] = {
-    "storm": ["windows all blown out", "windows blown out", "windows are blown out", "windows have blown out", "all blown out", "strewn across", "strewn over", "strewn all over", "on their sides", "on its side", "onto its side", "onto their sides", "blew in", "blew straight in", "blown straight in", "roof is gone", "roof's torn", "torn clean off", "came down through", "peeled off", "been peeled off", "peeled back", "lost its roof", "lost their roof", "lost their roofs",
+    # (said of the surge's damage: "the diesel jetty has broken loose", "a hole punched right through the wall")
+    "breakage": ["hole punched", "punched right through", "punched through"],
+    "storm": ["torn off their piles", "torn off its piles", "off their piles", "off its piles", "broken loose",
+              "broke loose", "torn loose", "has broken free", "come adrift", "broken adrift", "torn from its moorings",
+              "windows all blown out", "windows blown out", "windows are blown out", "windows have blown out", "all blown out", "strewn across", "strewn over", "strewn all over", "on their sides", "on its side", "onto its side", "onto their sides", "blew in", "blew straight in", "blown straight in", "roof is gone", "roof's torn", "torn clean off", "came down through", "peeled off", "been peeled off", "peeled back", "lost its roof", "lost their roof", "lost their roofs",
               "lost the roof", "lost its leads", "lost the leads", "roof lifted", "blown clean off", "blown off",
               "off its hinges", "pulled up by the roots", "open to the sky", "rain's coming in", "rain is coming in",
               "rain coming straight in", "rain's coming straight in", "rain pouring in", "rain is pouring"],
-    "fire": ["burning debris", "roof is going up", "roof's going up", "roofs going up", "thatch is going up", "thatch's going up",
+    "fire": ["flare-up", "flare up", "flared up", "flaring up", "burning debris", "roof is going up", "roof's going up", "roofs going up", "thatch is going up", "thatch's going up",
              "thatch going up"],
     "electric": ["wire is hot", "wires are hot", "line is hot", "lines are hot", "wire as hot", "wires as hot",
                  "conductors are on", "conductor down", "conductors down", "feeder is down", "feeder down", "lines down",
                  "line down", "lines are down", "line is down"],
     "gas": ["rotten egg", "rotten eggs", "rotten-egg smell", "rotten egg smell", "eggy smell", "smell like eggs", "smells like eggs", "smell of eggs", "smells of eggs", "smell like rotten eggs", "there's a hiss", "a loud hiss", "hissing out of", "h2s", "so2", "co2", "sulphur dioxide", "hydrogen sulphide", "carbon dioxide", "methane", "methane leak", "natural gas", "co detected", "co reading", "co readings", "co levels", "high co", "carbon monoxide", "carbon monoxide alarm", "co alarm"],
     "collapse": ["roof's coming in", "roof is coming in", "ceiling's coming in", "ceiling is coming in", "coming off in chunks", "coming away in chunks", "falling off in chunks", "in chunks", "breaking up", "is breaking up", "coming adrift", "come adrift", "broken adrift", "peeling off", "coming off in slabs", "coming away in slabs", "roof fall on", "roof fall in", "roof has split", "roof split", "is bending", "it's bending", "is fall down", "has fall down", "fallen down"],
-    "water": ["washing out", "washing away", "logs floating", "floating away",
+    "water": ["one sheet of water", "a sheet of water", "sheet of water", "washing out", "washing away", "logs floating", "floating away",
               "water coming through", "water's coming through", "water is coming through", "seeping through the walls",
               "water at the front door", "water at the door", "water's at the door", "water's at the front door",
               "water at the windows", "water's at the windows", "water is at the windows", "water's right round",
