@@ -3164,6 +3164,13 @@ def test_dev51_phenomena(kb_analyzers, analyzer, kb, text, expected):
     ("estuary_marina", "The saltings are one sheet of water", [("salt marsh", "tide_wrack")]),
     ("estuary_marina", "The surge has torn two pontoons off their piles in the money pond", [("marina", "tide_wrack")]),
     ("estuary_marina", "the diesel jetty has broken loose, pumps half in the water", [("fuel berth", "tide_wrack")]),
+    ("estuary_marina", "the flap gates, they've burst, the tide's coming straight through", [("tide sluice", "tide_wrack")]),
+    # the other half of a question ("... or is it still, you know, stuck"), "you know" no new clause
+    ("estuary_marina", "is the turnbridge open? like can I get across the creaker or is it still, you know, stuck", []),
+    # a plain "no" then "it's not" and a dismissal takes the cue back; "it's not just wet" does not
+    ("estuary_marina", "down to the hard - the hard's flooded - well, no, it's not, it's gone back down, it's just wet",
+     []),
+    ("estuary_marina", "the hard's flooded - no, it's not just wet, it's properly under", [("town quay", "tide_wrack")]),
 ])
 def test_dev52_phenomena(kb_analyzers, kb, text, expected):
     assert claims(kb_analyzers[kb], text) == expected

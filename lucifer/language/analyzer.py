@@ -6051,7 +6051,15 @@ class ReportAnalyzer:
             taken_back = kind is None and strong and bool(just_said) and e_after > b_after \
                 and not any(b_after <= c.start_tok < e_after for c in out) \
                 and not any(b_after <= p.start_tok < e_after for p in ex.places)
-            if kind is None and strong and (set(norms_all[b_after:e_after]) & lx.DISMISSALS or withdraw or taken_back):
+            said_after = [w for w in norms_all[b_after:min(len(norms_all), b_after + 12)] if w not in lx.FILLERS]
+            # "the hard's flooded - well, no, it's not, it's gone back down, it's just wet": the cue just said, denied
+            # and explained away after a plain "no"
+            denied_after = not strong and kind is None and bool(just_said) and said_after[:2] in (
+                ["its", "not"], ["it", "isnt"], ["it", "not"]) \
+                and bool(set(norms_all[b_after + 3:min(len(norms_all), b_after + 12)]) & lx.DISMISSALS) \
+                and not any(b_after <= p.start_tok < b_after + 12 for p in ex.places)
+            if kind is None and (strong or denied_after) and (set(norms_all[b_after:e_after]) & lx.DISMISSALS or withdraw
+                                                              or taken_back or denied_after):
                 # ("I'm trapped — no, no, sorry, the door's opened": the cue just said is taken back)
                 # "smoke at the cafe, correction, that's just steam": the claim is withdrawn
                 lo = self._repair_window_start(ex, k)
@@ -7226,13 +7234,18 @@ def _indirect_questions(toks: Tokens, norms: tuple[str, ...]) -> set[int]:
             or w == "know" and (q in ("if", "whether") or i >= 3 and norms[i - 3:i - 1] in (
                 ("do", "you"), ("does", "anyone"), ("does", "anybody"), ("anyone", "d"))) and q in wh \
             or w == "me" and i >= 2 and norms[i - 2] in ("tell", "telling", "show") and q in wh \
-            or w in ("check", "checking", "confirm") and q in ("if", "whether")
+            or w in ("check", "checking", "confirm") and q in ("if", "whether") \
+            or w == "or" and q in ("is", "are") and norms[i + 1] in ("it", "they", "there", "that") \
+            and any(norms[k] in ("can", "could") and norms[k + 1] in ("i", "we", "you", "they", "anyone")
+                    or toks.sentence_start[k] and norms[k] in lx.QUESTION_OPENERS for k in range(max(0, i - 12), i))
+        # ("can I get across the creaker or is it still, you know, stuck": the other half of a question)
         if not told:
             continue
         # (to the end of the sentence, past commas of speech, "if the west road is, er, passable", up to a new
         # clause with a subject of its own or one joined by "and" / "but")
+        # ("you know" is a filler, no new clause)
         end = next((k for k in range(i + 1, len(norms)) if toks.sentence_start[k]
-                    or toks.clause_start[k] and norms[k] in lx.CLAUSE_SUBJECTS
+                    or toks.clause_start[k] and norms[k] in lx.CLAUSE_SUBJECTS and norms[k:k + 2] != ("you", "know")
                     or norms[k] in ("and", "but", "so") and norms[k - 1] not in wh), len(norms))
         out.update(range(i, end))
     return out
