@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev52) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev53) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -72,6 +72,7 @@ FERRY_TOWN = ROOT / "knowledge_bases" / "ferry_terminal_town"
 MOORLAND = ROOT / "knowledge_bases" / "moorland_village"
 GLASSHOUSE = ROOT / "knowledge_bases" / "glasshouse_suburb"
 ESTUARY = ROOT / "knowledge_bases" / "estuary_marina"
+GOLF = ROOT / "knowledge_bases" / "golf_resort"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -293,6 +294,7 @@ SETS = {
                             {"standard": 20, "messy": 20, "advanced_messy": 20}),
     "dev52/estuary_marina": _set("dev52/estuary_marina.jsonl", ESTUARY, "em52",
                                  {"standard": 20, "messy": 20, "advanced_messy": 20}),
+    "dev53/golf_resort": _set("dev53/golf_resort.jsonl", GOLF, "gr53", {"standard": 20, "messy": 20, "advanced_messy": 20}),
 }
 
 
