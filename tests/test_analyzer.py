@@ -3171,6 +3171,11 @@ def test_dev51_phenomena(kb_analyzers, analyzer, kb, text, expected):
     ("estuary_marina", "down to the hard - the hard's flooded - well, no, it's not, it's gone back down, it's just wet",
      []),
     ("estuary_marina", "the hard's flooded - no, it's not just wet, it's properly under", [("town quay", "tide_wrack")]),
+    # an alias that is a relation's verb ("the pumps" / `pumps_diesel_for`), said with an article before its noun
+    ("estuary_marina", "the pontoon that pumps the diesel for the fish quay's gone up", [("fuel berth", "reek_and_flame")]),
+    # "his shed roof": a roof of someone's own shed, not the place named before whose names end in "shed"
+    ("glasshouse_suburb", "the plots whose veg the tearoom sells are under water, and Stan's stuck on his shed roof",
+     [("lower allotments", "brookwash"), ("lower allotments", "hands_in_need")]),
 ])
 def test_dev52_phenomena(kb_analyzers, kb, text, expected):
     assert claims(kb_analyzers[kb], text) == expected

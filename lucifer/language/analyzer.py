@@ -659,6 +659,9 @@ class ReportAnalyzer:
             if norms[a:b] in self._needs_article and prev in ("a", "an", "another") and b - a == 1 \
                     and toks.tokens[a - 1].text.islower():  # (not a letter that labels it: "the A cabins")
                 continue  # "a horse down in a box": the KB's "the box" is one place, "a box" any
+            if norms[a:b] in self._needs_article and prev in ("that", "which") and b - a == 1 and b < len(norms) \
+                    and norms[b] in lx.ARTICLES and norms[a] in self._relation_verbs:
+                continue  # "the pontoon that pumps the diesel for the fish quay": the verb of `pumps_diesel_for`
             if norms[a:b] in self._needs_article and prev not in lx.DETERMINERS | {"our", "your", "my", "his", "her"} \
                     and not acronym and not heading and not self._telegraphic_subject(toks, norms, a, b) \
                     and not (log and (b - a >= 2 or prev in lx.PREPOSITIONS and len(norms[a]) >= 5)) \
@@ -1329,6 +1332,11 @@ class ReportAnalyzer:
         return owners
 
     @functools.cached_property
+    def _relation_verbs(self) -> frozenset[str]:
+        """The first words of the KB's relation names ("pumps" of ``pumps_diesel_for``)."""
+        return frozenset(norm_phrase(r.phrase)[0] for r in self.kb.relations if norm_phrase(r.phrase))
+
+    @functools.cached_property
     def _kb_nouns(self) -> frozenset[str]:
         """Words the KB's landmark descriptions use as nouns of their own, after "the", twice or more ("beside
         the burn", "over the burn"), which its category descriptions do not use: said so, they are no cue."""
@@ -1665,7 +1673,10 @@ class ReportAnalyzer:
             if norms[i - 1] in ("my", "our", "his", "her", "their") and i not in taken and norms[i].isalpha() \
                     and len(norms[i]) >= 3 and norms[i + 1:i + 2] not in (
                         ("gone",), ("come",), ("been",), ("just",), ("said",), ("says",), ("coming",), ("going",)):
-                # (not "our doctor's gone out to him": a person)
+                # (not "our doctor's gone out to him": a person; nor "Stan's stuck out on his shed roof": a roof
+                # of someone else's own shed)
+                if norms[i - 1] in ("his", "her", "their") and norms[i + 1:i + 2] and norms[i + 1] in lx.STOREY_WORDS:
+                    continue
                 # "Mrs Kay from the village shop here, the place my shop is tucked in beside": the speaker's own,
                 # named before; "a firefighter at the fire hall reports ... across the road from his station"
                 mine = [p for p in places if p.end_tok <= i - 1 and p.status == "active" and any(
@@ -7654,6 +7665,16 @@ def _with_group_inverses(phrase: str, out: list[tuple[str, bool]]) -> list[tuple
             opposite = lx.INVERSE_PHRASES.get(canon)
             if opposite:
                 out.extend((syn, True) for syn in lx.RELATION_SYNONYMS.get(opposite, []))
+    # "pumps_diesel_for" said "the pontoon that pumps the diesel for ...": an article before the relation's noun
+    words = phrase.split()
+    if len(words) >= 3 and words[1] not in lx.ARTICLES | lx.NOT_VERBS | lx.RELATION_ENDINGS \
+            and words[-1] in lx.RELATION_ENDINGS | {"for", "of", "into"} and words[1].isalpha() \
+            and not words[1].endswith(("ly", "ing")):
+        for form, inv in list(out):
+            ws = form.split()
+            at = next((n for n in (1, 2) if ws[n:n + 1] == [words[1]] and ws[n - 1] not in lx.ARTICLES), None)
+            if at is not None and not inv:
+                out.append((" ".join(ws[:at] + ["the"] + ws[at:]), inv))
     # "holds the spare keys for" said "holding the spare keys to": a noun's "for" and "to" name the same object
     # ("is the local of" said "the local for": a noun after an article takes "of" and "for" alike)
     words = phrase.split()
