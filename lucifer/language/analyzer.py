@@ -538,10 +538,9 @@ class ReportAnalyzer:
             elif t in taken or t in cue_tokens or t in known or t + 1 in known:
                 continue  # (a word right before a listed phrase heads it: "the annexe tacked onto X")
             word = toks.tokens[t].text
-            if word.lower().endswith(("'s", "’s")) and toks.clause_start[t]:
-                continue  # "Water's pouring through ...": a subject, not "across_the_water_from"
-            if toks.clause_start[t] and t + 1 < len(norms) and norms[t + 1] in ("is", "are", "was", "were", "has", "s"):
-                continue  # "Water is up over the tin platform": a subject, not "lifts_water_out_of"
+            if toks.clause_start[t] and (word.lower().endswith(("'s", "’s")) or t + 1 < len(norms)
+                                         and norms[t + 1] in ("is", "are", "was", "were", "has", "s")):
+                continue  # "Water's pouring through ...", "Water is up over ...": a subject, not "lifts_water_out_of"
             if t > 0 and word[:1].isupper() and not word.isupper() and toks.tokens[t - 1].text[:1].isupper() \
                     and not toks.sentence_start[t]:
                 continue  # "Red Watch to TCC": a word of a name, not a relation's verb
@@ -7634,9 +7633,9 @@ def _relation_forms(phrase: str) -> list[tuple[str, bool]]:
         and not verb.endswith(("ed", "ing", "ly", "s")) and not _direction_word(verb)
     if verb in ("is", "are") and len(words) >= 3 and words[1] in lx.ARTICLES:
         out.append((" ".join(words[1:]), False))  # "is the local of": "the pub that's the local of it"
-        return _with_group_inverses(phrase, out)
+        return _finished_forms(phrase, out)
     if not (len(words) == 1 or verb.endswith("s") or plain_verb) or _direction_word(verb) or verb.endswith("ss"):
-        return _with_group_inverses(phrase, out)
+        return _finished_forms(phrase, out)
     stems = {verb[:-1]} if verb.endswith("s") and len(verb) > 3 else {verb}
     for stem in list(stems):
         base = stem[:-1] if stem.endswith("e") else stem
@@ -7655,17 +7654,29 @@ def _relation_forms(phrase: str) -> list[tuple[str, bool]]:
             # "the stalls huddled under the eaves of the market hall": the participle reads it forwards
             for v in {base + "ed", *(k for k, val in lx.IRREGULAR_PARTICIPLES.items() if val == stem)}:
                 out.append((f"{v} {rest}", False))
-    return _with_group_inverses(phrase, out)
+    return _finished_forms(phrase, out)
 
 
-def _with_group_inverses(phrase: str, out: list[tuple[str, bool]]) -> list[tuple[str, bool]]:
+def _finished_forms(phrase: str, out: list[tuple[str, bool]]) -> list[tuple[str, bool]]:
+    """The forms of a relation name with its group's inverses and the ways its noun and last word are said
+    ("pumps the diesel for", "holding the spare keys to"), each once, in order."""
+    _with_group_inverses(phrase, out)
+    _with_article_before_noun(phrase, out)
+    _with_other_preposition(phrase, out)
+    return list(dict.fromkeys(out))
+
+
+def _with_group_inverses(phrase: str, out: list[tuple[str, bool]]) -> None:
     """Add the synonyms of the opposite relation group as inverse forms."""
     for canon, syns in lx.RELATION_SYNONYMS.items():
         if phrase == canon or phrase in syns:
             opposite = lx.INVERSE_PHRASES.get(canon)
             if opposite:
                 out.extend((syn, True) for syn in lx.RELATION_SYNONYMS.get(opposite, []))
-    # "pumps_diesel_for" said "the pontoon that pumps the diesel for ...": an article before the relation's noun
+
+
+def _with_article_before_noun(phrase: str, out: list[tuple[str, bool]]) -> None:
+    """"pumps_diesel_for" said "the pontoon that pumps the diesel for ...": an article before the relation's noun."""
     words = phrase.split()
     if len(words) >= 3 and words[1] not in lx.ARTICLES | lx.NOT_VERBS | lx.RELATION_ENDINGS \
             and words[-1] in lx.RELATION_ENDINGS | {"for", "of", "into"} and words[1].isalpha() \
@@ -7675,15 +7686,17 @@ def _with_group_inverses(phrase: str, out: list[tuple[str, bool]]) -> list[tuple
             at = next((n for n in (1, 2) if ws[n:n + 1] == [words[1]] and ws[n - 1] not in lx.ARTICLES), None)
             if at is not None and not inv:
                 out.append((" ".join(ws[:at] + ["the"] + ws[at:]), inv))
-    # "holds the spare keys for" said "holding the spare keys to": a noun's "for" and "to" name the same object
-    # ("is the local of" said "the local for": a noun after an article takes "of" and "for" alike)
+
+
+def _with_other_preposition(phrase: str, out: list[tuple[str, bool]]) -> None:
+    """"holds the spare keys for" said "holding the spare keys to": a noun's "for" and "to" name the same object
+    ("is the local of" said "the local for": a noun after an article takes "of" and "for" alike)."""
     words = phrase.split()
     if len(words) >= 3 and words[-1] in ("for", "to", "of") and words[-2] not in lx.ARTICLES \
             and words[-2] not in lx.NOT_VERBS and (words[-1] != "of" or words[-3] in lx.ARTICLES):
         others = {"for": ["to"], "to": ["for"], "of": ["for"]}[words[-1]]
         out.extend((f"{form[:-len(words[-1])]}{other}", inv) for form, inv in list(out) for other in others
                    if form.endswith(f" {words[-1]}") and len(form.split()) >= 3)
-    return list(dict.fromkeys(out))
 
 
 def analyze(analyzer: ReportAnalyzer, text: str) -> tuple[Extraction, Classification]:

@@ -611,11 +611,11 @@ GENERIC_HEADS = {
     "row", "parade", "arcade", "kiosk", "stall", "lodge", "chapel", "compartment", "tent", "deck", "campsite",
 }
 
-FILLERS = {"uh", "um", "er", "erm", "ah", "eh", "hmm", "like", "so", "okay", "ok", "well", "yeah", "right",
+FILLERS = HESITATIONS | {"hmm", "like", "so", "okay", "ok", "well", "yeah", "right",
            "just", "basically", "kinda", "sorta", "literally", "over", "copy", "roger", "base", "team",
            "whatsit", "wotsit", "thingy", "thingummy", "whatchamacallit", "whatsitsname"}
 # Words a speaker may drop inside a cue phrase without changing it ("roof's partly down", "on, uh, fire").
-CUE_SKIPPABLE = {"uh", "um", "er", "erm", "ah", "eh", "hmm", "like", "partly", "partially", "completely", "totally",
+CUE_SKIPPABLE = HESITATIONS | {"hmm", "like", "partly", "partially", "completely", "totally",
                  "fully", "badly", "really", "very", "now", "still", "already", "entirely", "half", "kinda", "sorta",
                  "properly", "seriously", "pretty", "right", "just"}
 # Words that open a sentence as a description, not as a name without its article ("Light smoke at ...").
@@ -1308,8 +1308,8 @@ DESCRIBED_COMFORTS: dict[str, tuple[frozenset[str], list[str]]] = {
 # More phrases of the kinds above that read as their kind but do not vote on which category a kind is (so the
 # kinds map onto a KB's categories as they did before these were added).
 DANGER_KIND_EXTRA: dict[str, list[str]] = {
-    # (said of the surge's damage: "the diesel jetty has broken loose", "a hole punched right through the wall")
-    "breakage": ["hole punched", "punched right through", "punched through"],
+    "breakage": ["hole punched", "punched right through", "punched through"],  # "a hole punched right through the wall"
+    # (the surge's damage to moorings: "the diesel jetty has broken loose", "pontoons torn off their piles")
     "storm": ["torn off their piles", "torn off its piles", "off their piles", "off its piles", "broken loose",
               "broke loose", "torn loose", "has broken free", "come adrift", "broken adrift", "torn from its moorings",
               "windows all blown out", "windows blown out", "windows are blown out", "windows have blown out", "all blown out", "strewn across", "strewn over", "strewn all over", "on their sides", "on its side", "onto its side", "onto their sides", "blew in", "blew straight in", "blown straight in", "roof is gone", "roof's torn", "torn clean off", "came down through", "peeled off", "been peeled off", "peeled back", "lost its roof", "lost their roof", "lost their roofs",
