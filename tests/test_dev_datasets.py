@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev53) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev57) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -73,6 +73,15 @@ MOORLAND = ROOT / "knowledge_bases" / "moorland_village"
 GLASSHOUSE = ROOT / "knowledge_bases" / "glasshouse_suburb"
 ESTUARY = ROOT / "knowledge_bases" / "estuary_marina"
 GOLF = ROOT / "knowledge_bases" / "golf_resort"
+PAPERMILL = ROOT / "knowledge_bases" / "papermill_valley"
+CLIFFTOP = ROOT / "knowledge_bases" / "clifftop_park"
+TRAMWAY = ROOT / "knowledge_bases" / "tramway_junction"
+CIRCUIT = ROOT / "knowledge_bases" / "racing_circuit"
+ABBEY = ROOT / "knowledge_bases" / "abbey_village"
+WALLED_CITY = ROOT / "knowledge_bases" / "walled_city"
+STEELWORKS = ROOT / "knowledge_bases" / "steelworks_town"
+TIDAL_ISLE = ROOT / "knowledge_bases" / "tidal_isle"
+NEW_TOWN = ROOT / "knowledge_bases" / "new_town"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -84,6 +93,7 @@ def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") 
 EVEN = {"standard": 40, "messy": 40, "advanced_messy": 40}
 THIRTY = {"standard": 30, "messy": 30, "advanced_messy": 30}  # the 90-report set of an unseen KB
 QUARTER = {"standard": 25, "messy": 25, "advanced_messy": 25}
+TWENTY = {"standard": 20, "messy": 20, "advanced_messy": 20}  # the 60-report set of an unseen KB
 
 
 SETS = {
@@ -295,6 +305,15 @@ SETS = {
     "dev52/estuary_marina": _set("dev52/estuary_marina.jsonl", ESTUARY, "em52",
                                  {"standard": 20, "messy": 20, "advanced_messy": 20}),
     "dev53/golf_resort": _set("dev53/golf_resort.jsonl", GOLF, "gr53", {"standard": 20, "messy": 20, "advanced_messy": 20}),
+    "dev54/papermill_valley": _set("dev54/papermill_valley.jsonl", PAPERMILL, "pv54", TWENTY),
+    "dev54/clifftop_park": _set("dev54/clifftop_park.jsonl", CLIFFTOP, "cp54", TWENTY),
+    "dev54/tramway_junction": _set("dev54/tramway_junction.jsonl", TRAMWAY, "tj54", TWENTY),
+    "dev55/racing_circuit": _set("dev55/racing_circuit.jsonl", CIRCUIT, "rc55", TWENTY),
+    "dev55/abbey_village": _set("dev55/abbey_village.jsonl", ABBEY, "av55", TWENTY),
+    "dev56/walled_city": _set("dev56/walled_city.jsonl", WALLED_CITY, "wc56", TWENTY),
+    "dev56/steelworks_town": _set("dev56/steelworks_town.jsonl", STEELWORKS, "sw56", TWENTY),
+    "dev57/tidal_isle": _set("dev57/tidal_isle.jsonl", TIDAL_ISLE, "ti57", TWENTY),
+    "dev57/new_town": _set("dev57/new_town.jsonl", NEW_TOWN, "nt57", TWENTY),
 }
 
 
