@@ -236,8 +236,8 @@ class ReportAnalyzer:
             for mod in mods:
                 for head in heads:
                     key = (*mod, head)
-                    if key not in existing and head not in mod:
-                        made.setdefault(key, set()).add(lm.name)
+                    if key not in existing and head not in mod and head not in _COMMON_PART_HEADS:
+                        made.setdefault(key, set()).add(lm.name)  # (not "fire doors" from "fire station", "red doors")
             # ("J4" for "junction 4", "M6" for "motorway 6": a numbered name's initial and number written together)
             for form in forms:
                 if len(form) == 2 and form[1].isdigit() and form[0].isalpha() and len(form[0]) >= 3:
@@ -538,8 +538,9 @@ class ReportAnalyzer:
             elif t in taken or t in cue_tokens or t in known or t + 1 in known:
                 continue  # (a word right before a listed phrase heads it: "the annexe tacked onto X")
             word = toks.tokens[t].text
-            if toks.clause_start[t] and (word.lower().endswith(("'s", "’s")) or t + 1 < len(norms)
-                                         and norms[t + 1] in ("is", "are", "was", "were", "has", "s")):
+            opening = toks.clause_start[t] or t > 0 and norms[t - 1] in lx.ARTICLES and toks.clause_start[t - 1]
+            if opening and (word.lower().endswith(("'s", "’s")) or t + 1 < len(norms)
+                            and norms[t + 1] in ("is", "are", "was", "were", "has", "s")):
                 continue  # "Water's pouring through ...", "Water is up over ...": a subject, not "lifts_water_out_of"
             if t > 0 and word[:1].isupper() and not word.isupper() and toks.tokens[t - 1].text[:1].isupper() \
                     and not toks.sentence_start[t]:
@@ -549,8 +550,18 @@ class ReportAnalyzer:
                 continue
             if t + 1 < len(norms) and ":" in toks.gaps[t + 1]:
                 continue  # "From the medical lead: the saucer ...": a speaker's label, not "leads_off"
-            if norms[t] in lx.PART_NOUNS and t + 1 < len(norms) and norms[t + 1] == "of":
+            if t >= 2 and word.lower().endswith("ing") and toks.tokens[t - 1].text.lower().replace("’", "'").endswith("'s") \
+                    and (t - 1) not in covered and norms[t - 1] not in lx.GENERIC_HEADS | lx.DESCRIPTION_HEADS \
+                    and norms[t - 2] in lx.ARTICLES:
+                continue  # "the wind's keeping the smoke off us": that clause's own verb, not ``keeps_watch_over``
+            if norms[t] in lx.PART_NOUNS | lx.PREMISES_PARTS and t + 1 < len(norms) and norms[t + 1] == "of":
                 continue  # "the back wall of the Stella" is part of it, not "shares_a_wall_with"
+            if norms[t] in ("back", "front", "side") and norms[t + 1:t + 2] and norms[t + 1] in lx.PREMISES_PARTS \
+                    and norms[t + 2:t + 3] == ("of",):
+                continue  # "the back yard of the pink": its own yard, not ``shares_a_back_yard_with``
+            if norms[t] in ("top", "bottom", "back", "front") and t > 0 and norms[t - 1] in ("up", "on", "at", "down", "out") \
+                    and norms[t + 1:t + 2] != ("of",):
+                continue  # "the big one up top", "out back": where, not ``tops_up`` or ``backs_onto``
             if t > 0 and (norms[t - 1] in lx.COPULAS or toks.tokens[t - 1].text.lower().endswith(("'s", "’s"))) \
                     and hit[0].split()[0].startswith(norms[t]) and norms[t] != hit[0].split()[0]:
                 continue  # "apron's open": a state, not "opens_onto"
@@ -567,7 +578,7 @@ class ReportAnalyzer:
             back = [w for w in norms[max(0, t - 4):t] if w not in ("ve", "have", "had", "just", "now", "already", "d")]
             if back and back[-1] in ("i", "we", "they", "he", "she", "you", "ive", "weve", "theyve", "youve", "wed", "theyd") \
                     and norms[t + 1:t + 2] \
-                    and norms[t + 1] in lx.DETERMINERS and norms[t].endswith("ed"):
+                    and (norms[t + 1] in lx.DETERMINERS or t + 1 in covered) and norms[t].endswith("ed"):
                 continue  # "we've opened the parish church as a rest centre": the speaker's deed, not "opens_onto"
             if back and back[-1] in ("im", "were", "am", "m") and norms[t].endswith("ed"):
                 continue  # "I'm parked up on the headland car park": where the speaker is, not "car park for"
@@ -586,8 +597,8 @@ class ReportAnalyzer:
                 continue  # "dropping on the larch plantation" is no ``drops down from``: another particle
             b = t + 1
             for j in range(t + 1, min(t + 4, len(norms))):
-                if j in taken or toks.clause_start[j]:
-                    break
+                if j in taken or toks.clause_start[j] or norms[j] in lx.COPULAS:
+                    break  # ("the river it crosses is way over its banks": the verb ends there, a clause goes on)
                 if norms[j] in lx.RELATION_ENDINGS | {"into", "by"}:
                     b = j + 1
                     if b < len(norms) and norms[j] in ("on", "up", "down", "out", "off", "over") \
@@ -721,6 +732,19 @@ class ReportAnalyzer:
                 continue  # "don't park anything round there": the word as a verb
             if b - a == 1 and norms[a] in ("front", "back", "side", "top", "bottom", "end") and norms[b:b + 1] == ("of",):
                 continue  # "the glasshouse is burning, the whole front of it": a part of a place, not "the front"
+            if b - a == 1 and norms[a] in lx.EVENT_NOUNS and b + 1 < len(norms) and norms[b] in ("at", "on", "near") \
+                    and norms[b + 1] in lx.ARTICLES and not toks.clause_start[b]:
+                continue  # "re the slip at the cliff path": the landslip there, not the slipway called "the slip"
+            if b - a == 1 and prev == "the" and raw.endswith("s") and not raw.endswith(("'s", "’s", "ss", "s'")) \
+                    and raw != norms[a] and norms[a] + "s" == raw and all(
+                        not f.lower().rstrip("'’").endswith("s") for f in self.kb.landmark_by_name[landmark].surface_forms
+                        if norm_phrase(f)[-1:] == norms[a:b]) \
+                    and (b >= len(norms) or norms[b] not in ("is", "has", "was", "got", "been", "gone", "just")):
+                # (but "the unions got its windows blown in": the "'s" left out)
+                continue  # "that's the lanterns on the water": many lanterns, not the minster called "the lantern"
+            if b - a == 1 and a > 0 and toks.tokens[a - 1].text.lower() in ("their", "his", "her", "my", "your") \
+                    and norms[a] in lx.BODY_PARTS:
+                continue  # "a lad with burns on his arms": his arms, not "the arms" (a pub)
             if b - a == 1 and a > 0 and toks.tokens[a - 1].text.lower() in ("its", "their", "his", "her") \
                     and toks.tokens[a].text.lower().endswith("s") and not any(
                         f.lower().endswith("s") for f in self.kb.landmark_by_name[landmark].surface_forms):
@@ -743,6 +767,11 @@ class ReportAnalyzer:
                                            {i for a, b, _ in all_cues for i in range(a, b)}))
         places.extend(self._definite_heads(toks, norms, places))
         places.extend(self._numbered_places(toks, norms, {i for p in places for i in range(p.start_tok, p.end_tok)}))
+        # "it's got the river in the bar": the flood come in, not the river named as a place
+        places = [p for p in places if not (
+            p.end_tok - p.start_tok == 1 and p.start_tok >= 2 and norms[p.start_tok - 1] == "the"
+            and norms[p.start_tok - 2] in ("got", "get", "getting") and norms[p.end_tok:p.end_tok + 1] in (("in",), ("into",))
+            and norms[p.start_tok] in lx.WATER_BODIES)]
         for idx, p in enumerate(places):
             if p.end_tok < len(norms) and norms[p.end_tok] in lx.MODIFIED_BY and not toks.clause_start[p.end_tok] \
                     and norms[p.end_tok : p.end_tok + 2] not in lx.PART_OF_PLACE \
@@ -981,15 +1010,27 @@ class ReportAnalyzer:
                 # "the school that uses the hall as its gym": the hall only says which school
                 only_describes(p1, p2)
                 continue
+            if (p1.landmark, p2.landmark) in related and 4 <= len(gap) <= 6 and toks.clause_start[p1.end_tok] \
+                    and gap[0] in lx.ARTICLES and gap[-1] in lx.ARTICLES \
+                    and gap[-2] in lx.PREPOSITIONS | lx.RELATION_ENDINGS and gap[-3].isalpha() \
+                    and not any(toks.clause_start[i] for i in range(p1.end_tok + 1, p2.end_tok)) \
+                    and not any(self._cues.match_at(norms, i) is not None for i in range(p1.end_tok, p2.start_tok)):
+                # "she's on the plank, the little footbridge over the leat": an aside that says which place,
+                # by one the KB relates to it
+                only_describes(p1, p2)
+                continue
             if (p1.landmark, p2.landmark) not in related or len(gap) > 2 \
                     or not all(w in lx.ARTICLES or w in ("that", "which") for w in gap) \
                     or any(toks.clause_start[i] for i in range(p1.end_tok, p2.start_tok + 1)):
                 continue
             v = p2.end_tok
-            if v + 1 < len(norms) and norms[v].isalpha() and len(norms[v]) >= 4 \
+            # (a particle may follow the verb: "the pond the goit tops up, its wall's bulging")
+            w = v + 1 if v + 2 < len(norms) and norms[v + 1] in ("up", "out", "off", "down", "over") \
+                and not toks.clause_start[v + 1] else v
+            if w + 1 < len(norms) and norms[v].isalpha() and len(toks.tokens[v].text) >= 4 \
                     and toks.tokens[v].text.lower().endswith(("s", "ed")) \
-                    and norms[v] not in lx.COPULAS and (norms[v + 1] in lx.COPULAS | {"has", "have", "had"}
-                                                       or toks.clause_start[v + 1]) \
+                    and norms[v] not in lx.COPULAS and (norms[w + 1] in lx.COPULAS | {"has", "have", "had"}
+                                                       or toks.clause_start[w + 1]) \
                     and not toks.clause_start[v] and self._cues.match_at(norms, v) is None:
                 # "the mill the lade drives is on fire": a transitive verb closes the relative clause
                 only_describes(p1, p2)
@@ -1091,6 +1132,8 @@ class ReportAnalyzer:
                     listed = [last.landmark, next(n for n in pair if n != last.landmark)]
             if not listed or bare and len(listed) != 2:
                 continue
+            if word == "both" and len(listed) > 2:
+                listed = listed[-2:]  # ("the pumphouse, er, no — the row ..., and the one ..., both of them": two)
             if every:
                 landmark = listed[-1]
             elif word == "other":
@@ -1119,7 +1162,9 @@ class ReportAnalyzer:
     def _telegraphic_subject(self, toks: Tokens, norms: tuple[str, ...], a: int, b: int) -> bool:
         """"Precinct secure, holding evacuees there": radio speech drops the article of a sentence's subject."""
         contracted = toks.tokens[b - 1].text.lower().endswith(("'s", "’s"))  # "tower's clear"
-        if not toks.sentence_start[a] or b >= len(norms) or (norms[a] in lx.DESCRIPTIVE_WORDS and not contracted):
+        opens = toks.sentence_start[a] or a > 1 and toks.sentence_start[a - 2] and norms[a - 2].isdigit() \
+            and norms[a - 1].isdigit() and ":" in toks.gaps[a - 1]  # ("23:09 fosse overtopping": a log's time first)
+        if not opens or b >= len(norms) or (norms[a] in lx.DESCRIPTIVE_WORDS and not contracted):
             return False
         return toks.clause_start[b] or norms[b] in lx.COPULAS \
             or self._cues.match_at(norms, b) is not None \
@@ -1235,17 +1280,21 @@ class ReportAnalyzer:
                            and len(described.get(w, set()) - names) < 3
                            and w not in cue_words and w not in rel_words and w not in lx.DESCRIPTIVE_WORDS
                            and w not in lx.STOREY_WORDS and w not in lx.PART_NOUNS  # ("the roof" of anything)
-                           and w not in ("step", "steps")}  # ("can't get up the step": any doorstep)
+                           and w not in ("step", "steps", "door", "doors", "window", "windows")}
+            # ("can't get up the step": any doorstep; "the fire doors": any building's, not "the red doors")
             # heads no other landmark's description uses either: "the chapel is safe" where the castle chapel is
             # the one chapel the KB speaks of
             self._sole_heads = {w for w, name in self._heads.items() if not described.get(w, set()) - {name}}
         out = []
         for i in range(0, len(norms)):
             w = norms[i]
-            opens = (i == 0 or toks.sentence_start[i]) and w in self._heads and i not in taken \
+            opens = (i == 0 or toks.sentence_start[i] or toks.clause_start[i] and ":" in toks.gaps[i]
+                     and w in self._sole_heads) \
+                and w in self._heads and i not in taken \
                 and (w not in lx.UNNAMING_HEADS | lx.GENERIC_HEADS | lx.DESCRIPTION_HEADS
                      or w in self._sole_heads and w not in lx.UNNAMING_HEADS) and (
                 toks.tokens[i].text.lower().endswith(("'s", "’s")) or i + 1 < len(norms) and norms[i + 1] in ("is", "has")
+                or ":" in toks.gaps[i] and i + 1 < len(norms) and self._cues.match_at(norms, i + 1) is not None
                 or i + 2 < len(norms) and norms[i + 1] in lx.STOREY_WORDS | {"wall", "walls", "door", "doors", "windows"}
                 and not toks.clause_start[i + 1])
             # ("crane's leaning badly", "Chapel roof open to the sky": a report that opens on the bare head, said of it)
@@ -1260,6 +1309,9 @@ class ReportAnalyzer:
                 # ("the hall right below my cottage": the speaker's own, as a relation's anchor; not "my kitchen";
                 # "the road that same gully empties onto": the one said before)
                 continue
+            if i >= 2 and norms[i - 1] == "the" and norms[i - 2] in ("up", "down") \
+                    and w in ("hill", "road", "lane", "street", "slope", "valley", "track"):
+                continue  # "ironmasters is way up the hill": which way, not "nob hill"
             contracted = toks.tokens[i].text.lower().endswith(("'s", "’s"))
             raw = toks.tokens[i].text.lower()
             if i + 2 < len(norms) and norms[i + 1] in ("at", "of") and not contracted \
@@ -1277,8 +1329,9 @@ class ReportAnalyzer:
                 and toks.tokens[i + 1].text.lower().endswith(("s", "ed")) \
                 and norms[i + 2] in lx.RELATION_ENDINGS | {"into", "in", "at"} and not toks.clause_start[i + 2]  # ("the maltings empties into")
             # ("The stream the spillway feeds has burst its banks": a relative clause's verb, then the main clause's)
-            verb_next = verb_next or i >= 3 and i + 1 < len(norms) and norms[i - 3] in lx.ARTICLES | {"whose"} \
-                and norms[i - 2].isalpha() and norms[i - 2] not in _NOT_HEADS and (i - 2) not in taken \
+            d = 1 if i >= 4 and norms[i - 2] == norms[i - 1] == "the" else 0  # ("the row the, the footbridge carries")
+            verb_next = verb_next or i >= 3 + d and i + 1 < len(norms) and norms[i - 3 - d] in lx.ARTICLES | {"whose"} \
+                and norms[i - 2 - d].isalpha() and norms[i - 2 - d] not in _NOT_HEADS and (i - 2 - d) not in taken \
                 and toks.tokens[i + 1].text.lower().endswith(("s", "ed")) and not toks.clause_start[i + 1] \
                 and (i + 2 >= len(norms) or toks.clause_start[i + 2]
                      or norms[i + 2] in lx.COPULAS | {"has", "have", "had", "that", "thats", "which"}
@@ -1312,10 +1365,14 @@ class ReportAnalyzer:
                         held.setdefault(words[n:n + 2], set()).add(lm.name)
             self._pair_heads = {k: next(iter(v)) for k, v in pairs.items() if len(v) == 1 and held.get(k, v) == v}
         taken_now = taken | {i for p in out for i in range(p.start_tok, p.end_tok)}
-        for i in range(1, len(norms) - 1):
+        for i in range(0, len(norms) - 1):
             key = norms[i:i + 2]
-            if key in self._pair_heads and norms[i - 1] == "the" and not {i, i + 1} & taken_now \
-                    and not toks.clause_start[i + 1]:
+            # (or opening a clause of its own, as sitreps do: "Sitrep: pumping house flooded to the motor floor")
+            opens = (i == 0 or toks.clause_start[i]) and (
+                i + 2 >= len(norms) or toks.clause_start[i + 2] or norms[i + 2] in lx.COPULAS | {"has", "have", "had"}
+                or self._cues.match_at(norms, i + 2) is not None)
+            if key in self._pair_heads and (i > 0 and norms[i - 1] == "the" or opens) \
+                    and not {i, i + 1} & taken_now and not toks.clause_start[i + 1]:
                 out.append(self._mention(toks, i, i + 2, self._pair_heads[key]))
                 taken_now.update((i, i + 1))
         return out
@@ -1683,7 +1740,9 @@ class ReportAnalyzer:
                 sided = norms[i] in lx.SIDE_WORDS | {"back", "side"} and norms[i + 1:i + 2] in (("wall",), ("side",), ("gable",))
                 part = sided or norms[i] in ("wall", "gable")  # "the little shop built onto our east wall"
                 if not mine and norms[i - 1] in ("my", "our") and (part or norms[i] in (
-                        "building", "place", "premises", "storeroom", "stockroom", "kitchen", "cellar", "shop")):
+                        "building", "place", "premises", "storeroom", "stockroom", "kitchen", "cellar", "shop",
+                        "caravan", "tent", "pitch", "motorhome", "camper")):
+                    # ("I'm at the campsite ... he's had a fall by our caravan": a pitch there)
                     # "I'm at the pharmacy. The shop our building's built onto": where the speaker is
                     mine = [p for p in places if p.end_tok <= i - 1 and p.status == "active"
                             and self._speaker_here(norms, p)]
@@ -1997,7 +2056,9 @@ class ReportAnalyzer:
                 words, nxt, pause_after = words[:1], norms[b], True
             if words[-1:] == ("right",) and not (pause_after and nxt in ("its", "it", "thats", "the")):
                 continue  # "she's right outside the cafe": where she is; "okay she's right, it's the library": a repair
-            if words == ("second", "voice") and nxt not in ("its", "it", "thats", "the", "no", "not"):
+            if words in (("second", "voice"), ("voice", "behind"), ("voice", "in", "background"),
+                         ("voice", "in", "the", "background"), ("background", "voice"), ("another", "voice")) \
+                    and nxt not in ("its", "it", "thats", "the", "no", "not"):
                 continue  # "[second voice: it's the library, Jean!]": another speaker correcting
             if words == ("wrong",) and a > 0 and norms[a - 1] in ("nothing", "anything", "something", "whats"):
                 continue  # "Nothing wrong on our job at the library": no repair
@@ -2009,6 +2070,9 @@ class ReportAnalyzer:
                 # "no, the bakery" / "no no" is a repair; "no fire" / "no one" is negation;
                 # "the warehouse no the library" (no pause) is a repair when a place precedes
                 # ("trapped worker in unit 3 no unit 4": a place right after "no", one just before it, is a repair)
+                if nxt in lx.VOCATIVES and b + 1 < len(norms) and toks.clause_start[b + 1]:
+                    b += 1  # "no Dad, it's the plank": the person spoken to belongs to the repair word
+                    nxt, pause_after = norms[b], True
                 named_next = b in blocked and any(i in blocked for i in range(max(0, a - 3), a))
                 if nxt in ("nobody", "noone", "nothing", "none", "no") or norms[b:b + 2] == ("no", "one"):
                     continue  # "we've got, er, no, nobody under it": an answer, not a repair
@@ -2092,6 +2156,10 @@ class ReportAnalyzer:
             for a, b, (phrase, flipped) in ordered:
                 if pass_no == 3 and not (a > 0 and norms[a - 1] in ("it", "they", "its")):
                     continue
+                if pass_no == 2 and a > 0 and norms[a - 1] in ("it", "they", "its") and any(
+                        b2 < a and "and" in norms[b2:a] for _, b2, _ in ordered):
+                    continue  # ("the straight the esses run into — ..., and the corner it runs into": "it" is
+                    # the straight, known once the description before it is resolved, in the pass after)
                 self._resolve_one(ex, toks, norms, a, b, phrase, flipped, place_tokens, marker_tokens,
                                   inverse_pass=pass_no in (2, 3))
         if self.kb.relations:
@@ -2109,11 +2177,72 @@ class ReportAnalyzer:
                                       inverse_pass=False)
         if self.kb.relations and rel_hits:
             self._unresolved_own_heads(ex, toks, norms, rel_hits)
+        self._restated_anchors(ex, toks, norms)
+        if self.kb.relations:
+            self._possessive_roles(ex, toks, norms)
         for d in [p for p in ex.places if p.via is not None and p.status == "active"]:
             for idx, p in enumerate(ex.places):
                 if p.via is None and p.status == "active" and d.start_tok <= p.start_tok and p.end_tok <= d.end_tok:
                     # "the landing it faces": the head word named the place the description reaches
                     ex.places[idx] = replace(p, status="reference", reason=f"part of the description '{d.text}'")
+
+    def _possessive_roles(self, ex: Extraction, toks: Tokens, norms: tuple[str, ...]) -> None:
+        """"the corrie's drinking hole": for a relation named "is the drinking hole of", a place's own
+        "drinking hole" is the one the KB says is the drinking hole of it."""
+        roles: dict[tuple[str, ...], list[Relation]] = {}
+        for rel in self.kb.relations:
+            words = norm_phrase(rel.phrase)
+            if len(words) >= 4 and words[0] in ("is", "are") and words[1] in lx.ARTICLES and words[-1] == "of":
+                roles.setdefault(tuple(words[2:-1]), []).append(rel)
+        if not roles:
+            return
+        for p in list(ex.places):
+            if p.status != "active" or p.via is not None \
+                    or not toks.tokens[p.end_tok - 1].text.lower().replace("’", "'").endswith(("'s", "s'")):
+                continue
+            for noun, rels in roles.items():
+                end = p.end_tok + len(noun)
+                if norms[p.end_tok:end] != noun:
+                    continue
+                subjects = {r.subject for r in rels if r.object == p.landmark}
+                if len(subjects) != 1:
+                    continue
+                target = next(iter(subjects))
+                rel = next(r for r in rels if r.object == p.landmark)
+                via = f"{rel.subject} {rel.relation} {rel.object}"
+                ex.places[ex.places.index(p)] = replace(p, status="reference", reason=f"reference point: {via}")
+                ex.places.append(self._mention(toks, p.start_tok, end, target, via=via))
+                break
+
+    @staticmethod
+    def _restated_anchors(ex: Extraction, toks: Tokens, norms: tuple[str, ...]) -> None:
+        """"the tunnel that's dug under the straight, the straight that runs flat out into chapel bend": a
+        relation's object, said again with a description of its own to say which one, is that relation's
+        reference point, not a place claimed."""
+        for idx, q in enumerate(ex.places):
+            if q.status != "active" or q.via is None:
+                continue
+            h = q.start_tok
+            while h < q.end_tok - 1 and norms[h] in lx.ARTICLES:
+                h += 1
+            s0 = q.start_tok - 1 if q.start_tok > 0 and norms[q.start_tok - 1] in lx.ARTICLES else q.start_tok
+            k = s0 - 1
+            while k > 0 and norms[k] in lx.FILLERS:
+                k -= 1
+            if k < 2 or not toks.clause_start[s0] or norms[k] != norms[h] or norms[k - 1] not in lx.ARTICLES \
+                    or not (norms[k - 2] in lx.RELATION_ENDINGS or norms[k - 2] in ("under", "beneath", "below", "above")):
+                continue
+            if any(p.start_tok <= k < p.end_tok for p in ex.places):
+                continue  # (the word said before is a place of its own: its own rules)
+            ex.places[idx] = replace(q, status="reference", reason=f"the anchor said again to say which: {q.via}")
+        for idx, q in enumerate(ex.places):
+            # "the loft leaning against the stack that carries hollins' boiler smoke": the relative clause only
+            # agrees with the reference point it follows
+            if q.status == "active" and q.via is not None and any(
+                    r.status == "reference" and r.landmark == q.landmark and r.via is None
+                    and r.end_tok < q.start_tok <= r.end_tok + 3 and norms[r.end_tok] in ("that", "which")
+                    for r in ex.places):
+                ex.places[idx] = replace(q, status="reference", reason=f"a relative clause of a reference point: {q.via}")
 
     def _unresolved_own_heads(self, ex: Extraction, toks: Tokens, norms: tuple[str, ...],
                               rel_hits: list[tuple[int, int, tuple[str, bool]]]) -> None:
@@ -2241,6 +2370,12 @@ class ReportAnalyzer:
         phrase, inv = meta[int(order[0])]
         return self._follow(anchor, phrase, head, inverse=_reads_backwards(link, phrase, inv) != inverse)
 
+    @staticmethod
+    def _shared_its(phrase: str) -> bool:
+        """A relation said with "its" for the place before ("shares its vestry wall")."""
+        words = phrase.replace("_", " ").split()
+        return len(words) >= 4 and words[0].startswith("share") and words[-1] == "with"
+
     def _related_by_head(self, anchor: str, head: str) -> tuple[str | None, str | None]:
         """"the quay that the ice plant makes the ice for": a linking phrase MiniLM only half knows, and a head word
         that names exactly one of the places the anchor has a relation with (the fish quay), is that place."""
@@ -2282,6 +2417,9 @@ class ReportAnalyzer:
             j = anchor.start_tok
             while j > 0 and norms[j - 1] in lx.DETERMINERS and anchor.start_tok - j < 2:
                 j -= 1
+            # ("keeps the keys to the, um, the hut": the article said again after a hesitation)
+            while j >= 2 and norms[j - 1] in lx.HESITATIONS and norms[j - 2] in lx.ARTICLES and anchor.start_tok - j < 4:
+                j -= 2
             if j == 0 or norms[j - 1] not in lx.RELATION_ENDINGS | {"for"}:
                 continue  # ("the building that keeps a key for the boat station")
             # walk back over the linking words to a generic head noun
@@ -2298,6 +2436,8 @@ class ReportAnalyzer:
                 continue
             if norms[k - 1] == "one" and norms[k] == "of":
                 continue  # "one of my riders came off on widowmaker": one of them, no place
+            if norms[k - 1] in lx.ROUTE_HEADS and all(w in lx.ROUTE_LINKS for w in norms[k:j]):
+                continue  # "the road down to the boatyard is impassable": the way to the place, no relation
             link = " ".join(toks.tokens[i].text.lower() for i in range(k, j))
             if self._relations.match_at(norms, k) is not None:
                 continue  # a known phrase: the table-driven pass owns it
@@ -2576,7 +2716,9 @@ class ReportAnalyzer:
                 prev = max(earlier, key=lambda p: p.end_tok)
                 if self._follow(prev.landmark, phrase, "", inverse=flipped)[0] == anchor.landmark:
                     anchor = prev
-        if anchor is None and norms[a:b] in lx.IMPLICIT_ANCHOR and (b >= len(norms) or ex.tokens.clause_start[b]
+        implicit = norms[a:b] in lx.IMPLICIT_ANCHOR or "its" in norms[a:b] and self._shared_its(phrase)
+        # ("the hall that shares its vestry wall": whose wall, the place said before)
+        if anchor is None and implicit and (b >= len(norms) or ex.tokens.clause_start[b]
                                                                     or not any(p.start_tok == b for p in ex.places)) \
                 and not self._names_other_object(toks, norms, b):
             # "the building next door": the anchor is the place last spoken of
@@ -2599,8 +2741,9 @@ class ReportAnalyzer:
                         anchor = prev
         if anchor is not None and not pronoun and anchor.start_tok >= b and anchor.via is None \
                 and any(d in toks.gaps[k] for k in range(b, anchor.start_tok + 1) for d in ("—", "–", "--", " - ")) \
-                and (found := self._inverse_anchor(ex, norms, a, phrase)) is not None and found[2] is False \
-                and found[0].end_tok < a and found[1] < found[0].start_tok:
+                and (found := self._inverse_anchor(ex, norms, a, phrase)) is not None \
+                and (found[2] is False and found[0].end_tok < a and found[1] < found[0].start_tok
+                     or found[2] == "pronoun"):  # ("the row it carries the shift over from -- er, felt row --")
             # "the shop the chemist's is stuck onto -- the bread place --": the relation ends its clause; the place
             # after the pause says which place was meant, it anchors nothing
             anchor = None
@@ -2650,7 +2793,11 @@ class ReportAnalyzer:
             broken = anchor.via is not None and anchor.start_tok >= b and any(
                 m in toks.gaps[i] for i in range(b, anchor.start_tok + 1) for m in ("--", "—", "–"))
             # ("the boxes the quay cranes feed -- er, the stack they feed": a repair, not the relation's anchor)
-            if not pronoun and not broken:
+            denied = "not" in norms[max(0, head_place.start_tok - 4):head_place.start_tok] \
+                and any(toks.clause_start[i] for i in range(head_place.end_tok, a + 1))
+            # ("no, not by the lake, by our caravan": the place denied, then the one meant; no description)
+            if not pronoun and not broken and not denied:
+                ex.relation_tokens.update(range(a, b))  # ("the loft leaning against the stack": no cue "leaning")
                 idx = ex.places.index(anchor)
                 ex.places[idx] = replace(anchor, status="reference", reason=f"reference point for '{head_place.text}'")
             return
@@ -2799,6 +2946,11 @@ class ReportAnalyzer:
                             (w for w in reversed(norms[max(0, a - 3):a]) if w not in lx.ARTICLES | lx.FILLERS), "")
                              in ("out", "from", "through")):
                     return  # "flames coming out the back of the granary": out of its back, so at it
+                h = a - 1
+                while h >= 0 and (norms[h].endswith("ed") or norms[h] in lx.FILLERS) and a - h <= 2:
+                    h -= 1
+                if h >= 0 and norms[h] in lx.FLOATING_THINGS | lx.VEHICLE_WORDS:
+                    return  # "a car swept against the Mitre Arch": where a thing is, no description of a place
                 if anchor.via is not None and b < len(norms) and norms[b] in ("that", "which"):
                     return  # "the rock face that looks down over the holiday park": the place resolved already; the
                     # word before its "that" ("face", as in "facing") is its head, no relation of its own
@@ -3156,8 +3308,12 @@ class ReportAnalyzer:
                 j -= 1
         if j >= 1 and norms[j] == "is" and norms[j - 1] == "this":
             return True  # "This is the pumping station. The building right below us ..."
-        if j < 1 or norms[j] not in ("at", "in", "inside", "outside", "on"):
+        if j < 1 or norms[j] not in ("at", "in", "inside", "outside", "on", "by"):
             return False
+        if j >= 2 and norms[j - 1] == "up" and norms[j - 2] == "parked":
+            j -= 2  # "we're parked up at the bus station": where the crew is
+        elif norms[j - 1] in ("parked", "sat", "sitting", "stood", "standing", "stopped"):
+            j -= 1  # "we're parked at", "I'm sat in"
         return norms[j - 1] in ("im", "were") or norms[j - 2 : j] in (("i", "am"), ("we", "are"))
 
     @classmethod
@@ -3464,6 +3620,9 @@ class ReportAnalyzer:
             if neg and norms[j] in ("isnt", "wasnt", "arent", "werent") and any(
                     d in toks.gaps[i] for i in range(j + 1, p.start_tok + 1) for d in ("—", "–", "--", " - ")):
                 neg = False  # "says the bridge is the safe way but it isn't - the crossing below the mill is cracking"
+            if neg and norms[j] == "not" and toks.clause_start[j + 1] and j > 0 \
+                    and norms[j - 1] in ("absolutely", "definitely", "certainly", "course", "really", "no", "surely"):
+                neg = False  # "no, no, absolutely not, the lodge is brimming over": an answer, then a clause of its own
             if not_the_one:
                 neg = True  # "the school isn't the one"
             if neg and any(ma <= j < mb for ma, mb, _ in ex.markers) and norms[j + 1 : j + 2] == ("that",):
@@ -3481,7 +3640,9 @@ class ReportAnalyzer:
                     if described and nxt is not None:
                         self._take_back(ex, max(described, key=lambda q: q.start_tok), nxt,
                                         f"then 'not {toks.span_text(j + 1, p.end_tok)}'")
-                    continue
+                    if described:
+                        continue
+                    # ("a fall by the lake, no, not by the lake, by our caravan": only where, the place taken back)
                 # "the clinic ... no, not the clinic, the police station": the earlier mention is retracted
                 sent_start = max(t for t in range(0, p.start_tok + 1) if toks.sentence_start[t])
                 marker_toks = {i for a, b, _ in ex.markers for i in range(a, b)}
@@ -3684,23 +3845,37 @@ class ReportAnalyzer:
     def _cue_between(self, norms: tuple[str, ...], a: int, b: int) -> bool:
         return any(self._cues.match_at(norms, k) is not None for k in range(a, b))
 
-    def _called_station(self, toks: Tokens, norms: tuple[str, ...], p: PlaceMention) -> bool:
-        """"Red Watch to TCC, we're at the east portal": a call sign, "to", the station called, a pause."""
+    def _called_station(self, toks: Tokens, norms: tuple[str, ...], p: PlaceMention,
+                        places: list[PlaceMention] = ()) -> bool:  # type: ignore[assignment]
+        """"Red Watch to TCC, we're at the east portal": a call sign, "to", the station called, a pause.
+        Also the station that calls everyone ("Race Control to all posts: ..."): a broadcast, said of others."""
         a = p.start_tok
         if norms[p.end_tok:p.end_tok + 2] == ("this", "is") and toks.sentence_of[a] == 0 \
                 and all(w in lx.FILLERS | lx.DETERMINERS for w in norms[:a]):
             return True  # "uh base this is Sue at Heron Court": the station called, then who calls
+        if toks.sentence_of[a] == 0 and all(w in lx.FILLERS | lx.DETERMINERS for w in norms[:a]) \
+                and norms[p.end_tok:p.end_tok + 2] == ("to", "all") and p.end_tok + 4 <= len(norms) \
+                and any(toks.clause_start[i] for i in range(p.end_tok + 2, p.end_tok + 5) if i < len(norms)) \
+                and not {"this", "here", "we", "our", "us", "were", "weve", "ours"} & {
+                    norms[i] for i in range(p.end_tok, len(norms)) if toks.sentence_of[i] == toks.sentence_of[a]}:
+            # ("Police post to all units: this building ... is now the cold zone": its own place, said of)
+            return True  # "Race Control to all posts: the south grandstand is on fire": who broadcasts
         if a < 2 or norms[a - 1] != "to" or toks.sentence_of[a] != 0 or p.end_tok >= len(norms) \
                 or not toks.clause_start[p.end_tok]:
             return False
         before = range(0, a - 1)
-        return len(before) <= 4 and all(toks.tokens[i].text[:1].isupper() or toks.tokens[i].text.isdigit()
-                                        for i in before) and not any(self._cues.match_at(norms, i) for i in before)
+        caller = next((q for q in places if q.start_tok == 0 and q.end_tok == a - 1), None)
+        # ("Fuel bay to race control, we've got ...": a place calling by its own name)
+        return len(before) <= 4 and (caller is not None or all(toks.tokens[i].text[:1].isupper() or toks.tokens[i].text.isdigit()
+                                                               for i in before)) and not any(self._cues.match_at(norms, i) for i in before)
 
     @staticmethod
     def _from_label(toks: Tokens, norms: tuple[str, ...], p: PlaceMention) -> bool:
         """"From the pump house: ...", "Relay from a station on the east ridge: ...": who is calling."""
         k = _noun_phrase_start(norms, p)
+        if k >= 2 and norms[k - 1] == "at" and toks.sentence_start[k - 2] and norms[k - 2] in lx.ROLE_LABELS \
+                and p.end_tok < len(norms) and toks.gaps[p.end_tok].strip().startswith(":"):
+            return True  # "Marshal at post nine: the rainbow bridge is secure": who is calling, from where
         if k < 1 or norms[k - 1] != "from" or p.end_tok >= len(norms) or not toks.gaps[p.end_tok].strip().startswith(":"):
             return False
         opener = k - 1
@@ -3711,12 +3886,44 @@ class ReportAnalyzer:
         return bool(toks.sentence_start[opener])
 
     @staticmethod
+    def _members_said_next(toks: Tokens, norms: tuple[str, ...], p: PlaceMention) -> bool:
+        """"... the coastguard cottages and, er, the end one, one of them's got a chimney come through": one of the
+        place's own buildings, said right after it in the same sentence, is what the news is about."""
+        n = toks.sentence_of[p.start_tok]
+        window = [i for i in range(p.end_tok, min(len(norms), p.end_tok + 8)) if toks.sentence_of[i] == n]
+        for i in window:
+            if norms[i:i + 3] == ("one", "of", "them") \
+                    or norms[i] == "the" and norms[i + 1:i + 2] and norms[i + 1] in lx.MEMBER_WORDS \
+                    and norms[i + 2:i + 3] == ("one",):
+                return True
+        return False
+
+    @staticmethod
+    def _part_said_next(toks: Tokens, norms: tuple[str, ...], p: PlaceMention, places: list[PlaceMention]) -> bool:
+        """"we're at the halt and the waiting room's ...": the next clause opens on a part of the place the crew is
+        at ("the waiting room", "the kitchen"), no other place named before it."""
+        k = p.end_tok
+        while k < len(norms) and (norms[k] in lx.FILLERS or norms[k] in ("and", "now", "where", "so")) and k - p.end_tok < 5:
+            k += 1
+        if k + 1 >= len(norms) or norms[k] != "the" or not any(toks.clause_start[i] or norms[i] == "and"
+                                                               for i in range(p.end_tok, k + 1)):
+            return False
+        if any(q.start_tok <= k + 2 and q.end_tok > k for q in places):
+            return False
+        return norms[k + 1] in lx.PREMISES_PARTS or norms[k + 1:k + 3] in lx.PREMISES_ROOMS
+
+    @staticmethod
     def _watch_point(toks: Tokens, norms: tuple[str, ...], p: PlaceMention) -> bool:
         """"From the abbey tower I can see the green is under water": where the speaker looks from."""
         k = _noun_phrase_start(norms, p)
         see = (("i", "can", "see"), ("we", "can", "see"))
         if k >= 4 and norms[k - 1] == "from" and any(norms[k - 4 - d:k - 1 - d] in see for d in range(2)):
             return True  # "What I can see from the gate is smoke ... coming out of the sawmill"
+        if k >= 4 and norms[k - 1] == "from" and any(
+                norms[i] in ("i", "we", "you") and norms[i + 1] in ("can", "could") and norms[i + 2] in ("hear", "see", "smell")
+                and norms[i + 3] in ("it", "them", "that", "this") and k - 1 - (i + 3) <= 2
+                and not any(toks.clause_start[j] for j in range(i + 1, k)) for i in range(max(0, k - 8), k - 3)):
+            return True  # "it's sparking, you can hear it cracking from the lodge": where the listener is
         return k >= 1 and norms[k - 1] == "from" and bool(toks.sentence_start[k - 1]) and any(
             norms[p.end_tok + d:p.end_tok + d + 3] in see for d in range(3))
 
@@ -3780,7 +3987,7 @@ class ReportAnalyzer:
             if p.start_tok in supposed:
                 ex.places[idx] = replace(p, status="reference", reason="named in a condition ('if ...'): no claim")
                 continue
-            if self._called_station(toks, norms, p):
+            if self._called_station(toks, norms, p, ex.places):
                 ex.places[idx] = replace(p, status="reference", reason="the station called ('X to Y,'): no claim")
                 continue
             if toks.sentence_start[p.start_tok] and p.end_tok + 1 < len(norms) \
@@ -3790,6 +3997,13 @@ class ReportAnalyzer:
             if self._from_label(toks, norms, p):
                 ex.places[idx] = replace(p, status="reference", reason="who is calling ('From X:'): no claim")
                 continue
+            if toks.sentence_start[p.start_tok] and p.end_tok < len(norms) and ":" in toks.gaps[p.end_tok] \
+                    and (norms[p.end_tok - 1].isdigit() or norms[p.end_tok - 1] in lx.NUMBER_WORDS) \
+                    and any(q.status == "active" and q.landmark != p.landmark and q.via is None
+                            and (q.start_tok == p.end_tok or q.start_tok == p.end_tok + 1 and norms[p.end_tok] in lx.ARTICLES)
+                            and not toks.sentence_start[q.start_tok] for q in ex.places):
+                ex.places[idx] = replace(p, status="reference", reason="who is calling ('X: Y flooded'): no claim")
+                continue  # "Post four: esses flooded": the caller's label, another place said of at once
             if self._watch_point(toks, norms, p):
                 ex.places[idx] = replace(p, status="reference", reason="where the speaker looks from ('From X I can see')")
                 continue
@@ -3840,6 +4054,14 @@ class ReportAnalyzer:
                         break  # "going past the town hall there was loads of people hurt": what was seen there
                     if any(norms[i] in ("dont", "never") or norms[i:i + 2] == ("do", "not") for i in range(max(0, k - 2), k)):
                         break  # "dont go to the bakery, theres a fire": a warning about the place, not a move
+                    if norms[p.end_tok:p.end_tok + 2] in (("which", "is"), ("which", "s"), ("which", "has")) \
+                            and hit[1].split()[0] in ("diverting", "diverted", "rerouting", "relocating", "moving",
+                                                      "heading", "headed", "going", "evacuating", "sending", "taking"):
+                        break  # "they're diverting to the cow field, which is clear and safe": said of where they go
+                    if self._members_said_next(toks, norms, p):
+                        break  # "heading for the coastguard cottages and, er, the end one, one of them's got ...": news of it
+                    if hit[1] in ("we're at", "we are at", "currently at") and self._part_said_next(toks, norms, p, ex.places):
+                        break  # "now we're at the halt and the waiting room's being used as a warm-up station": its room
                     ex.places[idx] = replace(p, status="reference", reason=f"in transit ('{hit[1]}'): no claim")
                     break
         # "that long shed in front of the park — the park the flats look across at": the reference point said again
@@ -4598,6 +4820,7 @@ class ReportAnalyzer:
                 cues.append(replace(cue, polarity="denied", reason=checked.reason))
         cues = self._contradiction_words_dropped(toks, norms, cues)
         cues = self._read_cue_pairs(toks, norms, cues)
+        cues = self._damage_by_cause(norms, cues)
         cues = self._sheltered_people(norms, cues)
         cues.extend(self._predicative_cues(ex, norms, blocked | {i for c in cues for i in range(c.start_tok, c.end_tok)}))
         cues.extend(self._person_cues(ex, norms, blocked | neutral | {i for c in cues for i in range(c.start_tok, c.end_tok)}))
@@ -4966,6 +5189,26 @@ class ReportAnalyzer:
             norms[m] in lx.STRUCTURE_WORDS for m in range(at, j + 1))  # (a named person only)
 
     PAIR_LINKS = {"is", "are", "s", "re", "was", "were", "has", "have", "been", "still", "now", "all", "badly"}
+
+    def _damage_by_cause(self, norms: tuple[str, ...], cues: list[CueMention]) -> list[CueMention]:
+        """"damaged by the blast", "cracked in the quake": a word of harm done, said with what did it, takes the
+        category of its cause where the KB splits the undesirable role ("blast" a gas explosion, not the flood)."""
+        out = list(cues)
+        for i, c in enumerate(out):
+            if c.polarity != "affirmed" or self.kb.category_by_name[c.category].role != Role.UNDESIRABLE \
+                    or norms[c.end_tok - 1] not in lx.HARM_WORDS:
+                continue  # (not "blocked by a burnt-out moped", "cut off by the landslip": no harm of that kind)
+            j = c.end_tok
+            if norms[j:j + 1] not in (("by",), ("in",), ("from",)):
+                continue
+            j += 1
+            while j < len(norms) and norms[j] in lx.ARTICLES and j - c.end_tok < 3:
+                j += 1
+            cause = next((d for d in out if d.start_tok == j and d is not c and d.polarity == "affirmed"
+                          and self.kb.category_by_name[d.category].role == Role.UNDESIRABLE), None)
+            if cause is not None and cause.category != c.category:
+                out[i] = replace(c, category=cause.category)
+        return out
 
     def _read_cue_pairs(self, toks: Tokens, norms: tuple[str, ...], cues: list[CueMention]) -> list[CueMention]:
         """Two vocabulary cues of one role that the KB splits into several categories, said as one
@@ -5642,7 +5885,15 @@ class ReportAnalyzer:
                     if until == i and norms[i + len(key):i + len(key) + 1] in (("about",), ("regarding",), ("re",)):
                         # "disregard my last about water in the sheds": what it was about (up to a semicolon: "...;
                         # rest point is now the chapel" is the new report)
-                        until = next((j for j in range(i + len(key), len(norms)) if ";" in toks.gaps[j]), len(norms))
+                        until = next((j for j in range(i + len(key), len(norms)) if ";" in toks.gaps[j]
+                                      # (or a clause of its own after the place it was about: "disregard my last
+                                      # about the medical centre being out of action, the medical centre is open")
+                                      or toks.clause_start[j] and any(i + len(key) < p.start_tok < j for p in places_now)
+                                      and any(j <= c.start_tok < j + 8 and sentence_of[c.start_tok] == sentence_of[j]
+                                              and norms[c.start_tok - 1] not in ("its", "the", "their")
+                                              and not any(toks.clause_start[m] for m in range(j + 1, c.start_tok + 1))
+                                              for c in cues)),
+                                     len(norms))
                     if phrase in lx.DISMISSED_BEFORE:
                         until = i + len(key)  # ("'supermarket smoke was a barbecue' ...; 'water tower leaking'")
                     # "no fire at the chip shop, it's just steam, but the hotel's got a proper fire going": a
@@ -5731,6 +5982,9 @@ class ReportAnalyzer:
                     and h[0] > j + 1:
                 break  # "a man lying in the doorway not moving please come": "not" is part of the cue before
             if norms[j] in lx.NEGATORS or norms[j].endswith("nt") and norms[j] in ("isnt", "arent", "wasnt", "werent", "dont", "doesnt", "didnt", "hasnt", "havent", "cant"):
+                if j + 1 == cue.start_tok and toks.clause_start[cue.start_tok] and "," in toks.gaps[cue.start_tok] \
+                        and j > 0 and norms[j - 1] in ("theyre", "its", "re", "s", "is", "are", "was", "were"):
+                    break  # "they were safe, now they're not, embers are landing": that clause ends; a new one opens
                 if norms[j + 1 : j + 3] != ("the", "one") and not (
                         norms[j] == "no" and j + 1 < cue.start_tok
                         and (norms[j + 1] in lx.NUMBER_WORDS or norms[j + 1].isdigit())):
@@ -5771,6 +6025,11 @@ class ReportAnalyzer:
                 and self._hearsay_before(toks, norms, cue.start_tok) and self._contradicted_after(toks, norms, but + 1):
             # "my wife says the coffee shop's collapsed but I can see it from here, it's still standing"
             cancelled_by = "but it isn't"
+            k = len(norms)
+        elif k < len(norms) and toks.clause_start[k] and any(norms[k:k + len(w)] == w for w in lx.NO_LONGER_SO) \
+                and toks.sentence_of[k] == toks.sentence_of[cue.start_tok]:
+            # "they were safe, now they're not, embers are landing on the thatch": said, then taken back
+            cancelled_by = "now it's not"
             k = len(norms)
         elif but is None and self._hearsay_before(toks, norms, cue.start_tok) \
                 and self._contradicted_after(toks, norms, cue.end_tok):
@@ -6566,8 +6825,11 @@ class ReportAnalyzer:
                                                   and q.status == "active" for q in ex.places):
                 continue  # "im outside the school the school yard is the assembly point ...": where the caller stands
             tail = [w for w in norms[p.end_tok:segs[k][1]] if w not in lx.FILLERS]
-            if (tail[:1] in (["dry"], ["untouched"], ["unaffected"], ["solid"], ["holding"]) or tail[:2] in (
-                    ["is", "dry"], ["s", "dry"], ["still", "dry"], ["is", "solid"], ["s", "solid"], ["still", "solid"])) \
+            if tail in (["is"], ["s"], ["was"], ["are"]):  # ("the lifeguard hut is... standing": past the pause)
+                tail = [w for w in norms[p.end_tok:min(len(norms), segs[k][1] + 1)] if w not in lx.FILLERS]
+            if (tail[:1] in (["dry"], ["untouched"], ["unaffected"], ["solid"], ["holding"], ["standing"]) or tail[:2] in (
+                    ["is", "dry"], ["s", "dry"], ["still", "dry"], ["is", "solid"], ["s", "solid"], ["still", "solid"],
+                    ["is", "standing"], ["s", "standing"], ["still", "standing"])) \
                     and len(seg_places.get(k, [])) == 1:
                 continue  # "the gift shop, that's where the water's coming in... the tea room's dry": its own word
             if tail[:1] and tail[0] in ("evacuated", "evacuating", "closed", "shut", "locked") and len(tail) <= 2 \
@@ -6765,8 +7027,8 @@ class ReportAnalyzer:
     def _access_category(self) -> bool:
         """Does an undesirable category's description speak of places that cannot be entered or got through?"""
         if not hasattr(self, "_access_cat"):
-            words = ("lock", "closed", "blocked", "access", "impassable", "cannot be entered", "got through",
-                     "cannot be passed", "jammed")
+            words = ("lock", "blocked", "access", "impassable", "cannot be entered", "got through",
+                     "cannot be passed", "jammed")  # (not "closed": "bridges the flood has damaged or closed")
             self._access_cat = any(any(w in c.description.lower() for w in words)
                                    for c in self.kb.categories_with_role(Role.UNDESIRABLE))
         return self._access_cat
@@ -7410,6 +7672,8 @@ def _phrases(phrases: Iterable[str]) -> PhraseMatcher[str]:
     return matcher
 
 
+# Parts every building has: no head of a recombined name ("the fire doors" is no "the red doors" fire station)
+_COMMON_PART_HEADS = frozenset({"door", "doors", "window", "windows", "step", "steps", "roof", "wall", "walls"})
 # "don't know where it's coming from"; "source identified as": one hit per place in the text, the longest
 _UNKNOWN_SOURCE = _phrases(lx.UNKNOWN_SOURCE)
 _SOURCE_IS = _phrases(lx.SOURCE_IS)
@@ -7634,6 +7898,13 @@ def _relation_forms(phrase: str) -> list[tuple[str, bool]]:
     if verb in ("is", "are") and len(words) >= 3 and words[1] in lx.ARTICLES:
         out.append((" ".join(words[1:]), False))  # "is the local of": "the pub that's the local of it"
         return _finished_forms(phrase, out)
+    if verb in ("is", "are", "was", "were") and len(words) >= 3:
+        # "is drawn off above": a state, no verb to inflect ("the channel that's drawn off above the weir",
+        # "the leat, drawn off above the weir", "the houses which are stacked on top of ...")
+        for copula in ("is", "are", "was", "were"):
+            out.extend(((f"{copula} {rest}", False), (f"that {copula} {rest}", False), (f"which {copula} {rest}", False)))
+        out.extend(((f"that {rest}", False), (rest, False)))
+        return _finished_forms(phrase, out)
     if not (len(words) == 1 or verb.endswith("s") or plain_verb) or _direction_word(verb) or verb.endswith("ss"):
         return _finished_forms(phrase, out)
     stems = {verb[:-1]} if verb.endswith("s") and len(verb) > 3 else {verb}
@@ -7663,7 +7934,61 @@ def _finished_forms(phrase: str, out: list[tuple[str, bool]]) -> list[tuple[str,
     _with_group_inverses(phrase, out)
     _with_article_before_noun(phrase, out)
     _with_other_preposition(phrase, out)
+    _with_receiver_forms(phrase, out)
+    _with_shared_its(phrase, out)
+    _with_verb_synonyms(out)
+    _with_dropped_to(phrase, out)
     return list(dict.fromkeys(out))
+
+
+def _with_dropped_to(phrase: str, out: list[tuple[str, bool]]) -> None:
+    """"wherever the gravel park sends its shuttle buses": "sends its shuttle buses to" with its "to" left
+    unsaid, as "wherever" asks where to. Only for a verb, an object noun phrase and "to"."""
+    words = phrase.split()
+    if len(words) < 4 or words[-1] != "to" or not words[0].endswith("s") or words[0].endswith("ss") \
+            or words[1] not in ("its", "their", "the", "a") or words[-2] in lx.NOT_VERBS | lx.RELATION_ENDINGS:
+        return
+    out.extend((form[:-3], inv) for form, inv in list(out) if form.endswith(" to") and not inv and len(form.split()) >= 4)
+
+
+def _with_verb_synonyms(out: list[tuple[str, bool]]) -> None:
+    """"keeps the padlock keys to" said "whoever holds the padlock keys for the gas cage": verbs of having that
+    say the same of a relation's noun."""
+    for form, inv in list(out):
+        ws = form.split()
+        at = 1 if ws[:1] == ["that"] else 0
+        if len(ws) - at >= 3 and ws[at] in lx.HOLDING_VERBS and ws[at + 1] in lx.ARTICLES | {"its", "their"}:
+            out.extend((" ".join(ws[:at] + [other] + ws[at + 1:]), inv) for other in lx.HOLDING_VERBS[ws[at]])
+
+
+def _with_shared_its(phrase: str, out: list[tuple[str, bool]]) -> None:
+    """"shares_a_vestry_wall_with" said of the place before: "the hall that shares its vestry wall"."""
+    words = phrase.split()
+    if len(words) < 4 or words[-1] != "with" or words[1] not in ("a", "the") or not words[0].startswith("share"):
+        return
+    noun = " ".join(words[2:-1])
+    for verb in ("shares", "share", "sharing"):
+        out.append((f"{verb} its {noun}", False))
+        out.append((f"that {verb} its {noun}", False))
+
+
+def _with_receiver_forms(phrase: str, out: list[tuple[str, bool]]) -> None:
+    """"pipes_gas_to" said from the other end: "the hut that gets its gas from the compound", "wherever the
+    clubhouse gets its gas from" (what one place sends the other gets from it: the relation read backwards)."""
+    words = phrase.split()
+    if words[:1] and words[0] in ("the", "a"):
+        return
+    if len(words) == 4 and words[1] in lx.ARTICLES:
+        words = [words[0], words[2], words[3]]
+    if len(words) != 3 or words[2] not in ("to", "for", "into") or not words[0].endswith("s") \
+            or words[0].endswith("ss") or not words[1].isalpha() or len(words[1]) < 3 \
+            or words[1] in lx.NOT_VERBS | lx.ARTICLES | lx.RELATION_ENDINGS | lx.DETERMINERS:
+        return
+    noun = words[1]
+    for verb in ("gets", "get", "getting", "got", "takes", "take", "taking", "draws", "draw", "drawing"):
+        for det in ("its", "their", "the", ""):
+            out.append((" ".join(w for w in (verb, det, noun, "from") if w), True))
+            out.append((" ".join(w for w in ("that", verb, det, noun, "from") if w), True))
 
 
 def _with_group_inverses(phrase: str, out: list[tuple[str, bool]]) -> None:
@@ -7678,7 +8003,8 @@ def _with_group_inverses(phrase: str, out: list[tuple[str, bool]]) -> None:
 def _with_article_before_noun(phrase: str, out: list[tuple[str, bool]]) -> None:
     """"pumps_diesel_for" said "the pontoon that pumps the diesel for ...": an article before the relation's noun."""
     words = phrase.split()
-    if len(words) >= 3 and words[1] not in lx.ARTICLES | lx.NOT_VERBS | lx.RELATION_ENDINGS \
+    if len(words) >= 3 and words[0] not in ("is", "are", "was", "were") \
+            and words[1] not in lx.ARTICLES | lx.NOT_VERBS | lx.RELATION_ENDINGS \
             and words[-1] in lx.RELATION_ENDINGS | {"for", "of", "into"} and words[1].isalpha() \
             and not words[1].endswith(("ly", "ing")):
         for form, inv in list(out):

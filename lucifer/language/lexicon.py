@@ -138,6 +138,17 @@ rest point|rest area|letting people in|free tea|free food|bedding down|bedded do
 can stay put|can stay where they are|stay put in there|no risk there|is no risk|s no risk|wait it out|wait it out in|sit it out in|safe to stay|
 """.replace("\n", ""))
 
+_add(DESIRABLE, "dry and sound|welcome to stay|are welcome to stay|settled in the pews|warm spot|a warm spot|"
+               "having soup|opened it up as|opened up as a|")
+_add(DESIRABLE, "for everybody to go to|for everyone to go to|for people to go to|for folk to go to")
+# people sent or taken to a place ("we're sending families there", "so send the evacuees in there")
+_add(DESIRABLE, "|".join(f"{verb} {who} {where}"
+                         for verb in ("send", "sending", "take", "taking", "bring", "bringing", "move", "moving",
+                                      "direct", "directing")
+                         for who in ("families", "everyone", "everybody", "evacuees", "residents", "people", "folk",
+                                     "the families", "the evacuees", "the residents", "the kids", "the children")
+                         for where in ("there", "in there", "up there", "over there")))
+
 _add(CRITICAL, """
 can't get off|cant get off|won't answer|wont answer|can't open the doors|cant open the doors|never came back|
 hasn't come back|hasnt come back|up to his knees|up to her knees|head bleed|query head bleed|can't feel his legs|can't feel her legs|cant feel his legs|cant feel her legs|
@@ -145,7 +156,12 @@ can't feel their legs|come off the ladder|came off the ladder|fallen off the lad
 got it in his eyes|got it in her eyes|in his eyes|in her eyes|very muddled|she's muddled|he's muddled|dehydrated|hasn't had a drink|hasnt had a drink|not had a drink|drowsy and confused|clammy|
 without his insulin|without her insulin|without their insulin|without his medication|without her medication|
 without their medication|without his tablets|without her tablets|shaking and sweating|stuck between floors|
-stuck between two floors|last seen going into|last seen heading into|last seen at|last seen in|last seen near|won't come out|wont come out|refusing to come out|refuses to come out|won't leave|wont leave|refusing to leave|refuses to leave|
+stuck between two floors|last seen going into|last seen heading into|last seen at|last seen in|last seen near|burnt both his|burnt both her|burned both his|burned both her|burnt his arms|burnt her arms|burned his arms|
+burned her arms|burnt his hands|burnt her hands|burned his hands|burned her hands|cannot be reached|can't be reached|
+cant be reached|request lift|requesting a lift|need lifting off|needs lifting off|uses a frame|uses a walking frame|
+uses a zimmer|on a zimmer|can't get hold of my|cant get hold of my|refused to leave|has refused to leave|refused to come out|sat on the roof|sat on his roof|sat on her roof|
+sat on their roof|need the boat|need a boat|needs a boat|has slipped on|slipped on the|ankle gone|ankle's gone|knee gone|knee's gone|done his ankle|done her ankle|done his knee|done her knee|can't lift him|can't lift her|cannot lift him|cannot lift her|cant lift him|cant lift her|can't get him up|
+can't get her up|cannot get him up|cannot get her up|won't come out|wont come out|won't come down|wont come down|refusing to come down|refuses to come down|refusing to come out|refuses to come out|won't leave|wont leave|refusing to leave|refuses to leave|
 swept off his feet|swept off her feet|swept off their feet|hanging on to|hanging onto|
 stretcher needed|need a stretcher|needs a stretcher|stretcher required|stretcher to|
 need to get them out|need hands to get them out|to get them out|can't get them out|cannot get them out|
@@ -255,7 +271,14 @@ NEGATOR_PHRASES = ["no one", "no longer", "not any", "free of", "clear of", "no 
 
 # Hesitations a cancelling phrase may hold ("the fire at the granary is, er, out").
 HESITATIONS = {"uh", "um", "er", "erm", "ah", "eh"}
+# a person addressed by name after a repair word ("no Dad, it's the plank"; "no mate, the other one")
+VOCATIVES = {"dad", "mum", "mam", "mom", "mummy", "daddy", "mate", "love", "son", "pal", "sir", "maam", "boss",
+             "darling", "dear", "guys", "control", "gran", "nan", "grandad", "grandma", "pet", "duck", "hen", "lad",
+             "lads", "bro", "buddy", "chief", "sarge", "skip", "skipper"}
 # Phrases after a hazard cue that cancel it ("the fire is out").
+# A clause right after a cue that takes it back ("they were safe, now they're not")
+NO_LONGER_SO = [("now", "theyre", "not"), ("now", "they", "re", "not"), ("now", "its", "not"), ("now", "it", "isnt"),
+                ("now", "they", "arent"), ("but", "not", "now"), ("not", "now"), ("not", "any", "more"), ("not", "anymore")]
 CANCEL_AFTER = ["aboard now", "is aboard", "now aboard", "on board now", "safely aboard", "not any more", "not anymore", "cleared off", "it's cleared off", "wind's changed", "wind has changed", "that's cleared", "thats cleared", "it's cleared", "dried out", "has dried out",
                 "s dried out", "hasn't got that far", "hasnt got that far", "not got that far", "hasn't got this far", "hasnt got this far",
                 "not got this far", "hasn't reached us", "hasnt reached us", "blowing the other way", "blowing away from", "going the other way", "never reached", "didn't reach", "didnt reach", "hasn't reached", "hasnt reached", "never got to",
@@ -354,6 +377,9 @@ NEUTRAL_PHRASES = ["fire drill", "evacuation drill", "fire practice", "half in t
                    "burnt toast", "burned toast", "burnt food", "burned food",
                    "smoke alarm", "smoke alarms", "smoke machine", "smoke machines", "fog machine", "haze machine", "fire alarm", "fire alarms", "fire exit", "fire escape",
                    "fire brigade", "fire crew", "fire engine", "fire truck", "fire service", "fire department",
+                   "fire control", "fire and rescue", "fire officer", "fire chief", "fire ground commander",
+                   "keeping the smoke off", "keeping the smoke away", "keeps the smoke off", "keeps the smoke away",
+                   "blowing the smoke away", "keeping the water out", "keeps the water out",
                    "fire team", "firefighter", "firefighters", "fire fighter", "fire fighters", "fire hydrant",
                    "cleared off", "it's cleared off", "fire proofed", "fire-proofed", "fireproofed", "fireproof", "fire proof", "fire resistant",
                    "fire's lit", "fire is lit", "fires lit", "lit the fire", "wood burner",
@@ -377,7 +403,8 @@ EXERCISE_OPENING = ("exercise", "exercise")
 EXERCISE_FRAME = ["this is an exercise", "this is a drill", "training scenario", "training message", "exercise scenario",
                   "exercise only", "simulated casualty", "simulated casualties", "no actual persons", "no real persons",
                   "nothing is actually happening", "nothing's actually happening", "exercise ends", "end of exercise",
-                  "endex"]
+                  "endex", "exercise planned for", "exercise is cancelled", "exercise has been cancelled",
+                  "exercise planned", "drill planned for", "drill is cancelled"]
 
 # A warning or report taken back by name ("please withdraw my earlier warning"): a false alarm that withdraws
 # the whole report before it.
@@ -414,13 +441,16 @@ FALSE_ALARM = ["false alarm", "scratch their earlier call", "scratch my earlier 
                "nothing's fallen yet", "nothing has fallen yet", "nothing's come down yet", "nothing has come down yet", "it's all sorted", "garden bonfire", "was somebody's", "is rubbish", "is nonsense",
                "nothing happening at", "there's nothing there", "nothing there at all", "that was ages ago", "was just asleep",
                "nothing doing there", "disregard the man", "disregard the woman", "disregard the casualty", "that was wrong it was a", "that was wrong it was just",
+               "been checked it was the", "been checked it was just", "been checked it was only", "checked it was the",
+               "checked it was just", "checked it was only",
                *_WITHDRAWN_WARNINGS]
 # ... unless the words after them go on to say what there is none of ("there's nothing left of it", "it's nothing
 # serious", "there's nothing we can do")
 FALSE_ALARM_NOT_BEFORE = {"left", "serious", "major", "like", "but", "we", "i", "you", "they", "else", "more", "to",
                           "much", "stopping", "holding", "between", "in", "on", "at"}
 # ... of which these say what the thing said before them was: what follows them is not denied
-DISMISSED_BEFORE = {"it's a bonfire", "its a bonfire", "it's just a bonfire", "it's only a bonfire", "it's a barbecue",
+DISMISSED_BEFORE = {"been checked it was the", "been checked it was just", "been checked it was only", "checked it was the",
+                    "checked it was just", "checked it was only", "it's a bonfire", "its a bonfire", "it's just a bonfire", "it's only a bonfire", "it's a barbecue",
                     "its a barbecue", "is stood down", "been stood down", "was stood down", "are stood down", "was a mannequin",
                     "was a dummy", "was a training dummy", "was a barbecue", "was a bbq", "was a bonfire",
                     "was someone's barbecue"}
@@ -449,7 +479,8 @@ STRONG_REPAIR = [
     "change of plan", "change of plans", "plans have changed", "withdrawing that", "i'm withdrawing that",
     "i withdraw that", "i take that back", "tell a lie", "wrong block", "caller corrects", "caller corrected",
     "caller correcting", "caller now says", "he corrects", "she corrects", "they correct", "crew corrects",
-    "she's right", "he's right", "you're right", "they're right", "second voice",
+    "she's right", "he's right", "you're right", "they're right", "second voice", "voice behind",
+    "voice in background", "voice in the background", "background voice", "another voice",
     "i'm all turned round", "i'm all turned around", "all turned round", "all turned around", "i got confused",
     "i'm confused", "got my bearings wrong", "i beg your pardon", "beg your pardon", "pardon me",
 ]
@@ -555,7 +586,7 @@ LINK_SYNONYMS = [{"suppl", "feed", "power", "serv"}, {"pair", "twin", "sister", 
                  {"moor", "tied", "tie", "berth"}, {"foot", "bottom"}, {"vent", "exhaust"},
                  {"monitor", "watch", "observ", "surveil"}]
 # Words of a relation name that are too common to identify it on their own in a report.
-RELATION_NAME_STOPWORDS = {"by", "to", "of", "with", "onto", "on", "into", "from", "the", "a", "an", "is", "and", "in",
+RELATION_NAME_STOPWORDS = {"busy", "for", "by", "to", "of", "with", "onto", "on", "into", "from", "the", "a", "an", "is", "and", "in",
                            "at", "that", "its", "it", "side", "end", "other", "way", "same", "far", "near", "up",
                            "down", "over", "across", "back", "out", "off", "through", "under", "above", "below",
                            "next", "behind", "front", "beside", "along", "round", "around", "opposite", "facing",
@@ -576,6 +607,19 @@ INVERSE_VERBS = {"sits", "sit", "is", "s", "stands", "stand", "lies", "lie", "lo
 # Parts of any premises: after a report opens on where the speaker is, "the yard" is that place's yard.
 PREMISES_PARTS = {"yard", "courtyard", "forecourt", "garden", "gardens", "grounds", "lawn", "playground", "kitchen",
                   "cellar", "carpark"}
+# Words of harm done whose kind is that of what did it ("damaged by the blast", "cracked in the quake")
+HARM_WORDS = {"damaged", "damage", "cracked", "wrecked", "hit", "destroyed", "flattened", "gutted", "smashed",
+              "shattered", "broken", "weakened", "struck", "affected", "battered", "holed"}
+# Vehicles: things, not places, that a relation word may follow ("a car swept against the arch")
+VEHICLE_WORDS = {"car", "cars", "van", "vans", "lorry", "lorries", "bus", "truck", "trucks", "vehicle", "vehicles",
+                 "tractor", "boat", "boats", "coach", "taxi", "ambulance", "bike", "motorbike"}
+# Bodies of water a flood brings in ("it's got the river in the bar")
+WATER_BODIES = {"river", "sea", "tide", "brook", "beck", "burn", "stream", "canal", "lake", "loch", "mere", "creek"}
+# Which one of a row or group ("the end one", "the first one")
+MEMBER_WORDS = {"end", "first", "last", "second", "third", "middle", "corner", "nearest", "far", "top", "bottom"}
+# Rooms of any premises, said after where a crew is ("we're at the halt and the waiting room's ...")
+PREMISES_ROOMS = {("waiting", "room"), ("staff", "room"), ("function", "room"), ("back", "room"), ("main", "hall"),
+                  ("ground", "floor"), ("top", "floor"), ("first", "floor")}
 # Words that open a clause with a subject of its own ("..., we've got smoke").
 CLAUSE_SUBJECTS = {"i", "im", "ive", "we", "were", "weve", "he", "hes", "she", "shes", "they", "theyre", "theyve",
                    "it", "its", "there", "theres", "you", "youre", "everyone", "someone", "nobody"}
@@ -607,7 +651,7 @@ GENERIC_HEADS = {
     "park", "field", "ground", "grounds", "point", "thing", "bit", "side", "corner", "room",
     "space", "green", "lawn", "garden", "gardens", "road", "street", "lane", "alley", "terrace", "plot", "land", "apartments",
     "flats", "bay", "wing", "hotel", "inn", "library", "hospital", "quarter", "section", "zone", "ones",
-    "neighbour", "neighbor", "door", "location", "address", "greenspace", "premise", "whatever", "wherever", "whichever", "what", "works", "work",
+    "neighbour", "neighbor", "door", "location", "address", "greenspace", "premise", "whatever", "wherever", "whichever", "whoever", "what", "works", "work",
     "row", "parade", "arcade", "kiosk", "stall", "lodge", "chapel", "compartment", "tent", "deck", "campsite",
 }
 
@@ -673,11 +717,17 @@ MODIFIED_BY = {"team", "crew", "unit", "squad", "staff", "manager", "owner", "wo
                "kids", "kid", "children", "child", "pupils", "pupil"}
 
 # Words after a place that name a part of it, not another thing ("the surgery car park").
-PART_OF_PLACE = {("car", "park"), ("car", "parks")}
+PART_OF_PLACE = {("car", "park"), ("car", "parks"), ("crew", "room"), ("staff", "room"), ("team", "room"),
+                 ("staff", "kitchen"), ("staff", "canteen"), ("staff", "entrance"), ("crew", "quarters"),
+                 ("staff", "quarters"), ("side", "door"), ("side", "entrance"), ("side", "gate"), ("side", "room")}
 
 # Relation phrases that may leave their anchor implicit ("the building next door").
 IMPLICIT_ANCHOR = {("next", "door"), ("next", "door", "to"), ("opposite",), ("across", "the", "road"),
                    ("across", "the", "street"), ("over", "the", "road"), ("over", "the", "way"), ("behind",)}
+
+# Ways to a place, and the words that lead them there ("the road down to the boatyard", "the track out to the farm")
+ROUTE_HEADS = {"road", "lane", "track", "path", "way", "route", "street", "drive", "driveway", "footpath", "approach"}
+ROUTE_LINKS = {"down", "up", "out", "over", "along", "round", "across", "to", "into", "onto", "towards", "toward"}
 
 # Multi-word coordinators that separate claims like "and" does.
 COORDINATOR_PHRASES = ["as well as", "along with", "together with", "and also", "and then", "because", "cos", "coz"]
@@ -713,7 +763,10 @@ TRANSIT = ["people in off", "taking people in off", "in off the", "walked up fro
            "keep the public back from", "keep people back from", "keep everyone back from", "keep them back from",
            "got everyone out onto", "everyone out onto", "got everyone out into", "got them out onto",
            "driven round to", "being driven to", "being driven round to", "driven to", "got everybody out of",
-           "got everyone out of", "everybody out of", "got them all out of"]
+           "got everyone out of", "everybody out of", "got them all out of",
+           "well away from", "far from", "a long way from", "miles from", "coming out through", "came out through",
+           "come out through", "coming in through", "came in through", "come in through", "drove in through",
+           "driving in through", "drove out through"]
 
 # Head nouns of a description of a landmark ("the building with the two engine bays").
 DESCRIPTION_HEADS = {"building", "place", "shop", "store", "tower", "block", "house", "hall", "premises", "structure",
@@ -818,12 +871,16 @@ PART_NOUNS = {"side", "wall", "end", "rear", "corner", "gable", "flank"}
 STOREY_WORDS = {"floor", "roof", "basement", "cellar", "storey", "attic", "loft", "level"}
 
 # Words for people: "<person> collapsed" is a casualty, not a structural collapse.
+# Who a speaker's label names before where they are ("Marshal at post nine: ...")
+ROLE_LABELS = {"marshal", "steward", "warden", "ranger", "paramedic", "crew", "team", "unit", "lifeguard", "keeper",
+               "supervisor", "controller", "dispatcher", "sergeant", "constable", "inspector", "engineer", "security"}
 PERSON_NOUNS = ["man", "woman", "person", "someone", "somebody", "firefighter", "child", "kid", "he", "she",
                 "receptionist", "owner", "manager", "caller", "mother", "father", "dad", "mum", "wife", "husband",
                 "son", "daughter", "baby", "pensioner", "visitor", "cleaner", "guard", "volunteer", "medic",
                 "patient", "resident", "worker", "officer", "lady", "guy", "bloke", "fella", "casualty", "boy", "girl",
                 "customer", "driver", "student", "teacher", "nurse", "someone's", "somebody's", "chap", "lad", "roofer",
-                "builder", "labourer", "painter", "climber"]
+                "builder", "labourer", "painter", "climber", "mechanic", "spectator", "camper", "walker", "rider",
+                "technician"]
 for _p in PERSON_NOUNS:
     ROLE_CUES[f"{_p} fallen through"] = CRITICAL  # ("a worker's fallen through the roof"; a roof that fell is none)
     ROLE_CUES[f"{_p} has fallen through"] = CRITICAL
@@ -1000,7 +1057,8 @@ DANGER_KINDS: dict[str, list[str]] = {
                  "spilled", "spilt", "fuel leak", "oil spill", "fuel spill", "petrol spill", "diesel spill",
                  "petrol leak", "diesel leak", "leaking fuel", "fuel pouring", "pouring fuel", "diesel slick",
                  "slick", "fuel slick", "petrol all over", "fuel all over", "diesel all over", "oil all over",
-                 "petrol everywhere", "diesel everywhere", "fuel everywhere", "swimming in oil", "swimming in diesel", "swimming in fuel",
+                 "petrol everywhere", "diesel everywhere", "fuel everywhere", "fuel running", "fuel's running", "fuel is running",
+                 "petrol running", "diesel running", "fuel pouring", "fuel's pouring", "diesel pouring", "petrol pouring", "swimming in oil", "swimming in diesel", "swimming in fuel",
                  "swimming in petrol", "oil everywhere", "oil slick", "chemical leak", "chemical leaks", "chemical spill",
                  "chemical fumes", "tanker leak", "hazchem spill", "seeping in", "smells of oil", "smell of oil",
                  "smells of diesel", "smell of diesel", "smells of petrol", "smell of petrol", "smells of chemicals",
@@ -1028,12 +1086,13 @@ DANGER_KINDS: dict[str, list[str]] = {
                  "stonework falling", "frayed", "fraying", "cable's frayed", "derailed", "come off its rails",
                  "came off its rails", "come off the rails", "came off the rails", "off its rails", "sheared off", "keystone's come out", "arch has dropped", "arch's dropped",
                  "off its supports", "swept clean off", "a lean on it", "got a lean on", "damaged", "badly damaged",
-                 "heavily damaged", "storm damaged", "storm-damaged"],
+                 "heavily damaged", "storm damaged", "storm-damaged", "gone completely", "completely gone", "basically gone"],
     "fallen": ["has fallen into", "have fallen into", "fallen into the", "rubble", "wall down", "walls down",
                "roof's in", "roof is in", "roof's gone", "roof has gone", "roof's off", "shedding bricks",
                "shedding slates", "masonry falling", "falling masonry", "fallen masonry", "wall's fallen",
                "wall has fallen", "walls have fallen", "roof's fallen", "roof has fallen", "ceiling's fallen",
                "ceiling has fallen", "chimney's fallen", "chimney has fallen", "lost their roofs", "lost their roof", "lost half its roof", "lost its roof", "lost the roof",
+               "lost its whole roof", "lost the whole roof", "lost their whole roof",
                "lost half the roof", "lost part of its roof", "lost part of the roof", "roof down", "roof is down", "roof's down", "ceiling's down",
                "ceiling down", "tree through the roof", "tree on it", "the tree on it", "tree on the roof",
                "roof fell on", "fell on them", "came down on them", "come down on them", "collapsed on them",
@@ -1050,7 +1109,8 @@ DANGER_KINDS: dict[str, list[str]] = {
                "subsided into", "subsiding into", "subsidence", "has slipped", "face has slipped", "being undercut",
                "undercut", "being undermined", "undermined", "mud", "mud and rocks", "mud everywhere",
                "full of mud", "rocks came down", "rocks have come down", "rockfall", "rock fall", "boulders",
-               "coming away", "rocks rolling down", "rocks coming down", "rocks falling", "rocks tumbling"],
+               "coming away", "rocks rolling down", "rocks coming down", "rocks falling", "rocks tumbling", "ground's heaving", "ground is heaving", "ground heaving", "dropping away", "dropped away", "falling away", "fallen away", "crumbling away", "crumbled away", "slid towards the edge", "slid to the edge", "slid towards the cliff", "sliding towards the edge",
+               "slipping towards the edge", "teetering on the edge", "teetering over the edge"],
     "water": ["water is come inside", "water is come in", "water came inside", "water come inside", "water has come inside", "until the knee", "up to the knee", "up to the knees", "up to my knees", "up to our knees", "sea's come over", "sea's come right over", "sea has come over", "sea came over", "sea's pouring in",
               "sea pouring in", "sea's coming in", "sea coming in", "sea's come in", "sea has come in", "under a metre of water",
               "a metre of water", "metres of water", "full of seawater", "seawater", "awash", "washout", "washed over",
@@ -1064,7 +1124,7 @@ DANGER_KINDS: dict[str, list[str]] = {
               "up to the windowsills", "overtopping", "burst its banks", "waterlogged", "water logged", "flooded out",
               "water everywhere", "water coming over", "taking on water", "taking water", "foot of water",
               "feet of water", "under a foot of water", "water coming up", "water coming in", "water's coming in",
-              "coming in under the door", "coming in under the doors", "washed away", "water coming into",
+              "coming in under the door", "coming in under the doors", "coming under the door", "coming under the doors", "washed away", "water coming into",
               "water's coming into", "water is coming into", "there's water in",
               "theres water in", "water pouring in", "water's pouring in", "water is pouring in",
               "water's still pouring", "water still pouring in", "water is come in", "full of water",
@@ -1089,18 +1149,30 @@ DANGER_KINDS: dict[str, list[str]] = {
               # (added last: the kind's first twelve phrases are what MiniLM reads where no description names it)
               "water pooling", "water's pooling", "got the sea in", "sea's in", "sea in the house", "taking water",
               "taking in water", "under the tide", "waves breaking over", "waves breaking clean over",
-              "waves coming over", "over the bonnet", "over the bonnets"],
+              "waves coming over", "over the bonnet", "over the bonnets", "got the water", "took the water", "gushing out", "gushing everywhere", "spewing everywhere", "spewing water",
+              "spewing out", "bubbling up through", "water's bubbling up", "water bubbling up", "nearly to the roof with water",
+              "to the roof with water", "a proper lake", "it's a lake", "is a lake", "a lake now", "like a lake", "under a metre of sea", "metre of sea", "foot of sea", "feet of sea",
+              "running clean over", "running right over", "tide's running over", "tide running over", "tides right over",
+              "tide's right over", "tide right over", "tide's over the", "water was coming in", "water were coming in",
+              "lifting off their cradles", "ripped clean off", "water to the first floor", "water to the ground floor",
+              "water up to the first floor", "has water to the", "over its banks", "over the banks", "over its bank", "got the river in",
+              "river in the bar", "river in the house", "water's come into", "water has come into", "water came into",
+              "water's got into", "water has got into", "gone completely under", "completely under", "brimming over", "river's come right over", "river's come over",
+              "river has come over", "river come over", "water's come right over", "water's come over",
+              "water has come over",
+              "floor is under", "whole floor's under"],
     "current": ["strong current", "fast water", "foot of fast water", "feet of fast water", "fierce current", "fast current", "swift current", "rip current", "undertow",
                 "current's ripping", "current is ripping", "current ripping", "fast flowing water",
                 "fast-flowing water", "ripping through"],
     "electric": ["live cabling", "live cable", "live cables", "floor's live", "floor is live", "live wire", "live wires", "power line down", "power lines down", "downed lines", "sparking",
-                 "sparks", "sparks everywhere", "electrified", "arcing", "electrical hazard", "exposed wiring"],
+                 "sparks", "sparks everywhere", "electrified", "arcing", "electrical hazard", "exposed wiring", "blue flashes", "hear it crackling", "crackling and sparking"],
     # glass and stone coming down ("Brackley's range has lost every pane"; "the west gable's still dropping stones")
     "breakage": ["lost every pane", "lost all its panes", "lost all its glass", "lost its glass", "panes gone",
                  "panes out", "panes smashed", "panes have gone", "shattered", "glass has shattered", "dropping stones",
                  "dropping slates", "dropping masonry"],
     "storm": ["storm damage", "wind damage", "storm damaged", "windthrow", "windthrown", "uprooted", "blown down",
-              "lifted clean off"],
+              "lifted clean off", "window's blown in", "windows blown in", "window blown in", "windows have blown in", "window has blown in",
+              "windows are blown in"],
     "access": ["impassable", "blocked off", "no access", "no vehicle access", "no way in", "no way through",
                "no way onto", "inaccessible", "not passable", "no through route", "can't get in", "cannot get in",
                "can't get into", "cannot get into", "can't get through", "cannot get through", "can't reach",
@@ -1153,7 +1225,7 @@ AREA_HEADS = {"square", "green", "street", "precinct", "quay", "quayside", "mark
               "promenade", "seafront", "front", "estate", "high"}
 
 # Who may be the subject of "came down from": people moving from a place, no thing fallen from it.
-MOVING_PEOPLE = LAY_PERSONS | {"who", "us", "we", "they", "everyone", "everybody", "folk"}
+MOVING_PEOPLE = LAY_PERSONS | {"who", "us", "we", "they", "everyone", "everybody", "folk", "anyone", "anybody"}
 
 # What people do when they need help ("people on the balconies shouting").
 DISTRESS_VERBS = {"shouting", "yelling", "screaming", "waving", "crying", "banging", "calling", "hammering"}
@@ -1269,7 +1341,13 @@ ABBREVIATIONS = {"bldg": "building", "bldgs": "building", "nxt": "next", "opp": 
 
 # Free relatives that head a description of a place: "whatever the creche looks out onto", "wherever the
 # store takes its deliveries through"
-WHATEVER = frozenset({"whatever", "wherever", "whichever"})
+# Words for an event that a landmark may also be called ("re the slip at the cliff path": the landslip there,
+# not the slipway nicknamed "the slip")
+EVENT_NOUNS = {"slip", "fall", "slide", "blaze", "spill", "leak", "burst", "collapse", "flood", "blast", "fire"}
+WHATEVER = frozenset({"whatever", "wherever", "whichever", "whoever"})
+# Verbs of having, each said for the others in a relation's name ("keeps the keys to" / "holds the keys to")
+HOLDING_VERBS = {"keeps": ("holds", "has"), "holds": ("keeps", "has"), "keep": ("hold", "have"), "hold": ("keep", "have"),
+                 "keeping": ("holding", "having"), "holding": ("keeping", "having")}
 
 # Vague heads a name's first word can carry instead of the name's own head: "the generator place" (not "building" or
 # "one": "the ambulance building" can be a description of another place, found by the relation passes)
@@ -1317,13 +1395,14 @@ DANGER_KIND_EXTRA: dict[str, list[str]] = {
               "off its hinges", "pulled up by the roots", "open to the sky", "rain's coming in", "rain is coming in",
               "rain coming straight in", "rain's coming straight in", "rain pouring in", "rain is pouring"],
     "fire": ["flare-up", "flare up", "flared up", "flaring up", "burning debris", "roof is going up", "roof's going up", "roofs going up", "thatch is going up", "thatch's going up",
-             "thatch going up"],
+             "thatch going up", "embers are landing", "embers landing", "embers are falling", "embers falling", "embers coming down"],
     "electric": ["wire is hot", "wires are hot", "line is hot", "lines are hot", "wire as hot", "wires as hot",
                  "conductors are on", "conductor down", "conductors down", "feeder is down", "feeder down", "lines down",
                  "line down", "lines are down", "line is down"],
     "gas": ["rotten egg", "rotten eggs", "rotten-egg smell", "rotten egg smell", "eggy smell", "smell like eggs", "smells like eggs", "smell of eggs", "smells of eggs", "smell like rotten eggs", "there's a hiss", "a loud hiss", "hissing out of", "h2s", "so2", "co2", "sulphur dioxide", "hydrogen sulphide", "carbon dioxide", "methane", "methane leak", "natural gas", "co detected", "co reading", "co readings", "co levels", "high co", "carbon monoxide", "carbon monoxide alarm", "co alarm"],
     "collapse": ["roof's coming in", "roof is coming in", "ceiling's coming in", "ceiling is coming in", "coming off in chunks", "coming away in chunks", "falling off in chunks", "in chunks", "breaking up", "is breaking up", "coming adrift", "come adrift", "broken adrift", "peeling off", "coming off in slabs", "coming away in slabs", "roof fall on", "roof fall in", "roof has split", "roof split", "is bending", "it's bending", "is fall down", "has fall down", "fallen down"],
-    "water": ["tide's coming straight through", "tide's coming through", "tide coming through", "sea's coming through", "one sheet of water", "a sheet of water", "sheet of water", "washing out", "washing away", "logs floating", "floating away",
+    "water": ["tide's coming straight through", "tide's coming through", "tide coming through", "sea's coming through", "one sheet of water", "a sheet of water", "sheet of water", "washing out", "washing away", "logs floating", "floating away", "floating off the floor", "floating about", "floating around",
+              "furniture floating", "chairs floating", "cars floating",
               "water coming through", "water's coming through", "water is coming through", "seeping through the walls",
               "water at the front door", "water at the door", "water's at the door", "water's at the front door",
               "water at the windows", "water's at the windows", "water is at the windows", "water's right round",

@@ -33,6 +33,9 @@ ABBREVIATIONS = {"stn": "station", "bldg": "building", "opp": "opposite", "ppl":
                  "apt": "apartment", "gdn": "garden", "corr": "correction", "cas": "casualty", "invlvd": "involved",
                  "consc": "conscious", "uncon": "unconscious", "uncons": "unconscious", "evac": "evacuated",
                  "crk": "crack", "chan": "channel", "est": "established",
+                 # texting ("sorry ment the shower blok", "send sum1 asap")
+                 "ment": "meant", "smel": "smell", "realy": "really", "sum1": "someone", "some1": "someone",
+                 "any1": "anyone", "every1": "everyone", "evry1": "everyone",
                  "saint": "st"}  # ("Saint Brendan" reads as a KB's "st brendan")
 # Shorthand written with a full stop that does not end the sentence before a lower-case word.
 _PERIOD_ABBREVIATIONS = set(ABBREVIATIONS) | {"est", "st", "vs", "etc"}
