@@ -3272,6 +3272,18 @@ def test_dev52_phenomena(kb_analyzers, kb, text, expected):
     ("new_town", "cant get out of the zodiac the fire doors r iced shut theres water everywhere on the stairs",
      [("zodiac nightclub", "hurt_or_held"), ("zodiac nightclub", "slosh_and_rime")]),
     ("tidal_isle", "the casualty-in-the-refuge-box exercise planned for Saturday is cancelled because of the storm", []),
+    # a hesitation inside a name ("the genny sh- shed"); "down into" for "down onto"; a repair's "it's the X that"
+    ("tidal_isle", "c-c-control, the, the genny sh- shed's sparking, proper sparking off the cable",
+     [("generator shed", "ember_and_arc")]),
+    ("tidal_isle", "the water the fish pier curls round, it's got a whole boat sunk in it, and the station that hauls "
+                   "its boat down into it, they've got the crew room open, dry",
+     [("harbour basin", "salt_surge"), ("lifeboat house", "dry_berth")]),
+    ("walled_city", "Kitty's is on fire! — [second voice] no mum, that's the lanterns on the water behind it, look, "
+                    "it's the wonky house that's burning", [("pilgrims' rest inn", "ember_and_reek")]),
+    ("new_town", "Gas escape at the Mill Lane gas governor. Keep everybody back fifty metres, no naked flames, no phones.",
+     [("mill lane gas governor", "scorch_and_shatter")]),
+    ("tidal_isle", "the stores is flooded — wait, no, what am I saying, it's not flooded, they've opened it up as a warm "
+                   "spot, Quayle's, folk are in there having soup", [("ebba stores", "dry_berth")]),
     ("tidal_isle", "the chippy is full of smoke and theres a strong smell of gas all down the back yard of the pink",
      [("neptune's fish bar", "ember_and_arc"), ("sea pink inn", "ember_and_arc")]),
     # "shares its vestry wall": whose wall is the place said before; "we've opened X as": the speaker's deed

@@ -23,7 +23,7 @@ import difflib
 import functools
 import re
 import threading
-from collections.abc import Callable, Iterable, Iterator
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from dataclasses import dataclass, field, replace
 from typing import Literal
 
@@ -154,7 +154,8 @@ class ReportAnalyzer:
         self.embedder = embedder
         # one call at a time: the stages keep per-call scratch state on the instance
         self._call_lock = threading.RLock()
-        self._places: PhraseMatcher[str] = PhraseMatcher()
+        # (a hesitation inside a name is skipped: "the genny sh- shed", "the pumping, er, station")
+        self._places: PhraseMatcher[str] = PhraseMatcher(lx.HESITATIONS)
         self._needs_article: set[tuple[str, ...]] = set()  # "the tower": an alias written with its article
         plain: set[tuple[str, ...]] = set()
         keys = {norm_phrase(f) for lm in kb.landmarks for f in lm.surface_forms}
@@ -3846,7 +3847,7 @@ class ReportAnalyzer:
         return any(self._cues.match_at(norms, k) is not None for k in range(a, b))
 
     def _called_station(self, toks: Tokens, norms: tuple[str, ...], p: PlaceMention,
-                        places: list[PlaceMention] = ()) -> bool:  # type: ignore[assignment]
+                        places: Sequence[PlaceMention] = ()) -> bool:
         """"Red Watch to TCC, we're at the east portal": a call sign, "to", the station called, a pause.
         Also the station that calls everyone ("Race Control to all posts: ..."): a broadcast, said of others."""
         a = p.start_tok
@@ -4271,7 +4272,7 @@ class ReportAnalyzer:
                           key=lambda p: p.start_tok, default=None)
         first_cue = min(((ca, cb) for ca, cb in cue_spans if b <= ca < end), default=None)
         if first_place is None and first_cue is None:
-            return None
+            return "place" if ex.markers[k][2] and self._cleft_after(ex, norms, b, end) is not None else None
         if first_cue is None or (first_place is not None and first_place.start_tok < first_cue[0]):
             return "place"
         if first_place is not None:
@@ -4286,6 +4287,15 @@ class ReportAnalyzer:
                                                         and any(w in lx.PREPOSITIONS for w in between))):
                 return "full"
         return "cue"
+
+    @staticmethod
+    def _cleft_after(ex: Extraction, norms: tuple[str, ...], b: int, end: int) -> PlaceMention | None:
+        """The place of an "it's the X that ..." later in the sentence of a repair that names none at once."""
+        return next((q for q in sorted(ex.places, key=lambda q: q.start_tok)
+                     if q.status == "active" and end <= q.start_tok <= b + 25
+                     and ex.tokens.sentence_of[q.start_tok] == ex.tokens.sentence_of[b - 1]
+                     and norms[max(0, q.start_tok - 2):q.start_tok] == ("its", "the")
+                     and norms[q.end_tok:q.end_tok + 1] in (("that",), ("thats",), ("which",))), None)
 
     def _has_content(self, norms: tuple[str, ...], a: int, b: int) -> bool:
         return any(self._cues.match_at(norms, i) is not None for i in range(a, min(b, a + 6)))
@@ -4317,6 +4327,10 @@ class ReportAnalyzer:
             if said_of is not None and all(q.start_tok > said_of for q in after):
                 continue  # "no, scrap what I said about the cottage, water's just come in": that place's word withdrawn,
                 # not the place just before the marker
+            if not after and _strong and (cleft := self._cleft_after(ex, norms, b, end)) is not None:
+                # "no mum, that's the lanterns on the water behind it, look, it's the wonky house that's burning":
+                # what the repair says was meant, said as "it's the X that ..." later in the sentence
+                after = [cleft]
             if not after:
                 # "belay that, in the mill — the mill": the new place was restarted; its repeat stands in
                 restarted = [p for p in ex.places if b <= p.start_tok < end and p.reason.startswith("restarted")]
@@ -8018,6 +8032,11 @@ def _with_other_preposition(phrase: str, out: list[tuple[str, bool]]) -> None:
     """"holds the spare keys for" said "holding the spare keys to": a noun's "for" and "to" name the same object
     ("is the local of" said "the local for": a noun after an article takes "of" and "for" alike)."""
     words = phrase.split()
+    if len(words) >= 3 and words[-1] in ("onto", "into") and words[-2] in ("down", "up", "out", "back"):
+        other = "into" if words[-1] == "onto" else "onto"  # ("hauls its boat down into it" for "down onto")
+        out.extend((f"{form[:-len(words[-1])]}{other}", inv) for form, inv in list(out)
+                   if form.endswith(f" {words[-1]}") and len(form.split()) >= 3)
+        return
     if len(words) >= 3 and words[-1] in ("for", "to", "of") and words[-2] not in lx.ARTICLES \
             and words[-2] not in lx.NOT_VERBS and (words[-1] != "of" or words[-3] in lx.ARTICLES):
         others = {"for": ["to"], "to": ["for"], "of": ["for"]}[words[-1]]

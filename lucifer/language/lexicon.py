@@ -138,7 +138,7 @@ rest point|rest area|letting people in|free tea|free food|bedding down|bedded do
 can stay put|can stay where they are|stay put in there|no risk there|is no risk|s no risk|wait it out|wait it out in|sit it out in|safe to stay|
 """.replace("\n", ""))
 
-_add(DESIRABLE, "dry and sound|welcome to stay|are welcome to stay|settled in the pews|warm spot|a warm spot|"
+_add(DESIRABLE, "open, dry|open dry|crew room open|got the crew room open|dry and sound|welcome to stay|are welcome to stay|settled in the pews|warm spot|a warm spot|"
                "having soup|opened it up as|opened up as a|")
 _add(DESIRABLE, "for everybody to go to|for everyone to go to|for people to go to|for folk to go to")
 # people sent or taken to a place ("we're sending families there", "so send the evacuees in there")
@@ -156,7 +156,8 @@ can't feel their legs|come off the ladder|came off the ladder|fallen off the lad
 got it in his eyes|got it in her eyes|in his eyes|in her eyes|very muddled|she's muddled|he's muddled|dehydrated|hasn't had a drink|hasnt had a drink|not had a drink|drowsy and confused|clammy|
 without his insulin|without her insulin|without their insulin|without his medication|without her medication|
 without their medication|without his tablets|without her tablets|shaking and sweating|stuck between floors|
-stuck between two floors|last seen going into|last seen heading into|last seen at|last seen in|last seen near|burnt both his|burnt both her|burned both his|burned both her|burnt his arms|burnt her arms|burned his arms|
+stuck between two floors|last seen going into|last seen heading into|last seen at|last seen in|last seen near|waving a torch|waving a light|up on its roof|up on the car roof|on top of the car|on the roof of the car|
+burnt both his|burnt both her|burned both his|burned both her|burnt his arms|burnt her arms|burned his arms|
 burned her arms|burnt his hands|burnt her hands|burned his hands|burned her hands|cannot be reached|can't be reached|
 cant be reached|request lift|requesting a lift|need lifting off|needs lifting off|uses a frame|uses a walking frame|
 uses a zimmer|on a zimmer|can't get hold of my|cant get hold of my|refused to leave|has refused to leave|refused to come out|sat on the roof|sat on his roof|sat on her roof|
@@ -378,6 +379,7 @@ NEUTRAL_PHRASES = ["fire drill", "evacuation drill", "fire practice", "half in t
                    "smoke alarm", "smoke alarms", "smoke machine", "smoke machines", "fog machine", "haze machine", "fire alarm", "fire alarms", "fire exit", "fire escape",
                    "fire brigade", "fire crew", "fire engine", "fire truck", "fire service", "fire department",
                    "fire control", "fire and rescue", "fire officer", "fire chief", "fire ground commander",
+                   "no naked flames", "no naked flame", "no naked lights", "no open flames", "no smoking",
                    "keeping the smoke off", "keeping the smoke away", "keeps the smoke off", "keeps the smoke away",
                    "blowing the smoke away", "keeping the water out", "keeps the water out",
                    "fire team", "firefighter", "firefighters", "fire fighter", "fire fighters", "fire hydrant",
@@ -1149,7 +1151,8 @@ DANGER_KINDS: dict[str, list[str]] = {
               # (added last: the kind's first twelve phrases are what MiniLM reads where no description names it)
               "water pooling", "water's pooling", "got the sea in", "sea's in", "sea in the house", "taking water",
               "taking in water", "under the tide", "waves breaking over", "waves breaking clean over",
-              "waves coming over", "over the bonnet", "over the bonnets", "got the water", "took the water", "gushing out", "gushing everywhere", "spewing everywhere", "spewing water",
+              "waves coming over", "over the bonnet", "over the bonnets", "got the water", "took the water", "boat sunk", "boats sunk", "sunk at its moorings", "sunk at their moorings",
+              "whole boat sunk", "gushing out", "gushing everywhere", "spewing everywhere", "spewing water",
               "spewing out", "bubbling up through", "water's bubbling up", "water bubbling up", "nearly to the roof with water",
               "to the roof with water", "a proper lake", "it's a lake", "is a lake", "a lake now", "like a lake", "under a metre of sea", "metre of sea", "foot of sea", "feet of sea",
               "running clean over", "running right over", "tide's running over", "tide running over", "tides right over",
