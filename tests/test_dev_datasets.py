@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev57) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev58) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -82,6 +82,7 @@ WALLED_CITY = ROOT / "knowledge_bases" / "walled_city"
 STEELWORKS = ROOT / "knowledge_bases" / "steelworks_town"
 TIDAL_ISLE = ROOT / "knowledge_bases" / "tidal_isle"
 NEW_TOWN = ROOT / "knowledge_bases" / "new_town"
+BRACKENFORD = ROOT / "knowledge_bases" / "brackenford"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -314,6 +315,7 @@ SETS = {
     "dev56/steelworks_town": _set("dev56/steelworks_town.jsonl", STEELWORKS, "sw56", TWENTY),
     "dev57/tidal_isle": _set("dev57/tidal_isle.jsonl", TIDAL_ISLE, "ti57", TWENTY),
     "dev57/new_town": _set("dev57/new_town.jsonl", NEW_TOWN, "nt57", TWENTY),
+    "dev58/brackenford": _set("dev58/brackenford.jsonl", BRACKENFORD, "bf58", TWENTY),
 }
 
 
