@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev58) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev59) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -83,6 +83,7 @@ STEELWORKS = ROOT / "knowledge_bases" / "steelworks_town"
 TIDAL_ISLE = ROOT / "knowledge_bases" / "tidal_isle"
 NEW_TOWN = ROOT / "knowledge_bases" / "new_town"
 BRACKENFORD = ROOT / "knowledge_bases" / "brackenford"
+THORNWATER = ROOT / "knowledge_bases" / "thornwater"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -316,6 +317,7 @@ SETS = {
     "dev57/tidal_isle": _set("dev57/tidal_isle.jsonl", TIDAL_ISLE, "ti57", TWENTY),
     "dev57/new_town": _set("dev57/new_town.jsonl", NEW_TOWN, "nt57", TWENTY),
     "dev58/brackenford": _set("dev58/brackenford.jsonl", BRACKENFORD, "bf58", TWENTY),
+    "dev59/thornwater": _set("dev59/thornwater.jsonl", THORNWATER, "tw59", {"standard": 30, "messy": 15, "advanced_messy": 15}),
 }
 
 
