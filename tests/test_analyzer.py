@@ -3282,6 +3282,24 @@ def test_dev52_phenomena(kb_analyzers, kb, text, expected):
                     "it's the wonky house that's burning", [("pilgrims' rest inn", "ember_and_reek")]),
     ("new_town", "Gas escape at the Mill Lane gas governor. Keep everybody back fifty metres, no naked flames, no phones.",
      [("mill lane gas governor", "scorch_and_shatter")]),
+    # a room said after each name of a list ("X sports hall and Y's function room are both ..."); people moved to
+    # a place are no one in need there; "the chapel and vestry are ..." is no ``shares_a_vestry_wall_with``
+    ("new_town", "the Chlorine Palace sports hall and the Navvy's function room are both confirmed as rest centres",
+     [("lockside baths", "hearth_point"), ("navigator inn", "hearth_point")]),
+    ("steelworks_town", "Minister of Bethel here. The chapel and vestry are under a foot of water. We've moved our old "
+                        "people up to the tin tabernacle, which is high up and perfectly safe.",
+     [("bethel chapel", "brownwater_rise"), ("zion chapel", "stand_down_ground")]),
+    ("new_town", "02:20 Central Library basement inundated, approx 1 m standing water", [("central library", "slosh_and_rime")]),
+    # a standard-heavy unseen KB: an exercise claims nothing even by meaning; someone "from" a place who turned up
+    # at another; the landslip "by the slip"; a kitchen fire "fully out"
+    ("thornwater", "Reminder to all stations: the lake rescue exercise planned at the steamer pier for Saturday is "
+                   "cancelled. This is not a live incident message.", []),
+    ("thornwater", "a young lad from the rowing club has turned up at the farm shop soaked to the skin and shivering",
+     [("low garth farm shop", "fellfolk_in_need")]),
+    ("thornwater", "Control, update on the lake hotel: fire service report the kitchen fire is fully out and damping down "
+                   "is finished.", []),
+    ("thornwater", "Drowned Ox, it's the landlord. The cellar is awash. Upstairs is dry though, and we've got thirty folk "
+                   "in the function room with a brew.", [("drowned ox inn", "quiet_berth"), ("drowned ox inn", "surge_and_scree")]),
     ("tidal_isle", "the stores is flooded — wait, no, what am I saying, it's not flooded, they've opened it up as a warm "
                    "spot, Quayle's, folk are in there having soup", [("ebba stores", "dry_berth")]),
     ("tidal_isle", "the chippy is full of smoke and theres a strong smell of gas all down the back yard of the pink",

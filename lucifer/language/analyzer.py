@@ -539,7 +539,9 @@ class ReportAnalyzer:
             elif t in taken or t in cue_tokens or t in known or t + 1 in known:
                 continue  # (a word right before a listed phrase heads it: "the annexe tacked onto X")
             word = toks.tokens[t].text
-            opening = toks.clause_start[t] or t > 0 and norms[t - 1] in lx.ARTICLES and toks.clause_start[t - 1]
+            opening = toks.clause_start[t] or t > 0 and norms[t - 1] in lx.ARTICLES and toks.clause_start[t - 1] \
+                or t > 0 and norms[t - 1] == "and" and t + 1 < len(norms) and norms[t + 1] in ("are", "were")
+            # ("The chapel and vestry are under a foot of water": a subject, not ``shares_a_vestry_wall_with``)
             if opening and (word.lower().endswith(("'s", "’s")) or t + 1 < len(norms)
                             and norms[t + 1] in ("is", "are", "was", "were", "has", "s")):
                 continue  # "Water's pouring through ...", "Water is up over ...": a subject, not "lifts_water_out_of"
@@ -733,9 +735,12 @@ class ReportAnalyzer:
                 continue  # "don't park anything round there": the word as a verb
             if b - a == 1 and norms[a] in ("front", "back", "side", "top", "bottom", "end") and norms[b:b + 1] == ("of",):
                 continue  # "the glasshouse is burning, the whole front of it": a part of a place, not "the front"
-            if b - a == 1 and norms[a] in lx.EVENT_NOUNS and b + 1 < len(norms) and norms[b] in ("at", "on", "near") \
-                    and norms[b + 1] in lx.ARTICLES and not toks.clause_start[b]:
-                continue  # "re the slip at the cliff path": the landslip there, not the slipway called "the slip"
+            if b - a == 1 and norms[a] in lx.EVENT_NOUNS and (
+                    b + 1 < len(norms) and norms[b] in ("at", "on", "near") and norms[b + 1] in lx.ARTICLES
+                    and not toks.clause_start[b]
+                    or a >= 2 and norms[a - 2:a] == ("by", "the") and norms[a - 3:a - 2] in (("buried",), ("blocked",),
+                                                                                           ("cut",), ("hit",), ("been",))):
+                continue  # "re the slip at the cliff path", "buried by the slip": the landslip, no place called so
             if b - a == 1 and prev == "the" and raw.endswith("s") and not raw.endswith(("'s", "’s", "ss", "s'")) \
                     and raw != norms[a] and norms[a] + "s" == raw and all(
                         not f.lower().rstrip("'’").endswith("s") for f in self.kb.landmark_by_name[landmark].surface_forms
@@ -773,6 +778,11 @@ class ReportAnalyzer:
             p.end_tok - p.start_tok == 1 and p.start_tok >= 2 and norms[p.start_tok - 1] == "the"
             and norms[p.start_tok - 2] in ("got", "get", "getting") and norms[p.end_tok:p.end_tok + 1] in (("in",), ("into",))
             and norms[p.start_tok] in lx.WATER_BODIES)]
+        # "the path has been buried by the slip": the landslip that did it, no place called "the slip"
+        places = [p for p in places if not (
+            p.end_tok - p.start_tok == 1 and norms[p.start_tok] in lx.EVENT_NOUNS and p.start_tok >= 3
+            and norms[p.start_tok - 2:p.start_tok] == ("by", "the")
+            and norms[p.start_tok - 3] in ("buried", "blocked", "hit", "cut", "swept", "struck", "damaged"))]
         for idx, p in enumerate(places):
             if p.end_tok < len(norms) and norms[p.end_tok] in lx.MODIFIED_BY and not toks.clause_start[p.end_tok] \
                     and norms[p.end_tok : p.end_tok + 2] not in lx.PART_OF_PLACE \
@@ -2371,12 +2381,6 @@ class ReportAnalyzer:
         phrase, inv = meta[int(order[0])]
         return self._follow(anchor, phrase, head, inverse=_reads_backwards(link, phrase, inv) != inverse)
 
-    @staticmethod
-    def _shared_its(phrase: str) -> bool:
-        """A relation said with "its" for the place before ("shares its vestry wall")."""
-        words = phrase.replace("_", " ").split()
-        return len(words) >= 4 and words[0].startswith("share") and words[-1] == "with"
-
     def _related_by_head(self, anchor: str, head: str) -> tuple[str | None, str | None]:
         """"the quay that the ice plant makes the ice for": a linking phrase MiniLM only half knows, and a head word
         that names exactly one of the places the anchor has a relation with (the fish quay), is that place."""
@@ -2717,7 +2721,7 @@ class ReportAnalyzer:
                 prev = max(earlier, key=lambda p: p.end_tok)
                 if self._follow(prev.landmark, phrase, "", inverse=flipped)[0] == anchor.landmark:
                     anchor = prev
-        implicit = norms[a:b] in lx.IMPLICIT_ANCHOR or "its" in norms[a:b] and self._shared_its(phrase)
+        implicit = norms[a:b] in lx.IMPLICIT_ANCHOR or "its" in norms[a:b] and _shares_a_noun_with(phrase)
         # ("the hall that shares its vestry wall": whose wall, the place said before)
         if anchor is None and implicit and (b >= len(norms) or ex.tokens.clause_start[b]
                                                                     or not any(p.start_tok == b for p in ex.places)) \
@@ -3934,7 +3938,7 @@ class ReportAnalyzer:
         another place right after."""
         k = _noun_phrase_start(norms, p)
         if k < 2 or norms[k - 1] != "from" or norms[k - 2] not in _PERSON_KEYS or p.end_tok >= len(norms) \
-                or norms[p.end_tok] not in ("is", "s", "was", "are", "were") or toks.clause_start[p.end_tok]:
+                or norms[p.end_tok] not in ("is", "s", "was", "are", "were", "has", "had") or toks.clause_start[p.end_tok]:
             return False
         n = toks.sentence_of[p.start_tok]
         return any(q.status == "active" and q.landmark != p.landmark and toks.sentence_of[q.start_tok] == n
@@ -4857,7 +4861,8 @@ class ReportAnalyzer:
         spread = self._spread_claims(ex, norms, cues, claims, denied)
         claims.extend(spread)
         cues.extend(c.cue for c in spread)
-        if self.embedder is not None and self.semantic_fallback:
+        if self.embedder is not None and self.semantic_fallback and not _exercise_frame(norms):
+            # (an exercise or training message claims nothing, by word or by meaning)
             self._all_cues_now = cues
             denied_keys = {c.key for c in denied}
             extra = [c for c in self._semantic_claims(ex, claims, denied) if c.key not in denied_keys]
@@ -5572,6 +5577,9 @@ class ReportAnalyzer:
             if j >= 1 and norms[j] in ("a", "an") and (norms[j - 1] in ("were", "im") or norms[max(0, j - 2):j] in (
                     ("we", "are"), ("i", "am"), ("we", "re"))):
                 continue  # "We're a family in a car, parked in visitor parking": who is calling
+            if norms[k] in ("up", "down", "over", "across", "out") and norms[k + 1:k + 2] in (("to",), ("into",)) \
+                    and any(norms[m] in lx.MOVING_VERBS for m in range(max(0, j - 2), j + 1)):
+                continue  # "We've moved our old people up to the tin tabernacle": taken somewhere, no one in need
             t0, t1 = toks.tokens[i], toks.tokens[k]
             out.append(CueMention(i, k + 1, t0.start, t1.end, toks.text[t0.start:t1.end], cat, "lexicon",
                                   reason="a person placed at the scene"))
@@ -6987,8 +6995,13 @@ class ReportAnalyzer:
         claimed = {id(c.place) for c in pairs}
         have = {(id(c.place), id(c.cue)) for c in pairs}
         out: list[Claim] = []
+        def past_part(j: int) -> int:  # ("the Navvy's function room": a room of the place, said after its name)
+            start = j
+            while j < len(norms) and norms[j] in lx.ROOM_WORDS and j - start < 2 and not toks.clause_start[j]:
+                j += 1
+            return j
         for idx, last in enumerate(places):
-            e = last.end_tok
+            e = past_part(last.end_tok)
             if norms[e:e + 2] not in (("are", "both"), ("are", "all"), ("were", "both"), ("were", "all"),
                                       ("re", "both"), ("re", "all")) \
                     and not (norms[e:e + 1] == ("both",) and not toks.clause_start[e]):
@@ -6996,7 +7009,7 @@ class ReportAnalyzer:
             listed = [last]
             k = idx - 1
             while k >= 0:
-                gap = norms[places[k].end_tok:listed[0].start_tok]
+                gap = norms[past_part(places[k].end_tok):listed[0].start_tok]
                 if not set(gap) <= {"and", "the", "a", "an"} or not gap and toks.gaps[listed[0].start_tok].strip() != "," \
                         or id(places[k]) in claimed or any(";" in toks.gaps[i] or toks.sentence_start[i]
                                                            for i in range(places[k].end_tok, listed[0].start_tok + 1)):
@@ -7975,11 +7988,18 @@ def _with_verb_synonyms(out: list[tuple[str, bool]]) -> None:
             out.extend((" ".join(ws[:at] + [other] + ws[at + 1:]), inv) for other in lx.HOLDING_VERBS[ws[at]])
 
 
+def _shares_a_noun_with(phrase: str) -> bool:
+    """A relation named "shares a <noun> with" (``shares_a_vestry_wall_with``), said with "its" for the place
+    before ("the hall that shares its vestry wall")."""
+    words = phrase.replace("_", " ").split()
+    return len(words) >= 4 and words[0].startswith("share") and words[1] in ("a", "the") and words[-1] == "with"
+
+
 def _with_shared_its(phrase: str, out: list[tuple[str, bool]]) -> None:
     """"shares_a_vestry_wall_with" said of the place before: "the hall that shares its vestry wall"."""
-    words = phrase.split()
-    if len(words) < 4 or words[-1] != "with" or words[1] not in ("a", "the") or not words[0].startswith("share"):
+    if not _shares_a_noun_with(phrase):
         return
+    words = phrase.replace("_", " ").split()
     noun = " ".join(words[2:-1])
     for verb in ("shares", "share", "sharing"):
         out.append((f"{verb} its {noun}", False))

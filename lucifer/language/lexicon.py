@@ -138,6 +138,8 @@ rest point|rest area|letting people in|free tea|free food|bedding down|bedded do
 can stay put|can stay where they are|stay put in there|no risk there|is no risk|s no risk|wait it out|wait it out in|sit it out in|safe to stay|
 """.replace("\n", ""))
 
+_add(DESIRABLE, "can stay in|they can stay|as long as they need|warm n dry|we're sound|we are sound|all sound here|"
+               "with a brew|having a brew|upstairs is dry|is dry though|folk off the shore|let us all in|let us in|")
 _add(DESIRABLE, "open, dry|open dry|crew room open|got the crew room open|dry and sound|welcome to stay|are welcome to stay|settled in the pews|warm spot|a warm spot|"
                "having soup|opened it up as|opened up as a|")
 _add(DESIRABLE, "for everybody to go to|for everyone to go to|for people to go to|for folk to go to")
@@ -156,7 +158,7 @@ can't feel their legs|come off the ladder|came off the ladder|fallen off the lad
 got it in his eyes|got it in her eyes|in his eyes|in her eyes|very muddled|she's muddled|he's muddled|dehydrated|hasn't had a drink|hasnt had a drink|not had a drink|drowsy and confused|clammy|
 without his insulin|without her insulin|without their insulin|without his medication|without her medication|
 without their medication|without his tablets|without her tablets|shaking and sweating|stuck between floors|
-stuck between two floors|last seen going into|last seen heading into|last seen at|last seen in|last seen near|waving a torch|waving a light|up on its roof|up on the car roof|on top of the car|on the roof of the car|
+stuck between two floors|last seen going into|last seen heading into|last seen at|last seen in|last seen near|soaked to the skin|shivering that hard|can barely talk|wants an ambulance|needs an ambulance|people are still in|people still in|are still trapped|waving a torch|waving a light|up on its roof|up on the car roof|on top of the car|on the roof of the car|
 burnt both his|burnt both her|burned both his|burned both her|burnt his arms|burnt her arms|burned his arms|
 burned her arms|burnt his hands|burnt her hands|burned his hands|burned her hands|cannot be reached|can't be reached|
 cant be reached|request lift|requesting a lift|need lifting off|needs lifting off|uses a frame|uses a walking frame|
@@ -280,7 +282,7 @@ VOCATIVES = {"dad", "mum", "mam", "mom", "mummy", "daddy", "mate", "love", "son"
 # A clause right after a cue that takes it back ("they were safe, now they're not")
 NO_LONGER_SO = [("now", "theyre", "not"), ("now", "they", "re", "not"), ("now", "its", "not"), ("now", "it", "isnt"),
                 ("now", "they", "arent"), ("but", "not", "now"), ("not", "now"), ("not", "any", "more"), ("not", "anymore")]
-CANCEL_AFTER = ["aboard now", "is aboard", "now aboard", "on board now", "safely aboard", "not any more", "not anymore", "cleared off", "it's cleared off", "wind's changed", "wind has changed", "that's cleared", "thats cleared", "it's cleared", "dried out", "has dried out",
+CANCEL_AFTER = ["fully out", "is fully out", "damping down", "damping down is finished", "aboard now", "is aboard", "now aboard", "on board now", "safely aboard", "not any more", "not anymore", "cleared off", "it's cleared off", "wind's changed", "wind has changed", "that's cleared", "thats cleared", "it's cleared", "dried out", "has dried out",
                 "s dried out", "hasn't got that far", "hasnt got that far", "not got that far", "hasn't got this far", "hasnt got this far",
                 "not got this far", "hasn't reached us", "hasnt reached us", "blowing the other way", "blowing away from", "going the other way", "never reached", "didn't reach", "didnt reach", "hasn't reached", "hasnt reached", "never got to",
                 "been cleared", "been cleared away", "been towed", "been towed away", "turned up", "has turned up", "s turned up", "turned up safe", "is out", "s out", "are out", "was out", "put out", "out now", "been put out",
@@ -617,8 +619,14 @@ VEHICLE_WORDS = {"car", "cars", "van", "vans", "lorry", "lorries", "bus", "truck
                  "tractor", "boat", "boats", "coach", "taxi", "ambulance", "bike", "motorbike"}
 # Bodies of water a flood brings in ("it's got the river in the bar")
 WATER_BODIES = {"river", "sea", "tide", "brook", "beck", "burn", "stream", "canal", "lake", "loch", "mere", "creek"}
+# Verbs of taking people somewhere ("we've moved our old people up to the chapel")
+MOVING_VERBS = {"moved", "moving", "taken", "taking", "took", "brought", "bringing", "sent", "sending", "walked",
+                "ferried", "evacuated", "shifted", "got"}
 # Which one of a row or group ("the end one", "the first one")
 MEMBER_WORDS = {"end", "first", "last", "second", "third", "middle", "corner", "nearest", "far", "top", "bottom"}
+# Words for a room or part of a place said right after its name ("the Chlorine Palace sports hall")
+ROOM_WORDS = _keyed({"sports", "function", "main", "waiting", "staff", "hall", "room", "rooms", "kitchen", "bar",
+                     "lounge", "basement", "canteen", "foyer", "annexe", "yard", "car", "park"})
 # Rooms of any premises, said after where a crew is ("we're at the halt and the waiting room's ...")
 PREMISES_ROOMS = {("waiting", "room"), ("staff", "room"), ("function", "room"), ("back", "room"), ("main", "hall"),
                   ("ground", "floor"), ("top", "floor"), ("first", "floor")}
@@ -766,7 +774,7 @@ TRANSIT = ["people in off", "taking people in off", "in off the", "walked up fro
            "got everyone out onto", "everyone out onto", "got everyone out into", "got them out onto",
            "driven round to", "being driven to", "being driven round to", "driven to", "got everybody out of",
            "got everyone out of", "everybody out of", "got them all out of",
-           "well away from", "far from", "a long way from", "miles from", "coming out through", "came out through",
+           "well away from", "far from", "a long way from", "miles from", "floating off towards", "drifting towards", "floating towards", "washed towards", "coming out through", "came out through",
            "come out through", "coming in through", "came in through", "come in through", "drove in through",
            "driving in through", "drove out through"]
 
@@ -1088,7 +1096,8 @@ DANGER_KINDS: dict[str, list[str]] = {
                  "stonework falling", "frayed", "fraying", "cable's frayed", "derailed", "come off its rails",
                  "came off its rails", "come off the rails", "came off the rails", "off its rails", "sheared off", "keystone's come out", "arch has dropped", "arch's dropped",
                  "off its supports", "swept clean off", "a lean on it", "got a lean on", "damaged", "badly damaged",
-                 "heavily damaged", "storm damaged", "storm-damaged", "gone completely", "completely gone", "basically gone"],
+                 "heavily damaged", "storm damaged", "storm-damaged", "gone completely", "completely gone", "basically gone", "wiped out", "got wiped out", "totally wiped out",
+                 "deck twisted", "half torn away", "torn away"],
     "fallen": ["has fallen into", "have fallen into", "fallen into the", "rubble", "wall down", "walls down",
                "roof's in", "roof is in", "roof's gone", "roof has gone", "roof's off", "shedding bricks",
                "shedding slates", "masonry falling", "falling masonry", "fallen masonry", "wall's fallen",
@@ -1111,7 +1120,8 @@ DANGER_KINDS: dict[str, list[str]] = {
                "subsided into", "subsiding into", "subsidence", "has slipped", "face has slipped", "being undercut",
                "undercut", "being undermined", "undermined", "mud", "mud and rocks", "mud everywhere",
                "full of mud", "rocks came down", "rocks have come down", "rockfall", "rock fall", "boulders",
-               "coming away", "rocks rolling down", "rocks coming down", "rocks falling", "rocks tumbling", "ground's heaving", "ground is heaving", "ground heaving", "dropping away", "dropped away", "falling away", "fallen away", "crumbling away", "crumbled away", "slid towards the edge", "slid to the edge", "slid towards the cliff", "sliding towards the edge",
+               "coming away", "rocks rolling down", "rocks coming down", "rocks falling", "rocks tumbling", "rock coming off", "rocks coming off", "still on the move", "off its footings", "off their footings",
+               "ground's heaving", "ground is heaving", "ground heaving", "dropping away", "dropped away", "falling away", "fallen away", "crumbling away", "crumbled away", "slid towards the edge", "slid to the edge", "slid towards the cliff", "sliding towards the edge",
                "slipping towards the edge", "teetering on the edge", "teetering over the edge"],
     "water": ["water is come inside", "water is come in", "water came inside", "water come inside", "water has come inside", "until the knee", "up to the knee", "up to the knees", "up to my knees", "up to our knees", "sea's come over", "sea's come right over", "sea has come over", "sea came over", "sea's pouring in",
               "sea pouring in", "sea's coming in", "sea coming in", "sea's come in", "sea has come in", "under a metre of water",
@@ -1151,7 +1161,8 @@ DANGER_KINDS: dict[str, list[str]] = {
               # (added last: the kind's first twelve phrases are what MiniLM reads where no description names it)
               "water pooling", "water's pooling", "got the sea in", "sea's in", "sea in the house", "taking water",
               "taking in water", "under the tide", "waves breaking over", "waves breaking clean over",
-              "waves coming over", "over the bonnet", "over the bonnets", "got the water", "took the water", "boat sunk", "boats sunk", "sunk at its moorings", "sunk at their moorings",
+              "waves coming over", "over the bonnet", "over the bonnets", "got the water", "took the water", "bank-full", "bank full", "bankfull", "running bank-full", "inches of silt",
+              "silt across", "went straight through the", "wiped out by the wave", "wiped out by the surge", "inundated", "inundation", "standing water", "boat sunk", "boats sunk", "sunk at its moorings", "sunk at their moorings",
               "whole boat sunk", "gushing out", "gushing everywhere", "spewing everywhere", "spewing water",
               "spewing out", "bubbling up through", "water's bubbling up", "water bubbling up", "nearly to the roof with water",
               "to the roof with water", "a proper lake", "it's a lake", "is a lake", "a lake now", "like a lake", "under a metre of sea", "metre of sea", "foot of sea", "feet of sea",
