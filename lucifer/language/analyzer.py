@@ -735,12 +735,9 @@ class ReportAnalyzer:
                 continue  # "don't park anything round there": the word as a verb
             if b - a == 1 and norms[a] in ("front", "back", "side", "top", "bottom", "end") and norms[b:b + 1] == ("of",):
                 continue  # "the glasshouse is burning, the whole front of it": a part of a place, not "the front"
-            if b - a == 1 and norms[a] in lx.EVENT_NOUNS and (
-                    b + 1 < len(norms) and norms[b] in ("at", "on", "near") and norms[b + 1] in lx.ARTICLES
-                    and not toks.clause_start[b]
-                    or a >= 2 and norms[a - 2:a] == ("by", "the") and norms[a - 3:a - 2] in (("buried",), ("blocked",),
-                                                                                           ("cut",), ("hit",), ("been",))):
-                continue  # "re the slip at the cliff path", "buried by the slip": the landslip, no place called so
+            if b - a == 1 and norms[a] in lx.EVENT_NOUNS and b + 1 < len(norms) and norms[b] in ("at", "on", "near") \
+                    and norms[b + 1] in lx.ARTICLES and not toks.clause_start[b]:
+                continue  # "re the slip at the cliff path": the landslip there, not the slipway called "the slip"
             if b - a == 1 and prev == "the" and raw.endswith("s") and not raw.endswith(("'s", "’s", "ss", "s'")) \
                     and raw != norms[a] and norms[a] + "s" == raw and all(
                         not f.lower().rstrip("'’").endswith("s") for f in self.kb.landmark_by_name[landmark].surface_forms
@@ -773,16 +770,7 @@ class ReportAnalyzer:
                                            {i for a, b, _ in all_cues for i in range(a, b)}))
         places.extend(self._definite_heads(toks, norms, places))
         places.extend(self._numbered_places(toks, norms, {i for p in places for i in range(p.start_tok, p.end_tok)}))
-        # "it's got the river in the bar": the flood come in, not the river named as a place
-        places = [p for p in places if not (
-            p.end_tok - p.start_tok == 1 and p.start_tok >= 2 and norms[p.start_tok - 1] == "the"
-            and norms[p.start_tok - 2] in ("got", "get", "getting") and norms[p.end_tok:p.end_tok + 1] in (("in",), ("into",))
-            and norms[p.start_tok] in lx.WATER_BODIES)]
-        # "the path has been buried by the slip": the landslip that did it, no place called "the slip"
-        places = [p for p in places if not (
-            p.end_tok - p.start_tok == 1 and norms[p.start_tok] in lx.EVENT_NOUNS and p.start_tok >= 3
-            and norms[p.start_tok - 2:p.start_tok] == ("by", "the")
-            and norms[p.start_tok - 3] in ("buried", "blocked", "hit", "cut", "swept", "struck", "damaged"))]
+        places = [p for p in places if not _names_what_came(norms, p)]
         for idx, p in enumerate(places):
             if p.end_tok < len(norms) and norms[p.end_tok] in lx.MODIFIED_BY and not toks.clause_start[p.end_tok] \
                     and norms[p.end_tok : p.end_tok + 2] not in lx.PART_OF_PLACE \
@@ -2197,14 +2185,20 @@ class ReportAnalyzer:
                     # "the landing it faces": the head word named the place the description reaches
                     ex.places[idx] = replace(p, status="reference", reason=f"part of the description '{d.text}'")
 
-    def _possessive_roles(self, ex: Extraction, toks: Tokens, norms: tuple[str, ...]) -> None:
-        """"the corrie's drinking hole": for a relation named "is the drinking hole of", a place's own
-        "drinking hole" is the one the KB says is the drinking hole of it."""
+    @functools.cached_property
+    def _role_relations(self) -> dict[tuple[str, ...], list[Relation]]:
+        """The KB's relations named "is the <noun> of", by their noun ("drinking hole" of ``is the drinking hole of``)."""
         roles: dict[tuple[str, ...], list[Relation]] = {}
         for rel in self.kb.relations:
             words = norm_phrase(rel.phrase)
             if len(words) >= 4 and words[0] in ("is", "are") and words[1] in lx.ARTICLES and words[-1] == "of":
                 roles.setdefault(tuple(words[2:-1]), []).append(rel)
+        return roles
+
+    def _possessive_roles(self, ex: Extraction, toks: Tokens, norms: tuple[str, ...]) -> None:
+        """"the corrie's drinking hole": for a relation named "is the drinking hole of", a place's own
+        "drinking hole" is the one the KB says is the drinking hole of it."""
+        roles = self._role_relations
         if not roles:
             return
         for p in list(ex.places):
@@ -7758,6 +7752,18 @@ def _withdraws(marker: tuple[str, ...]) -> bool:
 
 # Closed-class words that never head a description.
 _NOT_HEADS = lx.PREPOSITIONS | lx.COPULAS | lx.FILLERS | lx.PRONOUNS | lx.INVERSE_VERBS | lx.DETERMINERS
+
+
+def _names_what_came(norms: tuple[str, ...], p: PlaceMention) -> bool:
+    """A one-word name that here says what came, not where: "it's got the river in the bar" (the flood come in),
+    "the path has been buried by the slip" (the landslip that did it)."""
+    a = p.start_tok
+    if p.end_tok - a != 1 or a < 2 or norms[a - 1] != "the":
+        return False
+    if norms[a] in lx.WATER_BODIES and norms[a - 2] in ("got", "get", "getting") \
+            and norms[p.end_tok:p.end_tok + 1] in (("in",), ("into",)):
+        return True
+    return norms[a] in lx.EVENT_NOUNS and a >= 3 and norms[a - 2] == "by" and norms[a - 3] in lx.CAUSED_BY_VERBS
 
 
 def _exercise_frame(norms: tuple[str, ...]) -> bool:

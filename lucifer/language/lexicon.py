@@ -1068,7 +1068,7 @@ DANGER_KINDS: dict[str, list[str]] = {
                  "petrol leak", "diesel leak", "leaking fuel", "fuel pouring", "pouring fuel", "diesel slick",
                  "slick", "fuel slick", "petrol all over", "fuel all over", "diesel all over", "oil all over",
                  "petrol everywhere", "diesel everywhere", "fuel everywhere", "fuel running", "fuel's running", "fuel is running",
-                 "petrol running", "diesel running", "fuel pouring", "fuel's pouring", "diesel pouring", "petrol pouring", "swimming in oil", "swimming in diesel", "swimming in fuel",
+                 "petrol running", "diesel running", "fuel's pouring", "diesel pouring", "petrol pouring", "swimming in oil", "swimming in diesel", "swimming in fuel",
                  "swimming in petrol", "oil everywhere", "oil slick", "chemical leak", "chemical leaks", "chemical spill",
                  "chemical fumes", "tanker leak", "hazchem spill", "seeping in", "smells of oil", "smell of oil",
                  "smells of diesel", "smell of diesel", "smells of petrol", "smell of petrol", "smells of chemicals",
@@ -1165,13 +1165,13 @@ DANGER_KINDS: dict[str, list[str]] = {
               "silt across", "went straight through the", "wiped out by the wave", "wiped out by the surge", "inundated", "inundation", "standing water", "boat sunk", "boats sunk", "sunk at its moorings", "sunk at their moorings",
               "whole boat sunk", "gushing out", "gushing everywhere", "spewing everywhere", "spewing water",
               "spewing out", "bubbling up through", "water's bubbling up", "water bubbling up", "nearly to the roof with water",
-              "to the roof with water", "a proper lake", "it's a lake", "is a lake", "a lake now", "like a lake", "under a metre of sea", "metre of sea", "foot of sea", "feet of sea",
+              "to the roof with water", "a proper lake", "it's a lake", "a lake now", "under a metre of sea", "metre of sea", "foot of sea", "feet of sea",
               "running clean over", "running right over", "tide's running over", "tide running over", "tides right over",
               "tide's right over", "tide right over", "tide's over the", "water was coming in", "water were coming in",
               "lifting off their cradles", "ripped clean off", "water to the first floor", "water to the ground floor",
-              "water up to the first floor", "has water to the", "over its banks", "over the banks", "over its bank", "got the river in",
+              "water up to the first floor", "has water to the", "over its bank", "got the river in",
               "river in the bar", "river in the house", "water's come into", "water has come into", "water came into",
-              "water's got into", "water has got into", "gone completely under", "completely under", "brimming over", "river's come right over", "river's come over",
+              "water's got into", "water has got into", "gone completely under", "brimming over", "river's come right over", "river's come over",
               "river has come over", "river come over", "water's come right over", "water's come over",
               "water has come over",
               "floor is under", "whole floor's under"],
@@ -1358,6 +1358,8 @@ ABBREVIATIONS = {"bldg": "building", "bldgs": "building", "nxt": "next", "opp": 
 # Words for an event that a landmark may also be called ("re the slip at the cliff path": the landslip there,
 # not the slipway nicknamed "the slip")
 EVENT_NOUNS = {"slip", "fall", "slide", "blaze", "spill", "leak", "burst", "collapse", "flood", "blast", "fire"}
+# ... and the verbs that say one did something ("buried by the slip", "hit by the blast")
+CAUSED_BY_VERBS = {"buried", "blocked", "hit", "cut", "been", "swept", "struck", "damaged"}
 WHATEVER = frozenset({"whatever", "wherever", "whichever", "whoever"})
 # Verbs of having, each said for the others in a relation's name ("keeps the keys to" / "holds the keys to")
 HOLDING_VERBS = {"keeps": ("holds", "has"), "holds": ("keeps", "has"), "keep": ("hold", "have"), "hold": ("keep", "have"),
