@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev59) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev62) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -84,6 +84,11 @@ TIDAL_ISLE = ROOT / "knowledge_bases" / "tidal_isle"
 NEW_TOWN = ROOT / "knowledge_bases" / "new_town"
 BRACKENFORD = ROOT / "knowledge_bases" / "brackenford"
 THORNWATER = ROOT / "knowledge_bases" / "thornwater"
+SHIPYARD = ROOT / "knowledge_bases" / "shipyard_town"
+ORCHARD = ROOT / "knowledge_bases" / "orchard_valley"
+VIADUCT = ROOT / "knowledge_bases" / "viaduct_town"
+POWER_STATION = ROOT / "knowledge_bases" / "power_station"
+FEN_TOWN = ROOT / "knowledge_bases" / "fen_town"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -318,6 +323,12 @@ SETS = {
     "dev57/new_town": _set("dev57/new_town.jsonl", NEW_TOWN, "nt57", TWENTY),
     "dev58/brackenford": _set("dev58/brackenford.jsonl", BRACKENFORD, "bf58", TWENTY),
     "dev59/thornwater": _set("dev59/thornwater.jsonl", THORNWATER, "tw59", {"standard": 30, "messy": 15, "advanced_messy": 15}),
+    "dev60/shipyard_town": _set("dev60/shipyard_town.jsonl", SHIPYARD, "sy60", TWENTY, sep=""),
+    "dev60/orchard_valley": _set("dev60/orchard_valley.jsonl", ORCHARD, "ov60", TWENTY, sep=""),
+    "dev61/viaduct_town": _set("dev61/viaduct_town.jsonl", VIADUCT, "vt61", {"standard": 30, "messy": 15, "advanced_messy": 15},
+                               sep=""),
+    "dev61/power_station": _set("dev61/power_station.jsonl", POWER_STATION, "ps61", TWENTY, sep=""),
+    "dev62/fen_town": _set("dev62/fen_town.jsonl", FEN_TOWN, "ft62", TWENTY, sep=""),
 }
 
 
