@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev62) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev63) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -89,6 +89,8 @@ ORCHARD = ROOT / "knowledge_bases" / "orchard_valley"
 VIADUCT = ROOT / "knowledge_bases" / "viaduct_town"
 POWER_STATION = ROOT / "knowledge_bases" / "power_station"
 FEN_TOWN = ROOT / "knowledge_bases" / "fen_town"
+BREWERY_TOWN = ROOT / "knowledge_bases" / "brewery_town"
+LIGHTHOUSE_POINT = ROOT / "knowledge_bases" / "lighthouse_point"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -329,6 +331,8 @@ SETS = {
                                sep=""),
     "dev61/power_station": _set("dev61/power_station.jsonl", POWER_STATION, "ps61", TWENTY, sep=""),
     "dev62/fen_town": _set("dev62/fen_town.jsonl", FEN_TOWN, "ft62", TWENTY, sep=""),
+    "dev63/brewery_town": _set("dev63/brewery_town.jsonl", BREWERY_TOWN, "bt63", TWENTY, sep=""),
+    "dev63/lighthouse_point": _set("dev63/lighthouse_point.jsonl", LIGHTHOUSE_POINT, "lp63", TWENTY, sep=""),
 }
 
 
