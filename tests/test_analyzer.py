@@ -3314,3 +3314,132 @@ def test_dev52_phenomena(kb_analyzers, kb, text, expected):
 def test_dev54_phenomena(kb_analyzers, analyzer, kb, text, expected):
     an = analyzer if kb == "ms" else kb_analyzers[kb]
     assert claims(an, text) == expected
+
+
+@pytest.mark.parametrize("kb,text,expected", [
+    # whom the speaker moved is no relation's noun ("was_built_for_the_guests_of")
+    ("thornwater", "This is the duty manager at the Gildwater Hotel. Our kitchen is well alight. I've walked all the "
+                   "guests up to the Fellside Hotel and she says they can stay in her lounge as long as they need.",
+     [("fellside hotel", "quiet_berth"), ("gildwater hotel", "lowe_and_reek")]),
+    # "the lake end" of the car park said before it
+    ("thornwater", "14:35 LAKESHORE CAR PARK - approx 40 vehicles swamped, water over the bonnets at the lake end.",
+     [("lakeshore car park", "surge_and_scree")]),
+    # a place calling by its name, article left off; "our own building" is its own
+    ("thornwater", "Wetsuit Shack to Lake Rescue. Our own building's ground floor has been gutted by the wave.",
+     [("gildwater watersports centre", "surge_and_scree")]),
+    # ... but the caller claims nothing where it speaks only of another place
+    ("saltmarsh_airfield", "Tower to Rescue One: the flying club has been searched and is safe to use as a holding area.",
+     [("flying club hut", "clear_ground")]),
+    # texted past tenses
+    ("shipyard_town", "pls send help my dad is trapd in the drawng office the stairs hav collapsd",
+     [("drawing office", "hands_in_peril"), ("drawing office", "surge_and_buckle")]),
+    # a spreading danger keeps its kind
+    ("shipyard_town", "Fire in the plating shed, and it's, er, it's spreading to the paint shop.",
+     [("paint and blast shop", "flame_and_fume"), ("plating shed", "flame_and_fume")]),
+    # "two have collapsed": two of the men just said
+    ("shipyard_town", "Paint shop's well alight. And the shed it's downwind of -- the men in there are choking, two have "
+                      "collapsed.", [("paint and blast shop", "flame_and_fume"), ("plating shed", "hands_in_peril")]),
+    # a name's distinctive first word and its head ("victoria dock" for "victoria dry dock")
+    ("shipyard_town", "uh the flats where victoria dock pumps out onto, there's a dog walker stuck out there",
+     [("gull flats", "hands_in_peril")]),
+    # the head noun a related landmark's description uses ("the pub" of an inn, too)
+    ("shipyard_town", "Roof's off the pub that's the local for caulkers' terrace.", [("mermaid arms", "surge_and_buckle")]),
+    ("fen_town", "the pub where the drainage board lads slake their thirst -- that's been set up as a muster point",
+     [("eel and pike inn", "high_and_dry")]),
+    # "that shed" anchoring a relation: the shed just described
+    ("shipyard_town", "theres a lad pinned under plate in the shed the paint shop is downwind of and the yard that shed "
+                      "takes its plate from is flooded as well",
+     [("plating shed", "hands_in_peril"), ("steel stockyard", "surge_and_buckle")]),
+    # "Forget safe --": the word taken back, the report goes on
+    ("shipyard_town", "Steel stockyard's a good safe place to muster, loads of room. Actually, no. Forget safe -- the "
+                      "plate racks have toppled all over, it's a wreck, keep people out.",
+     [("steel stockyard", "surge_and_buckle")]),
+    # a controlled bonfire is no fire; "is going up" is fire
+    ("orchard_valley", "Just so you know, that smoke you can see over the poplars is the Hollins lads burning the "
+                       "prunings. It's a controlled bonfire, they're standing right by it with a hose.", []),
+    ("orchard_valley", "Fire crew at Crabtree: the dutch barn at the rookery is going up, and the farmer's wife has burns "
+                       "to both hands.", [("crabtree farm", "caught_or_wounded"), ("crabtree farm", "smoke_and_sting")]),
+    # who tells it is from a place that claims nothing
+    ("orchard_valley", "lads from tin town say the cottage that minds the gates just down the line from the halt, its "
+                       "roof's been ripped clean off by the wind.", [("crossing keeper's cottage", "brimwater_and_ruin")]),
+    # a description resolved by a shared head then anchors the one before it
+    ("orchard_valley", "ladder fall at the orchard owned by the farm whose tractors sit in the boneyard",
+     [("high orchard", "caught_or_wounded")]),
+    # an irregular participle closes a relative clause
+    ("viaduct_town", "Smoke's coming out of the chapel that the greaves mill owners built.", [("zion chapel", "cinder_and_fume")]),
+    # the frame said again after "no"
+    ("viaduct_town", "im at the wind tunnel um no im at the market hall sorry and theres a woman collapsed",
+     [("market hall", "caught_or_hurt")]),
+    # "filling" names no kind: the water does
+    ("viaduct_town", "The Skell has burst its banks and the indoor market is filling up through the back loading doors.",
+     [("market hall", "torrent_and_tumble"), ("skell water", "torrent_and_tumble")]),
+    # "the river pier of the long legs": a part of the viaduct
+    ("viaduct_town", "the river pier of the long legs has been scoured out, the structure's unsafe",
+     [("grimshaw viaduct", "torrent_and_tumble")]),
+    # the speaker's own place: "This is the caretaker at ..." then "we"
+    ("fen_town", "This is the caretaker at Fenside School. We've opened up the hall, it's dry and the heating's on. "
+                 "We're running it as a warm room for anyone from the south end.",
+     [("fenside primary school", "high_and_dry")]),
+    # what the speaker does not know, and a place still working, take nothing from the list
+    ("fen_town", "the crowtree pumps have tripped out, there's sparks and smoke pouring out the switchgear, and old "
+                 "thumper's still, you know, still chugging away", [("crowtree pumping station", "smother_and_glow")]),
+    ("fen_town", "the eel and pike, they've opened it up as a warm room, and er the market outside it, uh, I dunno, I "
+                 "haven't been out there", [("eel and pike inn", "high_and_dry")]),
+    # what a person is stuck in is said of the person
+    ("fen_town", "a lorry driver has slid into the mud ponds, he's up to his chest in silt and can't pull himself out.",
+     [("settling lagoons", "body_in_bother")]),
+    # "the yard's gone under": a place's own thing, flooded
+    ("fen_town", "the idb yard is on fire -- well, er, not fire exactly, rather it's, the yard's gone under",
+     [("drainage board depot", "slub_and_breach")]),
+    # a contact relative clause with a copula and a stranded "of"; a plural "them" takes the plural place
+    ("dockside_estate", "Bricks coming down onto the arches Del's gym is on the end of -- and the yard that backs onto "
+                        "them has got a fire going in the tyre stacks.",
+     [("doyle's scrapyard", "flames_and_fumes"), ("viaduct garages", "flood_and_fall")]),
+    # "the bridge over ...": the head names the one landmark the KB relates to the place after it, also to a
+    # description; a thing fallen into water leaves the water unclaimed
+    ("fen_town", "the bridge over the sixteen foot is, uh, it's gone, it's collapsed into the drain",
+     [("iron bridge", "slub_and_breach")]),
+    ("fen_town", "someone's stuck on the bridge over the drain the tin shed drinks from, water's right up over the deck "
+                 "at both ends, he can't get off it", [("iron bridge", "body_in_bother"), ("iron bridge", "slub_and_breach")]),
+    # ... but a building a wall falls into is hit
+    ("moorland_village", "Bank slump on Hagg Beck, and the mill race wall has collapsed into the bobbin mill.",
+     [("bobbin mill", "washout_and_slip"), ("hagg beck", "washout_and_slip")]),
+    # "the caravans" of the caravan site; "the back of it" is its own back
+    ("fen_town", "the bank the caravans huddle under has, er, slumped, there's a bank slip maybe thirty metres long",
+     [("sea bank", "slub_and_breach")]),
+    ("fen_town", "the drain that empties through the guillotine, um, the drain, it's breached on the town side, there's "
+                 "sand boils all along the back of it", [("hundred foot drain", "slub_and_breach")]),
+    # "the baths themselves", not "not the hotel itself"
+    ("new_town", "the water tower is cracked, and um, the baths themselves are being used as a warm centre, they're open",
+     [("lockside baths", "hearth_point"), ("ridgeway water tower", "scorch_and_shatter")]),
+    # "(smoke is flare_and_rubble)" in another category's description sends smoke there, not here
+    ("brewery_town", "omg the jingle shed is full of smoke n my mate is stuck up on the mezzanine cant get down",
+     [("bottling hall", "flare_and_rubble"), ("bottling hall", "someone_in_strife")]),
+    ("brewery_town", "Control, disregard the call about smoke at the board school. The caretaker was burning leaves in a "
+                     "brazier in the playground, nothing wrong with the building.", []),
+    # a room above a place is in it, when nothing the KB names lies above it
+    ("brewery_town", "the board school hall is opened and heated as a rest station, and the room above the market hall "
+                     "is open for families as well.", [("board school", "settled_ground"), ("market hall", "settled_ground")]),
+    # "was paid for by" said actively
+    ("brewery_town", "whoever paid for the football ground has a fire", [("brewery offices", "flare_and_rubble")]),
+    # "the terrace, the one where ...": the noun said before "the one" names it
+    ("brewery_town", "it's, er, the terrace, the one where the bottling hall's workers lodge, you know, it's under a foot "
+                     "of beer", [("barley terrace", "swill_and_vapour")]),
+    # the contrast after "nothing wrong with": "it's the floor"
+    ("brewery_town", "the bottling hall, the roof's, I mean there's nothing wrong with the roof, it's the floor, there's "
+                     "broken glass and beer two inches deep right across it", [("bottling hall", "swill_and_vapour")]),
+    # people counted by where they came from
+    ("brewery_town", "Assembly bay set up on the hop field, about two hundred from the bottling line mustered there.",
+     [("football ground", "settled_ground")]),
+    # a second anchor of the same relation; the anchor said again "itself" keeps its own claim
+    ("brewery_town", "the place that sends the drays out to the market hall and the Mow -- their hayloft's on fire",
+     [("dray stables", "flare_and_rubble")]),
+    ("quarrytown", "theres a lad stuck up on the hopper at the yard down the track from the halt and the halt itself is "
+                   "the RVP", [("loading sidings", "person_at_risk"), ("railway halt", "haven")]),
+    # "it" of a description resolved by MiniLM's reading of its link
+    ("brewery_town", "the building the new maltings malts its barley for has got CO2 pooling in the mash room, and the pub "
+                     "it casts its shadow over has been made a rest station, that's safe",
+     [("barley mow", "settled_ground"), ("brewhouse tower", "swill_and_vapour")]),
+])
+def test_dev60_phenomena(kb_analyzers, kb, text, expected):
+    assert claims(kb_analyzers[kb], text) == expected

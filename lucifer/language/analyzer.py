@@ -233,6 +233,8 @@ class ReportAnalyzer:
         for lm in self.kb.landmarks:
             forms = [w for w in (name_words(f) for f in lm.surface_forms) if w]
             mods = {w[:-1] for w in forms if len(w) > 1}
+            mods |= {w[:1] for w in forms if len(w) > 2 and w[0].isalpha()  # "victoria dock" for "victoria dry dock"
+                     and self._name_word_owners.get(w[0], set()) <= {lm.name}}  # (a word only its names use)
             heads = {w[-1] for w in forms}
             for mod in mods:
                 for head in heads:
@@ -267,7 +269,8 @@ class ReportAnalyzer:
         # words the descriptions themselves use decide first ("flooding" -> "... floodwater pouring over ...")
         # (not the words for parts and motion: "coming down" is no "water coming through floors")
         words = [w for w in norm_phrase(phrase) if len(w) >= 4 and w not in lx.DANGER_KIND_PARTS
-                 and w not in ("come", "came", "comes")]
+                 and w not in ("come", "came", "comes", "filling", "filled", "fill", "full")]
+        # (nor "filling": filled with smoke or with water, it is what fills that says the kind)
         described = [self._affirmed_words(c.description) for c in cats]
         overlap = [sum(any(_same_stem(w, d) for d in ds) for w in words) for ds in described]
         if overlap and max(overlap) > 0 and overlap.count(max(overlap)) == 1:
@@ -318,6 +321,8 @@ class ReportAnalyzer:
         """Content words of a category description, leaving out its negated clauses ("Nothing is burning")."""
         out: set[str] = set()
         for clause in re.split(r"[.;:()\u2014\u2013]|\s-\s", description):
+            if re.search(r"[a-z]_[a-z]", clause):
+                continue  # "(smoke is flare_and_rubble)": a note sending a word to another category, not this one's
             # ("wind-blown embers": one word, not "blown")
             for part in clause.split(","):
                 ws = norm_phrase(re.sub(r"(?<=[a-z])-(?=[a-z])", "", part))
@@ -585,6 +590,13 @@ class ReportAnalyzer:
                 continue  # "we've opened the parish church as a rest centre": the speaker's deed, not "opens_onto"
             if back and back[-1] in ("im", "were", "am", "m") and norms[t].endswith("ed"):
                 continue  # "I'm parked up on the headland car park": where the speaker is, not "car park for"
+            if t > 0 and norms[t - 1] in ("who", "whos"):
+                continue  # "the stoker -- the bloke who stokes it": what a person does, not ``is_stoked_from``
+            if norms[t] in lx.HEARSAY_VERBS and norms[t + 1:t + 2] not in (("its",), ("their",)):
+                continue  # "lads from tin town say the cottage ...": who tells it, not ``says_its_prayers_at``
+            obj = [w for w in norms[max(0, t - 4):t] if w not in lx.FILLERS | lx.ARTICLES | {"all", "both", "our", "the"}]
+            if norms[t] in lx.MOVED_PEOPLE and obj and obj[-1] in lx.MOVING_VERBS:
+                continue  # "I've walked all the guests up to the Fellside": whom we moved, not "built_for_the_guests_of"
             phrase, voice = hit
             if voice == "active" and t > 0 and norms[t - 1] in lx.ARTICLES - {"that"} and phrase.split()[0] in (
                     norms[t], toks.tokens[t].text.lower()):
@@ -669,6 +681,9 @@ class ReportAnalyzer:
             acronym = b == a + 1 and a > 0 and len(toks.tokens[a].text) >= 2 and toks.tokens[a].text.isupper()
             # (not the first word: "ECR to bridge" is who calls)
             heading = (a == 0 or toks.sentence_start[a]) and b < len(norms) and toks.gaps[b].strip().startswith(":")
+            heading = heading or (a == 0 or toks.sentence_start[a]) and toks.tokens[a].text[:1].isupper() \
+                and norms[b:b + 1] == ("to",) and b + 1 < len(norms) and toks.tokens[b + 1].text[:1].isupper()
+            # ("Wetsuit Shack to Lake Rescue.": a place calling by its name, the article left off as call signs do)
             if norms[a:b] in self._needs_article and prev in ("a", "an", "another") and b - a == 1 \
                     and toks.tokens[a - 1].text.islower():  # (not a letter that labels it: "the A cabins")
                 continue  # "a horse down in a box": the KB's "the box" is one place, "a box" any
@@ -765,6 +780,7 @@ class ReportAnalyzer:
         places.extend(self._modifier_names(toks, norms, {i for p in places for i in range(p.start_tok, p.end_tok)},
                                            rel_ends))
         places.extend(self._headless_names(toks, norms, {i for p in places for i in range(p.start_tok, p.end_tok)}))
+        places.extend(self._things_of_a_ground(toks, norms, {i for p in places for i in range(p.start_tok, p.end_tok)}))
         places.extend(self._modifier_ones(toks, norms, places))  # (before a slip: "the larch ones" is no "larches")
         places.extend(self._misheard_names(toks, norms, {i for p in places for i in range(p.start_tok, p.end_tok)},
                                            {i for a, b, _ in all_cues for i in range(a, b)}))
@@ -784,6 +800,34 @@ class ReportAnalyzer:
                     and norms[p.start_tok - 2:p.start_tok] == ("for", "the"):
                 # "they're using the bank as the shelter for the hotel guests": whom it is for, not where
                 places[idx] = replace(p, status="reference", reason=f"modifier of '{toks.tokens[p.end_tok].text}'")
+            elif p.end_tok < len(norms) and norms[p.end_tok] in ("end", "ends") and p.start_tok >= 1 \
+                    and norms[p.start_tok - 1] == "the" and not toks.clause_start[p.end_tok] \
+                    and (p.end_tok + 1 >= len(norms) or norms[p.end_tok + 1] != "of") \
+                    and any(q.end_tok <= p.start_tok and q.landmark != p.landmark
+                            and toks.sentence_of[q.start_tok] == toks.sentence_of[p.start_tok] for q in places):
+                # "LAKESHORE CAR PARK - water over the bonnets at the lake end": the end of the place before it
+                places[idx] = replace(p, status="reference", reason="names an end of the place before it")
+            elif p.end_tok - p.start_tok == 1 and p.end_tok + 2 < len(norms) and norms[p.end_tok].isalpha() \
+                    and norms[p.end_tok + 1] == "of" and p.start_tok >= 1 and norms[p.start_tok - 1] == "the" \
+                    and not toks.clause_start[p.end_tok] and norms[p.end_tok] not in lx.FUNCTION_WORDS | lx.COPULAS \
+                    and self._cues.match_at(norms, p.end_tok) is None \
+                    and any(q.start_tok in (p.end_tok + 2, p.end_tok + 3) and q.landmark != p.landmark for q in places):
+                # "the river pier of the long legs": a part of the place after it, the river only says which
+                places[idx] = replace(p, status="reference", reason=f"modifier of '{toks.tokens[p.end_tok].text}'")
+            elif p.start_tok >= 3 and norms[p.start_tok - 1] in lx.ARTICLES and norms[p.start_tok - 2] == "from" \
+                    and (norms[p.start_tok - 3] in lx.NUMBER_WORDS | {"hundred", "dozen"} or norms[p.start_tok - 3].isdigit()) \
+                    and not toks.clause_start[p.start_tok - 2]:
+                # "about two hundred from the bottling line mustered there": whom, by where they came from
+                places[idx] = replace(p, status="reference", reason="where the people counted came from")
+            elif self._fallen_into(toks, norms, p, places):
+                # "the bridge ... it's collapsed into the drain", "bricks falling into the river": where it fell
+                places[idx] = replace(p, status="reference", reason="where something fell, no claim of its own")
+            elif p.start_tok >= 2 and norms[p.start_tok - 1] == "from" and p.end_tok < len(norms) \
+                    and (norms[p.start_tok - 2] in lx.LAY_PERSONS | lx.WORKER_PERSONS | _PERSON_WORDS
+                         | {"men", "women", "folk", "folks", "lads", "guys", "lot", "neighbours", "neighbors"}) \
+                    and norms[p.end_tok] in lx.HEARSAY_VERBS and not toks.clause_start[p.end_tok]:
+                # "lads from tin town say the cottage ... its roof's been ripped off": who tells, not where
+                places[idx] = replace(p, status="reference", reason="where the people who tell of it are from")
         for idx, p in enumerate(places):
             # "the supermarket across the square": where the place is, seen from here, not a place of its own
             if p.start_tok >= 3 and norms[p.start_tok - 1] in lx.ARTICLES and norms[p.start_tok - 2] in ("across", "over") \
@@ -816,7 +860,16 @@ class ReportAnalyzer:
         self._resolve_itself(ex)
         self._relative_clause_anchors(ex, norms)
         self._resolve_containers(ex, norms)
-        ex.places.extend(self._definite_heads(toks, norms, ex.places))  # again, after descriptions ("the portal with ...")
+        heads = self._definite_heads(toks, norms, ex.places)  # again, after descriptions ("the portal with ...")
+        ex.places[:] = [replace(h, status="reference", reason="where something fell, no claim of its own")
+                        if h.status == "active" and h.via is None and self._fallen_into(toks, norms, h, ex.places + heads)
+                        else h for h in ex.places]  # (once descriptions are resolved: the bridge over the drain)
+        heads = [replace(h, status="reference", reason="where something fell, no claim of its own")
+                 if self._fallen_into(toks, norms, h, ex.places) else h for h in heads]
+        ex.places.extend(heads)
+        if any(h.end_tok < len(norms) and norms[h.start_tok] in ("that", "this")
+               and self._relations.match_at(norms, h.end_tok) is not None for h in heads):
+            self._resolve_relations(ex)  # "the yard that shed takes its plate from": the shed anchors a relation
         self._speakers_premises(ex, norms)
         self._ordinal_anaphora(toks, norms, ex)
         self._apply_place_negation(ex)
@@ -1046,6 +1099,13 @@ class ReportAnalyzer:
             if closed and (verb.endswith(("s", "ed")) or verb in ("look", "take", "draw", "feed", "face")) \
                     and verb not in lx.COPULAS:
                 only_describes(p1, p2)
+                continue
+            last = next((k for k in range(end, min(len(norms), p2.end_tok + 8)) if k + 1 >= len(norms)
+                         or toks.clause_start[k + 1]), None)
+            if verb in ("is", "s") and last is not None and norms[last] in ("of", "to", "from") and last - p2.end_tok >= 3 \
+                    and not any(self._cues.match_at(norms, k) is not None for k in range(end, last)):
+                # "the arches Del's gym is on the end of --": where the gym is, said only to say which arches
+                only_describes(p1, p2)
 
     def _ordinal_anaphora(self, toks: Tokens, norms: tuple[str, ...], ex: Extraction) -> None:
         """"the chemist's and the coffee shop. The first one -- a woman on the floor": an ordinal, "the
@@ -1183,6 +1243,30 @@ class ReportAnalyzer:
         hit = self._cues.match_at(norms, j) if j < len(norms) and not toks.clause_start[j] else None
         return hit is not None and hit[1][0] == self._person_category
 
+    @staticmethod
+    def _fallen_into(toks: Tokens, norms: tuple[str, ...], p: PlaceMention, places: list[PlaceMention]) -> bool:
+        """"the bridge over the sixteen foot ... it's collapsed into the drain": a thing (no person) fallen into
+        water (a river, a drain), after another place said in its sentence; the water only says where it went."""
+        k = p.start_tok - 1
+        while k >= 0 and norms[k] in lx.ARTICLES:
+            k -= 1
+        if k < 1 or norms[k] not in ("into", "onto") or toks.clause_start[k]:
+            return False
+        v = k - 1
+        if norms[v] not in lx.FALLEN_VERBS:
+            return False
+        subj = [w for w in norms[max(0, v - 3):v] if w not in ("has", "have", "had", "s", "is", "are", "been", "just",
+                                                                    "now", "all", "half", "partly")]
+        if not subj or subj[-1] in _PERSON_WORDS | lx.LAY_PERSONS | lx.WORKER_PERSONS | lx.PERSON_SUBJECTS \
+                | {"someone", "somebody", "man", "woman", "kid", "child", "he", "she", "they", "i", "we"}:
+            return False
+        water = WATERCOURSE_WORDS & (set(name_words(p.landmark)) | set(norms[p.start_tok:p.end_tok]))
+        if not water:
+            return False  # ("the steeple has collapsed into the minster": the minster is hit too)
+        n = toks.sentence_of[p.start_tok]
+        return any(q.end_tok <= k and q.landmark != p.landmark and toks.sentence_of[q.start_tok] == n
+                   and q.status == "active" for q in places)
+
     def _people_of_place_tell(self, toks: Tokens, norms: tuple[str, ...], w: int) -> bool:
         """"Brewery staff tell me their cellars are flooding": the people the place's name modifies (token ``w``)
         tell of their own place ("their" and a thing that is no person), and a cue says what it is."""
@@ -1201,6 +1285,37 @@ class ReportAnalyzer:
         return any(self._cues.match_at(norms, i) is not None for i in range(k + 2, min(len(norms), k + 6))
                    if not any(toks.sentence_start[m] for m in range(k + 2, i + 1)))
 
+    @functools.cached_property
+    def _grounds_of_things(self) -> dict[str, str]:
+        """What stands on a ground named after it, by landmark: "caravan" of "seabank caravan site" (the only
+        name that holds the word, and it ends in a word for ground)."""
+        owners: dict[str, set[str]] = {}
+        for lm in self.kb.landmarks:
+            for form in lm.surface_forms:
+                words = name_words(form)
+                if len(words) >= 2 and words[-1] in lx.GROUND_HEADS:
+                    for w in words[:-1]:
+                        if w.isalpha() and len(w) >= 4:
+                            owners.setdefault(w, set()).add(lm.name)
+        used = self._name_word_owners
+        return {w: next(iter(v)) for w, v in owners.items() if len(v) == 1 and used.get(w, v) == v}
+
+    def _things_of_a_ground(self, toks: Tokens, norms: tuple[str, ...], taken: set[int]) -> list[PlaceMention]:
+        """"the bank the caravans huddle under": the things a ground is named after, said in the plural, are the
+        ground ("seabank caravan site")."""
+        out = []
+        for i in range(1, len(norms)):
+            w, raw = norms[i], toks.tokens[i].text.lower()
+            if i in taken or norms[i - 1] != "the" or w not in self._grounds_of_things or not raw.endswith("s") \
+                    or raw.endswith("'s") or raw == w:
+                continue
+            anchors = i + 1 < len(norms) and not toks.clause_start[i + 1] and (
+                self._relations.match_at(norms, i + 1) is not None or norms[i + 1] in self._relation_verbs)
+            if not anchors:
+                continue  # (only as a relation's anchor: "the giraffes are all right" are the animals)
+            out.append(self._mention(toks, i - 1, i + 1, self._grounds_of_things[w]))
+        return out
+
     def _partial_names(self, toks: Tokens, norms: tuple[str, ...], taken: set[int]) -> list[PlaceMention]:
         """"the hardware —": the first words of a multi-word name, cut off by a pause."""
         if not hasattr(self, "_prefixes"):
@@ -1214,6 +1329,13 @@ class ReportAnalyzer:
             for n in (2, 1):
                 key = norms[i : i + n]
                 end = i + n
+                owners = self._name_prefix_owners.get(key, ()) if n == 2 else ()
+                if len(key) == 2 and len(owners) == 1 and end < len(norms) and norms[end] in lx.MODIFIED_BY \
+                        and not toks.clause_start[end] and not any(j in taken for j in range(i, end)):
+                    # "the drainage board lads": the name's first words before the people of the place
+                    out.append(self._mention(toks, i, end, next(iter(owners))))
+                    taken.update(range(i, end))
+                    break
                 if len(key) < n or key not in self._prefixes or any(j in taken for j in range(i, end)):
                     continue
                 gap = toks.gaps[end] if end < len(norms) else toks.text[toks.tokens[end - 1].end :]
@@ -1321,6 +1443,7 @@ class ReportAnalyzer:
                     for f in self.kb.landmark_by_name[self._heads[w]].surface_forms):
                 continue  # "walking wounded off the trails": many trails, not the one "skyline trail"
             said_of = contracted or i + 1 >= len(norms) or toks.clause_start[i + 1] or norms[i + 1] in lx.COPULAS \
+                or norms[i + 1] in ("itself", "themselves", "themselve") and norms[i - 2:i - 1] != ("not",) \
                 or norms[i + 1] in ("and", "but") and norms[i + 2:i + 3] in (
                     ("theres",), ("there",), ("its",), ("it",), ("i",), ("we",), ("hes",), ("shes",), ("theyre",))
             # ("collapsed across the yard and there's a lad pinned under it": a clause of its own follows)
@@ -1345,7 +1468,9 @@ class ReportAnalyzer:
             if i + 1 < len(norms) and norms[i + 1] in ("that", "which", "where", "who") and not toks.clause_start[i + 1]:
                 continue  # "the compound that supplies it": a description for the relation passes
             if i + 1 < len(norms) and not toks.clause_start[i + 1] and norms[i + 1].isalpha() \
-                    and norms[i + 1] not in lx.FUNCTION_WORDS and self._relations.match_at(norms, i + 1) is None \
+                    and not (norms[i + 1] in ("itself", "themselves", "themselve") and norms[i - 2:i - 1] != ("not",)) \
+                    and norms[i + 1] not in lx.FUNCTION_WORDS \
+                    and self._relations.match_at(norms, i + 1) is None \
                     and not toks.tokens[i].text.lower().endswith(("'s", "’s")) and not verb_next:
                 continue  # "the lodge gate": a longer noun phrase ("the barn's out now" is the barn)
             out.append(self._mention(toks, i, i + 1, self._heads[w]))
@@ -1765,9 +1890,16 @@ class ReportAnalyzer:
             if end < len(norms) and norms[end] == "itself":
                 end += 1
             elif end < len(norms) and not toks.clause_start[end] and norms[end] not in lx.COPULAS | lx.ANAPHOR_VERBS \
-                    and not toks.tokens[i].text.lower().endswith(("'s", "’s")):
-                continue
+                    and not toks.tokens[i].text.lower().endswith(("'s", "’s")) \
+                    and not (norms[i - 1] in ("that", "this") and (norms[end] in self._relation_verbs
+                                                                  or self._relations.match_at(norms, end) is not None)):
+                continue  # (but "the yard that shed takes its plate from": the shed just said, anchoring a relation)
             before = [p for p in places if p.end_tok <= i - 1 and p.landmark in names]
+            if end < len(norms) and not toks.clause_start[end] and norms[end] not in lx.COPULAS | lx.ANAPHOR_VERBS \
+                    and not toks.tokens[i].text.lower().endswith(("'s", "’s")):
+                # (the demonstrative before a relation: a place itself said, not a description's reference point)
+                before = [p for p in before if p.status == "active" and not any(
+                    self._relations.match_at(norms, k) is not None for k in (p.end_tok, p.end_tok + 1) if k < len(norms))]
             if not before:
                 continue
             raw = toks.tokens[i].text.lower()
@@ -1947,6 +2079,11 @@ class ReportAnalyzer:
             if len(w) < self.RESPELL_MIN_CHARS or not w.isalpha() or w in known or t.text.lower() in known \
                     or w in self._named_words or w in self._vocabulary_words:
                 continue
+            past = next((f for f in (w[:-1] + "ed", w[:-1] + w[-2:-1] + "ed") if f in self._vocabulary_words), None) \
+                if w.endswith("d") and not w.endswith("ed") and len(w) >= 5 else None
+            if past is not None:
+                fixed[t.i] = replace(t, norm=past)  # texted: "my dad is trapd", "the stairs hav collapsd"
+                continue
             hits = [r for r in self._respellings if r[0] == w[0] and abs(len(r) - len(w)) <= 1 and _one_edit(w, r)
                     and not w.startswith(r) and not r.startswith(w)]  # ("fenced" is no slip of "fence")
             if len(hits) == 1:
@@ -2075,8 +2212,13 @@ class ReportAnalyzer:
                 named_next = b in blocked and any(i in blocked for i in range(max(0, a - 3), a))
                 if nxt in ("nobody", "noone", "nothing", "none", "no") or norms[b:b + 2] == ("no", "one"):
                     continue  # "we've got, er, no, nobody under it": an answer, not a repair
-                if not (pause_after or named_next or nxt in ("no", "wait", "sorry", "the", "its", "it", "i", "actually",
-                                                             "make", "he", "hes", "she", "shes", "they", "theyre")):
+                said_again = nxt in ("im", "at", "in", "on", "by", "were") \
+                    and any(i in blocked for i in range(b + 1, min(len(norms), b + 4))) \
+                    and any(i in blocked for i in range(max(0, a - 8), a))
+                # ("im at the wind tunnel um no im at the market hall": the frame said again, another place in it)
+                if not (pause_after or named_next or said_again
+                        or nxt in ("no", "wait", "sorry", "the", "its", "it", "i", "actually",
+                                   "make", "he", "hes", "she", "shes", "they", "theyre")):
                     continue
                 if nxt == "the" and not (a > 0 and toks.clause_start[a]):
                     ahead = [i for i in (b + 1, b + 2) if i < len(norms)]
@@ -2138,6 +2280,10 @@ class ReportAnalyzer:
         # "the park's under water": a word of a danger phrase, not a relation
         rel_hits = [h for h in rel_hits if not (h[1] - h[0] == 1 and (m := self._cues.match_at(norms, h[0])) is not None
                                                 and m[0] > h[1])]
+        # "sand boils all along the back of it": a part of the place, not ``backs_onto``
+        rel_hits = [h for h in rel_hits if not (norms[h[0]] in ("back", "front") and h[0] >= 2
+                                                and norms[h[0] - 1] == "the"
+                                                and norms[h[0] - 2] in ("along", "on", "across", "over", "down", "up"))]
         if self.kb.relations:
             cue_tokens = self._claim_cue_tokens(norms, place_tokens | marker_tokens)
             covered = place_tokens | marker_tokens | {i for a, b, _ in rel_hits if b - a > 1 for i in range(a, b)}
@@ -2161,13 +2307,25 @@ class ReportAnalyzer:
                     # the straight, known once the description before it is resolved, in the pass after)
                 self._resolve_one(ex, toks, norms, a, b, phrase, flipped, place_tokens, marker_tokens,
                                   inverse_pass=pass_no in (2, 3))
-        if self.kb.relations:
-            self._resolve_shared_heads(ex, toks, norms, place_tokens, marker_tokens)
+        if self.kb.relations and self._resolve_shared_heads(ex, toks, norms, place_tokens, marker_tokens):
+            # "the orchard owned by the farm whose tractors sit in the boneyard": a description so resolved may
+            # anchor the one before it
+            for a, b, (phrase, flipped) in ordered:
+                self._resolve_one(ex, toks, norms, a, b, phrase, flipped, place_tokens, marker_tokens, inverse_pass=False)
         if self.embedder is not None and self.kb.relations:
             cue_tokens = self._claim_cue_tokens(norms, place_tokens | marker_tokens)
+            described = sum(p.via is not None for p in ex.places)
             self._resolve_open(ex, toks, norms, place_tokens, marker_tokens, cue_tokens)
             self._resolve_open_inverse(ex, toks, norms, place_tokens, marker_tokens, cue_tokens)
             self._resolve_open_ours(ex, toks, norms, place_tokens, marker_tokens, cue_tokens)
+            if sum(p.via is not None for p in ex.places) > described:
+                # "the building the new maltings malts its barley for ..., and the pub it casts its shadow over": a
+                # place so described may be the "it" of a description after it
+                for a, b, (phrase, flipped) in ordered:
+                    if a > 0 and norms[a - 1] in ("it", "they", "its"):
+                        for inverse in (False, True):
+                            self._resolve_one(ex, toks, norms, a, b, phrase, flipped, place_tokens, marker_tokens,
+                                              inverse_pass=inverse)
             if self._resolve_related(ex, toks, norms, place_tokens, marker_tokens, cue_tokens):
                 # "the path that winds down to the row after the A cabins": a description so resolved may anchor
                 # a listed one
@@ -2177,6 +2335,7 @@ class ReportAnalyzer:
         if self.kb.relations and rel_hits:
             self._unresolved_own_heads(ex, toks, norms, rel_hits)
         self._restated_anchors(ex, toks, norms)
+        self._coordinated_anchors(ex, toks, norms)
         if self.kb.relations:
             self._possessive_roles(ex, toks, norms)
         for d in [p for p in ex.places if p.via is not None and p.status == "active"]:
@@ -2218,6 +2377,31 @@ class ReportAnalyzer:
                 ex.places[ex.places.index(p)] = replace(p, status="reference", reason=f"reference point: {via}")
                 ex.places.append(self._mention(toks, p.start_tok, end, target, via=via))
                 break
+
+    def _coordinated_anchors(self, ex: Extraction, toks: Tokens, norms: tuple[str, ...]) -> None:
+        """"the place that sends the drays out to the market hall and the Mow": a second anchor joined to a
+        description's own by "and", that the KB relates to the place described by the same relation, is a
+        reference point too, not a place claimed."""
+        for d in [p for p in ex.places if p.status == "active" and p.via is not None]:
+            rel = next((r for r in self.kb.relations if d.via.startswith(f"{r.subject} {r.relation} {r.object}")), None)
+            if rel is None:
+                continue
+            for idx, q in enumerate(ex.places):
+                k = d.end_tok
+                if k < len(norms) and norms[k] == "and":
+                    k += 1
+                while k < len(norms) and norms[k] in lx.ARTICLES:
+                    k += 1
+                if q.status != "active" or q.via is not None or q.start_tok != k or k == d.end_tok \
+                        or norms[d.end_tok] != "and" or toks.clause_start[d.end_tok]:
+                    continue
+                if {"both", "are", "were", "too", "itself", "themselve", "themselves"} & set(norms[q.end_tok:q.end_tok + 3]) \
+                        or any(r.landmark == q.landmark and d.start_tok <= r.start_tok < d.end_tok for r in ex.places):
+                    continue  # ("the shop next to the bakery and the chemist are both alight": two places; "... from
+                    # the halt and the halt itself is the RVP": the anchor said again, of its own)
+                if any(r.relation == rel.relation and {r.subject, r.object} == {d.landmark, q.landmark}
+                       for r in self.kb.relations):
+                    ex.places[idx] = replace(q, status="reference", reason=f"a second reference point: {rel.relation}")
 
     @staticmethod
     def _restated_anchors(ex: Extraction, toks: Tokens, norms: tuple[str, ...]) -> None:
@@ -2280,13 +2464,14 @@ class ReportAnalyzer:
         return self._tails_cache
 
     def _resolve_shared_heads(self, ex: Extraction, toks: Tokens, norms: tuple[str, ...], place_tokens: set[int],
-                              marker_tokens: set[int]) -> None:
+                              marker_tokens: set[int]) -> bool:
         """"the escalator shaft that comes down into the link passage": a name several landmarks share,
         then a linking phrase to a named place. Of the landmarks the name fits, the one the KB relates to
         that place (by any relation) is meant; the named place is its reference point."""
         tails = self._shared_tails()
+        found_any = False
         if not tails:
-            return
+            return found_any
         for anchor in [p for p in ex.places if p.status == "active" and p.via is None]:
             j = anchor.start_tok
             while j > 0 and norms[j - 1] in lx.DETERMINERS and anchor.start_tok - j < 2:
@@ -2320,7 +2505,9 @@ class ReportAnalyzer:
                 ex.places.append(self._mention(toks, a - 1, anchor.end_tok, target,
                                                via=f"{via} (the '{' '.join(key)}' related to {anchor.landmark})"))
                 place_tokens.update(range(a - 1, anchor.end_tok))
+                found_any = True
                 break
+        return found_any
 
     OPEN_RELATION_MIN_SIM = 0.55
     OPEN_RELATION_HINT_SIM = 0.35
@@ -2581,7 +2768,13 @@ class ReportAnalyzer:
         # (a name that only modifies a noun may still anchor one: "the cottages they built for the bobbin mill's workers")
         for anchor in [p for p in ex.places if p.via is None and (p.status == "active" or p.status == "reference"
                                                                   and p.reason.startswith(("reference point of an unresolved",
-                                                                                           "modifier of '")))]:
+                                                                                           "modifier of '")))
+                       or p.via is not None and p.status == "active" and not p.via.startswith("description of")]:
+            # (a resolved description anchors one only by a head that names its one relative: "the bridge over the
+            # drain the tin shed drinks from")
+            if anchor not in ex.places:
+                continue  # (taken up already as the outer description of another anchor)
+            described_anchor = anchor.via is not None
             a = anchor.start_tok
             while a > 0 and norms[a - 1] in lx.DETERMINERS and anchor.start_tok - a < 2:
                 a -= 1
@@ -2598,13 +2791,21 @@ class ReportAnalyzer:
                     break
             if head is None:
                 continue
-            between = [norms[i] for i in range(head + 1, a) if norms[i] not in lx.FILLERS]
+            between = [norms[i] for i in range(head + 1, a) if norms[i] not in lx.FILLERS
+                       or norms[i] == "over" and i + 1 < len(norms) and norms[i + 1] in lx.DETERMINERS]
+            # (the radio's "over" is a filler; "the bridge over the sixteen foot" is no radio)
+
             end = anchor.end_tok
+            locative = False
             if between and between[0] == "whose":
                 pass  # "the chapel whose old vicarage is now Dinsdale's", "the farm whose old stables the team hut was"
             elif between:
-                if set(between) <= lx.LOCATIVE_LINKS or any(w in lx.COPULAS - {"s"} for w in between):
-                    continue  # "the roof of the bakery", "the kiosk at the services": where it is, not another place
+                if any(w in lx.COPULAS - {"s"} for w in between):
+                    continue
+                if set(between) <= lx.LOCATIVE_LINKS:
+                    # "the roof of the bakery", "the kiosk at the services": where it is, not another place (unless
+                    # the head names the one landmark the KB relates to it: "the bridge over the sixteen foot")
+                    locative = True
                 if not (between[0] in lx.PREPOSITIONS | lx.RELATION_ENDINGS | lx.DESCRIPTION_OPENERS
                         or between[0].endswith(("s", "ed", "ing"))):
                     continue  # "a tank wagon on the siding": the noun goes on, it heads nothing
@@ -2625,6 +2826,8 @@ class ReportAnalyzer:
                 verb = any((w.endswith("s") or w.endswith("ed")) and (i + 1 == end or norms[i + 1] in lx.RELATION_ENDINGS)
                            for i in range(anchor.end_tok, end) if (w := toks.tokens[i].text.lower()).isalpha()
                            and norms[i] not in lx.FUNCTION_WORDS | lx.CLAUSE_SUBJECTS | {"there", "here"})
+                verb = verb or bool(after) and after[-1] in lx.IRREGULAR_PARTICIPLES and end - 1 > anchor.end_tok \
+                    and (end >= len(norms) or toks.clause_start[end])  # "the chapel that the mill owners built."
                 if not after or after[0] in lx.COPULAS | lx.PREPOSITIONS \
                         or not (verb or any(w.endswith("s") or w.endswith("ed") or w in lx.RELATION_ENDINGS for w in after)):
                     continue  # ("a tank wagon on the loading siding is leaking": the anchor's own predicate)
@@ -2638,10 +2841,21 @@ class ReportAnalyzer:
             idx = ex.places.index(anchor)
             if not related:
                 continue
-            named = {n: v for n, v in related.items() if norms[head] in name_words(n)
-                     or any(norms[head] in name_words(f) for f in self.kb.landmark_by_name[n].surface_forms)}
-            said = self._relations.match_at(norms, next(i for i in range(head + 1, a) if norms[i] not in lx.FILLERS)) \
-                if between else None
+            hword = norms[head]
+            if hword == "one" and head >= 3 and norms[head - 1] == "the" and toks.clause_start[head - 1] \
+                    and norms[head - 3] == "the" and norms[head - 2].isalpha():
+                hword = norms[head - 2]  # "the terrace, the one where the bottling hall's workers lodge"
+            named = {n: v for n, v in related.items() if hword in name_words(n)
+                     or any(hword in name_words(f) for f in self.kb.landmark_by_name[n].surface_forms)}
+            if locative and (len(named) != 1 or between[0] in ("of", "at", "in", "inside")):
+                continue
+            if described_anchor and (len(named) != 1 or not between or between[0] not in lx.PREPOSITIONS
+                                     or norms[anchor.start_tok] != "the" or len(between) > 2):
+                continue
+            if norms[head] in lx.ROOMS_OF_A_BUILDING and not named:
+                continue  # "the room above the market hall": a room of it, no landmark of its own
+            said = self._relations.match_at(norms, next(i for i in range(head + 1, a) if norms[i] not in lx.FILLERS
+                                                        or norms[i] == between[0])) if between else None
             if not named and said is not None and not said[1][1] and any(rel.phrase == said[1][0] for rel in self.kb.relations) \
                     and norms[head] not in lx.UNNAMING_HEADS and not any(
                     _same_stem(norms[head], d) for n in related for d in self._description_words()[n]):
@@ -2650,7 +2864,11 @@ class ReportAnalyzer:
                 ex.places[idx] = replace(anchor, status="reference",
                                          reason=f"reference point of the description headed by '{toks.tokens[head].text}'")
                 continue
-            pool = named or related
+            kinds = (norms[head], *lx.PLACE_KIND_SYNONYMS.get(norms[head], ()))
+            head_described = {n: v for n, v in related.items() if norms[head] not in lx.UNNAMING_HEADS
+                              and any(_same_stem(k, d) for k in kinds for d in self._description_words()[n])}
+            # ("the pub that's the local for caulkers' terrace": the one its description calls a pub)
+            pool = named or head_described or related
             target = None
             linking = [norms[i] for i in range(head + 1, end) if not anchor.start_tok <= i < anchor.end_tok
                        and len(norms[i]) >= 4 and norms[i].isalpha() and norms[i] not in lx.FUNCTION_WORDS
@@ -2953,6 +3171,8 @@ class ReportAnalyzer:
                 if anchor.via is not None and b < len(norms) and norms[b] in ("that", "which"):
                     return  # "the rock face that looks down over the holiday park": the place resolved already; the
                     # word before its "that" ("face", as in "facing") is its head, no relation of its own
+                if a > 0 and norms[a - 1] in lx.ROOMS_OF_A_BUILDING:
+                    return  # "the room above the market hall": a room of it, when nothing lies above it
                 ex.places[idx] = replace(anchor, status="reference",
                                          reason=f"reference point of an unresolved '{phrase}' description")
                 return
@@ -3061,6 +3281,9 @@ class ReportAnalyzer:
             head_of = {name for name, ws in desc.items() if norms[i] in ws} if norms[i] not in lx.DESCRIPTION_STOPWORDS else set()
             if scores and head_of and scores[0][1] not in head_of:
                 i += 1  # "the pub that watches over whatever lets the water down": a pub, whatever else it shares
+                continue
+            if scores and norms[i] not in lx.UNNAMING_HEADS | lx.DESCRIPTION_STOPWORDS and norms[i] not in desc[scores[0][1]]:
+                i += 1  # "the pub where the drainage board lads ...": the depot's words, but no pub
                 continue
             if scores and scores[0][0] >= 2 and (len(scores) == 1 or scores[0][0] > scores[1][0]):
                 a = s_ - 1 if has_det else s_
@@ -3290,6 +3513,9 @@ class ReportAnalyzer:
             # "the park behind the warehouse. Across the street from it": the pronoun takes up the place
             # spoken of, not the reference point of its description
             before = [p for p in before if p.status != "reference"] or before
+            if norms[j] == "them":  # "the arches Del's gym is on the end of -- and the yard that backs onto them"
+                before = [p for p in before if p.text.lower().endswith("s")
+                          and not p.text.lower().replace("’", "'").endswith("'s")] or before
             if before:
                 ante = max(before, key=lambda p: p.end_tok)
                 return ante, j + 1, True
@@ -3331,6 +3557,9 @@ class ReportAnalyzer:
         if j < 0 and p.end_tok + 1 < len(norms) and norms[p.end_tok] in lx.CALLER_ROLES | {"reception", "desk"} \
                 and norms[p.end_tok + 1] in lx.ARTICLES | {"we", "i", "weve", "ive", "were", "im"}:
             return True  # "Clinic reception. The building next door to us ...": the place that calls
+        if j >= 3 and norms[j] in ("at", "from") and norms[j - 1].isalpha() and norms[j - 1] not in lx.FUNCTION_WORDS \
+                and ("this", "is") in {norms[k:k + 2] for k in range(max(0, j - 5), j - 1)}:
+            return True  # "This is the caretaker at Fenside School": where the speaker works
         # "I run the ironmonger's", "we manage the hotel": the speaker's own place
         return j >= 1 and norms[j] in ("run", "own", "manage", "keep") and norms[j - 1] in ("i", "we")
 
@@ -3869,6 +4098,22 @@ class ReportAnalyzer:
                                                                for i in before)) and not any(self._cues.match_at(norms, i) for i in before)
 
     @staticmethod
+    def _calls_by_name(toks: Tokens, norms: tuple[str, ...], p: PlaceMention) -> bool:
+        """"Tower to Rescue One: the flying club ... is safe": a place that opens the message calling a station
+        by name is who calls; unless the message speaks of its own place ("we", "our building"), it claims nothing."""
+        a, e = p.start_tok, p.end_tok
+        if toks.sentence_of[a] != 0 or not all(w in lx.FILLERS | lx.DETERMINERS for w in norms[:a]) \
+                or norms[e:e + 1] != ("to",) or e + 1 >= len(norms) or not toks.tokens[e + 1].text[:1].isupper():
+            return False
+        k = e + 1
+        while k < len(norms) and k - e <= 4 and not toks.clause_start[k] and (
+                toks.tokens[k].text[:1].isupper() or toks.tokens[k].text.isdigit()):
+            k += 1
+        if k >= len(norms) or not toks.clause_start[k]:
+            return False
+        return not {"we", "our", "us", "were", "weve", "ours", "i", "im", "my", "ive", "here", "this"} & set(norms[k:])
+
+    @staticmethod
     def _from_label(toks: Tokens, norms: tuple[str, ...], p: PlaceMention) -> bool:
         """"From the pump house: ...", "Relay from a station on the east ridge: ...": who is calling."""
         k = _noun_phrase_start(norms, p)
@@ -3988,6 +4233,9 @@ class ReportAnalyzer:
                 continue
             if self._called_station(toks, norms, p, ex.places):
                 ex.places[idx] = replace(p, status="reference", reason="the station called ('X to Y,'): no claim")
+                continue
+            if self._calls_by_name(toks, norms, p):
+                ex.places[idx] = replace(p, status="reference", reason="who is calling ('X to Y:'), said of no more")
                 continue
             if toks.sentence_start[p.start_tok] and p.end_tok + 1 < len(norms) \
                     and norms[p.end_tok] in ("reporting", "calling", "speaking") and toks.clause_start[p.end_tok + 1]:
@@ -4790,8 +5038,10 @@ class ReportAnalyzer:
                 continue  # "forty of us who came down from the campsite": people moving, nothing fallen
             if cue.category == self._person_category and norms[a:b] in (("gone", "under"), ("going", "under"),
                                                                          ("went", "under")) \
-                    and any(i in self._place_tokens for i in range(max(0, a - 3), a)) \
+                    and any(i in self._place_tokens or norms[i] in lx.PREMISES_PARTS | lx.STRUCTURE_WORDS
+                            or norms[i] in lx.DESCRIPTION_HEADS - {"one"} for i in range(max(0, a - 3), a)) \
                     and not any(norms[i] in lx.PERSON_SUBJECTS or norms[i] in _PERSON_WORDS for i in range(max(0, a - 3), a)):
+                # (or a place's own thing said as a noun: "the yard's gone under")
                 und = self._category_for_role(lx.UNDESIRABLE, "flooded, under water")
                 if und is not None:  # "whatever the Fleece looks out over has gone under": the place, flooded
                     cue = replace(cue, category=und, reason="a place gone under")
@@ -4823,6 +5073,9 @@ class ReportAnalyzer:
                     j -= 1
                 if j >= 0 and norms[j] in lx.THING_SUBJECTS - {"lift"}:
                     continue  # "my bus is stuck in a flash flood": a vehicle stuck, no person said to be
+            if a >= 4 and norms[a - 1] == "in" and norms[a - 4:a - 2] in (("to", "his"), ("to", "her"), ("to", "their")) \
+                    and norms[a - 5:a - 4] == ("up",) and self.kb.category_by_name[cat].role == Role.UNDESIRABLE:
+                continue  # "he's up to his chest in silt": what the person is stuck in, said of him
             if norms[a:b] == ("clear",) and any(norms[j] in ("keep", "keeping") and not any(
                     toks.clause_start[t] for t in range(j + 1, a + 1)) for j in range(max(0, a - 8), a)):
                 continue  # "keep the road in front of the supermarket clear": an order, not a safe place
@@ -4833,6 +5086,7 @@ class ReportAnalyzer:
         cues = self._contradiction_words_dropped(toks, norms, cues)
         cues = self._read_cue_pairs(toks, norms, cues)
         cues = self._damage_by_cause(norms, cues)
+        cues = self._spread_of_what(toks, norms, cues)
         cues = self._sheltered_people(norms, cues)
         cues.extend(self._predicative_cues(ex, norms, blocked | {i for c in cues for i in range(c.start_tok, c.end_tok)}))
         cues.extend(self._person_cues(ex, norms, blocked | neutral | {i for c in cues for i in range(c.start_tok, c.end_tok)}))
@@ -5179,7 +5433,9 @@ class ReportAnalyzer:
         if j < 0:
             return False
         w = norms[j]
-        if w == "after" and any(norms[m] in _PERSON_WORDS for m in range(max(0, j - 10), j)):
+        if w == "after" and any(
+                norms[m] in _PERSON_WORDS | lx.LAY_PERSONS | lx.WORKER_PERSONS | {"men", "women", "folk", "folks"}
+                for m in range(max(0, j - 10), j)):
             return True  # "woman with hypothermia at the ferry landing after falling in"
         if w in lx.STRUCTURE_WORDS:
             return False  # "the access ladder's collapsed": a ladder, not a ladder crew
@@ -5193,6 +5449,10 @@ class ReportAnalyzer:
             return True  # "his neighbour's collapsed" (not the post office's neighbour: the place next to it)
         if j > 0 and norms[j - 1] in ("mr", "mrs", "ms", "miss", "dr", "keeper", "nurse", "officer", "sister"):
             return True  # "keeper Mills has collapsed": a name after a title
+        if (w in lx.NUMBER_WORDS or w.isdigit()) and any(
+                norms[m] in _PERSON_WORDS | lx.LAY_PERSONS | lx.WORKER_PERSONS | {"men", "women", "folk", "folks"}
+                for m in range(max(0, j - 10), j)):
+            return True  # "the men in there are choking, two have collapsed": two of the people just said
         counted = j > 0 and (norms[j - 1] in lx.NUMBER_WORDS or norms[j - 1].isdigit())
         if counted and w.endswith(("er", "ent", "ist", "or", "ian")):
             return True
@@ -5221,6 +5481,24 @@ class ReportAnalyzer:
                           and self.kb.category_by_name[d.category].role == Role.UNDESIRABLE), None)
             if cause is not None and cause.category != c.category:
                 out[i] = replace(c, category=cause.category)
+        return out
+
+    def _spread_of_what(self, toks: Tokens, norms: tuple[str, ...], cues: list[CueMention]) -> list[CueMention]:
+        """"Fire in the plating shed, and it's spreading to the paint shop": a word that says a danger spreads
+        names no kind of its own; where the KB splits the undesirable role it takes the kind of the danger said
+        before it in its sentence (or the one before), not the category its word lies nearest to."""
+        if len(self.kb.categories_with_role(Role.UNDESIRABLE)) < 2:
+            return cues
+        out = list(cues)
+        for i, c in enumerate(out):
+            if c.polarity != "affirmed" or c.source != "lexicon" or norms[c.start_tok:c.end_tok] not in lx.SPREAD_WORDS:
+                continue
+            before = [d for d in out if d.end_tok <= c.start_tok and d.polarity == "affirmed" and d.status == "active"
+                      and 0 <= toks.sentence_of[c.start_tok] - toks.sentence_of[d.start_tok] <= 1
+                      and self.kb.category_by_name[d.category].role == Role.UNDESIRABLE]
+            last = max(before, key=lambda d: d.start_tok, default=None)
+            if last is not None and last.category != c.category:
+                out[i] = replace(c, category=last.category, reason="spreads the danger said before it")
         return out
 
     def _read_cue_pairs(self, toks: Tokens, norms: tuple[str, ...], cues: list[CueMention]) -> list[CueMention]:
@@ -5677,7 +5955,8 @@ class ReportAnalyzer:
         if getattr(self, "_predicatives", None) is None:
             self._predicatives = dict(lx.PREDICATIVE_CUES)
             for word, role in lx.DESCRIBED_PREDICATIVE_CUES.items():
-                if any(word in norm_phrase(c.description) for c in self.kb.categories_with_role(role)):
+                if any(word in norm_phrase(c.description) or word in norm_phrase(c.name.replace("_", " "))
+                       for c in self.kb.categories_with_role(role)):  # (or its name: "high_and_dry")
                     self._predicatives[word] = role
         for i, w in enumerate(norms):
             role = self._predicatives.get(w)
@@ -5729,6 +6008,7 @@ class ReportAnalyzer:
             else:
                 sentences[-1] = (sentences[-1][0], i + 1)
         dropped: dict[int, str] = {}
+        forgot: list[tuple[int, int, set[str]]] = []  # ("Forget safe --": where, and the categories taken back)
         asked: set[int] = set()
         marker_starts = {ma for ma, _, _ in getattr(self, "_markers_now", [])}
         questions = self._question_sentences(toks)
@@ -5777,13 +6057,21 @@ class ReportAnalyzer:
                 asked.update(range(a, end))
                 continue
             first = norms[opener] if opener < b else ""
-            if first in lx.INSTRUCTION_VERBS and set(norms[a:b]) & lx.INSTRUCTION_WORDS:
+            said = next((i for i in range(opener + 1, b) if norms[i] not in lx.FILLERS), b)
+            hit = self._cues.match_at(norms, said) if first in ("forget", "scratch") and said < b else None
+            if hit is not None and (hit[0] >= b or toks.clause_start[hit[0]]):
+                # "Forget safe -- the plate racks have toppled": that word taken back, then the report goes on
+                forgot.append((a, hit[0], {c.category for c in cues if c.start_tok == said}))
+            elif first in lx.INSTRUCTION_VERBS and set(norms[a:b]) & lx.INSTRUCTION_WORDS:
                 dropped[n] = "an instruction to the system, not a report"
             elif any(norms[k].isdigit() and len(norms[k]) == 4 and 1900 <= int(norms[k]) <= 2025
                      and norms[k - 1] in ("in", "of", "back") for k in range(max(a, 1), b)) \
                     and set(norms[a:b]) & {"was", "were", "used"}:
                 dropped[n] = "said of another year, not a report"  # "In the big snow of 2009 the hall was the warm room"
         asked |= _indirect_questions(toks, norms)
+        for a, e, cats in forgot:
+            cues = [replace(c, status="retracted", reason=f"taken back by '{toks.span_text(a, e)}'")
+                    if c.category in cats and c.start_tok < e and c.polarity == "affirmed" else c for c in cues]
         supposed = self._conditional_tokens(toks, norms)
         self._non_report_tokens = ({i for n, (a, b) in enumerate(sentences) if n in dropped for i in range(a, b)}
                                    | asked | supposed)
@@ -5920,6 +6208,11 @@ class ReportAnalyzer:
                                 and (any(t in places for t in range(j + 1, min(len(norms), j + 12)))
                                      or norms[j + 1:j + 2] in (("theres",), ("there",)))), None)
                     # ("it was just the alarm going, but there's a dude in there who's cut his hand": news after it)
+                    if but is None:  # "there's nothing wrong with the roof, it's the floor, there's beer ...": the
+                        # contrast said as "it's the"
+                        but = next((j for j in range(i + len(key), len(norms)) if sentence_of[j] == sentence_of[i]
+                                    and toks.clause_start[j] and norms[j:j + 2] in (("its", "the"), ("it", "is"))
+                                    and norms[j + 1:j + 3] != ("is", "a")), None)
                     if but is not None and until == len(norms):
                         until = but
                     # "someone trapped in the supermarket but no, false alarm — it's the gym, someone's trapped
@@ -6854,6 +7147,17 @@ class ReportAnalyzer:
             if tail[:1] == ["empty"] and len(seg_places.get(k, [])) == 1:
                 continue  # "the gas cage is on fire, reception's empty, we checked it": said of it, its own
             nxt_words = [w for w in norms[segs[k][1]:min(len(norms), segs[k][1] + 8)] if w not in lx.FILLERS]
+            if not tail and nxt_words[:1] in (["i"], ["we"]) and nxt_words[1:2] and nxt_words[1] in (
+                    "walked", "drove", "went", "passed", "cycled", "checked", "looked", "saw", "been"):
+                continue  # "and er zion, I walked past zion, it's all locked up": a clause of the speaker's own
+            unsure = tail[-4:] + nxt_words[:4]
+            if "dunno" in unsure or any(unsure[m:m + 2] in (["dont", "know"], ["not", "sure"], ["havent", "been"],
+                                                             ["no", "idea"], ["cant", "say"])
+                                        for m in range(len(unsure) - 1)):
+                continue  # "and er the market outside it, uh, I dunno, I haven't been out there": nothing said of it
+            if "still" in tail[:3] and len(seg_places.get(k, [])) == 1 \
+                    and {"running", "working", "chugging", "pumping", "operating", "turning"} & set(tail + nxt_words[:5]):
+                continue  # "the crowtree pumps have tripped out ... and old thumper's still chugging away": working
             if set(tail[:2]) & lx.FINE_WORDS and len(seg_places.get(k, [])) == 1 \
                     and nxt_words[:2] in (["its", "the"], ["it", "is"]):
                 continue  # "the bridge is fine, it's the acoustic barn where the water's coming in": the contrast
@@ -7025,13 +7329,17 @@ class ReportAnalyzer:
         bound = {id(c.cue) for c in pairs}
         toks = ex.tokens
         mine = [c for c in cues if id(c) not in bound and c.status == "active" and c.polarity == "affirmed"
-                and self.kb.category_by_name[c.category].role == Role.CRITICAL
-                and any(norms[i] in ("i", "im", "we", "were", "me") for i in range(max(0, c.start_tok - 3), c.start_tok)
-                        if toks.sentence_of[i] == toks.sentence_of[c.start_tok])]
+                and (self.kb.category_by_name[c.category].role == Role.CRITICAL
+                     and any(norms[i] in ("i", "im", "we", "were", "me") for i in range(max(0, c.start_tok - 3), c.start_tok)
+                             if toks.sentence_of[i] == toks.sentence_of[c.start_tok])
+                     or self.kb.category_by_name[c.category].role == Role.DESIRABLE
+                     and any(norms[i] in ("we", "were", "weve", "us", "our") for i in range(max(0, c.start_tok - 8), c.start_tok)
+                             if toks.sentence_of[i] == toks.sentence_of[c.start_tok]))]
+        # ("This is the caretaker at Fenside School. ... We're running it as a warm room": the speaker's own place)
         if not mine:
             return []
         def said_at(p: PlaceMention) -> bool:  # "I'm in crane, the, the STS cranes": a few words after "I'm in"
-            if self._speaker_at(norms, p):
+            if self._speaker_at(norms, p) or self._speaker_here(norms, p):
                 return True
             for j in range(max(1, p.start_tok - 6), p.start_tok):
                 if norms[j] in ("in", "at", "on", "inside") and norms[j - 1] in ("im", "were") \
@@ -7694,6 +8002,8 @@ def _phrases(phrases: Iterable[str]) -> PhraseMatcher[str]:
 
 
 # Parts every building has: no head of a recombined name ("the fire doors" is no "the red doors" fire station)
+WATERCOURSE_WORDS = frozenset(lx.WATER_BODIES | {"drain", "dyke", "dike", "ditch", "leat", "goit", "lade", "water",
+                                                  "channel", "cut", "pond", "reservoir", "estuary", "harbour", "dock"})
 _COMMON_PART_HEADS = frozenset({"door", "doors", "window", "windows", "step", "steps", "roof", "wall", "walls"})
 # "don't know where it's coming from"; "source identified as": one hit per place in the text, the longest
 _UNKNOWN_SOURCE = _phrases(lx.UNKNOWN_SOURCE)
@@ -7937,6 +8247,10 @@ def _relation_forms(phrase: str) -> list[tuple[str, bool]]:
         for copula in ("is", "are", "was", "were"):
             out.extend(((f"{copula} {rest}", False), (f"that {copula} {rest}", False), (f"which {copula} {rest}", False)))
         out.extend(((f"that {rest}", False), (rest, False)))
+        if words[-1] == "by" and len(words) >= 3 and words[1].endswith(("ed", "id", "lt", "ht", "wn", "en")):
+            # "was paid for by" said actively, read backwards: "whoever paid for the football ground"
+            active = " ".join(words[1:-1])
+            out.extend(((active, True), (f"that {active}", True), (f"who {active}", True)))
         return _finished_forms(phrase, out)
     if not (len(words) == 1 or verb.endswith("s") or plain_verb) or _direction_word(verb) or verb.endswith("ss"):
         return _finished_forms(phrase, out)
@@ -7970,18 +8284,28 @@ def _finished_forms(phrase: str, out: list[tuple[str, bool]]) -> list[tuple[str,
     _with_receiver_forms(phrase, out)
     _with_shared_its(phrase, out)
     _with_verb_synonyms(out)
+    _with_their(out)
     _with_dropped_to(phrase, out)
     return list(dict.fromkeys(out))
+
+
+def _with_their(out: list[tuple[str, bool]]) -> None:
+    """"slakes its thirst at" said of a plural: "the pub where the board lads slake their thirst"."""
+    out.extend((" ".join("their" if w == "its" else w for w in form.split()), inv) for form, inv in list(out)
+               if "its" in form.split())
 
 
 def _with_dropped_to(phrase: str, out: list[tuple[str, bool]]) -> None:
     """"wherever the gravel park sends its shuttle buses": "sends its shuttle buses to" with its "to" left
     unsaid, as "wherever" asks where to. Only for a verb, an object noun phrase and "to"."""
     words = phrase.split()
-    if len(words) < 4 or words[-1] != "to" or not words[0].endswith("s") or words[0].endswith("ss") \
+    if len(words) < 4 or words[-1] not in ("to", "at") or not words[0].endswith("s") or words[0].endswith("ss") \
             or words[1] not in ("its", "their", "the", "a") or words[-2] in lx.NOT_VERBS | lx.RELATION_ENDINGS:
         return
-    out.extend((form[:-3], inv) for form, inv in list(out) if form.endswith(" to") and not inv and len(form.split()) >= 4)
+    # (and "at": "the pub where the lads slake their thirst")
+    last = f" {words[-1]}"
+    out.extend((form[:-len(last)], inv) for form, inv in list(out)
+               if form.endswith(last) and not inv and len(form.split()) >= 4)
 
 
 def _with_verb_synonyms(out: list[tuple[str, bool]]) -> None:

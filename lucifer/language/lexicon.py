@@ -32,6 +32,10 @@ def _add(role: str, phrases: str) -> None:
 
 
 _add(UNDESIRABLE, """
+been torn off|torn away|
+have toppled|has toppled|toppled over|toppled all over|it's a wreck|its a wreck|a complete wreck|a total wreck|
+back wall in|side wall in|front wall in|gable wall in|pushed the wall in|pushed its wall in|
+has half gone into the water|s half gone into the water|half gone into the river|
 water has gone over|water's gone over|gone over both ends|is roaring|brown and boiling|over the sill|stopper|
 half under|are afloat|is afloat|afloat and|drifting into|jammed against|starting to bow|stones pinging off|
 thick black stuff|black plumes|plumes of|plume of|exposed conductors|treat as energised|energised|
@@ -152,6 +156,10 @@ _add(DESIRABLE, "|".join(f"{verb} {who} {where}"
                          for where in ("there", "in there", "up there", "over there")))
 
 _add(CRITICAL, """
+folk up on the roofs|people up on the roofs|got folk up on the roofs|got people up on the roofs|up on their roofs|
+can't pull himself out|can't pull herself out|cant pull himself out|cant pull herself out|up to his chest|up to her chest|
+up to his waist|up to her waist|up to his neck|up to her neck|can't get her door open|can't get his door open|
+cant get her door open|cant get his door open|can't get the door open|
 can't get off|cant get off|won't answer|wont answer|can't open the doors|cant open the doors|never came back|
 hasn't come back|hasnt come back|up to his knees|up to her knees|head bleed|query head bleed|can't feel his legs|can't feel her legs|cant feel his legs|cant feel her legs|
 can't feel their legs|come off the ladder|came off the ladder|fallen off the ladder|fell off the ladder|gcs|
@@ -421,9 +429,9 @@ FALSE_ALARM = ["false alarm", "scratch their earlier call", "scratch my earlier 
                "nothing has happened at ours", "that was yesterday's call", "that was yesterday", "exercise exercise", "for the exercise only", "that's for the exercise",
                "none of this is real", "this is a test message", "the scenario has", "tomorrow's exercise",
                "in the exercise", "stand down on the", "standing down on the", "stood down on the", "never mind", "nevermind", "disregard my last", "disregard the last report",
-               "nothing in it", "nothing to it", "on purpose", "controlled burn", "just steam", "only steam", "just fog", "only fog", "just mist", "only mist", "extractor fan", "was just a", "was only a",
+               "nothing in it", "nothing to it", "on purpose", "controlled burn", "controlled bonfire", "controlled fire", "burning the prunings", "burning prunings", "burning off the", "like they do every", "just steam", "only steam", "just fog", "only fog", "just mist", "only mist", "extractor fan", "was just a", "was only a",
                "was just their", "was just the", "its just their", "is just their", "its only their", "nothing to worry about", "ignore my last", "cancel my last",
-               "disregard my last message", "disregard previous", "disregard my earlier report",
+               "disregard my last message", "nobody in any", "disregard the call about", "disregard the call re", "disregard the report about", "disregard the call from", "burning leaves in a brazier", "burning leaves in a", "disregard previous", "disregard my earlier report",
                "ignore my earlier report", "disregard the earlier report", "disregard the earlier message",
                "disregard the last message", "disregard my earlier message", "disregard the previous message",
                "faulty detector", "faulty sensor", "faulty alarm", "false reading", "detector fault", "were wrong", "were unfounded",
@@ -625,6 +633,8 @@ MOVING_VERBS = {"moved", "moving", "taken", "taking", "took", "brought", "bringi
 # Which one of a row or group ("the end one", "the first one")
 MEMBER_WORDS = {"end", "first", "last", "second", "third", "middle", "corner", "nearest", "far", "top", "bottom"}
 # Words for a room or part of a place said right after its name ("the Chlorine Palace sports hall")
+# Rooms and floors of a building: "the room above the market hall" is in it
+ROOMS_OF_A_BUILDING = _keyed({"room", "rooms", "flat", "flats", "loft", "attic", "cellar", "basement", "floor", "floors"})
 ROOM_WORDS = _keyed({"sports", "function", "main", "waiting", "staff", "hall", "room", "rooms", "kitchen", "bar",
                      "lounge", "basement", "canteen", "foyer", "annexe", "yard", "car", "park"})
 # Rooms of any premises, said after where a crew is ("we're at the halt and the waiting room's ...")
@@ -1162,7 +1172,7 @@ DANGER_KINDS: dict[str, list[str]] = {
               "water pooling", "water's pooling", "got the sea in", "sea's in", "sea in the house", "taking water",
               "taking in water", "under the tide", "waves breaking over", "waves breaking clean over",
               "waves coming over", "over the bonnet", "over the bonnets", "got the water", "took the water", "bank-full", "bank full", "bankfull", "running bank-full", "inches of silt",
-              "silt across", "went straight through the", "wiped out by the wave", "wiped out by the surge", "inundated", "inundation", "standing water", "boat sunk", "boats sunk", "sunk at its moorings", "sunk at their moorings",
+              "silt across", "went straight through the", "wiped out by the wave", "water s gone clean over", "under a foot of", "under two feet of", "under a foot of beer", "a foot of beer", "beer pouring down", "beer pouring", "beer everywhere", "inches deep right across", "two inches deep", "inches deep across", "wading in it", "wading through it", "river s come over", "river s come straight over", "river has come over", "river s come right over", "come straight over the wall", "come over the wall", "lapping at the front", "lapping at the doorsteps", "lapping at the front doorsteps", "lapping at the door", "is still coming up", "s still coming up", "still coming up", "water s starting to come in", "water is starting to come in", "starting to come in under", "come in under her front door", "come in under the door", "coming in under the door", "coming in under the front door", "going clean over the", "water s going clean over", "water is going clean over", "water going clean over", "going over the top of the", "wall of brown water", "wall of water", "brown water going over", "is filling up through", "s filling up through", "filling up through the", "come right up over the", "has come right up over", "come up over the road", "water has gone clean over", "water s gone right over", "gone clean over the", "can't even see the parapet", "cant even see the parapet", "by the wave", "tidal wave", "tsunami", "storm surge", "tidal surge", "freak wave", "the wave hit", "the wave came", "the wave went", "wiped out by the surge", "inundated", "inundation", "standing water", "boat sunk", "boats sunk", "sunk at its moorings", "sunk at their moorings",
               "whole boat sunk", "gushing out", "gushing everywhere", "spewing everywhere", "spewing water",
               "spewing out", "bubbling up through", "water's bubbling up", "water bubbling up", "nearly to the roof with water",
               "to the roof with water", "a proper lake", "it's a lake", "a lake now", "under a metre of sea", "metre of sea", "foot of sea", "feet of sea",
@@ -1235,6 +1245,8 @@ OTHER_TIMES = [("this", "morning"), ("earlier",), ("yesterday",), ("last", "nigh
                ("this", "afternoon"), ("earlier", "on"), ("earlier", "today")]
 
 # One-word names of open areas that other places stand in or on ("the coffee shop on the square").
+# Words for a ground named after what stands on it ("caravan site", "tent field", "boat yard")
+GROUND_HEADS = {"site", "park", "field", "yard", "ground", "grounds", "camp", "compound", "pen", "lot"}
 AREA_HEADS = {"square", "green", "street", "precinct", "quay", "quayside", "marketplace", "plaza", "common", "prom",
               "promenade", "seafront", "front", "estate", "high"}
 
@@ -1347,11 +1359,16 @@ OWN_PLACES = {"road", "street", "lane", "avenue", "close", "drive", "house", "ga
 # Parts of a building a relation may be said of ("by the bus station doors"): at the building itself.
 ENTRANCE_PARTS = _keyed({"door", "doors", "entrance", "entrances", "gate", "gates", "steps", "forecourt", "porch", "windows"})
 # "the fire's spread from the bank to the bakery": a danger that reaches a second place.
+# Verbs of a thing falling into somewhere ("it's collapsed into the drain", "bricks falling into the river")
+FALLEN_VERBS = {"collapsed", "collapsing", "fallen", "falling", "fell", "dropped", "dropping", "slid", "sliding",
+                "tumbled", "tumbling", "toppled", "crashed", "slumped", "gone", "went"}
+# Cues that say a danger spreads, naming no kind of their own
+SPREAD_WORDS = {("spreading",), ("spread",), ("reignited",), ("spreading", "fast"), ("spreading", "quickly")}
 SPREAD_VERBS = {"spread", "spreading", "jumped", "jumping", "moved", "moving", "travelled", "traveled", "gone", "got",
                 "spilled", "spilling", "run", "running", "crept", "creeping"}
 # Written abbreviations of the words descriptions and names are built from ("the bldg nxt to town hall").
 ABBREVIATIONS = {"bldg": "building", "bldgs": "building", "nxt": "next", "opp": "opposite", "mkt": "market",
-                 "sq": "square", "rptd": "reported", "ppl": "people", "bhd": "behind", "adj": "adjacent"}
+                 "sq": "square", "rptd": "reported", "ppl": "people", "bhd": "behind", "adj": "adjacent", "hav": "have"}
 
 # Free relatives that head a description of a place: "whatever the creche looks out onto", "wherever the
 # store takes its deliveries through"
@@ -1410,7 +1427,7 @@ DANGER_KIND_EXTRA: dict[str, list[str]] = {
               "lost the roof", "lost its leads", "lost the leads", "roof lifted", "blown clean off", "blown off",
               "off its hinges", "pulled up by the roots", "open to the sky", "rain's coming in", "rain is coming in",
               "rain coming straight in", "rain's coming straight in", "rain pouring in", "rain is pouring"],
-    "fire": ["flare-up", "flare up", "flared up", "flaring up", "burning debris", "roof is going up", "roof's going up", "roofs going up", "thatch is going up", "thatch's going up",
+    "fire": ["flare-up", "flare up", "flared up", "flaring up", "burning debris", "roof is going up", "houses have caught", "have caught", "is going up", "s going up", "going up properly", "roof's going up", "roofs going up", "thatch is going up", "thatch's going up",
              "thatch going up", "embers are landing", "embers landing", "embers are falling", "embers falling", "embers coming down"],
     "electric": ["wire is hot", "wires are hot", "line is hot", "lines are hot", "wire as hot", "wires as hot",
                  "conductors are on", "conductor down", "conductors down", "feeder is down", "feeder down", "lines down",
@@ -1442,6 +1459,9 @@ PLURAL_FIRES = frozenset({"flames", "flame", "fires", "fire"})
 
 # Place nouns of three letters that may stand for a name they end ("the gym" for "hollis school gym")
 SHORT_PLACE_NOUNS = frozenset({"gym", "pub", "inn", "spa", "zoo", "dam"})
+# Kinds of place said by another word ("the pub" for a landmark its description calls an inn)
+PLACE_KIND_SYNONYMS = {"pub": ("inn", "tavern", "alehouse"), "inn": ("pub", "tavern"), "tavern": ("pub", "inn"),
+                       "shop": ("store",), "store": ("shop",)}
 
 # Clipped words that stand for a longer first word of a name ("the bio block", "the sci park"), though they
 # are words of their own too
