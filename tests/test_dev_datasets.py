@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev63) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev64) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -91,6 +91,7 @@ POWER_STATION = ROOT / "knowledge_bases" / "power_station"
 FEN_TOWN = ROOT / "knowledge_bases" / "fen_town"
 BREWERY_TOWN = ROOT / "knowledge_bases" / "brewery_town"
 LIGHTHOUSE_POINT = ROOT / "knowledge_bases" / "lighthouse_point"
+SLATE_VALLEY = ROOT / "knowledge_bases" / "slate_valley"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -333,6 +334,7 @@ SETS = {
     "dev62/fen_town": _set("dev62/fen_town.jsonl", FEN_TOWN, "ft62", TWENTY, sep=""),
     "dev63/brewery_town": _set("dev63/brewery_town.jsonl", BREWERY_TOWN, "bt63", TWENTY, sep=""),
     "dev63/lighthouse_point": _set("dev63/lighthouse_point.jsonl", LIGHTHOUSE_POINT, "lp63", TWENTY, sep=""),
+    "dev64/slate_valley": _set("dev64/slate_valley.jsonl", SLATE_VALLEY, "sv64", TWENTY, sep=""),
 }
 
 
