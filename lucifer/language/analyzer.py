@@ -594,7 +594,7 @@ class ReportAnalyzer:
                 continue  # "the stoker -- the bloke who stokes it": what a person does, not ``is_stoked_from``
             if norms[t] in lx.HEARSAY_VERBS and norms[t + 1:t + 2] not in (("its",), ("their",)):
                 continue  # "lads from tin town say the cottage ...": who tells it, not ``says_its_prayers_at``
-            obj = [w for w in norms[max(0, t - 4):t] if w not in lx.FILLERS | lx.ARTICLES | {"all", "both", "our", "the"}]
+            obj = [w for w in norms[max(0, t - 4):t] if w not in lx.FILLERS | lx.ARTICLES | {"all", "both", "our"}]
             if norms[t] in lx.MOVED_PEOPLE and obj and obj[-1] in lx.MOVING_VERBS:
                 continue  # "I've walked all the guests up to the Fellside": whom we moved, not "built_for_the_guests_of"
             phrase, voice = hit
@@ -861,12 +861,11 @@ class ReportAnalyzer:
         self._relative_clause_anchors(ex, norms)
         self._resolve_containers(ex, norms)
         heads = self._definite_heads(toks, norms, ex.places)  # again, after descriptions ("the portal with ...")
-        ex.places[:] = [replace(h, status="reference", reason="where something fell, no claim of its own")
-                        if h.status == "active" and h.via is None and self._fallen_into(toks, norms, h, ex.places + heads)
-                        else h for h in ex.places]  # (once descriptions are resolved: the bridge over the drain)
-        heads = [replace(h, status="reference", reason="where something fell, no claim of its own")
-                 if self._fallen_into(toks, norms, h, ex.places) else h for h in heads]
         ex.places.extend(heads)
+        # (once descriptions are resolved: "the bridge over the sixteen foot ... it's collapsed into the drain")
+        ex.places[:] = [replace(h, status="reference", reason="where something fell, no claim of its own")
+                        if h.status == "active" and h.via is None and self._fallen_into(toks, norms, h, ex.places)
+                        else h for h in ex.places]
         if any(h.end_tok < len(norms) and norms[h.start_tok] in ("that", "this")
                and self._relations.match_at(norms, h.end_tok) is not None for h in heads):
             self._resolve_relations(ex)  # "the yard that shed takes its plate from": the shed anchors a relation
@@ -1442,8 +1441,11 @@ class ReportAnalyzer:
                     name_words(f)[-1:] and f.lower().rstrip().endswith("s")
                     for f in self.kb.landmark_by_name[self._heads[w]].surface_forms):
                 continue  # "walking wounded off the trails": many trails, not the one "skyline trail"
+            # "the baths themselves are being used as a warm centre" (not "it's not the hotel itself burning")
+            selfsame = i + 1 < len(norms) and norms[i + 1] in ("itself", "themselves", "themselve") \
+                and norms[i - 2:i - 1] != ("not",)
             said_of = contracted or i + 1 >= len(norms) or toks.clause_start[i + 1] or norms[i + 1] in lx.COPULAS \
-                or norms[i + 1] in ("itself", "themselves", "themselve") and norms[i - 2:i - 1] != ("not",) \
+                or selfsame \
                 or norms[i + 1] in ("and", "but") and norms[i + 2:i + 3] in (
                     ("theres",), ("there",), ("its",), ("it",), ("i",), ("we",), ("hes",), ("shes",), ("theyre",))
             # ("collapsed across the yard and there's a lad pinned under it": a clause of its own follows)
@@ -1468,8 +1470,7 @@ class ReportAnalyzer:
             if i + 1 < len(norms) and norms[i + 1] in ("that", "which", "where", "who") and not toks.clause_start[i + 1]:
                 continue  # "the compound that supplies it": a description for the relation passes
             if i + 1 < len(norms) and not toks.clause_start[i + 1] and norms[i + 1].isalpha() \
-                    and not (norms[i + 1] in ("itself", "themselves", "themselve") and norms[i - 2:i - 1] != ("not",)) \
-                    and norms[i + 1] not in lx.FUNCTION_WORDS \
+                    and not selfsame and norms[i + 1] not in lx.FUNCTION_WORDS \
                     and self._relations.match_at(norms, i + 1) is None \
                     and not toks.tokens[i].text.lower().endswith(("'s", "’s")) and not verb_next:
                 continue  # "the lodge gate": a longer noun phrase ("the barn's out now" is the barn)
