@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev64) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev65) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -92,6 +92,8 @@ FEN_TOWN = ROOT / "knowledge_bases" / "fen_town"
 BREWERY_TOWN = ROOT / "knowledge_bases" / "brewery_town"
 LIGHTHOUSE_POINT = ROOT / "knowledge_bases" / "lighthouse_point"
 SLATE_VALLEY = ROOT / "knowledge_bases" / "slate_valley"
+LOCK_FLIGHT = ROOT / "knowledge_bases" / "lock_flight"
+HILL_TOWN = ROOT / "knowledge_bases" / "hill_town"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -335,6 +337,8 @@ SETS = {
     "dev63/brewery_town": _set("dev63/brewery_town.jsonl", BREWERY_TOWN, "bt63", TWENTY, sep=""),
     "dev63/lighthouse_point": _set("dev63/lighthouse_point.jsonl", LIGHTHOUSE_POINT, "lp63", TWENTY, sep=""),
     "dev64/slate_valley": _set("dev64/slate_valley.jsonl", SLATE_VALLEY, "sv64", TWENTY, sep=""),
+    "dev65/lock_flight": _set("dev65/lock_flight.jsonl", LOCK_FLIGHT, "lf65", TWENTY, sep=""),
+    "dev65/hill_town": _set("dev65/hill_town.jsonl", HILL_TOWN, "ht65", TWENTY, sep=""),
 }
 
 
