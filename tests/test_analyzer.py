@@ -3440,6 +3440,18 @@ def test_dev54_phenomena(kb_analyzers, analyzer, kb, text, expected):
     ("brewery_town", "the building the new maltings malts its barley for has got CO2 pooling in the mash room, and the pub "
                      "it casts its shadow over has been made a rest station, that's safe",
      [("barley mow", "settled_ground"), ("brewhouse tower", "swill_and_vapour")]),
+    # a posture relation said without its verb, read both ways ("sits cheek by jowl with")
+    ("lock_flight", "casualty at the tea room, no, sorry, at the cottage cheek by jowl with the tea room, head injury",
+     [("top lock cottage", "someone_in_peril")]),
+    ("hill_town", "fire at the place cheek by jowl with the surgery, and the surgery itself is open as a warm room",
+     [("health centre", "harbour_place"), ("well chapel", "kindling_and_fume")]),
+    # "is dug into the yard of" said of the place before: "its yard"
+    ("lock_flight", "fire at hartley's and, um, a lad hurt down in the dock that's dug into its yard",
+     [("dry dock", "someone_in_peril"), ("hartley's boatyard", "flame_and_fug")]),
+    # "drop" of a glossary term ("masonry drop") retracts nothing
+    ("hill_town", "masonry drop at the chapel that keeps vigil over hillside cemetery", [("cemetery chapel", "slump_and_spill")]),
+    ("hill_town", "the spot that looks straight down on the market cross has shed half its arch, and a man's pinned "
+                  "under the stones", [("castle gatehouse", "person_in_straits"), ("castle gatehouse", "slump_and_spill")]),
 ])
 def test_dev60_phenomena(kb_analyzers, kb, text, expected):
     assert claims(kb_analyzers[kb], text) == expected

@@ -592,6 +592,8 @@ class ReportAnalyzer:
                 continue  # "I'm parked up on the headland car park": where the speaker is, not "car park for"
             if t > 0 and norms[t - 1] in ("who", "whos"):
                 continue  # "the stoker -- the bloke who stokes it": what a person does, not ``is_stoked_from``
+            if t > 0 and (t - 1) in cue_tokens and word.lower().endswith("ing"):
+                continue  # "smoke pouring out of the place ...": the danger's own verb, not ``pours_for_the_boaters_on``
             if norms[t] in lx.HEARSAY_VERBS and norms[t + 1:t + 2] not in (("its",), ("their",)):
                 continue  # "lads from tin town say the cottage ...": who tells it, not ``says_its_prayers_at``
             obj = [w for w in norms[max(0, t - 4):t] if w not in lx.FILLERS | lx.ARTICLES | {"all", "both", "our"}]
@@ -2934,7 +2936,10 @@ class ReportAnalyzer:
                 prev = max(earlier, key=lambda p: p.end_tok)
                 if self._follow(prev.landmark, phrase, "", inverse=flipped)[0] == anchor.landmark:
                     anchor = prev
-        implicit = norms[a:b] in lx.IMPLICIT_ANCHOR or "its" in norms[a:b] and _shares_a_noun_with(phrase)
+        implicit = norms[a:b] in lx.IMPLICIT_ANCHOR or "its" in norms[a:b] and (
+            _shares_a_noun_with(phrase) or norms[b - 1] != "of" and _noun_of(phrase) is not None
+            and phrase.split()[0] in _STATE_VERBS)
+        # ("the dock that's dug into its yard": whose yard, the place said before)
         # ("the hall that shares its vestry wall": whose wall, the place said before)
         if anchor is None and implicit and (b >= len(norms) or ex.tokens.clause_start[b]
                                                                     or not any(p.start_tok == b for p in ex.places)) \
@@ -3323,9 +3328,13 @@ class ReportAnalyzer:
         """"the church's opposite number", "the health centre's neighbour", "its twin"."""
         toks = ex.tokens
         norms = toks.norms(0, len(toks))
+        said = [(a, b) for a, b, _ in self._relations.find_all(norms)
+                if norms[a] in ("that", "which") or a > 0 and norms[a - 1] in ("that", "which", "s", "thats")]
         for k in range(1, len(norms)):
             if toks.tokens[k - 1].text.lower() not in ("its", "their") or any(p.start_tok <= k < p.end_tok for p in ex.places):
                 continue
+            if any(a < k - 1 and b > k for a, b in said):
+                continue  # "the dock that's dug into its yard": a relative clause's relation, said of the place before
             # a noun phrase of its own ("..., its twin, ...", "in their sister hangar"), not an object ("sharing its wall")
             if toks.clause_start[k - 1] or (k >= 2 and norms[k - 2] in lx.PREPOSITIONS):
                 before = [p for p in ex.places if p.end_tok < k]
@@ -3820,7 +3829,8 @@ class ReportAnalyzer:
                     or norms[p.start_tok] in ("its", "thats"):
                 continue  # ("... and it isn't. The cafe is, though": the negation ends with its sentence; "it's
                 # not it's the one next to it": a new clause)
-            neg = norms[j] in ("not", "nt", "isnt", "wasnt") or norms[j] in lx.RETRACT_VERBS or (
+            neg = norms[j] in ("not", "nt", "isnt", "wasnt") or norms[j] in lx.RETRACT_VERBS and not any(
+                (m := self._cues.match_at(norms, i)) is not None and i < j < m[0] for i in range(max(0, j - 3), j)) or (
                 norms[j] == "negative" and norms[j + 1] == "on"  # "negative on the quarry, it's the campsite"
             ) or (
                 # "from the school, no, the post office, negative the school": said again only to deny it
@@ -8003,6 +8013,8 @@ def _phrases(phrases: Iterable[str]) -> PhraseMatcher[str]:
 
 
 # Parts every building has: no head of a recombined name ("the fire doors" is no "the red doors" fire station)
+# The verbs of a relation that names a state ("is dug into the yard of", "stands in the shadow of")
+_STATE_VERBS = frozenset({"is", "are", "was", "were", "stands", "sits", "lies", "stand", "sit", "lie"})
 WATERCOURSE_WORDS = frozenset(lx.WATER_BODIES | {"drain", "dyke", "dike", "ditch", "leat", "goit", "lade", "water",
                                                   "channel", "cut", "pond", "reservoir", "estuary", "harbour", "dock"})
 _COMMON_PART_HEADS = frozenset({"door", "doors", "window", "windows", "step", "steps", "roof", "wall", "walls"})
@@ -8234,6 +8246,8 @@ def _relation_forms(phrase: str) -> list[tuple[str, bool]]:
     swapped = [lx.ANTONYMS.get(w, w) for w in words]
     if swapped != words:
         out.append((" ".join(swapped), True))
+    if words[0] in ("sits", "stands", "lies") and len(words) >= 4 and words[-1] in ("with", "to", "of"):
+        out.append((" ".join(words[1:]), False))  # "the cottage cheek by jowl with the tea room": the posture unsaid
     verb = words[0]
     rest = " ".join(words[1:])
     # a plural subject's verb ("flower stalls | huddle under the eaves of"; "river stairs | lead down to")
@@ -8248,6 +8262,9 @@ def _relation_forms(phrase: str) -> list[tuple[str, bool]]:
         for copula in ("is", "are", "was", "were"):
             out.extend(((f"{copula} {rest}", False), (f"that {copula} {rest}", False), (f"which {copula} {rest}", False)))
         out.extend(((f"that {rest}", False), (rest, False)))
+        if cut is not None and cut >= 3 and words[-1] == "of":
+            # "whatever the dry dock is dug into" for "is dug into the yard of": said short, the noun unsaid
+            out.extend(_relation_forms(" ".join(words[:cut])))
         if words[-1] == "by" and len(words) >= 3 and words[1].endswith(("ed", "id", "lt", "ht", "wn", "en")):
             # "was paid for by" said actively, read backwards: "whoever paid for the football ground"
             active = " ".join(words[1:-1])
@@ -8285,9 +8302,30 @@ def _finished_forms(phrase: str, out: list[tuple[str, bool]]) -> list[tuple[str,
     _with_receiver_forms(phrase, out)
     _with_shared_its(phrase, out)
     _with_verb_synonyms(out)
+    _with_its_noun(phrase, out)
     _with_their(out)
     _with_dropped_to(phrase, out)
     return list(dict.fromkeys(out))
+
+
+def _noun_of(phrase: str) -> tuple[int, int] | None:
+    """Where the noun of a relation named "... the <noun> of" stands (``is_dug_into_the_yard_of``), as a word span."""
+    words = phrase.replace("_", " ").split()
+    k = next((i for i, w in enumerate(words) if w == "the" and i >= 1), None)
+    if k is None or words[-1] != "of" or len(words) - 1 - (k + 1) < 1 or len(words) - 1 - (k + 1) > 2:
+        return None
+    return k + 1, len(words) - 1
+
+
+def _with_its_noun(phrase: str, out: list[tuple[str, bool]]) -> None:
+    """"is dug into the yard of" said of the place before: "the dock that's dug into its yard"."""
+    span = _noun_of(phrase)
+    if span is None or phrase.replace("_", " ").split()[0] not in _STATE_VERBS:
+        return  # (a state only: "keeps the tractors of" said "its tractors" is read as a possessive)
+    noun = " ".join(phrase.replace("_", " ").split()[span[0]:span[1]])
+    for form, inv in list(out):
+        if not inv and form.endswith(f" the {noun} of"):
+            out.append((form[: -len(f" the {noun} of")] + f" its {noun}", False))
 
 
 def _with_their(out: list[tuple[str, bool]]) -> None:
