@@ -825,8 +825,7 @@ class ReportAnalyzer:
                 # "the bridge ... it's collapsed into the drain", "bricks falling into the river": where it fell
                 places[idx] = replace(p, status="reference", reason="where something fell, no claim of its own")
             elif p.start_tok >= 2 and norms[p.start_tok - 1] == "from" and p.end_tok < len(norms) \
-                    and (norms[p.start_tok - 2] in lx.LAY_PERSONS | lx.WORKER_PERSONS | _PERSON_WORDS
-                         | {"men", "women", "folk", "folks", "lads", "guys", "lot", "neighbours", "neighbors"}) \
+                    and norms[p.start_tok - 2] in _PEOPLE_WORDS | {"lads", "guys", "lot", "neighbours", "neighbors"} \
                     and norms[p.end_tok] in lx.HEARSAY_VERBS and not toks.clause_start[p.end_tok]:
                 # "lads from tin town say the cottage ... its roof's been ripped off": who tells, not where
                 places[idx] = replace(p, status="reference", reason="where the people who tell of it are from")
@@ -1890,16 +1889,18 @@ class ReportAnalyzer:
             if not names or i in taken or (i - 1) in taken or norms[i - 1] not in ("the", "that", "this"):
                 continue
             end = i + 1
+            goes_on = False  # the head goes on into a longer noun phrase or a clause of its own
             if end < len(norms) and norms[end] == "itself":
                 end += 1
-            elif end < len(norms) and not toks.clause_start[end] and norms[end] not in lx.COPULAS | lx.ANAPHOR_VERBS \
-                    and not toks.tokens[i].text.lower().endswith(("'s", "’s")) \
-                    and not (norms[i - 1] in ("that", "this") and (norms[end] in self._relation_verbs
-                                                                  or self._relations.match_at(norms, end) is not None)):
+            else:
+                goes_on = end < len(norms) and not toks.clause_start[end] \
+                    and norms[end] not in lx.COPULAS | lx.ANAPHOR_VERBS \
+                    and not toks.tokens[i].text.lower().endswith(("'s", "’s"))
+            if goes_on and not (norms[i - 1] in ("that", "this") and (norms[end] in self._relation_verbs
+                                                                      or self._relations.match_at(norms, end) is not None)):
                 continue  # (but "the yard that shed takes its plate from": the shed just said, anchoring a relation)
             before = [p for p in places if p.end_tok <= i - 1 and p.landmark in names]
-            if end < len(norms) and not toks.clause_start[end] and norms[end] not in lx.COPULAS | lx.ANAPHOR_VERBS \
-                    and not toks.tokens[i].text.lower().endswith(("'s", "’s")):
+            if goes_on:
                 # (the demonstrative before a relation: a place itself said, not a description's reference point)
                 before = [p for p in before if p.status == "active" and not any(
                     self._relations.match_at(norms, k) is not None for k in (p.end_tok, p.end_tok + 1) if k < len(norms))]
@@ -2297,14 +2298,25 @@ class ReportAnalyzer:
                         if not extra_tokens.intersection(range(h[0], h[1]))] + extra
         ordered = sorted(rel_hits, key=lambda h: -h[0])
         self._rel_tokens = {i for a, b, _ in rel_hits for i in range(a, b)}
+        pronouns = ("it", "they", "its")
+
+        def again(inverse_passes: tuple[bool, ...] = (False,), on_pronouns: bool = False) -> None:
+            """Every description once more, now that more places are resolved that may anchor them."""
+            for a, b, (phrase, flipped) in ordered:
+                if on_pronouns and not (a > 0 and norms[a - 1] in pronouns):
+                    continue
+                for inverse in inverse_passes:
+                    self._resolve_one(ex, toks, norms, a, b, phrase, flipped, place_tokens, marker_tokens,
+                                      inverse_pass=inverse)
+
         # forward descriptions, then inverse ones, then forward ones that anchor on an inverse one
         # (an inverse one on a pronoun twice: "the field it plays its games on" after "the school that the prims
         # lend ... to", resolved later in the same pass)
         for pass_no in (1, 2, 3, 1):
             for a, b, (phrase, flipped) in ordered:
-                if pass_no == 3 and not (a > 0 and norms[a - 1] in ("it", "they", "its")):
+                if pass_no == 3 and not (a > 0 and norms[a - 1] in pronouns):
                     continue
-                if pass_no == 2 and a > 0 and norms[a - 1] in ("it", "they", "its") and any(
+                if pass_no == 2 and a > 0 and norms[a - 1] in pronouns and any(
                         b2 < a and "and" in norms[b2:a] for _, b2, _ in ordered):
                     continue  # ("the straight the esses run into — ..., and the corner it runs into": "it" is
                     # the straight, known once the description before it is resolved, in the pass after)
@@ -2313,8 +2325,7 @@ class ReportAnalyzer:
         if self.kb.relations and self._resolve_shared_heads(ex, toks, norms, place_tokens, marker_tokens):
             # "the orchard owned by the farm whose tractors sit in the boneyard": a description so resolved may
             # anchor the one before it
-            for a, b, (phrase, flipped) in ordered:
-                self._resolve_one(ex, toks, norms, a, b, phrase, flipped, place_tokens, marker_tokens, inverse_pass=False)
+            again()
         if self.embedder is not None and self.kb.relations:
             cue_tokens = self._claim_cue_tokens(norms, place_tokens | marker_tokens)
             described = sum(p.via is not None for p in ex.places)
@@ -2324,17 +2335,11 @@ class ReportAnalyzer:
             if sum(p.via is not None for p in ex.places) > described:
                 # "the building the new maltings malts its barley for ..., and the pub it casts its shadow over": a
                 # place so described may be the "it" of a description after it
-                for a, b, (phrase, flipped) in ordered:
-                    if a > 0 and norms[a - 1] in ("it", "they", "its"):
-                        for inverse in (False, True):
-                            self._resolve_one(ex, toks, norms, a, b, phrase, flipped, place_tokens, marker_tokens,
-                                              inverse_pass=inverse)
+                again((False, True), on_pronouns=True)
             if self._resolve_related(ex, toks, norms, place_tokens, marker_tokens, cue_tokens):
                 # "the path that winds down to the row after the A cabins": a description so resolved may anchor
                 # a listed one
-                for a, b, (phrase, flipped) in ordered:
-                    self._resolve_one(ex, toks, norms, a, b, phrase, flipped, place_tokens, marker_tokens,
-                                      inverse_pass=False)
+                again()
         if self.kb.relations and rel_hits:
             self._unresolved_own_heads(ex, toks, norms, rel_hits)
         self._restated_anchors(ex, toks, norms)
@@ -2472,9 +2477,9 @@ class ReportAnalyzer:
         then a linking phrase to a named place. Of the landmarks the name fits, the one the KB relates to
         that place (by any relation) is meant; the named place is its reference point."""
         tails = self._shared_tails()
-        found_any = False
         if not tails:
-            return found_any
+            return False
+        found_any = False
         for anchor in [p for p in ex.places if p.status == "active" and p.via is None]:
             j = anchor.start_tok
             while j > 0 and norms[j - 1] in lx.DETERMINERS and anchor.start_tok - j < 2:
@@ -2794,10 +2799,10 @@ class ReportAnalyzer:
                     break
             if head is None:
                 continue
-            between = [norms[i] for i in range(head + 1, a) if norms[i] not in lx.FILLERS
-                       or norms[i] == "over" and i + 1 < len(norms) and norms[i + 1] in lx.DETERMINERS]
+            linked = [i for i in range(head + 1, a) if norms[i] not in lx.FILLERS
+                      or norms[i] == "over" and i + 1 < len(norms) and norms[i + 1] in lx.DETERMINERS]
             # (the radio's "over" is a filler; "the bridge over the sixteen foot" is no radio)
-
+            between = [norms[i] for i in linked]
             end = anchor.end_tok
             locative = False
             if between and between[0] == "whose":
@@ -2857,8 +2862,7 @@ class ReportAnalyzer:
                 continue
             if norms[head] in lx.ROOMS_OF_A_BUILDING and not named:
                 continue  # "the room above the market hall": a room of it, no landmark of its own
-            said = self._relations.match_at(norms, next(i for i in range(head + 1, a) if norms[i] not in lx.FILLERS
-                                                        or norms[i] == between[0])) if between else None
+            said = self._relations.match_at(norms, linked[0]) if linked else None
             if not named and said is not None and not said[1][1] and any(rel.phrase == said[1][0] for rel in self.kb.relations) \
                     and norms[head] not in lx.UNNAMING_HEADS and not any(
                     _same_stem(norms[head], d) for n in related for d in self._description_words()[n]):
@@ -5444,9 +5448,7 @@ class ReportAnalyzer:
         if j < 0:
             return False
         w = norms[j]
-        if w == "after" and any(
-                norms[m] in _PERSON_WORDS | lx.LAY_PERSONS | lx.WORKER_PERSONS | {"men", "women", "folk", "folks"}
-                for m in range(max(0, j - 10), j)):
+        if w == "after" and any(norms[m] in _PEOPLE_WORDS for m in range(max(0, j - 10), j)):
             return True  # "woman with hypothermia at the ferry landing after falling in"
         if w in lx.STRUCTURE_WORDS:
             return False  # "the access ladder's collapsed": a ladder, not a ladder crew
@@ -5460,9 +5462,7 @@ class ReportAnalyzer:
             return True  # "his neighbour's collapsed" (not the post office's neighbour: the place next to it)
         if j > 0 and norms[j - 1] in ("mr", "mrs", "ms", "miss", "dr", "keeper", "nurse", "officer", "sister"):
             return True  # "keeper Mills has collapsed": a name after a title
-        if (w in lx.NUMBER_WORDS or w.isdigit()) and any(
-                norms[m] in _PERSON_WORDS | lx.LAY_PERSONS | lx.WORKER_PERSONS | {"men", "women", "folk", "folks"}
-                for m in range(max(0, j - 10), j)):
+        if (w in lx.NUMBER_WORDS or w.isdigit()) and any(norms[m] in _PEOPLE_WORDS for m in range(max(0, j - 10), j)):
             return True  # "the men in there are choking, two have collapsed": two of the people just said
         counted = j > 0 and (norms[j - 1] in lx.NUMBER_WORDS or norms[j - 1].isdigit())
         if counted and w.endswith(("er", "ent", "ist", "or", "ian")):
@@ -7945,6 +7945,8 @@ def _cue_list_into(k: int, later: int, segs: list[tuple[int, int]], seg_cues: di
 
 _PERSON_WORDS = frozenset(lx.PERSON_NOUNS) | {"pensioner", "residents", "neighbour", "neighbor", "tenant", "tenants",
                                               "lady", "gentleman", "family", "pupil", "kid", "child", "children"}
+# Any word for people, a group said as a subject too ("the men in there", "the folk at the chapel")
+_PEOPLE_WORDS = _PERSON_WORDS | lx.LAY_PERSONS | lx.WORKER_PERSONS | {"men", "women", "folk", "folks"}
 _LIST_OPENERS = frozenset({"and", "there", "theres", "is", "are", "lots", "of", "loads", "some", "also", "got", "weve"})
 
 
@@ -8012,11 +8014,12 @@ def _phrases(phrases: Iterable[str]) -> PhraseMatcher[str]:
     return matcher
 
 
-# Parts every building has: no head of a recombined name ("the fire doors" is no "the red doors" fire station)
 # The verbs of a relation that names a state ("is dug into the yard of", "stands in the shadow of")
 _STATE_VERBS = frozenset({"is", "are", "was", "were", "stands", "sits", "lies", "stand", "sit", "lie"})
+# Water a thing may fall into without the water being hit ("it's collapsed into the drain")
 WATERCOURSE_WORDS = frozenset(lx.WATER_BODIES | {"drain", "dyke", "dike", "ditch", "leat", "goit", "lade", "water",
                                                   "channel", "cut", "pond", "reservoir", "estuary", "harbour", "dock"})
+# Parts every building has: no head of a recombined name ("the fire doors" is no "the red doors" fire station)
 _COMMON_PART_HEADS = frozenset({"door", "doors", "window", "windows", "step", "steps", "roof", "wall", "walls"})
 # "don't know where it's coming from"; "source identified as": one hit per place in the text, the longest
 _UNKNOWN_SOURCE = _phrases(lx.UNKNOWN_SOURCE)
