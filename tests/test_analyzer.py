@@ -3455,3 +3455,153 @@ def test_dev54_phenomena(kb_analyzers, analyzer, kb, text, expected):
 ])
 def test_dev60_phenomena(kb_analyzers, kb, text, expected):
     assert claims(kb_analyzers[kb], text) == expected
+
+
+@pytest.mark.parametrize("kb,text,expected", [
+    # an article or "its" said before a relation name's noun ("winds_wagons_down", "loads_slate_from")
+    ("slate_valley", "the long drop - no, sorry - the building that winds the wagons down it, there's people stuck inside",
+     [("incline drum house", "hurt_or_hemmed_in")]),
+    # a jammed door where no category speaks of access is no danger of its own
+    ("slate_valley", "people stuck in the building that winds wagons down the long drop, the door's jammed",
+     [("incline drum house", "hurt_or_hemmed_in")]),
+    # ground that has slid, slumped or let go
+    ("slate_valley", "okay, east tip's gone - sorry, west tip - no, no, my mistake, it is the east one, the little tip, "
+                     "that's slid", [("east tip", "slither_and_spate")]),
+    ("slate_valley", "The big tip has let go - a run of rubbish has come down across Victoria Terrace",
+     [("victoria row", "slither_and_spate"), ("west tip", "slither_and_spate")]),
+    # people "from" a place: the place a shelter is for is not related to it
+    ("slate_valley", "The co-op's been given the all-clear and they've opened the back storeroom as a warm place for the "
+                     "old folk from Tanrallt.", [("co-op stores", "sheltering_fold")]),
+    # "Role at X:" with no other place told of: the news is of X
+    ("hop_village", "Paramedic at the mission hut: two kiln-struck lads brought in, one of them is unresponsive.",
+     [("hoppers' hospital", "person_in_peril")]),
+    ("hop_village", "Marshal at the mission hut: the tithe barn is dry and secure.", [("tithe barn", "refuge_yard")]),
+    # "keep everyone away from X, <the danger>": why to keep away
+    ("hop_village", "The tithe barn is dry and secure. Keep everyone away from the cookhouse, one of the gas bottles is "
+                    "leaking.", [("pickers' cookhouse", "singe_and_smother"), ("tithe barn", "refuge_yard")]),
+    ("hop_village", "Keep everyone away from the cookhouse until the engineer has been.", []),
+    # "the roundels themselves": the last word of an alias just said, the place itself
+    ("hop_village", "Smoke logging in the barn that leans on the cooling floor of the five roundels - and the roundels "
+                    "themselves are still alight as well",
+     [("great oast", "singe_and_smother"), ("stowage barn", "singe_and_smother")]),
+    # two hops: a relation said with a possessive inside a relative clause, then a relation to the whole
+    ("hop_village", "two people trapped in the barn that leans on the oast that dries cherry hill's hops",
+     [("stowage barn", "person_in_peril")]),
+    # "the oast in the yard of <a description>": the relation's own noun, the head before it
+    ("hop_village", "someone's kiln-struck in the oast in the yard of the farm whose pickers live in tin town",
+     [("great oast", "person_in_peril")]),
+    # a glossary term that ends in a place's name names it
+    ("tannery_town", "The salmon leap has partly washed away and there's a backed-up goit all along Mill Lane.",
+     [("corn mill race", "spate_and_sag"), ("mill weir", "spate_and_sag")]),
+    ("hop_village", "Water over the hatches at the tumbling bay.", [("hatch weir", "spate_and_sag")]),
+    # a part of the one museum ("the museum cellar")
+    ("tannery_town", "the covered market is the warm room, it's the museum cellar that's flooded",
+     [("market hall", "snug_and_sound"), ("workhouse museum", "spate_and_sag")]),
+    # "and" ends a head before a relation's anchor; "full to the top"
+    ("tannery_town", "the goit's burst its bank along mill lane and the corn mill wheel pit is full to the top",
+     [("corn mill race", "spate_and_sag"), ("wendle corn mill", "spate_and_sag")]),
+    # water all the way round
+    ("tannery_town", "my grandad is stuck on the roof of his shed at the allotments and the water is all the way round it",
+     [("riverside allotments", "folk_to_reach"), ("riverside allotments", "spate_and_sag")]),
+    # "replaced" for "superseded"
+    ("tannery_town", "the crossing the old bridge replaced is completely under, a tractor stuck halfway over with the "
+                     "driver still in the cab", [("wath ford", "folk_to_reach"), ("wath ford", "spate_and_sag")]),
+    # a relation's last word said again after its article ("of the, of whatever's ..."); "a metre deep"
+    ("tannery_town", "the building standing on the tenter ground of the, of whatever's downriver of the tannery, a driver "
+                     "trapped under a bus, water's a metre deep in there",
+     [("bus garage", "folk_to_reach"), ("bus garage", "spate_and_sag")]),
+    # a capitalised alias ending in an apostrophe ("the Methodists'")
+    ("tannery_town", "the houses that share a gable with the Methodists', there's an old boy on the floor",
+     [("lady ann's almshouses", "folk_to_reach")]),
+    # "the huts themselves, no problem there": a word of its own, no danger
+    ("hop_village", "the platform that's the railhead for the hopper huts is flooded, water over the rails - the huts "
+                    "themselves, no problem there, they're dry", [("hopfield halt", "spate_and_sag")]),
+    # the one whose noun of a relation another place stands on
+    ("hop_village", "the one whose cooling floor the stowage barn leans on is burning", [("great oast", "singe_and_smother")]),
+    # dev67: ground dropped, a wall split, a lean developed
+    ("salt_town", "The ground's dropped about four foot in the middle of the bull ring, and the free library's front wall "
+                  "has split from the gutter to the steps.",
+     [("ashworth free library", "sag_and_sunder"), ("bull ring", "sag_and_sunder")]),
+    ("salt_town", "Long tom's developed a lean since the last tremor and bricks are coming off the top of it.",
+     [("works chimney", "sag_and_sunder")]),
+    # the streets round a place are no landmark related to it, nor a claim on it
+    ("salt_town", "Sector one to all units: muster point is St Chad's church, anyone you bring off the streets round the "
+                  "bus station, walk them over there.", [("st chad's church", "steady_ground")]),
+    # "pulled one out, the other's still out there": the other person, not the other flash
+    ("salt_town", "Person in the water at the duck water. Two lads went through the ice; a dog walker has pulled one out, "
+                  "the other's still out there.", [("crowfoot flash", "life_at_stake")]),
+    # "both of them" after a place taken back: only the place that stands; "the shelter roof" is no shelter
+    ("salt_town", "two casualties at the bull ring sorry not the bull ring the bus station both of them at the bus station "
+                  "under the shelter roof", [("salter street bus station", "life_at_stake")]),
+    # a person with water all round them; lock gates burst
+    ("salt_town", "lad on the roof of the lock house water all round him the lock gates burst and the chamber's pouring over",
+     [("hunt's lock", "sag_and_sunder"), ("lock keeper's cottage", "life_at_stake")]),
+    # "is undermined by" said in the present; two places so undermined: the anchor is only a reference point
+    ("salt_town", "smoke in the one the brine pits undermine", []),
+    # the inner description of an outer one's anchor is only its anchor
+    ("salt_town", "The pub that's back to back with the wharf Thornlow's ships its salt from — its whole back wall's come "
+                  "away", [("boatman inn", "sag_and_sunder")]),
+    ("salt_town", "The swing bridge has sunk at the west end", [("hayhurst swing bridge", "sag_and_sunder")]),
+    # a missing person's place: where last seen
+    ("holiday_camp", "Lost camper: little girl, about six, red mackintosh, last seen playing on the marram hills before "
+                     "the tide came up.", [("sand dunes", "camper_in_a_pickle")]),
+    ("holiday_camp", "The surge has punched a hole in the prom wall.", [("sea wall", "brine_and_breakage")]),
+    ("holiday_camp", "omg theres a fire at teh fairgrund the waltzer is burning and my mate is stuk up on the big wheel",
+     [("funfair corner", "camper_in_a_pickle"), ("funfair corner", "flame_and_fug")]),
+    # an inverse description anchored on a description resolved by a shared head
+    ("holiday_camp", "the station that the line ending at lakeside halt sets out from is buried in sand",
+     [("dunes halt", "brine_and_breakage")]),
+    # a repair after a relative clause that ends in the same preposition ("drop off at — no, at ...")
+    ("holiday_camp", "Family of four at the gate the coaches drop off at— no, sorry, at the coach park itself, the car's "
+                     "half under water.", [("coach park", "brine_and_breakage")]),
+    # "full" votes for no kind ("full of wreckage" against "full of fumes")
+    ("holiday_camp", "The one that keeps watch over the lido, and the lido itself — both smashed up by the surge",
+     [("lifeguard tower", "brine_and_breakage"), ("outdoor swimming pool", "brine_and_breakage")]),
+    # "the chalets that back onto the dunes": a head another name uses only as a modifier, as a relation's anchor
+    ("holiday_camp", "um, the chalets that back onto the dunes, er, there's two old ladies cut off in there and the "
+                     "water's over the doorsteps",
+     [("nelson chalet lines", "brine_and_breakage"), ("nelson chalet lines", "camper_in_a_pickle")]),
+    # dev68: a readback confirmed is no question
+    ("cave_gorge", "Control reading back to caller: the rising is boiling over its wall and the water is running across "
+                   "the pay and display, is that correct? Caller confirms, yes.",
+     [("gorge car park", "sump_and_surge"), ("wellhead resurgence", "sump_and_surge")]),
+    ("cave_gorge", "the rising is boiling over its wall, is that correct? Caller: no, it's fine.", []),
+    # "from just inside the grotto": where the speaker is, in it
+    ("cave_gorge", "Guide speaking from just inside the grotto. The lower passage has sumped completely and I've got a "
+                   "school group of twelve cut off behind it in the far chamber.",
+     [("dripstone cave", "rescue_wanted"), ("dripstone cave", "sump_and_surge")]),
+    # a call sign ("Cave Rescue One") is no description of the rescue base
+    ("cave_gorge", "Control, Cave Rescue One at the bear pit. Choke shift about forty metres in.",
+     [("bone cave", "rockfall_and_rent")]),
+    # a worried caller asking after a place
+    ("cave_gorge", "um is there anything going on at the bone cave? my son's on a school trip there today and I can't "
+                   "get hold of him", []),
+    # "one of the anchor blocks on the east bank": no description of a landmark
+    ("cave_gorge", "Wobbly bridge: one of the anchor blocks on the east bank has split open and the deck is hanging over "
+                   "at an angle.", [("cable footbridge", "rockfall_and_rent")]),
+    # "and so is the hall itself": said of this place too; heaters on
+    ("cave_gorge", "the building sharing a yard with the village hall is open as a muster point, and so is — um — the "
+                   "hall itself, they've got the heaters on",
+     [("mountain rescue base", "dry_muster"), ("village hall", "dry_muster")]),
+    ("cave_gorge", "the two cavers are out now, they're at the ticket hall, and the ticket hall is where we're, uh, "
+                   "holding everyone", [("cave ticket hall", "dry_muster")]),
+    # "the walk-outs": a hyphenated word of its own; "whose source is X": X is only said of the river
+    ("cave_gorge", "whatever sells the tickets for the cave that the rising drains — that's where we're holding the "
+                   "walk-outs, it's dry and there's tea on", [("cave ticket hall", "dry_muster")]),
+    ("cave_gorge", "the river whose source is the resurgence has burst its banks, er, all the way down",
+     [("river lathkin", "sump_and_surge")]),
+    # "the wing wall has gone": more damage, no danger over
+    ("priory_isle", "The tail weir's been overtopped and half the wing wall has gone, and the long mead is under a good "
+                    "foot of water now.", [("lower weir", "spate_and_scour"), ("priory meadow", "spate_and_scour")]),
+    # "the river" is the water where only "the back river" is a landmark's name
+    ("priory_isle", "This is Mrs Albury in the net lofts. My neighbour has fallen down the stairs and can't get up, and "
+                    "the river is coming in under all the front doors along the row.",
+     [("netmakers' row", "spate_and_scour"), ("netmakers' row", "stranded_or_hurt")]),
+    # "the gardens": many gardens, not "the tea garden"
+    ("priory_isle", "flooding at the footbridge— no, not the footbridge, the bit of river the gatehouse looks out over, "
+                    "it's over the bank and into the gardens", [("north channel", "spate_and_scour")]),
+    ("priory_isle", "the traps emptied by the cottages that sit cheek by jowl with the doctor's — two lads went out on "
+                    "them and now they can't get back", [("eel stages", "stranded_or_hurt")]),
+])
+def test_dev66_phenomena(kb_analyzers, kb, text, expected):
+    assert claims(kb_analyzers[kb], text) == expected

@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev65) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev68) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -94,6 +94,15 @@ LIGHTHOUSE_POINT = ROOT / "knowledge_bases" / "lighthouse_point"
 SLATE_VALLEY = ROOT / "knowledge_bases" / "slate_valley"
 LOCK_FLIGHT = ROOT / "knowledge_bases" / "lock_flight"
 HILL_TOWN = ROOT / "knowledge_bases" / "hill_town"
+HOP_VILLAGE = ROOT / "knowledge_bases" / "hop_village"
+TANNERY_TOWN = ROOT / "knowledge_bases" / "tannery_town"
+POTTERY_TOWN = ROOT / "knowledge_bases" / "pottery_town"
+SALT_TOWN = ROOT / "knowledge_bases" / "salt_town"
+HOLIDAY_CAMP = ROOT / "knowledge_bases" / "holiday_camp"
+HIGHLAND_ESTATE = ROOT / "knowledge_bases" / "highland_estate"
+CAVE_GORGE = ROOT / "knowledge_bases" / "cave_gorge"
+PRIORY_ISLE = ROOT / "knowledge_bases" / "priory_isle"
+NAVAL_DOCKYARD = ROOT / "knowledge_bases" / "naval_dockyard"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -339,6 +348,15 @@ SETS = {
     "dev64/slate_valley": _set("dev64/slate_valley.jsonl", SLATE_VALLEY, "sv64", TWENTY, sep=""),
     "dev65/lock_flight": _set("dev65/lock_flight.jsonl", LOCK_FLIGHT, "lf65", TWENTY, sep=""),
     "dev65/hill_town": _set("dev65/hill_town.jsonl", HILL_TOWN, "ht65", TWENTY, sep=""),
+    "dev66/hop_village": _set("dev66/hop_village.jsonl", HOP_VILLAGE, "hv66", TWENTY, sep=""),
+    "dev66/tannery_town": _set("dev66/tannery_town.jsonl", TANNERY_TOWN, "tt66", TWENTY, sep=""),
+    "dev66/pottery_town": _set("dev66/pottery_town.jsonl", POTTERY_TOWN, "pt66", TWENTY, sep=""),
+    "dev67/salt_town": _set("dev67/salt_town.jsonl", SALT_TOWN, "st67", TWENTY, sep=""),
+    "dev67/holiday_camp": _set("dev67/holiday_camp.jsonl", HOLIDAY_CAMP, "hc67", TWENTY, sep=""),
+    "dev67/highland_estate": _set("dev67/highland_estate.jsonl", HIGHLAND_ESTATE, "he67", TWENTY, sep=""),
+    "dev68/cave_gorge": _set("dev68/cave_gorge.jsonl", CAVE_GORGE, "cg68", TWENTY, sep=""),
+    "dev68/priory_isle": _set("dev68/priory_isle.jsonl", PRIORY_ISLE, "pi68", TWENTY, sep=""),
+    "dev68/naval_dockyard": _set("dev68/naval_dockyard.jsonl", NAVAL_DOCKYARD, "nd68", TWENTY, sep=""),
 }
 
 

@@ -666,8 +666,13 @@ class ReportAnalyzer:
         cue_hits = [(a, b) for a, b, (_, src) in all_cues if b - a > 1]
         cue_hits += [(a, b) for a, b, _ in all_relations if b - a > 2]
         log = _is_log(toks)
+        glossary_ends = {cb for ca, cb, (_, src) in all_cues if src == "glossary" and cb - ca > 1
+                         and norms[cb - 1] not in lx.GENERIC_HEADS | lx.UNNAMING_HEADS | lx.DESCRIPTION_HEADS}
         for a, b, landmark in self._places.find_all(norms):
-            if any(ca <= a and b <= cb and cb - ca > b - a for ca, cb in cue_hits):
+            if any(ca <= a and b <= cb and cb - ca > b - a for ca, cb in cue_hits) and not (
+                    b in glossary_ends and not any(ca <= a and b <= cb and cb - ca > b - a and cb not in glossary_ends
+                                                   for ca, cb in cue_hits)):
+                # ("a backed-up goit", "water over the hatches": a glossary term that ends in a place's name names it)
                 continue  # "first aid post" is a cue, "across the square from" a relation
             if b - a == 1 and norms[a] in lx.PHONETIC_LETTERS and (
                     b < len(norms) and is_number(norms[b]) and not toks.clause_start[b]
@@ -693,7 +698,7 @@ class ReportAnalyzer:
                     and norms[b] in lx.ARTICLES and norms[a] in self._relation_verbs:
                 continue  # "the pontoon that pumps the diesel for the fish quay": the verb of `pumps_diesel_for`
             if norms[a:b] in self._needs_article and prev not in lx.DETERMINERS | {"our", "your", "my", "his", "her"} \
-                    and not acronym and not heading and not self._telegraphic_subject(toks, norms, a, b) \
+                    and b not in glossary_ends and not acronym and not heading and not self._telegraphic_subject(toks, norms, a, b) \
                     and not (log and (b - a >= 2 or prev in lx.PREPOSITIONS and len(norms[a]) >= 5)) \
                     and not (b - a >= 2 and prev in ("in", "at", "from") and a >= 2 and norms[a - 2] in ("live", "living", "lives", "stay", "staying")) \
                     and not (b - a >= 2 and (a == 0 or toks.sentence_start[a])
@@ -741,7 +746,7 @@ class ReportAnalyzer:
                 continue  # "the whole flat upstairs has come down through it": one home, not the "flats"
             if b - a == 1 and raw.endswith("s") and not raw.endswith(("'s", "’s", "ss")) and raw != norms[a] \
                     and toks.tokens[a].text[:1].isupper() and all(
-                        not norm_phrase(f)[-1:] == norms[a:b] or not f.lower().endswith("s")
+                        not norm_phrase(f)[-1:] == norms[a:b] or not f.lower().rstrip("'’").endswith("s")
                         for f in self.kb.landmark_by_name[landmark].surface_forms):
                 continue  # "we've shunted the Fords and Fergies up the top end": tractors, not the ford
             if b - a == 1 and prev in ("a", "an", "one") and not raw.endswith("s") and all(
@@ -1198,6 +1203,9 @@ class ReportAnalyzer:
             elif word == "other":
                 if len(listed) != 2 or {"from", "one"} <= set(norms[max(0, start - 6):start]):
                     continue  # (not "glass from one end to the other": one thing and another, no place)
+                if any(norms[k] == "one" and norms[k - 1] not in lx.DETERMINERS and not norms[k - 1].endswith(("th", "st", "rn"))
+                       and toks.sentence_of[k] == toks.sentence_of[start] for k in range(max(1, start - 8), start)):
+                    continue  # "a dog walker has pulled one out, the other's still out there": the other lad
                 if any(end < p.start_tok <= end + 8 and toks.sentence_of[p.start_tok] == toks.sentence_of[start]
                        for p in places):
                     continue  # "no the other one, the one next to it, the school": the speaker goes on to name it
@@ -1401,14 +1409,29 @@ class ReportAnalyzer:
                            and len(described.get(w, set()) - names) < 3
                            and w not in cue_words and w not in rel_words and w not in lx.DESCRIPTIVE_WORDS
                            and w not in lx.STOREY_WORDS and w not in lx.PART_NOUNS  # ("the roof" of anything)
-                           and w not in ("step", "steps", "door", "doors", "window", "windows")}
+                           and w not in ("step", "steps", "door", "doors", "window", "windows")
+                           and not (w in lx.WATER_BODIES and all(name_words(n)[-1:] != (w,) for n in names))}
+            # ("the river is coming in under the doors": the water itself, where only "the back river" is a name)
             # ("can't get up the step": any doorstep; "the fire doors": any building's, not "the red doors")
             # heads no other landmark's description uses either: "the chapel is safe" where the castle chapel is
             # the one chapel the KB speaks of
             self._sole_heads = {w for w, name in self._heads.items() if not described.get(w, set()) - {name}}
+            # heads another landmark's names use only before their own head ("dunes" of "sand dunes", where
+            # "dunes halt" is the halt): the head only as a relation's anchor ("the chalets that back onto the dunes")
+            last_words = {w for lm in self.kb.landmarks for f in lm.surface_forms if (ws := name_words(f)) for w in ws[-1:]}
+            self._anchor_heads = {w: next(iter(names)) for w, names in owners.items()
+                                  if len(names) == 1 and w not in self._heads and len(w) >= 4 and w.isalpha()
+                                  and all(w not in name_words(f)[-1:] for other in words_elsewhere.get(w, set()) - names
+                                          for f in self.kb.landmark_by_name[other].surface_forms)
+                                  and w in last_words and w not in cue_words and w not in rel_words
+                                  and w not in lx.UNNAMING_HEADS | lx.GENERIC_HEADS | lx.DESCRIPTION_HEADS}
         out = []
         for i in range(0, len(norms)):
             w = norms[i]
+            if w in self._anchor_heads and i >= 2 and i not in taken and norms[i - 1] == "the" and (i - 1) in rel_ends \
+                    and (i + 1 >= len(norms) or toks.clause_start[i + 1] or norms[i + 1] in lx.COPULAS):
+                out.append(self._mention(toks, i, i + 1, self._anchor_heads[w]))
+                continue
             opens = (i == 0 or toks.sentence_start[i] or toks.clause_start[i] and ":" in toks.gaps[i]
                      and w in self._sole_heads) \
                 and w in self._heads and i not in taken \
@@ -1439,7 +1462,7 @@ class ReportAnalyzer:
                     and any(t in taken for t in range(i + 2, min(len(norms), i + 5))):
                 continue  # "the playground at the primary school": that place's own, not the adventure playground
             if raw.endswith("s") and not contracted and not raw.endswith("ss") and raw != w and not any(
-                    name_words(f)[-1:] and f.lower().rstrip().endswith("s")
+                    name_words(f)[-1:] == (w,) and f.lower().rstrip().endswith("s")
                     for f in self.kb.landmark_by_name[self._heads[w]].surface_forms):
                 continue  # "walking wounded off the trails": many trails, not the one "skyline trail"
             # "the baths themselves are being used as a warm centre" (not "it's not the hotel itself burning")
@@ -1473,8 +1496,13 @@ class ReportAnalyzer:
             if i + 1 < len(norms) and not toks.clause_start[i + 1] and norms[i + 1].isalpha() \
                     and not selfsame and norms[i + 1] not in lx.FUNCTION_WORDS \
                     and self._relations.match_at(norms, i + 1) is None \
-                    and not toks.tokens[i].text.lower().endswith(("'s", "’s")) and not verb_next:
+                    and not toks.tokens[i].text.lower().endswith(("'s", "’s")) and not verb_next \
+                    and not (norms[i + 1] in lx.STOREY_WORDS | {"kitchen", "kitchens"} and (
+                        i + 2 >= len(norms) or toks.clause_start[i + 2] or norms[i + 2] in lx.COPULAS | {"that", "thats"})):
+                # (but "the museum cellar that's flooded": a part of the one museum, in it)
                 continue  # "the lodge gate": a longer noun phrase ("the barn's out now" is the barn)
+            if i + 1 < len(norms) and toks.gaps[i + 1] == "-":
+                continue  # "the walk-outs": a word of its own, hyphenated
             out.append(self._mention(toks, i, i + 1, self._heads[w]))
         # "the car park" for "valley car park" / "the big car park": a two-word tail only one landmark's names end in
         if not hasattr(self, "_pair_heads"):
@@ -1886,11 +1914,14 @@ class ReportAnalyzer:
                     taken.update(range(i - 1, end))
                     continue
             names = shared.get(norms[i])
+            if not names and norms[i + 1:i + 2] in (("itself",), ("themselve",)):
+                # "the roundels themselves" after "the five roundels": the last word of an alias just said
+                names = {p.landmark for p in places if p.end_tok <= i - 1 and norms[p.end_tok - 1] == norms[i]}
             if not names or i in taken or (i - 1) in taken or norms[i - 1] not in ("the", "that", "this"):
                 continue
             end = i + 1
             goes_on = False  # the head goes on into a longer noun phrase or a clause of its own
-            if end < len(norms) and norms[end] == "itself":
+            if end < len(norms) and norms[end] in ("itself", "themselve"):
                 end += 1
             else:
                 goes_on = end < len(norms) and not toks.clause_start[end] \
@@ -2274,8 +2305,8 @@ class ReportAnalyzer:
         # (a one-word relation only across a dash: "down by, by, uh, the police station" is where it is)
         def _said_again(a: int, b: int) -> int:
             j = b
-            while j < len(norms) and norms[j] in lx.HESITATIONS and j - b < 2:
-                j += 1  # "the local for, er, for whatever ..."
+            while j < len(norms) and (norms[j] in lx.HESITATIONS or norms[j] in lx.ARTICLES and j == b) and j - b < 2:
+                j += 1  # "the local for, er, for whatever ...", "the tenter ground of the, of whatever's ..."
             if j < len(norms) and norms[j] == norms[b - 1] and norms[j] in lx.RELATION_ENDINGS \
                     and (b - a >= 2 or any(d in toks.gaps[b] for d in ("—", "–", "--", " - "))):
                 return j + 1
@@ -2306,6 +2337,9 @@ class ReportAnalyzer:
                 if on_pronouns and not (a > 0 and norms[a - 1] in pronouns):
                     continue
                 for inverse in inverse_passes:
+                    if inverse and any(p.via is not None and f" {phrase} ".replace("_", " ") in f" {p.via} ".replace("_", " ")
+                                       and p.start_tok <= a <= p.end_tok + 1 for p in ex.places):
+                        continue  # ("where XP1 is the first escape door": the words read already, into that description)
                     self._resolve_one(ex, toks, norms, a, b, phrase, flipped, place_tokens, marker_tokens,
                                       inverse_pass=inverse)
 
@@ -2324,8 +2358,9 @@ class ReportAnalyzer:
                                   inverse_pass=pass_no in (2, 3))
         if self.kb.relations and self._resolve_shared_heads(ex, toks, norms, place_tokens, marker_tokens):
             # "the orchard owned by the farm whose tractors sit in the boneyard": a description so resolved may
-            # anchor the one before it
-            again()
+            # anchor the one before it, or an inverse one around it ("the station that the line ending at
+            # lakeside halt sets out from")
+            again((False, True))
         if self.embedder is not None and self.kb.relations:
             cue_tokens = self._claim_cue_tokens(norms, place_tokens | marker_tokens)
             described = sum(p.via is not None for p in ex.places)
@@ -2338,8 +2373,8 @@ class ReportAnalyzer:
                 again((False, True), on_pronouns=True)
             if self._resolve_related(ex, toks, norms, place_tokens, marker_tokens, cue_tokens):
                 # "the path that winds down to the row after the A cabins": a description so resolved may anchor
-                # a listed one
-                again()
+                # a listed one, or an inverse one ("the station that the line ending at lakeside halt sets out from")
+                again((False, True))
         if self.kb.relations and rel_hits:
             self._unresolved_own_heads(ex, toks, norms, rel_hits)
         self._restated_anchors(ex, toks, norms)
@@ -2351,6 +2386,28 @@ class ReportAnalyzer:
                 if p.via is None and p.status == "active" and d.start_tok <= p.start_tok and p.end_tok <= d.end_tok:
                     # "the landing it faces": the head word named the place the description reaches
                     ex.places[idx] = replace(p, status="reference", reason=f"part of the description '{d.text}'")
+        # "the pub that's back to back with the wharf Thornlow's ships its salt from": the outer description took the
+        # name as its anchor before the inner one was read; the inner one, the same place, is still only its anchor
+        for idx, p in enumerate(ex.places):
+            if p.status != "active" or p.via is None:
+                continue
+            ref = next((q for q in ex.places if q.status == "reference" and q.landmark == p.landmark and q.via is None
+                        and p.start_tok <= q.start_tok < p.end_tok and q.reason.startswith("reference point:")
+                        and any(r.status == "active" and r.via is not None and r.end_tok == q.end_tok
+                                and r.start_tok < p.start_tok for r in ex.places)), None)
+            if ref is not None:
+                ex.places[idx] = replace(p, status="reference", reason=ref.reason)
+        # "the river whose source is the resurgence": a place named to say what the one before it is
+        for idx, q in enumerate(ex.places):
+            if q.status != "active":
+                continue
+            k = q.start_tok
+            while k > 0 and norms[k - 1] in lx.DETERMINERS and q.start_tok - k < 2:
+                k -= 1
+            w = next((j for j in range(max(0, k - 5), k) if norms[j] == "whose"), None)
+            if w is not None and norms[k - 1] in ("is", "was", "s") and all(norms[j].isalpha() for j in range(w + 1, k)) \
+                    and any(p.end_tok == w and p.status == "active" and p.landmark != q.landmark for p in ex.places):
+                ex.places[idx] = replace(q, status="reference", reason="what the place before it is said to have: no claim")
 
     @functools.cached_property
     def _role_relations(self) -> dict[tuple[str, ...], list[Relation]]:
@@ -2535,6 +2592,11 @@ class ReportAnalyzer:
             assert self.embedder is not None
             self._rel_cache = (self.embedder.embed_fixed(texts), [forms[t] for t in texts])
         return self._rel_cache
+
+    def _relation_words_of(self, landmark: str) -> set[str]:
+        """The words of the names of the KB relations a landmark stands in ("yard" of ``belongs_to_the_yard_of``)."""
+        return {norm(w) for rel in self.kb.relations if landmark in (rel.subject, rel.object)
+                for w in rel.phrase.replace("_", " ").split()}
 
     def _link_similarities(self, link: str) -> np.ndarray:
         """MiniLM similarity of an unlisted linking phrase to each KB relation form (``_relation_texts``)."""
@@ -2795,6 +2857,11 @@ class ReportAnalyzer:
                                                     and norms[h - 2] in lx.ARTICLES and norms[h - 1].isalpha()
                                                     and (h - 1) not in blocked) or norms[h] in lx.WHATEVER:
                     # (one modifier may stand between: "the cross-passage right before RB7", "that little bay")
+                    if norms[h + 1:h + 2] == ("of",) and h >= 4 and norms[h - 2] in lx.PREPOSITIONS \
+                            and norms[h] in self._relation_words_of(anchor.landmark) and norms[h - 3] in nouns \
+                            and norms[h - 4] in lx.ARTICLES and not {h - 3, h - 2, h - 1} & blocked \
+                            and not toks.clause_start[h - 2]:
+                        h -= 3  # "the oast in the yard of the farm ...": the relation's own noun, the head before it
                     head = h
                     break
             if head is None:
@@ -2821,6 +2888,9 @@ class ReportAnalyzer:
                     continue  # "gritting the hill road past the caravan park": a way that goes by it, no relation
                 if norms[head] == "corner" and between[0] == "from":
                     continue  # "the Red Lion, round the corner from the square": somewhere near it, no relation
+                if between[-1] in ("from", "of") and set(between) & _PEOPLE_WORDS \
+                        and not set(between) & {"where", "that", "which", "whose", "who"}:
+                    continue  # "a warm place for the old folk from Tanrallt": the people are from it, not the place
             else:
                 # "the tube the shaft draws from": the linking verb comes after the anchor
                 if norms[head] in lx.WHATEVER or head == 0 or norms[head - 1] not in lx.ARTICLES:
@@ -2858,10 +2928,15 @@ class ReportAnalyzer:
             if locative and (len(named) != 1 or between[0] in ("of", "at", "in", "inside")):
                 continue
             if described_anchor and (len(named) != 1 or not between or between[0] not in lx.PREPOSITIONS
-                                     or norms[anchor.start_tok] != "the" or len(between) > 2):
-                continue
+                                     or norms[anchor.start_tok] != "the" or len(between) > 2 and not (
+                        len(between) <= 4 and all(w in lx.FUNCTION_WORDS or w in phrases[next(iter(named))].replace("_", " ").split()
+                                                  for w in between))):
+                continue  # (but "the oast in the yard of the farm whose ...": the words of the relation's own name)
             if norms[head] in lx.ROOMS_OF_A_BUILDING and not named:
                 continue  # "the room above the market hall": a room of it, no landmark of its own
+            if norms[head] in lx.ROUTE_HEADS and not named and between and set(between) <= lx.ROUTE_LINKS | {"around"}:
+                ex.places[idx] = replace(anchor, status="reference", reason=f"the {toks.tokens[head].text} about it: no claim")
+                continue  # "the streets round the bus station": the ways about it, no landmark
             said = self._relations.match_at(norms, linked[0]) if linked else None
             if not named and said is not None and not said[1][1] and any(rel.phrase == said[1][0] for rel in self.kb.relations) \
                     and norms[head] not in lx.UNNAMING_HEADS and not any(
@@ -3100,6 +3175,13 @@ class ReportAnalyzer:
             if target is None:
                 target, via = self._follow_by_meaning(anchor_p.landmark, toks, a, b, inverse=not flipped)
             if target is None:
+                if named is False and norms[hs:anchor_p.start_tok][-2:-1] == ("one",) \
+                        and sum(self._relation_matches(rel, phrase) and anchor_p.landmark in (rel.subject, rel.object)
+                                for rel in self.kb.relations) >= 2:
+                    # "the other one the brine pits undermine": two places stand so to it, the words say which
+                    # elsewhere; the anchor is only a reference point
+                    ex.places[ex.places.index(anchor_p)] = replace(
+                        anchor_p, status="reference", reason=f"reference point of an unresolved '{phrase}' description")
                 return
             if named != "pronoun":
                 ex.places[ex.places.index(anchor_p)] = replace(anchor_p, status="reference",
@@ -3156,8 +3238,11 @@ class ReportAnalyzer:
                     return  # "a vapour cloud sitting over the reactor building": where the danger is, not a description
                 if norms[a:a + 2] == ("at", "the") and b > a + 2 and norms[a + 2] in lx.LOCATIVE_PARTS:
                     return  # "a man lying at the foot of the water tower": where he lies, when nothing lies below it
-                if norms[a:b] in (("inside",), ("inside", "of"), ("within",)) and generic:
+                if norms[a:b] in (("inside",), ("inside", "of"), ("within",)) and generic \
+                        or norms[a:b] in (("just", "inside"), ("right", "inside"), ("well", "inside")) \
+                        or norms[a:b] == ("inside",) and a > 0 and norms[a - 1] in ("just", "from", "right", "well"):
                     return  # "trapped under a fallen stall inside the corn exchange": in it, when nothing is built into it
+                    # ("Guide speaking from just inside the grotto")
                 if anchor.end_tok < len(norms) and norms[anchor.end_tok] in lx.ENTRANCE_PARTS:
                     return  # "a person lying on the ground by the bus station doors": at its doors
                 k = a - 1
@@ -3193,6 +3278,12 @@ class ReportAnalyzer:
         while det_start > 0 and norms[det_start - 1] in lx.DETERMINERS and not toks.clause_start[det_start] \
                 and head_text and (det_start - 1) not in marker_tokens:
             det_start -= 1
+        w = next((k for k in range(det_start - 1, max(-1, det_start - 3), -1) if norms[k] == "whose"), None)
+        if w is not None and w >= 2 and norms[w - 2] in lx.ARTICLES and (w - 1) not in place_tokens \
+                and all(norms[k].isalpha() and k not in place_tokens for k in range(w + 1, det_start)):
+            # "the one whose cooling floor the stowage barn leans on": the floor read as the relation's own noun
+            # ("leans on the cooling floor of"), the place is the one whose floor it is
+            det_start = w - 2
         new = self._mention(toks, det_start, anchor_end, target, via=via)
         ex.places.append(new)
         place_tokens.update(range(det_start, anchor_end))
@@ -3268,16 +3359,17 @@ class ReportAnalyzer:
         closed = lx.PREPOSITIONS | lx.COPULAS | lx.FILLERS | lx.PRONOUNS | lx.COORDINATORS | lx.NEGATORS
         i = 0
         while i < len(norms):
-            if norms[i] not in lx.DESCRIPTION_HEADS or i in stop:
-                i += 1
+            if norms[i] not in lx.DESCRIPTION_HEADS or i in stop \
+                    or norms[i] == "one" and toks.tokens[i].text[:1] == "O" and i > 0 and toks.tokens[i - 1].text[:1].isupper():
+                i += 1  # ("Control, Cave Rescue One at the bear pit": a call sign, no description)
                 continue
             s_ = i
             while s_ > 0 and i - s_ < 4 and not toks.clause_start[s_] and (s_ - 1) not in stop \
                     and norms[s_ - 1] not in closed and norms[s_ - 1] not in lx.DETERMINERS:
                 s_ -= 1
             has_det = s_ > 0 and norms[s_ - 1] in lx.DETERMINERS and not toks.clause_start[s_]
-            if not (has_det or toks.clause_start[s_]):
-                i += 1
+            if not (has_det or toks.clause_start[s_]) or ("one", "of") in (norms[s_ - 3:s_ - 1], norms[s_ - 2:s_]):
+                i += 1  # ("one of the anchor blocks on the east bank": one of many things, no landmark)
                 continue
             e = i + 1
             if e < len(norms) and e not in relation_starts and norms[e] in lx.DESCRIPTION_LINKS \
@@ -3316,7 +3408,7 @@ class ReportAnalyzer:
         toks = ex.tokens
         norms = toks.norms(0, len(toks))
         for i in range(2, len(norms)):
-            if norms[i] not in ("itself", "themselves") or any(p.end_tok == i for p in ex.places):
+            if norms[i] not in ("itself", "themselve") or any(p.start_tok < i <= p.end_tok for p in ex.places):
                 continue
             if norms[i - 1] not in lx.GENERIC_HEADS or norms[i - 2] not in lx.DETERMINERS:
                 continue
@@ -3415,9 +3507,18 @@ class ReportAnalyzer:
         target, via = self._follow(p.landmark, hit[0], " ".join(norms[k:end]), inverse=hit[1] == "passive")
         if target is None or target == p.landmark:
             return False
+        start = p.start_tok if idx >= 0 else k - 1
+        v = start - 1
+        if idx >= 0 and v >= 2 and hit[1] == "active" and _link_stems(norms[v]) & _link_stems(verb):
+            # "the oast that dries cherry hill's hops": the head and its relative clause name the place, so that a
+            # relation said of it ("the barn that leans on the oast that ...") anchors on the whole
+            h = v - 1 if norms[v - 1] in ("that", "which") else v
+            if h >= 2 and norms[h - 1].isalpha() and norms[h - 1] not in lx.FUNCTION_WORDS \
+                    and norms[h - 2] in lx.ARTICLES and not any(q.start_tok <= h - 1 < q.end_tok for q in ex.places):
+                start = h - 2
         if idx >= 0:
             ex.places[idx] = replace(p, status="reference", reason=f"reference point: {via}")
-        ex.places.append(self._mention(toks, p.start_tok if idx >= 0 else k - 1, end, target, via=via))
+        ex.places.append(self._mention(toks, start, end, target, via=via))
         return True
 
     def _cue_at(self, norms: tuple[str, ...], a: int) -> bool:
@@ -3652,7 +3753,8 @@ class ReportAnalyzer:
         if k < anchor.start_tok and norms[k] == "where" and (k == 0 or norms[k - 1] not in lx.PREPOSITIONS):
             return anchor, k, False  # "where the back lane runs down to, that's a raging torrent"
         hs = k
-        while hs > 0 and k - hs < 3 and norms[hs - 1] not in lx.PREPOSITIONS | lx.COPULAS and not ex.tokens.clause_start[hs] \
+        while hs > 0 and k - hs < 3 and norms[hs - 1] not in lx.PREPOSITIONS | lx.COPULAS | lx.COORDINATORS \
+                and not ex.tokens.clause_start[hs] \
                 and not (hs == k and ex.tokens.tokens[hs - 1].text.lower().replace("’", "'").endswith("'s")):
             # ("the problem's the flats across the way": "'s" is a verb, "problem" heads nothing)
             hs -= 1
@@ -4256,7 +4358,10 @@ class ReportAnalyzer:
                     and norms[p.end_tok] in ("reporting", "calling", "speaking") and toks.clause_start[p.end_tok + 1]:
                 ex.places[idx] = replace(p, status="reference", reason="who is calling ('X reporting,'): no claim")
                 continue
-            if self._from_label(toks, norms, p):
+            if self._from_label(toks, norms, p) and not (
+                    norms[_noun_phrase_start(norms, p) - 1] == "at"
+                    and not any(q.landmark != p.landmark and q.status != "retracted" for q in ex.places)):
+                # ("Paramedic at the mission hut: two lads brought in": no other place told of, the news is its own)
                 ex.places[idx] = replace(p, status="reference", reason="who is calling ('From X:'): no claim")
                 continue
             if toks.sentence_start[p.start_tok] and p.end_tok < len(norms) and ":" in toks.gaps[p.end_tok] \
@@ -4320,6 +4425,8 @@ class ReportAnalyzer:
                             and hit[1].split()[0] in ("diverting", "diverted", "rerouting", "relocating", "moving",
                                                       "heading", "headed", "going", "evacuating", "sending", "taking"):
                         break  # "they're diverting to the cow field, which is clear and safe": said of where they go
+                    if hit[1].split()[0] in ("keep", "stay") and "away" in hit[1].split() and self._sighting_after(ex, norms, p):
+                        break  # "keep everyone away from the cookhouse, one of the gas bottles is leaking": why
                     if self._members_said_next(toks, norms, p):
                         break  # "heading for the coastguard cottages and, er, the end one, one of them's got ...": news of it
                     if hit[1] in ("we're at", "we are at", "currently at") and self._part_said_next(toks, norms, p, ex.places):
@@ -4573,8 +4680,9 @@ class ReportAnalyzer:
             if b < len(norms) and norms[b] in lx.COORDINATORS and any(p.end_tok == a for p in ex.places):
                 continue  # "in the coffee shop I mean, and the church ...": the marker closed its own repair
             if a > 0 and b < len(norms) and norms[a - 1] in lx.PREPOSITIONS and norms[b] in lx.PREPOSITIONS \
-                    and not any(p.start_tok <= a - 1 < p.end_tok for p in ex.places):
+                    and norms[a - 1] != norms[b] and not any(p.start_tok <= a - 1 < p.end_tok for p in ex.places):
                 continue  # "two casualties outside-- no, inside the supermarket": where, not which place, repaired
+                # (not "at the gate the coaches drop off at -- no, sorry, at the coach park": the same word)
             if not _strong and (b >= len(norms) or toks.sentence_start[b]) and any(
                     p.end_tok == a and any(q.status in ("negated", "retracted") and q.landmark != p.landmark
                                            and toks.sentence_of[q.start_tok] == toks.sentence_of[a] and q.end_tok <= p.start_tok
@@ -4991,8 +5099,12 @@ class ReportAnalyzer:
             if b == a + 1 and a > 0 and norms[a - 1] in lx.ARTICLES and norms[a] in lx.NEGATABLE_STATES \
                     and toks.tokens[a].text.lower() == norms[a] + "s":
                 continue  # "the stables that back onto it": a plural noun, not the state ("stable")
+            if norms[a:b] == ("shelter",) and (b < len(norms) and norms[b] in ("roof", "glass", "wall", "panel")
+                                               or a > 0 and norms[a - 1] == "bus"):
+                continue  # "under the shelter roof", "the bus shelter": the structure, no place of safety
             start, end = toks.tokens[a].start, toks.tokens[b - 1].end
-            if norms[a:b] in lx.LOCK_CUES and not self._access_category():
+            if (norms[a:b] in lx.LOCK_CUES or norms[a] == "jammed" and norms[a:b] != ("jammed", "open")
+                    and any(n in ("door", "doors") for n in norms[max(0, a - 3):a])) and not self._access_category():
                 # "The church is locked, nobody's using it": shut, no danger, where no category is about access
                 # (nor a shelter: the MiniLM fallback does not guess at it)
                 shut.update(range(a, b))
@@ -6047,6 +6159,10 @@ class ReportAnalyzer:
                         or any(
                         words[i:i + 3] in (["want", "to", "ask"], ["wanted", "to", "ask"], ["can", "i", "ask"])
                         for i in range(len(words))):
+                    reply = set(norms[sentences[n + 1][0]:sentences[n + 1][1]]) if n + 1 < len(sentences) else set()
+                    if _asks_if_true(norms[a:b]) and reply & {"confirms", "confirmed", "confirm"} \
+                            and reply & (lx.YES_WORDS | {"correct", "affirmative"}) and not reply & lx.NO_WORDS:
+                        continue  # "... is that correct? Caller confirms, yes.": a readback confirmed
                     asked.update(range(a, b))  # "the fire, it is at the garage or no?": the whole sentence asks
                     continue
                 if norms[first] in lx.QUESTION_OPENERS and first not in marker_starts:
@@ -6080,6 +6196,11 @@ class ReportAnalyzer:
                     and set(norms[a:b]) & {"was", "were", "used"}:
                 dropped[n] = "said of another year, not a report"  # "In the big snow of 2009 the hall was the warm room"
         asked |= _indirect_questions(toks, norms)
+        if asked:
+            # "is there anything going on at the bone cave? ... I can't get hold of him": a worried caller asking,
+            # not someone known to need help
+            asked |= {c.start_tok for c in cues if c.polarity == "affirmed" and any(
+                norms[c.start_tok:c.end_tok][:len(k)] == k for k in _UNREACHABLE)}
         for a, e, cats in forgot:
             cues = [replace(c, status="retracted", reason=f"taken back by '{toks.span_text(a, e)}'")
                     if c.category in cats and c.start_tok < e and c.polarity == "affirmed" else c for c in cues]
@@ -6394,7 +6515,8 @@ class ReportAnalyzer:
                     break  # "two casualties being carried out now": hurt people being got out are still hurt
                 if h[1] == "gone" and norms[h[0]:h[0] + 2] in (("out", "to"), ("over", "to"), ("to",), ("in", "to")):
                     break  # "our doctor's gone out to him": gone to help, nothing over
-                if h[1] == "gone" and "and" in norms[cue.end_tok:k] and k > 0 and norms[k - 1] not in lx.PRONOUNS \
+                if h[1] in ("gone", "has gone", "is gone") and "and" in norms[cue.end_tok:k] and k > 0 \
+                        and norms[k - 1] not in lx.PRONOUNS \
                         and norms[k - 1] not in lx.ESCAPED_THINGS | {"s"} and self._cues.match_at(norms, k - 1) is None:
                     break  # "the sea's smashed its doors in and the slip's gone": another thing gone, more damage
                 if h[1] == "gone" and norms[h[0]:h[0] + 1] == ("up",) \
@@ -7166,6 +7288,9 @@ class ReportAnalyzer:
                                                              ["no", "idea"], ["cant", "say"])
                                         for m in range(len(unsure) - 1)):
                 continue  # "and er the market outside it, uh, I dunno, I haven't been out there": nothing said of it
+            if tail in ([], ["itself"], ["themselve"]) and (nxt_words[:2] in (["no", "problem"], ["nothing", "wrong"])
+                                                            or nxt_words[:1] in (["fine"], ["unaffected"], ["untouched"])):
+                continue  # "the huts themselves, no problem there, they're dry": a word of its own, no danger
             if "still" in tail[:3] and len(seg_places.get(k, [])) == 1 \
                     and {"running", "working", "chugging", "pumping", "operating", "turning"} & set(tail + nxt_words[:5]):
                 continue  # "the crowtree pumps have tripped out ... and old thumper's still chugging away": working
@@ -7211,8 +7336,14 @@ class ReportAnalyzer:
                         c = replace(c, polarity="affirmed", reason="contrast with a negated claim")
                     pairs.append(Claim(p, c))
         pairs.extend(self._speaker_claims(ex, norms, cues, pairs))
+        pairs.extend(self._last_seen_claims(ex, norms, cues, pairs))
+        pairs.extend(self._so_is_claims(ex, norms, pairs))
         pairs.extend(self._shared_by_list(ex, norms, pairs))
-        pairs = self._distribute(pairs)
+        # (a list member denied after "both of them" was read is no member: "at the bull ring sorry not the bull ring
+        # the bus station both of them at the bus station"; but "no wait, both are" takes a repair back)
+        gone = {p.landmark for p in ex.places if p.status == "negated"} \
+            - {p.landmark for p in ex.places if p.status == "active" and not p.anaphor}
+        pairs = self._distribute(pairs, gone)
         # "Two possible shelters: the church and the cafe. The former's roof is unsafe": what the list was
         # introduced as gives way to what its members are then said to be, one by one, where the two disagree
         # (a safe place against a danger); "Smoke at the bank and the hotel. The first one also has a man
@@ -7264,7 +7395,7 @@ class ReportAnalyzer:
         return claims, denied
 
     @staticmethod
-    def _distribute(pairs: list[Claim]) -> list[Claim]:
+    def _distribute(pairs: list[Claim], gone: set[str] = frozenset()) -> list[Claim]:  # type: ignore[assignment]
         """"the gym and the park ... both of them are flooded": a claim on "both of them" is a claim on every
         place of the list; "Neither of them has anyone hurt" denies it of every one."""
         out: list[Claim] = []
@@ -7272,7 +7403,8 @@ class ReportAnalyzer:
             if c.place.anaphor == "neither" and c.cue.polarity == "affirmed":
                 c = Claim(c.place, replace(c.cue, polarity="denied", reason=NEITHER))
             out.append(c)
-            out.extend(Claim(replace(c.place, landmark=other, also=()), c.cue) for other in c.place.also)
+            out.extend(Claim(replace(c.place, landmark=other, also=()), c.cue) for other in c.place.also
+                       if other not in gone)
         return out
 
     @staticmethod
@@ -7332,6 +7464,45 @@ class ReportAnalyzer:
                     and not any(";" in toks.gaps[i] for i in range(e, c.cue.start_tok + 1))]
             out.extend(Claim(p, c.cue) for p in listed[:-1] for c in said if (id(p), id(c.cue)) not in have)
         return out
+
+    @staticmethod
+    def _so_is_claims(ex: Extraction, norms: tuple[str, ...], pairs: list[Claim]) -> list[Claim]:
+        """"the building ... is open as a muster point, and so is — um — the hall itself": what was said of the
+        place before is said of this one too."""
+        toks = ex.tokens
+        out: list[Claim] = []
+        for p in ex.places:
+            if p.status != "active":
+                continue
+            j = p.start_tok
+            while j > 0 and (norms[j - 1] in lx.FILLERS or norms[j - 1] in lx.ARTICLES) and p.start_tok - j < 5:
+                j -= 1
+            if j < 3 or norms[j - 2] != "so" or norms[j - 1] not in ("is", "are", "was", "were") or norms[j - 3] != "and":
+                continue
+            n = toks.sentence_of[p.start_tok]
+            before = [c for c in pairs if c.place.end_tok <= j - 3 and c.place.landmark != p.landmark
+                      and toks.sentence_of[c.place.start_tok] == n and c.cue.start_tok < j - 3]
+            if not before:
+                continue
+            last = max(c.place.start_tok for c in before)
+            out.extend(Claim(p, c.cue) for c in before if c.place.start_tok == last
+                       and not any(q.place.landmark == p.landmark and q.cue.category == c.cue.category for q in pairs))
+        return out
+
+    def _last_seen_claims(self, ex: Extraction, norms: tuple[str, ...], cues: list[CueMention],
+                          pairs: list[Claim]) -> list[Claim]:
+        """"Lost camper: little girl, ... last seen playing on the marram hills": a person cue bound to no place,
+        and the one place where the missing were last seen."""
+        bound = {id(c.cue) for c in pairs}
+        toks = ex.tokens
+        loose = [c for c in cues if id(c) not in bound and c.status == "active" and c.polarity == "affirmed"
+                 and self.kb.category_by_name[c.category].role == Role.CRITICAL]
+        seen = [p for p in ex.places if p.status == "active" and any(
+            norms[k:k + 2] == ("last", "seen") and toks.sentence_of[k] == toks.sentence_of[p.start_tok]
+            for k in range(max(0, p.start_tok - 6), p.start_tok))]
+        if not loose or len({p.landmark for p in seen}) != 1:
+            return []
+        return [Claim(seen[0], loose[0])]
 
     def _speaker_claims(self, ex: Extraction, norms: tuple[str, ...], cues: list[CueMention],
                         pairs: list[Claim]) -> list[Claim]:
@@ -7946,6 +8117,8 @@ def _cue_list_into(k: int, later: int, segs: list[tuple[int, int]], seg_cues: di
 _PERSON_WORDS = frozenset(lx.PERSON_NOUNS) | {"pensioner", "residents", "neighbour", "neighbor", "tenant", "tenants",
                                               "lady", "gentleman", "family", "pupil", "kid", "child", "children"}
 # Any word for people, a group said as a subject too ("the men in there", "the folk at the chapel")
+_UNREACHABLE = (("cant", "get", "hold", "of"), ("not", "answering"), ("isnt", "answering"), ("hes", "not", "answering"),
+                ("she", "not", "answering"), ("shes", "not", "answering"), ("not", "picking", "up"))
 _PEOPLE_WORDS = _PERSON_WORDS | lx.LAY_PERSONS | lx.WORKER_PERSONS | {"men", "women", "folk", "folks"}
 _LIST_OPENERS = frozenset({"and", "there", "theres", "is", "are", "lots", "of", "loads", "some", "also", "got", "weve"})
 
@@ -8272,6 +8445,14 @@ def _relation_forms(phrase: str) -> list[tuple[str, bool]]:
             # "was paid for by" said actively, read backwards: "whoever paid for the football ground"
             active = " ".join(words[1:-1])
             out.extend(((active, True), (f"that {active}", True), (f"who {active}", True)))
+            if len(words) == 3 and words[1].endswith("ed") and words[1] not in lx.IRREGULAR_PARTICIPLES:
+                # "is undermined by" said in the present: "the other one the brine pits undermine"
+                part = words[1]
+                stems = {part[:-3] + "y"} if part.endswith("ied") else {part[:-1], part[:-2]}
+                for stem in stems:
+                    ing = (stem[:-1] if stem.endswith("e") else stem) + "ing"
+                    for v in (stem, stem + "s", ing):
+                        out.extend(((v, True), (f"that {v}", True)))
         return _finished_forms(phrase, out)
     if not (len(words) == 1 or verb.endswith("s") or plain_verb) or _direction_word(verb) or verb.endswith("ss"):
         return _finished_forms(phrase, out)
@@ -8407,17 +8588,18 @@ def _with_group_inverses(phrase: str, out: list[tuple[str, bool]]) -> None:
 
 
 def _with_article_before_noun(phrase: str, out: list[tuple[str, bool]]) -> None:
-    """"pumps_diesel_for" said "the pontoon that pumps the diesel for ...": an article before the relation's noun."""
+    """"pumps_diesel_for" said "the pontoon that pumps the diesel for ...": an article before the relation's noun
+    ("winds_wagons_down" said "winds the wagons down", "loads_slate_from" said "loads its slate from")."""
     words = phrase.split()
     if len(words) >= 3 and words[0] not in ("is", "are", "was", "were") \
             and words[1] not in lx.ARTICLES | lx.NOT_VERBS | lx.RELATION_ENDINGS \
-            and words[-1] in lx.RELATION_ENDINGS | {"for", "of", "into"} and words[1].isalpha() \
+            and words[-1] in lx.RELATION_ENDINGS | {"for", "of", "into", "down", "up", "in", "at"} and words[1].isalpha() \
             and not words[1].endswith(("ly", "ing")):
         for form, inv in list(out):
             ws = form.split()
             at = next((n for n in (1, 2) if ws[n:n + 1] == [words[1]] and ws[n - 1] not in lx.ARTICLES), None)
             if at is not None and not inv:
-                out.append((" ".join(ws[:at] + ["the"] + ws[at:]), inv))
+                out.extend((" ".join(ws[:at] + [det] + ws[at:]), inv) for det in ("the", "its", "their"))
 
 
 def _with_other_preposition(phrase: str, out: list[tuple[str, bool]]) -> None:

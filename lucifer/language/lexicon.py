@@ -131,7 +131,7 @@ fine to walk through|fine to walk on|fine to cross|okay to walk through|ok to wa
 fine for overflow|taking in families|taking in people|taking people in|can take people|we can take people|
 people are gathering there|people gathering there|everyone's gathering there|gathering there|taking in residents|
 taking in the evacuees|taking families|taking the overflow|taking overflow|taking the overspill|evac point|evac points|evac centre|evac center|evacuation points|
-anyone cold can go|can go up there|soup on|hot food|hot drinks|warm drinks|rest stop|wait inside safely|letting people wait inside|letting people shelter|letting people in to shelter|
+anyone cold can go|heaters on|got the heaters on|heating on|got the heating on|holding everyone|where we're holding|can go up there|soup on|hot food|hot drinks|warm drinks|rest stop|wait inside safely|letting people wait inside|letting people shelter|letting people in to shelter|
 where we're sending everyone|where we're sending people|where we're sending them|where we're taking everyone|
 where we're taking people|where we're putting people|where we're putting everyone|where everyone's going|
 where everyone is going|putting people there|putting people in there|putting everyone there|moving people there|send people there|
@@ -203,7 +203,7 @@ stranded|cut off|trapped people|trapped persons|people trapped|someone trapped|s
 hypothermic|drowning|bleeding out|critical condition|in shock|lost consciousness|passed out|fainted|keeled over|keels over|has keeled over|collapsed inside|
 pinned under debris|pinned under rubble|trapped under debris|trapped under rubble|buried under rubble|buried under debris|
 trapped in rubble|under the rubble|needs medics|need medics|needs a doctor|requires evacuation|unaccounted for|
-people still inside|still inside|someone still inside|people stuck|people stuck inside|with people inside|
+people still inside|still inside|someone still inside|can't get back|cannot get back|can't get back to shore|water all round him|water all round her|water all round them|water all round us|water all around him|water all around them|on the roof with water|still in the cab|still in his cab|still in her cab|driver still in|people stuck|people stuck inside|with people inside|
 twisted ankle|twisted her ankle|twisted his ankle|sprained ankle|broken ankle|is injure|he injure|she injure|he not move|she not move|not move|cut head|a cut head|bleeding head|needs a paramedic|need a paramedic|needs paramedics|deep cut|bad cut|can't find his mum|can't find her mum|can't find his dad|can't find her dad|can't find their parents|
 people under it|people under there|someone under it|somebody under it|people underneath|breathing problems|breathing difficulties|difficulty breathing|struggling to breathe|can't breathe|cannot breathe|
 man collapsed|woman collapsed|person collapsed|someone collapsed|somebody collapsed|he collapsed|she collapsed|
@@ -597,7 +597,7 @@ LINK_SYNONYMS = [{"suppl", "feed", "power", "serv"}, {"pair", "twin", "sister", 
                  {"annex", "extension"},
                  {"tunnel", "underpas", "subway", "passag"}, {"bridg", "walkway", "footbridg"},
                  {"moor", "tied", "tie", "berth"}, {"foot", "bottom"}, {"vent", "exhaust"},
-                 {"monitor", "watch", "observ", "surveil"}]
+                 {"monitor", "watch", "observ", "surveil"}, {"supersed", "replac"}]
 # Words of a relation name that are too common to identify it on their own in a report.
 RELATION_NAME_STOPWORDS = {"busy", "for", "by", "to", "of", "with", "onto", "on", "into", "from", "the", "a", "an", "is", "and", "in",
                            "at", "that", "its", "it", "side", "end", "other", "way", "same", "far", "near", "up",
@@ -623,7 +623,7 @@ PREMISES_PARTS = {"yard", "courtyard", "forecourt", "garden", "gardens", "ground
                   "cellar", "carpark"}
 # Words of harm done whose kind is that of what did it ("damaged by the blast", "cracked in the quake")
 HARM_WORDS = {"damaged", "damage", "cracked", "wrecked", "hit", "destroyed", "flattened", "gutted", "smashed",
-              "shattered", "broken", "weakened", "struck", "affected", "battered", "holed"}
+              "shattered", "broken", "weakened", "struck", "affected", "battered", "holed", "buckled", "twisted", "warped"}
 # Vehicles: things, not places, that a relation word may follow ("a car swept against the arch")
 VEHICLE_WORDS = {"car", "cars", "van", "vans", "lorry", "lorries", "bus", "truck", "trucks", "vehicle", "vehicles",
                  "tractor", "boat", "boats", "coach", "taxi", "ambulance", "bike", "motorbike"}
@@ -776,7 +776,7 @@ TRANSIT = ["people in off", "taking people in off", "in off the", "walked up fro
            "we're outside", "we are outside", "we're by", "we are by", "we're in front of", "we're opposite",
            "we're standing at", "we're standing outside", "we are standing outside", "standing outside",
            "nobody's been in", "no one's been in", "nobody has been in", "no one has been in",
-           "we're parked at", "outside of", "went via", "going via", "came via", "parked up at",
+           "we're parked at", "outside of", "went via", "going via", "went round by", "gone round by", "going round by", "came round by", "came via", "parked up at",
            "parked up by", "parked up outside", "walking from", "driving from", "came out of", "stood down at",
            "standing down at", "pulled into", "pulling into",
            "about to check", "searching", "sweeping", "en route", "route via", "routing via", "routed via",
@@ -1056,7 +1056,7 @@ RELATIVE_COPULAS = {("that", "is"), ("which", "is"), ("that", "s"), ("which", "s
 # Words that say nothing of a kind of danger when a kind's words are matched against category descriptions.
 KIND_VOTE_STOPWORDS = frozenset({"have", "with", "from", "that", "this", "been", "were", "into", "onto", "their",
                                  "there", "they", "them", "what", "when", "where", "which", "while", "will", "would",
-                                 "shedding", "also", "just", "only", "some", "such", "than", "then", "very"})
+                                 "shedding", "also", "just", "only", "some", "such", "than", "then", "very", "full"})
 KIND_FALLBACK = {"breakage": "collapse", "smoke": "fire", "storm": "collapse", "fire": "explosion", "vehicle": "access", "disorder": "fire"}
 DANGER_KINDS: dict[str, list[str]] = {
     "crowd": ["crowd crush", "crowd surge", "surge at", "surge in", "surging", "crammed", "packed solid", "pressed flat",
@@ -1109,7 +1109,8 @@ DANGER_KINDS: dict[str, list[str]] = {
                  "came off its rails", "come off the rails", "came off the rails", "off its rails", "sheared off", "keystone's come out", "arch has dropped", "arch's dropped",
                  "off its supports", "swept clean off", "a lean on it", "got a lean on", "damaged", "badly damaged",
                  "heavily damaged", "storm damaged", "storm-damaged", "gone completely", "completely gone", "basically gone", "wiped out", "got wiped out", "totally wiped out",
-                 "deck twisted", "half torn away", "torn away"],
+                 "deck twisted", "half torn away", "torn away", "swinging loose", "hanging loose", "anchor has pulled out",
+                 "anchors have pulled out"],
     "fallen": ["has fallen into", "have fallen into", "fallen into the", "rubble", "wall down", "walls down",
                "roof's in", "roof is in", "roof's gone", "roof has gone", "roof's off", "shedding bricks",
                "shedding slates", "masonry falling", "falling masonry", "fallen masonry", "wall's fallen",
@@ -1129,7 +1130,8 @@ DANGER_KINDS: dict[str, list[str]] = {
                "roof's come off", "roof has come off", "roof come off", "roof came off"],
     "ground": ["is shifting", "s shifting", "its shifting", "keeps shifting", "started shifting", "sliding",
                "landslide", "mudslide", "mud slide", "landslip", "slipping", "sinkhole", "come away", "came away",
-               "subsided into", "subsiding into", "subsidence", "has slipped", "face has slipped", "being undercut",
+               "subsided into", "subsiding into", "subsidence", "has slipped", "face has slipped", "its slid", "that slid", "its slumped",
+               "has let go", "its let go", "have let go", "being undercut",
                "undercut", "being undermined", "undermined", "mud", "mud and rocks", "mud everywhere",
                "full of mud", "rocks came down", "rocks have come down", "rockfall", "rock fall", "boulders",
                "coming away", "rocks rolling down", "rocks coming down", "rocks falling", "rocks tumbling", "rock coming off", "rocks coming off", "still on the move", "off its footings", "off their footings",
@@ -1421,9 +1423,10 @@ DESCRIBED_COMFORTS: dict[str, tuple[frozenset[str], list[str]]] = {
 # More phrases of the kinds above that read as their kind but do not vote on which category a kind is (so the
 # kinds map onto a KB's categories as they did before these were added).
 DANGER_KIND_EXTRA: dict[str, list[str]] = {
-    "breakage": ["hole punched", "punched right through", "punched through"],  # "a hole punched right through the wall"
+    "explosion": ["from the bang", "by the bang", "in the bang"],
+    "breakage": ["been ripped out", "ripped out", "hole right through it", "hole right through", "punched a hole in", "punched a hole through", "hole punched", "punched right through", "punched through"],  # "a hole punched right through the wall"
     # (the surge's damage to moorings: "the diesel jetty has broken loose", "pontoons torn off their piles")
-    "storm": ["torn off their piles", "torn off its piles", "off their piles", "off its piles", "broken loose",
+    "storm": ["blown over", "been blown over", "has blown over", "torn off their piles", "torn off its piles", "off their piles", "off its piles", "broken loose",
               "broke loose", "torn loose", "has broken free", "come adrift", "broken adrift", "torn from its moorings",
               "windows all blown out", "windows blown out", "windows are blown out", "windows have blown out", "all blown out", "strewn across", "strewn over", "strewn all over", "on their sides", "on its side", "onto its side", "onto their sides", "blew in", "blew straight in", "blown straight in", "roof is gone", "roof's torn", "torn clean off", "came down through", "peeled off", "been peeled off", "peeled back", "lost its roof", "lost their roof", "lost their roofs",
               "lost the roof", "lost its leads", "lost the leads", "roof lifted", "blown clean off", "blown off",
@@ -1435,8 +1438,8 @@ DANGER_KIND_EXTRA: dict[str, list[str]] = {
                  "conductors are on", "conductor down", "conductors down", "feeder is down", "feeder down", "lines down",
                  "line down", "lines are down", "line is down"],
     "gas": ["rotten egg", "rotten eggs", "rotten-egg smell", "rotten egg smell", "eggy smell", "smell like eggs", "smells like eggs", "smell of eggs", "smells of eggs", "smell like rotten eggs", "there's a hiss", "a loud hiss", "hissing out of", "h2s", "so2", "co2", "sulphur dioxide", "hydrogen sulphide", "carbon dioxide", "methane", "methane leak", "natural gas", "co detected", "co reading", "co readings", "co levels", "high co", "carbon monoxide", "carbon monoxide alarm", "co alarm"],
-    "collapse": ["roof's coming in", "roof is coming in", "ceiling's coming in", "ceiling is coming in", "coming off in chunks", "coming away in chunks", "falling off in chunks", "in chunks", "breaking up", "is breaking up", "coming adrift", "come adrift", "broken adrift", "peeling off", "coming off in slabs", "coming away in slabs", "roof fall on", "roof fall in", "roof has split", "roof split", "is bending", "it's bending", "is fall down", "has fall down", "fallen down"],
-    "water": ["tide's coming straight through", "tide's coming through", "tide coming through", "sea's coming through", "one sheet of water", "a sheet of water", "sheet of water", "washing out", "washing away", "logs floating", "floating away", "floating off the floor", "floating about", "floating around",
+    "collapse": ["floor went through", "floor went thru", "floor gone through", "developed a lean", "has a lean", "bricks coming off", "bricks are coming off", "wall has split", "walls have split", "has split from", "split right across", "split from top to bottom", "roof's coming in", "roof is coming in", "ceiling's coming in", "ceiling is coming in", "coming off in chunks", "coming away in chunks", "falling off in chunks", "in chunks", "breaking up", "is breaking up", "coming adrift", "come adrift", "broken adrift", "peeling off", "coming off in slabs", "coming away in slabs", "roof fall on", "roof fall in", "roof has split", "roof split", "is bending", "it's bending", "is fall down", "has fall down", "fallen down"],
+    "water": ["boiling over", "boiled over", "water is running across", "water running across", "water is lapping", "water lapping", "lapping the", "over the towpath", "across the towpath", "gates burst", "gates have burst", "gate burst", "gate has burst", "pouring over", "topped its bank", "topped its banks", "topped the bank", "topped the banks", "gone over the bank", "gone over its bank", "gone over the south bank", "gone over the north bank", "gone over the east bank", "gone over the west bank", "metre deep", "metres deep", "meter deep", "a metre of water", "metre of water", "full to the top", "full to the brim", "water all the way round", "water is all the way round", "water all round", "water is all round", "water right round", "water is right round", "tide's coming straight through", "tide's coming through", "tide coming through", "sea's coming through", "one sheet of water", "a sheet of water", "sheet of water", "washing out", "washing away", "logs floating", "floating away", "floating off the floor", "floating about", "floating around",
               "furniture floating", "chairs floating", "cars floating",
               "water coming through", "water's coming through", "water is coming through", "seeping through the walls",
               "water at the front door", "water at the door", "water's at the door", "water's at the front door",
@@ -1445,7 +1448,7 @@ DANGER_KIND_EXTRA: dict[str, list[str]] = {
               "yard's a lake", "is a lake", "'s a lake", "like a lake", "completely under", "cut off by water", "cut off by the water", "cut off by floodwater", "cut off by the flood", "over its banks", "over the banks", "out of its banks", "broken its banks", "burst their banks", "bursting its banks", "scoured", "scoured out", "water coming through the ceiling", "water through the ceiling", "water pouring through the ceiling",
               "water coming through the roof", "ceiling's leaking", "ceiling is leaking", "water pouring through"],
     "access": ["rocks across", "rocks across it", "rocks across the road", "debris across", "debris right across", "fallen oak", "fallen beech", "fallen ash", "fallen branch", "fallen branches"],
-    "ground": ["hole opened up", "hole has opened up", "hole just opened up", "floor has opened", "floor's opened", "sinkhole", "sink hole", "ash a foot deep", "ash is knee deep", "ash knee deep", "ash's knee deep", "ash is ankle deep", "a foot of ash", "feet of ash", "inches of ash", "deep in ash", "covered in ash", "heaped with ash", "buried in ash", "under the ash", "drifts of ash", "ash drifts", "half buried", "half-buried", "slurry", "full of slurry", "sludge", "silt", "full of silt"],
+    "ground": ["dropping rocks", "rocks dropping", "dropping stones", "has sunk", "have sunk", "its sunk", "ground dropped", "ground has dropped", "ground dropping", "ground is dropping", "ground gone", "ground has gone", "ground just gone", "floor dropped", "floor has dropped", "hole opened up", "hole has opened up", "hole just opened up", "floor has opened", "floor's opened", "sinkhole", "sink hole", "ash a foot deep", "ash is knee deep", "ash knee deep", "ash's knee deep", "ash is ankle deep", "a foot of ash", "feet of ash", "inches of ash", "deep in ash", "covered in ash", "heaped with ash", "buried in ash", "under the ash", "drifts of ash", "ash drifts", "half buried", "half-buried", "slurry", "full of slurry", "sludge", "silt", "full of silt"],
     "fallen": ["hole in the roof", "holes in the roof", "hole in its roof", "hole in the wall", "lost a parapet", "lost its parapet", "lost the parapet", "lost a wall", "lost its wall", "lost a gable", "lost its gable"],
 }
 

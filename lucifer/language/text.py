@@ -24,7 +24,7 @@ _KEEP_S = {"it", "he", "she", "who", "let", "how", "what", "where", "there", "th
 
 
 # Log and radio shorthand read as the word it stands for ("police stn", "bldg opp st marys", "2 inj").
-ABBREVIATIONS = {"stn": "station", "bldg": "building", "opp": "opposite", "ppl": "people", "inj": "injured",
+ABBREVIATIONS = {"stn": "station", "stuk": "stuck", "trapt": "trapped", "bldg": "building", "opp": "opposite", "ppl": "people", "inj": "injured",
                  "veh": "vehicle", "hosp": "hospital", "frm": "from", "pls": "please", "plz": "please",
                  "rprtd": "reported", "approx": "approximately", "hse": "house", "plnt": "plant", "twr": "tower",
                  "whse": "warehouse", "wkshp": "workshop", "rd": "road", "nr": "near", "adj": "adjacent",
