@@ -3602,6 +3602,44 @@ def test_dev60_phenomena(kb_analyzers, kb, text, expected):
                     "it's over the bank and into the gardens", [("north channel", "spate_and_scour")]),
     ("priory_isle", "the traps emptied by the cottages that sit cheek by jowl with the doctor's — two lads went out on "
                     "them and now they can't get back", [("eel stages", "stranded_or_hurt")]),
+    # "and the dripstone one too": the same news of another place, a sentence later
+    ("cave_gorge", "the bone cave, water's backing up in there. Oh — and the dripstone one too, they're both filling up",
+     [("bone cave", "sump_and_surge"), ("dripstone cave", "sump_and_surge")]),
+    ("cave_gorge", "the wobbly bridge is down — well, not down, one of the cables has snapped and it's hanging sideways — "
+                   "and er there's a guy on it, on the bridge, clinging on",
+     [("cable footbridge", "rescue_wanted"), ("cable footbridge", "rockfall_and_rent")]),
+    # dev69: "I think — no, I know —" takes nothing back
+    ("canal_tunnel", "The heap that was winched up through shaft two — it's slipped, big spoil slip down its west side, "
+                     "and I think — no, I know — it's smouldering too.",
+     [("tunnel spoil heap", "reek_and_ember"), ("tunnel spoil heap", "slump_and_spill")]),
+    # the speaker's place: a pub opened up, warm, dry, tea on
+    ("canal_tunnel", "This is the landlord at the Leggers. We've opened the function room, anyone coming off the boats can "
+                     "come here, it's warm, dry and there's tea on.", [("leggers arms", "safe_mooring")]),
+    # "the far end's blocked too north end i mean the far mouth": the unnamed end is what is repaired
+    ("canal_tunnel", "um roof falls in the tunnel yeah two of em and er the keeper says the far end's blocked too north "
+                     "end i mean the far mouth the arch has come down",
+     [("north portal", "slump_and_spill"), ("scarrow tunnel", "slump_and_spill")]),
+    # "a hire boat": any boat, no landmark; pulled out and gone in the ambulance: nobody there now
+    ("canal_tunnel", "Man in the cut at the winding hole, he fell off the back of a hire boat while they were turning.",
+     [("winding hole", "soul_adrift")]),
+    ("canal_tunnel", "we did have, um, a report of somebody in the water at the marina but they — they've been pulled "
+                     "out and gone off in the ambulance, so, so nobody's there now", []),
+    # a plain noun heading a description MiniLM reads ("the figure cut into the slope below ...")
+    ("hillfort_village", "the figure cut into the slope below the ramparts is on fire, uh, the whole thing, and there's a "
+                         "walker down right in the middle of it",
+     [("whitbury white horse", "ember_ground"), ("whitbury white horse", "person_in_peril")]),
+    # a bonfire explains a false alarm
+    ("hillfort_village", "um just so you know the farm the farm shop is stocked from is NOT on fire, it's a bonfire in the "
+                         "next field, they're burning hedge trimmings, nobody's hurt", []),
+    ("hillfort_village", "Officer on scene: chalk slurry a foot deep across the cricket field, and the pavilion is "
+                         "standing in water as well.", [("cricket ground", "chalk_wash"), ("cricket pavilion", "chalk_wash")]),
+    # "its overflow basin": a thing of the tank's own, no relation
+    ("hillfort_village", "Message from the water company: the covered tank is overtopping through its overflow basin, and "
+                         "the engine shed next to it is flooded up to the switchgear.",
+     [("borehole pumphouse", "chalk_wash"), ("top reservoir", "chalk_wash")]),
+    # "the school not our houses": the caller's own place is not it
+    ("hillfort_village", "hi its jodie at smithy row theres mud all over the school playground and in the hall its like a "
+                         "river the school not our houses", [("downend primary school", "chalk_wash")]),
 ])
 def test_dev66_phenomena(kb_analyzers, kb, text, expected):
     assert claims(kb_analyzers[kb], text) == expected

@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev68) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev69) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -103,6 +103,9 @@ HIGHLAND_ESTATE = ROOT / "knowledge_bases" / "highland_estate"
 CAVE_GORGE = ROOT / "knowledge_bases" / "cave_gorge"
 PRIORY_ISLE = ROOT / "knowledge_bases" / "priory_isle"
 NAVAL_DOCKYARD = ROOT / "knowledge_bases" / "naval_dockyard"
+HILLFORT_VILLAGE = ROOT / "knowledge_bases" / "hillfort_village"
+CANAL_TUNNEL = ROOT / "knowledge_bases" / "canal_tunnel"
+CROFTING_ISLE = ROOT / "knowledge_bases" / "crofting_isle"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -357,6 +360,9 @@ SETS = {
     "dev68/cave_gorge": _set("dev68/cave_gorge.jsonl", CAVE_GORGE, "cg68", TWENTY, sep=""),
     "dev68/priory_isle": _set("dev68/priory_isle.jsonl", PRIORY_ISLE, "pi68", TWENTY, sep=""),
     "dev68/naval_dockyard": _set("dev68/naval_dockyard.jsonl", NAVAL_DOCKYARD, "nd68", TWENTY, sep=""),
+    "dev69/hillfort_village": _set("dev69/hillfort_village.jsonl", HILLFORT_VILLAGE, "hf69", TWENTY, sep=""),
+    "dev69/canal_tunnel": _set("dev69/canal_tunnel.jsonl", CANAL_TUNNEL, "ct69", TWENTY, sep=""),
+    "dev69/crofting_isle": _set("dev69/crofting_isle.jsonl", CROFTING_ISLE, "ci69", TWENTY, sep=""),
 }
 
 

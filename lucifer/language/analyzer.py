@@ -173,13 +173,17 @@ class ReportAnalyzer:
                 (self._needs_article if had_article else plain).add(key)
                 self._places.add(key, lm.name)
         self._needs_article -= plain
+        self._plain_keys = frozenset(plain)
+        self._synonym_keys: set[tuple[str, ...]] = set()
         for key, name in self._compound_forms():
             self._places.add(key, name)
+            self._synonym_keys.add(key)
         for key, name in _phonetic_forms(kb, keys, labelled):
             self._places.add(key, name)
         for key, name in _synonym_forms(kb):
             self._places.add(key, name)
             self._needs_article.add(key)  # ("the little stone church" for the one chapel; "church services" no name)
+            self._synonym_keys.add(key)
         self._role_category = self._map_roles()
         self._cues: PhraseMatcher[tuple[str, str]] = PhraseMatcher(lx.CUE_SKIPPABLE)
         self._build_cues()
@@ -691,6 +695,8 @@ class ReportAnalyzer:
             heading = heading or (a == 0 or toks.sentence_start[a]) and toks.tokens[a].text[:1].isupper() \
                 and norms[b:b + 1] == ("to",) and b + 1 < len(norms) and toks.tokens[b + 1].text[:1].isupper()
             # ("Wetsuit Shack to Lake Rescue.": a place calling by its name, the article left off as call signs do)
+            if norms[a:b] in self._synonym_keys - self._plain_keys and prev in ("a", "an", "another"):
+                continue  # "he fell off the back of a hire boat": any boat, not the hire base's "kingfisher boats"
             if norms[a:b] in self._needs_article and prev in ("a", "an", "another") and b - a == 1 \
                     and toks.tokens[a - 1].text.islower():  # (not a letter that labels it: "the A cabins")
                 continue  # "a horse down in a box": the KB's "the box" is one place, "a box" any
@@ -891,8 +897,26 @@ class ReportAnalyzer:
         self._apply_no_claim_frames(ex, norms)
         self._apply_transit(ex)
         self._apply_cut_off(ex, norms)
+        self._apply_not_ours(ex, norms)
         ex.places.sort(key=lambda p: p.start_tok)
         return ex
+
+    @staticmethod
+    def _apply_not_ours(ex: Extraction, norms: tuple[str, ...]) -> None:
+        """"hi its jodie at smithy row theres mud all over the school ... the school not our houses": the caller's
+        own place, said at the start, is what the news is not about."""
+        k = next((i for i in range(len(norms) - 2) if norms[i] == "not" and norms[i + 1] in ("our", "my")
+                  and norms[i + 2] in ("house", "houses", "home", "homes", "place", "street", "cottage", "cottages",
+                                       "row", "flat", "flats", "end")), None)
+        if k is None:
+            return
+        for idx, p in enumerate(ex.places):
+            j = p.start_tok
+            while j > 0 and norms[j - 1] in lx.DETERMINERS:
+                j -= 1
+            if p.status == "active" and p.via is None and p.end_tok <= k and j >= 1 and norms[j - 1] in ("at", "from") \
+                    and ex.tokens.sentence_of[p.start_tok] == 0 and j <= 6:
+                ex.places[idx] = replace(p, status="reference", reason="the caller's own place, said not to be it")
 
     def _speakers_premises(self, ex: Extraction, norms: tuple[str, ...]) -> None:
         """"Night watchman at the leather works. ... a stink right through the yard": a report that opens by
@@ -1697,7 +1721,7 @@ class ReportAnalyzer:
         out = []
         for i in range(1, len(norms) - 1):
             key = (norms[i], norms[i + 1])
-            if key in self._clipped_forms and norms[i - 1] in lx.ARTICLES and not {i, i + 1} & taken \
+            if key in self._clipped_forms and norms[i - 1] in lx.ARTICLES - {"a", "an"} and not {i, i + 1} & taken \
                     and not toks.clause_start[i + 1]:
                 out.append(self._mention(toks, i, i + 2, self._clipped_forms[key]))
                 taken = taken | {i, i + 1}
@@ -2233,6 +2257,9 @@ class ReportAnalyzer:
                 continue  # "[second voice: it's the library, Jean!]": another speaker correcting
             if words == ("wrong",) and a > 0 and norms[a - 1] in ("nothing", "anything", "something", "whats"):
                 continue  # "Nothing wrong on our job at the library": no repair
+            if words[-1:] == ("no",) and a >= 2 and norms[a - 2:a] in (("i", "think"), ("i", "thought")) \
+                    and norms[b:b + 2] in (("i", "know"), ("im", "sure"), ("i", "am"), ("definitely",)):
+                continue  # "and I think — no, I know — it's smouldering too": surer, nothing taken back
             if words in (("correction",),) and nxt in ("on", "about", "regarding", "re") \
                     and toks.sentence_start[a]:
                 continue  # "Correction on the sports hall as well: ...": news of that place, no repair of the last
@@ -2680,15 +2707,20 @@ class ReportAnalyzer:
                 continue  # ("the building that keeps a key for the boat station")
             # walk back over the linking words to a generic head noun
             k = j - 1
+            open_k = None  # the nearest plain noun after "the", if no generic head stands further back
             while k > 0 and j - k < 6:
                 w = norms[k - 1]
                 if (k - 1) in place_tokens or (k - 1) in marker_tokens or (k - 1) in cue_tokens or toks.clause_start[k]:
                     break
                 if w in lx.GENERIC_HEADS and k - 1 > 0 and norms[k - 2] in lx.DETERMINERS:
                     break
+                if open_k is None and j - k >= 2 and self._open_head(norms, k - 1):
+                    open_k = k
                 k -= 1
-            if k == 0 or norms[k - 1] not in lx.GENERIC_HEADS or j - k < 2 or toks.clause_start[k] \
-                    or (k - 1) in place_tokens or (k - 1) in cue_tokens:
+            if open_k is not None and (k == 0 or norms[k - 1] not in lx.GENERIC_HEADS):
+                k = open_k
+            if k == 0 or not (norms[k - 1] in lx.GENERIC_HEADS or self._open_head(norms, k - 1)) or j - k < 2 \
+                    or toks.clause_start[k] or (k - 1) in place_tokens or (k - 1) in cue_tokens:
                 continue
             if norms[k - 1] == "one" and norms[k] == "of":
                 continue  # "one of my riders came off on widowmaker": one of them, no place
@@ -2705,18 +2737,37 @@ class ReportAnalyzer:
             while head_start > 0 and norms[head_start - 1] in lx.DETERMINERS and (head_start - 1) not in marker_tokens:
                 head_start -= 1
             idx = ex.places.index(anchor)
+            # (a plain noun's description, "the figure cut into the slope below ...", only where MiniLM reads a
+            # relation: "the waiting room of the health centre" is in it, no description to leave unresolved)
+            plain = norms[k - 1] not in lx.GENERIC_HEADS
+            if plain and norms[j - 1] == "of":
+                continue  # ("the back doors of the library": a part of it)
             if sim < self.OPEN_RELATION_MIN_SIM:
-                if sim >= self.OPEN_RELATION_HINT_SIM:
+                if sim >= self.OPEN_RELATION_HINT_SIM and not plain:
                     ex.places[idx] = replace(anchor, status="reference",
                                              reason=f"reference point of an unresolved description ('{link}')")
                 continue
             target, via = self._follow_link(anchor.landmark, link, toks.tokens[k - 1].text, inverse=False, sims=sims)
             if target is None:
-                ex.places[idx] = replace(anchor, status="reference", reason=f"reference point of an unresolved '{link}'")
+                if not plain:
+                    ex.places[idx] = replace(anchor, status="reference", reason=f"reference point of an unresolved '{link}'")
                 continue
             ex.places[idx] = replace(anchor, status="reference", reason=f"reference point: {via} (matched '{link}')")
             ex.places.append(self._mention(toks, head_start, anchor.end_tok, target, via=f"{via} ~ '{link}'"))
             place_tokens.update(range(head_start, anchor.end_tok))
+
+    def _open_head(self, norms: tuple[str, ...], i: int) -> bool:
+        """"the figure cut into the slope below the ramparts": a plain noun after "the" that may head a description
+        MiniLM reads (no person, vehicle, floating thing or word of a danger)."""
+        w = norms[i]
+        return i > 0 and norms[i - 1] == "the" and w.isalpha() and len(w) >= 4 and w not in lx.FUNCTION_WORDS \
+            and w not in _NOT_HEADS and w not in _PEOPLE_WORDS and w not in lx.VEHICLE_WORDS \
+            and w not in lx.FLOATING_THINGS and w not in self._single_cue_words and w not in lx.STOREY_WORDS \
+            and w not in lx.PART_NOUNS and w not in lx.LOCATIVE_PARTS and w not in lx.ROUTE_HEADS \
+            and w not in ("slope", "flank", "hillside", "face", "edge", "foot", "middle", "corner", "bottom", "top", "whole",
+                          "back", "front", "rear", "door", "doors", "window", "windows", "wall", "walls", "step", "steps") \
+            and w not in lx.ENTRANCE_PARTS and w not in lx.ROOMS_OF_A_BUILDING and w not in lx.PREMISES_PARTS \
+            and w not in lx.SIDE_WORDS
 
     def _resolve_open_inverse(self, ex: Extraction, toks: Tokens, norms: tuple[str, ...], place_tokens: set[int],
                               marker_tokens: set[int], cue_tokens: set[int]) -> None:
@@ -2875,8 +2926,10 @@ class ReportAnalyzer:
             if between and between[0] == "whose":
                 pass  # "the chapel whose old vicarage is now Dinsdale's", "the farm whose old stables the team hut was"
             elif between:
-                if any(w in lx.COPULAS - {"s"} for w in between):
-                    continue
+                if any(w in lx.COPULAS - {"s"} for w in between) or any(
+                        between[m] == "its" and between[m + 1] in ("like", "a", "an", "all", "not", "just")
+                        for m in range(len(between) - 1)):
+                    continue  # (and a texted "its like a river": a clause of its own)
                 if set(between) <= lx.LOCATIVE_LINKS:
                     # "the roof of the bakery", "the kiosk at the services": where it is, not another place (unless
                     # the head names the one landmark the KB relates to it: "the bridge over the sixteen foot")
@@ -3504,6 +3557,12 @@ class ReportAnalyzer:
         if end < len(norms) and (norms[end] in lx.GENERIC_HEADS or norms[end] == p.text.split()[0].lower()) \
                 and not toks.clause_start[end]:
             end += 1  # "sister hangar"
+        elif end < len(norms) and not toks.clause_start[end] and norms[end].isalpha() and len(norms[end]) >= 4 \
+                and norms[end] not in lx.FUNCTION_WORDS and not norms[end].endswith(("ing", "ed")) \
+                and norms[end] not in self._single_cue_words and self._cues.match_at(norms, end) is None \
+                and norms[end] not in lx.COPULAS | lx.ANAPHOR_VERBS and norms[end] not in self._place_nouns() \
+                and norms[end] in self._description_words()[p.landmark]:
+            return False  # "through its overflow basin": a thing of its own, the word only a modifier
         target, via = self._follow(p.landmark, hit[0], " ".join(norms[k:end]), inverse=hit[1] == "passive")
         if target is None or target == p.landmark:
             return False
@@ -4748,6 +4807,9 @@ class ReportAnalyzer:
             if not before:
                 continue
             last = max(before, key=lambda p: p.end_tok)
+            if a - last.end_tok >= 6 and norms[a - 1] in ("end", "side") and a >= 2 and norms[a - 2] in lx.SIDE_WORDS \
+                    and not any(p.start_tok <= a - 1 < p.end_tok for p in ex.places):
+                continue  # "the far end's blocked too north end i mean the far mouth": the unnamed end is repaired
             if any(p.reason.startswith("false start") and last.end_tok <= p.start_tok and a - 2 <= p.end_tok <= a
                    and p.landmark != last.landmark for p in ex.places) \
                     and self._cue_between(norms, last.end_tok, a):
@@ -7467,8 +7529,8 @@ class ReportAnalyzer:
 
     @staticmethod
     def _so_is_claims(ex: Extraction, norms: tuple[str, ...], pairs: list[Claim]) -> list[Claim]:
-        """"the building ... is open as a muster point, and so is — um — the hall itself": what was said of the
-        place before is said of this one too."""
+        """"the building ... is open as a muster point, and so is — um — the hall itself", "... and the dripstone
+        one too": what was said of the place before is said of this one too."""
         toks = ex.tokens
         out: list[Claim] = []
         for p in ex.places:
@@ -7477,11 +7539,17 @@ class ReportAnalyzer:
             j = p.start_tok
             while j > 0 and (norms[j - 1] in lx.FILLERS or norms[j - 1] in lx.ARTICLES) and p.start_tok - j < 5:
                 j -= 1
-            if j < 3 or norms[j - 2] != "so" or norms[j - 1] not in ("is", "are", "was", "were") or norms[j - 3] != "and":
+            so_is = j >= 3 and norms[j - 2] == "so" and norms[j - 1] in ("is", "are", "was", "were") and norms[j - 3] == "and"
+            # "... water's backing up in there. Oh — and the dripstone one too": the same news of another place
+            too = j >= 1 and norms[j - 1] == "and" and norms[p.end_tok:p.end_tok + 1] == ("too",) \
+                and not any(c.place.landmark == p.landmark for c in pairs)
+            if not (so_is or too):
                 continue
             n = toks.sentence_of[p.start_tok]
-            before = [c for c in pairs if c.place.end_tok <= j - 3 and c.place.landmark != p.landmark
-                      and toks.sentence_of[c.place.start_tok] == n and c.cue.start_tok < j - 3]
+            k = j - 3 if so_is else j - 1
+            before = [c for c in pairs if c.place.end_tok <= k and c.place.landmark != p.landmark
+                      and toks.sentence_of[c.place.start_tok] in (n, n - 1) and c.cue.start_tok < k
+                      and (so_is and toks.sentence_of[c.place.start_tok] == n or too)]
             if not before:
                 continue
             last = max(c.place.start_tok for c in before)
