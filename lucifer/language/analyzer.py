@@ -173,17 +173,17 @@ class ReportAnalyzer:
                 (self._needs_article if had_article else plain).add(key)
                 self._places.add(key, lm.name)
         self._needs_article -= plain
-        self._plain_keys = frozenset(plain)
-        self._synonym_keys: set[tuple[str, ...]] = set()
+        derived: set[tuple[str, ...]] = set()  # names the analyzer puts together, not the KB's own
         for key, name in self._compound_forms():
             self._places.add(key, name)
-            self._synonym_keys.add(key)
+            derived.add(key)
         for key, name in _phonetic_forms(kb, keys, labelled):
             self._places.add(key, name)
         for key, name in _synonym_forms(kb):
             self._places.add(key, name)
             self._needs_article.add(key)  # ("the little stone church" for the one chapel; "church services" no name)
-            self._synonym_keys.add(key)
+            derived.add(key)
+        self._derived_keys = frozenset(derived - plain)
         self._role_category = self._map_roles()
         self._cues: PhraseMatcher[tuple[str, str]] = PhraseMatcher(lx.CUE_SKIPPABLE)
         self._build_cues()
@@ -695,7 +695,7 @@ class ReportAnalyzer:
             heading = heading or (a == 0 or toks.sentence_start[a]) and toks.tokens[a].text[:1].isupper() \
                 and norms[b:b + 1] == ("to",) and b + 1 < len(norms) and toks.tokens[b + 1].text[:1].isupper()
             # ("Wetsuit Shack to Lake Rescue.": a place calling by its name, the article left off as call signs do)
-            if norms[a:b] in self._synonym_keys - self._plain_keys and prev in ("a", "an", "another"):
+            if norms[a:b] in self._derived_keys and prev in ("a", "an", "another"):
                 continue  # "he fell off the back of a hire boat": any boat, not the hire base's "kingfisher boats"
             if norms[a:b] in self._needs_article and prev in ("a", "an", "another") and b - a == 1 \
                     and toks.tokens[a - 1].text.islower():  # (not a letter that labels it: "the A cabins")
