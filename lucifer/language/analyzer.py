@@ -23,7 +23,7 @@ import difflib
 import functools
 import re
 import threading
-from collections.abc import Callable, Iterable, Iterator, Sequence
+from collections.abc import Callable, Collection, Iterable, Iterator, Sequence
 from dataclasses import dataclass, field, replace
 from typing import Literal
 
@@ -906,8 +906,7 @@ class ReportAnalyzer:
         """"hi its jodie at smithy row theres mud all over the school ... the school not our houses": the caller's
         own place, said at the start, is what the news is not about."""
         k = next((i for i in range(len(norms) - 2) if norms[i] == "not" and norms[i + 1] in ("our", "my")
-                  and norms[i + 2] in ("house", "houses", "home", "homes", "place", "street", "cottage", "cottages",
-                                       "row", "flat", "flats", "end")), None)
+                  and norms[i + 2] in ("house", "home", "place", "street", "cottage", "row", "flat", "end")), None)
         if k is None:
             return
         for idx, p in enumerate(ex.places):
@@ -1521,7 +1520,7 @@ class ReportAnalyzer:
                     and not selfsame and norms[i + 1] not in lx.FUNCTION_WORDS \
                     and self._relations.match_at(norms, i + 1) is None \
                     and not toks.tokens[i].text.lower().endswith(("'s", "’s")) and not verb_next \
-                    and not (norms[i + 1] in lx.STOREY_WORDS | {"kitchen", "kitchens"} and (
+                    and not (norms[i + 1] in lx.STOREY_WORDS | {"kitchen"} and (
                         i + 2 >= len(norms) or toks.clause_start[i + 2] or norms[i + 2] in lx.COPULAS | {"that", "thats"})):
                 # (but "the museum cellar that's flooded": a part of the one museum, in it)
                 continue  # "the lodge gate": a longer noun phrase ("the barn's out now" is the barn)
@@ -2620,10 +2619,15 @@ class ReportAnalyzer:
             self._rel_cache = (self.embedder.embed_fixed(texts), [forms[t] for t in texts])
         return self._rel_cache
 
-    def _relation_words_of(self, landmark: str) -> set[str]:
-        """The words of the names of the KB relations a landmark stands in ("yard" of ``belongs_to_the_yard_of``)."""
-        return {norm(w) for rel in self.kb.relations if landmark in (rel.subject, rel.object)
-                for w in rel.phrase.replace("_", " ").split()}
+    @functools.cached_property
+    def _relation_words_of(self) -> dict[str, frozenset[str]]:
+        """Per landmark, the words of the names of the KB relations it stands in ("yard" of
+        ``belongs_to_the_yard_of``)."""
+        words: dict[str, set[str]] = {}
+        for rel in self.kb.relations:
+            for end in (rel.subject, rel.object):
+                words.setdefault(end, set()).update(norm(w) for w in rel.phrase.replace("_", " ").split())
+        return {name: frozenset(ws) for name, ws in words.items()}
 
     def _link_similarities(self, link: str) -> np.ndarray:
         """MiniLM similarity of an unlisted linking phrase to each KB relation form (``_relation_texts``)."""
@@ -2764,8 +2768,7 @@ class ReportAnalyzer:
             and w not in _NOT_HEADS and w not in _PEOPLE_WORDS and w not in lx.VEHICLE_WORDS \
             and w not in lx.FLOATING_THINGS and w not in self._single_cue_words and w not in lx.STOREY_WORDS \
             and w not in lx.PART_NOUNS and w not in lx.LOCATIVE_PARTS and w not in lx.ROUTE_HEADS \
-            and w not in ("slope", "flank", "hillside", "face", "edge", "foot", "middle", "corner", "bottom", "top", "whole",
-                          "back", "front", "rear", "door", "doors", "window", "windows", "wall", "walls", "step", "steps") \
+            and w not in ("slope", "hillside", "face", "edge", "middle", "whole", "back") \
             and w not in lx.ENTRANCE_PARTS and w not in lx.ROOMS_OF_A_BUILDING and w not in lx.PREMISES_PARTS \
             and w not in lx.SIDE_WORDS
 
@@ -2909,7 +2912,7 @@ class ReportAnalyzer:
                                                     and (h - 1) not in blocked) or norms[h] in lx.WHATEVER:
                     # (one modifier may stand between: "the cross-passage right before RB7", "that little bay")
                     if norms[h + 1:h + 2] == ("of",) and h >= 4 and norms[h - 2] in lx.PREPOSITIONS \
-                            and norms[h] in self._relation_words_of(anchor.landmark) and norms[h - 3] in nouns \
+                            and norms[h] in self._relation_words_of.get(anchor.landmark, ()) and norms[h - 3] in nouns \
                             and norms[h - 4] in lx.ARTICLES and not {h - 3, h - 2, h - 1} & blocked \
                             and not toks.clause_start[h - 2]:
                         h -= 3  # "the oast in the yard of the farm ...": the relation's own noun, the head before it
@@ -5166,7 +5169,7 @@ class ReportAnalyzer:
                 continue  # "under the shelter roof", "the bus shelter": the structure, no place of safety
             start, end = toks.tokens[a].start, toks.tokens[b - 1].end
             if (norms[a:b] in lx.LOCK_CUES or norms[a] == "jammed" and norms[a:b] != ("jammed", "open")
-                    and any(n in ("door", "doors") for n in norms[max(0, a - 3):a])) and not self._access_category():
+                    and "door" in norms[max(0, a - 3):a]) and not self._access_category():
                 # "The church is locked, nobody's using it": shut, no danger, where no category is about access
                 # (nor a shelter: the MiniLM fallback does not guess at it)
                 shut.update(range(a, b))
@@ -7457,7 +7460,7 @@ class ReportAnalyzer:
         return claims, denied
 
     @staticmethod
-    def _distribute(pairs: list[Claim], gone: set[str] = frozenset()) -> list[Claim]:  # type: ignore[assignment]
+    def _distribute(pairs: list[Claim], gone: Collection[str] = frozenset()) -> list[Claim]:
         """"the gym and the park ... both of them are flooded": a claim on "both of them" is a claim on every
         place of the list; "Neither of them has anyone hurt" denies it of every one."""
         out: list[Claim] = []
@@ -7547,9 +7550,9 @@ class ReportAnalyzer:
                 continue
             n = toks.sentence_of[p.start_tok]
             k = j - 3 if so_is else j - 1
+            said_in = (n,) if so_is else (n, n - 1)  # ("too" reaches the sentence before)
             before = [c for c in pairs if c.place.end_tok <= k and c.place.landmark != p.landmark
-                      and toks.sentence_of[c.place.start_tok] in (n, n - 1) and c.cue.start_tok < k
-                      and (so_is and toks.sentence_of[c.place.start_tok] == n or too)]
+                      and toks.sentence_of[c.place.start_tok] in said_in and c.cue.start_tok < k]
             if not before:
                 continue
             last = max(c.place.start_tok for c in before)
@@ -8667,7 +8670,7 @@ def _with_article_before_noun(phrase: str, out: list[tuple[str, bool]]) -> None:
             ws = form.split()
             at = next((n for n in (1, 2) if ws[n:n + 1] == [words[1]] and ws[n - 1] not in lx.ARTICLES), None)
             if at is not None and not inv:
-                out.extend((" ".join(ws[:at] + [det] + ws[at:]), inv) for det in ("the", "its", "their"))
+                out.extend((" ".join(ws[:at] + [det] + ws[at:]), inv) for det in ("the", "its"))  # ("their": _with_their)
 
 
 def _with_other_preposition(phrase: str, out: list[tuple[str, bool]]) -> None:
