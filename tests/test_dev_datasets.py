@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev69) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev71) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -106,6 +106,12 @@ NAVAL_DOCKYARD = ROOT / "knowledge_bases" / "naval_dockyard"
 HILLFORT_VILLAGE = ROOT / "knowledge_bases" / "hillfort_village"
 CANAL_TUNNEL = ROOT / "knowledge_bases" / "canal_tunnel"
 CROFTING_ISLE = ROOT / "knowledge_bases" / "crofting_isle"
+OBSERVATORY_HILL = ROOT / "knowledge_bases" / "observatory_hill"
+BORDER_CROSSING = ROOT / "knowledge_bases" / "border_crossing"
+WITHY_LEVELS = ROOT / "knowledge_bases" / "withy_levels"
+BIRD_RESERVE = ROOT / "knowledge_bases" / "bird_reserve"
+ARMY_CAMP = ROOT / "knowledge_bases" / "army_camp"
+PILGRIM_PASS = ROOT / "knowledge_bases" / "pilgrim_pass"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -363,6 +369,12 @@ SETS = {
     "dev69/hillfort_village": _set("dev69/hillfort_village.jsonl", HILLFORT_VILLAGE, "hf69", TWENTY, sep=""),
     "dev69/canal_tunnel": _set("dev69/canal_tunnel.jsonl", CANAL_TUNNEL, "ct69", TWENTY, sep=""),
     "dev69/crofting_isle": _set("dev69/crofting_isle.jsonl", CROFTING_ISLE, "ci69", TWENTY, sep=""),
+    "dev70/observatory_hill": _set("dev70/observatory_hill.jsonl", OBSERVATORY_HILL, "oh70", TWENTY, sep=""),
+    "dev70/border_crossing": _set("dev70/border_crossing.jsonl", BORDER_CROSSING, "bc70", TWENTY, sep=""),
+    "dev70/withy_levels": _set("dev70/withy_levels.jsonl", WITHY_LEVELS, "wl70", TWENTY, sep=""),
+    "dev71/bird_reserve": _set("dev71/bird_reserve.jsonl", BIRD_RESERVE, "br71", TWENTY, sep=""),
+    "dev71/army_camp": _set("dev71/army_camp.jsonl", ARMY_CAMP, "ac71", TWENTY, sep=""),
+    "dev71/pilgrim_pass": _set("dev71/pilgrim_pass.jsonl", PILGRIM_PASS, "pp71", TWENTY, sep=""),
 }
 
 
