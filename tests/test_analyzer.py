@@ -3643,3 +3643,64 @@ def test_dev60_phenomena(kb_analyzers, kb, text, expected):
 ])
 def test_dev66_phenomena(kb_analyzers, kb, text, expected):
     assert claims(kb_analyzers[kb], text) == expected
+
+
+@pytest.mark.parametrize("kb,text,expected", [
+    # dev69: one of the people just said is hurt ("staff got out but one of them is badly burned")
+    ("canal_tunnel", "Fire in the chandlery store. Staff got out but one of them is badly burned and sitting outside the "
+                     "chandlery.", [("tunnel end chandlery", "reek_and_ember"), ("tunnel end chandlery", "soul_adrift")]),
+    # "is out" reaches past articles; "gone" does not reach so far ("the big doors are just gone": more damage)
+    ("canal_tunnel", "Update: the flue fire on the boat moored at the far mouth is out and the crew have gone home.", []),
+    ("estuary_marina", "the crew are all in the ferryman its dry in there and the boathouse is smashed to bits the big "
+                       "doors are just gone", [("ferryman inn", "snug_harbour"), ("lifeboat station", "tide_wrack")]),
+    # where a person fell to is no description ("the boat into the top pound")
+    ("canal_tunnel", "my husband fell off the roof of the boat into the top pound, he's in the water and can't get out",
+     [("upper basin", "soul_adrift")]),
+    # a hesitation is no distance and cuts no clause between a subject, its auxiliary and its verb
+    ("canal_tunnel", "the nine arches viaduct has, um, lost a parapet into the marina",
+     [("nine arches viaduct", "slump_and_spill")]),
+    ("canal_tunnel", "the nine arches viaduct is, er, on fire near the marina", [("nine arches viaduct", "reek_and_ember")]),
+    # a pond that is bone dry is no shelter
+    ("hillfort_village", "It's the duck pond that's overflowing, not the dew pond. The dew pond's bone dry.",
+     [("village pond", "chalk_wash")]),
+    # dev70: water up to the windowsills; the road under a place is its ground
+    ("border_crossing", "My neighbour on the north terrace is stuck upstairs and the water is already up to his "
+                        "windowsills.", [("north terrace", "needs_a_hand"), ("north terrace", "waterlogged_or_broken")]),
+    ("border_crossing", "my truck is on the scales. Road under the scales is gone, big wash-out.",
+     [("weighbridge", "waterlogged_or_broken")]),
+    # "the greencaps" of the alias "the greencaps' house": the people of the place, in lowercase too
+    ("border_crossing", "the river under the bridge that the greencaps keep an eye on is over its banks",
+     [("sorn river", "waterlogged_or_broken")]),
+    # a cue running on into a long relation phrase heads nothing ("the water lapping at the back doors of")
+    ("border_crossing", "the water lapping at the back doors of ferryman's row, there's a car in it, someone inside "
+                        "banging on the window", [("sorn river", "needs_a_hand")]),
+    # a described place after "that <verb>" only says which named place
+    ("border_crossing", "the scales that weigh for the yard that queues into our customs are flooded",
+     [("weighbridge", "waterlogged_or_broken")]),
+    # "I live on the lane below the bund": a way by it; the bund is what the next sentence speaks of
+    ("observatory_hill", "I live on the lane below the bund. There's a long crack along the top of it and the whole front "
+                         "is slumping.", [("reservoir dam", "ground_gone")]),
+    # where people came from, and the next sentence uses it
+    ("observatory_hill", "Everyone from the bunkhouse is accounted for. We're using it as the rest point.",
+     [("lower hostel", "sure_footing")]),
+    ("observatory_hill", "water coming thru the bund, not the mere itself", [("reservoir dam", "ground_gone")]),
+    ("observatory_hill", "the sike is running brown, a metre above normal", [("sike brook", "ground_gone")]),
+    # a description the phrase tables resolved anchors one MiniLM reads
+    ("observatory_hill", "injured man at the hostel that houses the crews for the dome the mirror shop recoats",
+     [("upper hostel", "in_peril")]),
+    ("observatory_hill", "the barn at brightside farm has come down and the farmer's underneath it",
+     [("brightside farm", "ground_gone"), ("brightside farm", "in_peril")]),
+    # dev71: rounds cooking off; drill smoke; fire taking hold of a place is no relation
+    ("army_camp", "Ammunition compound, bunker three: rounds are cooking off, keep everyone well back.",
+     [("ammunition compound", "blast_and_leak")]),
+    ("army_camp", "The smoke on the square is drill smoke, nothing's burning.", []),
+    ("army_camp", "fire's taken hold of the armoury and the store tucked behind it is smoking too",
+     [("armoury", "burnline"), ("quartermaster's store", "burnline")]),
+    # "Kohima's where we're sending everyone": a name opening a sentence, said of
+    ("army_camp", "Alamein block, there's a lad trapped on the top floor. Kohima's where we're sending everyone else, "
+                  "that's the rally point.", [("alamein block", "casevac_case"), ("kohima block", "rally_point")]),
+    # "the place that patches up": a verb, no slip of "the patch"
+    ("army_camp", "the place that patches up the gym's casualties is on fire", [("medical centre", "burnline")]),
+])
+def test_dev70_phenomena(kb_analyzers, kb, text, expected):
+    assert claims(kb_analyzers[kb], text) == expected

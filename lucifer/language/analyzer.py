@@ -1079,6 +1079,21 @@ class ReportAnalyzer:
         def only_describes(p1: PlaceMention, p2: PlaceMention) -> None:
             ex.places[ex.places.index(p2)] = replace(p2, status="reference",
                                                      reason=f"reference point of a relative clause describing '{p1.text}'")
+        described = [p for p in ex.places if p.status == "active" and p.via is not None]
+        for p1 in active:
+            p2 = min((p for p in ex.places if p.start_tok >= p1.end_tok and p.status != "reference"),
+                     key=lambda p: p.start_tok, default=None)
+            if p2 is None or p2 not in described or (p1.landmark, p2.landmark) not in related:
+                continue
+            gap = norms[p1.end_tok:p2.start_tok]
+            if 2 <= len(gap) <= 4 and gap[0] in ("that", "which") and norms[p1.end_tok + 1].isalpha() \
+                    and len(norms[p1.end_tok + 1]) >= 4 and norms[p1.end_tok + 1] not in lx.COPULAS | lx.FUNCTION_WORDS \
+                    and (toks.tokens[p1.end_tok + 1].text.lower().endswith(("s", "ed")) or p1.text.lower().endswith("s")) \
+                    and not any(toks.clause_start[i] for i in range(p1.end_tok, p2.start_tok + 1)) \
+                    and not any(self._cues.match_at(norms, i) is not None for i in range(p1.end_tok + 1, p2.start_tok)):
+                # "the scales that weigh for the yard that queues into our customs": the yard, described, only says
+                # which scales
+                only_describes(p1, p2)
         for p1, p2 in zip(active, active[1:], strict=False):
             gap = norms[p1.end_tok:p2.start_tok]
             if (p1.landmark, p2.landmark) in related and 3 <= len(gap) <= 5 and gap[0] in ("that", "which") \
@@ -1668,6 +1683,18 @@ class ReportAnalyzer:
                     out[key] = lm.name
         return out
 
+    @functools.cached_property
+    def _possessive_headless(self) -> frozenset[tuple[str, ...]]:
+        """Headless forms whose last word is a possessive in the alias ("greencaps" of "the greencaps' house"):
+        the people of the place, a name said in lowercase as well."""
+        known = self.embedder.vocabulary() if self.embedder is not None else frozenset()
+        # (a word of its own, no common noun: "the driver" of "the drivers' room" is any driver)
+        return frozenset(key for lm in self.kb.landmarks for form in lm.surface_forms
+                         if len(form.split()) >= 2 and form.split()[-2].endswith(("'", "'s", "’", "’s"))
+                         and (key := name_words(form)[:-1]) in self._headless_forms
+                         and len(key) == 1 and key[0] not in _PEOPLE_WORDS and key[0] not in known
+                         and form.split()[-2].lower().rstrip("'’s") not in known)
+
     def _headless_names(self, toks: Tokens, norms: tuple[str, ...], taken: set[int]) -> list[PlaceMention]:
         """"fire in the Cavendish" (cavendish stand), "Headteacher of Valley Primary" (valley primary school),
         "St Barbara's is open" (st barbara's church): a name said without its last word, as a proper noun
@@ -1681,13 +1708,22 @@ class ReportAnalyzer:
                 end = i + n
                 if len(key) < n or key not in self._headless_forms or any(j in taken for j in range(i, end)):
                     continue
-                if n == 1 and (toks.sentence_start[i] or norms[i - 1] not in ("the", "at", "in", "inside", "from", "not")):
-                    continue  # (one capitalised word where a sentence starts, or "Mr Rowley", names no place)
-                if not all(toks.tokens[j].text[:1].isupper() for j in range(i, end)):
-                    continue  # ("the valley primary concern": a plain phrase, not a name)
+                if n == 1 and (toks.sentence_start[i] or norms[i - 1] not in ("the", "at", "in", "inside", "from", "not")) \
+                        and not (toks.sentence_start[i] and toks.tokens[i].text.lower().endswith(("'s", "’s"))
+                                 and norms[i + 1:i + 2] in (("where",), ("now",), ("being",), ("our",), ("the",))):
+                    continue  # (one capitalised word where a sentence starts, or "Mr Rowley", names no place; but
+                    # "Kohima's where we're sending everyone": what is said of it names it)
+                if not all(toks.tokens[j].text[:1].isupper() for j in range(i, end)) \
+                        and not (key in self._possessive_headless and i > 0 and norms[i - 1] == "the"
+                                 and end < len(norms) and not toks.clause_start[end]
+                                 and norms[end] not in lx.FUNCTION_WORDS):
+                    continue  # ("the valley primary concern": a plain phrase, not a name; but "the greencaps" of
+                    # "the greencaps' house": whose it is, named lowercase too)
                 if end < len(norms) and not toks.clause_start[end] and norms[end] not in lx.FUNCTION_WORDS \
-                        and norms[end] not in lx.COPULAS and not re.search(r"[,.;:!?—–\-(]", toks.gaps[end]):
-                    continue  # "the Cavendish family": the word modifies a noun of its own
+                        and norms[end] not in lx.COPULAS and not re.search(r"[,.;:!?—–\-(]", toks.gaps[end]) \
+                        and not (key in self._possessive_headless and toks.tokens[end - 1].text.lower().endswith("s")):
+                    continue  # "the Cavendish family": the word modifies a noun of its own ("the greencaps keep
+                    # an eye on it": the people, plural, doing it)
                 out.append(self._mention(toks, i, end, self._headless_forms[key]))
                 taken = taken | set(range(i, end))
                 break
@@ -2052,6 +2088,9 @@ class ReportAnalyzer:
                         or any(toks.clause_start[j] for j in range(i + 1, i + n)):
                     continue  # ("fuel from" is not "fuel farm"; "the munisipal building" is the municipal one)
                 word = "".join(norms[j] for j in span)  # ("hanger two's": the keys drop the "'s")
+                if n == 1 and i > 0 and norms[i - 1] in ("that", "which", "who") and norms[i + 1:i + 2] in (
+                        ("up",), ("out",), ("off",), ("down",), ("over",)):
+                    continue  # "the place that patches up its casualties": a verb and its particle, no "the patch"
                 if self._cut_off_here(toks, i + n - 1):
                     continue  # "outside the hote-- outside the bank": a word cut off, for ``_false_starts``
                 typo = self._typo_of(word, [norms[j] for j in span],
@@ -2693,8 +2732,11 @@ class ReportAnalyzer:
         head and a place, matched to the KB's relation forms with MiniLM (antonyms flip direction); then
         once more from the places so found ("the space just aft of the space just aft of the ECR")."""
         first = len(ex.places)
+        # (a description the phrase tables read backwards anchors one too: "the hostel that houses the crews for the
+        # dome the mirror shop recoats"; not one read forwards, "the bridge to the south wing", a relation's own tail)
         self._resolve_open_from(ex, toks, norms, place_tokens, marker_tokens, cue_tokens,
-                                [p for p in ex.places if p.status == "active" and p.via is None])
+                                [p for p in ex.places if p.status == "active"
+                                 and (p.via is None or p.via.endswith(f" {p.landmark}"))])
         self._resolve_open_from(ex, toks, norms, place_tokens, marker_tokens, cue_tokens,
                                 [p for p in ex.places[first:] if p.status == "active"])
 
@@ -2747,13 +2789,13 @@ class ReportAnalyzer:
             if plain and norms[j - 1] == "of":
                 continue  # ("the back doors of the library": a part of it)
             if sim < self.OPEN_RELATION_MIN_SIM:
-                if sim >= self.OPEN_RELATION_HINT_SIM and not plain:
+                if sim >= self.OPEN_RELATION_HINT_SIM and not plain and anchor.via is None:
                     ex.places[idx] = replace(anchor, status="reference",
                                              reason=f"reference point of an unresolved description ('{link}')")
                 continue
             target, via = self._follow_link(anchor.landmark, link, toks.tokens[k - 1].text, inverse=False, sims=sims)
             if target is None:
-                if not plain:
+                if not plain and anchor.via is None:  # (a description read already stays what it was read as)
                     ex.places[idx] = replace(anchor, status="reference", reason=f"reference point of an unresolved '{link}'")
                 continue
             ex.places[idx] = replace(anchor, status="reference", reason=f"reference point: {via} (matched '{link}')")
@@ -2942,6 +2984,10 @@ class ReportAnalyzer:
                     continue  # "a tank wagon on the siding": the noun goes on, it heads nothing
                 if between[0] == "past":
                     continue  # "gritting the hill road past the caravan park": a way that goes by it, no relation
+                if between in (["into"], ["onto"]) and any(
+                        norms[i] in lx.FALLEN_VERBS | {"jumped", "slipped", "thrown", "knocked"}
+                        and not any(toks.clause_start[m] for m in range(i + 1, head + 1)) for i in range(max(0, head - 8), head)):
+                    continue  # "he fell off the roof of the boat into the top pound": where he fell, no description
                 if norms[head] == "corner" and between[0] == "from":
                     continue  # "the Red Lion, round the corner from the square": somewhere near it, no relation
                 if between[-1] in ("from", "of") and set(between) & _PEOPLE_WORDS \
@@ -2990,6 +3036,9 @@ class ReportAnalyzer:
                 continue  # (but "the oast in the yard of the farm whose ...": the words of the relation's own name)
             if norms[head] in lx.ROOMS_OF_A_BUILDING and not named:
                 continue  # "the room above the market hall": a room of it, no landmark of its own
+            if norms[head] in lx.ROUTE_HEADS and not named and len(between) == 1 \
+                    and between[0] in ("below", "above", "beneath", "under", "behind", "beside", "near"):
+                continue  # "I live on the lane below the bund": a way by it, no landmark it leads to
             if norms[head] in lx.ROUTE_HEADS and not named and between and set(between) <= lx.ROUTE_LINKS | {"around"}:
                 ex.places[idx] = replace(anchor, status="reference", reason=f"the {toks.tokens[head].text} about it: no claim")
                 continue  # "the streets round the bus station": the ways about it, no landmark
@@ -3177,7 +3226,8 @@ class ReportAnalyzer:
             # (nor a noun a cue ends on: "person in the water downstream of the weir" is in the water there)
             generic = all(w.isalpha() and w not in closed for w in words) and len(words[-1]) >= 3 \
                 and not any((m := self._cues.match_at(norms, j)) is not None and m[0] > head_start
-                            for j in range(max(0, head_start - 3), head_end))
+                            and not (m[0] > head_end and b - a >= 4) for j in range(max(0, head_start - 3), head_end))
+            # (but a cue that runs on into a long relation phrase is none: "the water lapping at the back doors of")
         if not generic and anchor is not None and words and words[-1] in lx.STOREY_WORDS | {"rooms", "room", "storeys"} \
                 and self._follow(anchor.landmark, phrase, head_text, inverse=flipped)[0] is not None:
             generic = True  # "people trapped on the floor above the corn exchange", where the KB puts a place above it
@@ -3324,6 +3374,10 @@ class ReportAnalyzer:
                     # word before its "that" ("face", as in "facing") is its head, no relation of its own
                 if a > 0 and norms[a - 1] in lx.ROOMS_OF_A_BUILDING:
                     return  # "the room above the market hall": a room of it, when nothing lies above it
+                if a > 0 and norms[a - 1] in lx.ROUTE_HEADS | {"ground", "floor", "surface", "tarmac", "concrete", "earth"} \
+                        and norms[a] in ("under", "underneath", "beneath", "below"):
+                    return  # "road under the scales is gone": the ground it stands on, when nothing lies below it
+                    # ("I live on the lane below the bund. There's a long crack along the top of it")
                 ex.places[idx] = replace(anchor, status="reference",
                                          reason=f"reference point of an unresolved '{phrase}' description")
                 return
@@ -4520,6 +4574,12 @@ class ReportAnalyzer:
             stop = next((i for i in ahead if i in starts or toks.sentence_start[i]), ahead.stop)
             if any(self._person_cue_at(norms, i) for i in range(p.end_tok, stop)):
                 continue
+            if stop < len(norms) and toks.sentence_start[stop] and stop not in starts:
+                nxt = range(stop, next((i for i in range(stop + 1, len(norms)) if toks.sentence_start[i]), len(norms)))
+                it = next((i for i in nxt if norms[i] in ("it", "its")), None)
+                if it is not None and not any(i in starts for i in range(stop, it)) \
+                        and any(self._cues.match_at(norms, i) is not None for i in range(it, nxt.stop)):
+                    continue  # "Everyone from the bunkhouse is accounted for. We're using it as the rest point"
             ex.places[idx] = replace(p, status="reference", reason="where people came from: no claim")
         # "and the deanery, well, we haven't been to the deanery yet": a place not visited yet, and the same
         # place said just before as what the clause is about, claim nothing
@@ -5033,6 +5093,16 @@ class ReportAnalyzer:
         with self._call_lock:
             return self._classify(ex)
 
+    def _dry_water(self, ex: Extraction, norms: tuple[str, ...], a: int) -> bool:
+        """Is the subject of "(bone) dry" at token ``a`` a water body (a pond, a pool, a ditch): water not there,
+        no dry place to shelter in?"""
+        j = a - 1
+        while j >= 0 and norms[j] in ("is", "s", "was", "are", "were", "still", "completely", "totally", "all", "now",
+                                      "gone", "run", "looks"):
+            j -= 1
+        subject = next((p for p in ex.places if p.end_tok == j + 1), None)
+        return subject is not None and norm(subject.text.split()[-1]) in lx.WATER_BODIES | _STILL_WATERS
+
     def _classify(self, ex: Extraction) -> Classification:
         toks = ex.tokens
         norms = toks.norms(0, len(toks))
@@ -5099,6 +5169,9 @@ class ReportAnalyzer:
                 continue  # "waiting for the road to clear": not clear yet
             if self._kept_clear_for(toks, norms, a):
                 continue  # "keep the road clear for the aerial ladder coming down from the fire station": who it is for
+            if norms[b - 1] == "dry" and self.kb.category_by_name[cat].role == Role.DESIRABLE and self._dry_water(ex, norms, a):
+                neutral.update(range(a, b))
+                continue  # "it's the duck pond that's overflowing, not the dew pond. The dew pond's bone dry": no water
             undesirable = self.kb.category_by_name[cat].role == Role.UNDESIRABLE
             if self._person_category and undesirable and self._injury_cause_at(norms, a):
                 # "a man hit by falling slates", "two hurt by the blast": what hurt them, the person the claim
@@ -5641,6 +5714,10 @@ class ReportAnalyzer:
             return True  # "keeper Mills has collapsed": a name after a title
         if (w in lx.NUMBER_WORDS or w.isdigit()) and any(norms[m] in _PEOPLE_WORDS for m in range(max(0, j - 10), j)):
             return True  # "the men in there are choking, two have collapsed": two of the people just said
+        if w in ("them", "us") and j > 1 and norms[j - 1] == "of" and (
+                norms[j - 2] in lx.NUMBER_WORDS or norms[j - 2] in ("one", "some", "both", "all")) and any(
+                norms[m] in _PEOPLE_WORDS or norms[m] == "staff" for m in range(max(0, j - 15), j - 2)):
+            return True  # "staff got out but one of them is badly burned": one of the people just said
         counted = j > 0 and (norms[j - 1] in lx.NUMBER_WORDS or norms[j - 1].isdigit())
         if counted and w.endswith(("er", "ent", "ist", "or", "ian")):
             return True
@@ -6543,12 +6620,17 @@ class ReportAnalyzer:
             # it's not"
             cancelled_by = "said, and it isn't"
             k = len(norms)
+        articles = 0
         while k < len(norms) and steps < 7 and not toks.clause_start[k]:  # "the fire on the roof at the bakery is out"
             if norms[k] in lx.UNTIL_WORDS:
                 break  # "no entry till it's shored up": what will end it, not that it has
             if k in ends and ends[k] > k:
                 k = ends[k]  # a place (or a whole relational description) counts as one word
                 steps += 1
+                continue
+            if norms[k] in ("the", "a", "an") and k + 1 < len(norms) and not toks.clause_start[k + 1]:
+                k += 1  # ("the flue fire on the boat moored at the far mouth is out": an article is no word of its own)
+                articles += 1
                 continue
             if norms[k:k + 3] in (("but", "it", "isnt"), ("but", "its", "not"), ("but", "it", "wasnt"),
                                   ("but", "thats", "not"), ("but", "they", "arent")) \
@@ -6558,6 +6640,8 @@ class ReportAnalyzer:
             h = self._cancel.match_at(norms, k)
             if h is not None and h[1].endswith("out") and h[0] < len(norms) and norms[h[0]] in lx.ROUTE_PREPOSITIONS:
                 h = None  # "evacuation route is out through the park": the way out, nothing put out
+            if h is not None and steps + articles >= 7 and not h[1].endswith("out"):
+                break  # ("the boathouse is smashed to bits the big doors are just gone": only "is out" reaches so far)
             if h is not None:
                 nxt = h[0]
                 while nxt < len(norms) and norms[nxt] in lx.DETERMINERS:
@@ -6899,8 +6983,18 @@ class ReportAnalyzer:
         marker_tokens = {i for a, b, _ in ex.markers for i in range(a, b)}
         coord = {i for key in _COORDINATOR_KEYS for i in range(len(norms)) if norms[i : i + len(key)] == key}
         cuts = [0]
+        aux = ("is", "are", "was", "were", "s", "has", "have", "had", "re")
+
+        def held(i: int) -> bool:
+            """A hesitation between a verb's auxiliary and the rest, or a subject and its verb, cuts no clause
+            ("the viaduct has, um, lost a parapet", "the viaduct, um, has lost a parapet")."""
+            h = i if norms[i] in lx.HESITATIONS else i - 1 if norms[i - 1] in lx.HESITATIONS else None
+            return h is not None and 0 < h < len(norms) - 1 and not toks.sentence_start[i] \
+                and (norms[h - 1] in aux or norms[h + 1] in aux) and h - 1 not in marker_tokens \
+                and h + 1 not in marker_tokens
         for i in range(1, len(toks)):
-            if toks.clause_start[i] or norms[i] in lx.COORDINATORS or i in coord or i in marker_tokens and (i - 1) not in marker_tokens:
+            if toks.clause_start[i] and not (held(i) and norms[i] not in lx.COORDINATORS and i not in coord) \
+                    or norms[i] in lx.COORDINATORS or i in coord or i in marker_tokens and (i - 1) not in marker_tokens:
                 cuts.append(i)
         cuts.append(len(toks))
         segs = [(cuts[k], cuts[k + 1]) for k in range(len(cuts) - 1) if cuts[k] < cuts[k + 1]]
@@ -7735,7 +7829,9 @@ class ReportAnalyzer:
             between = norms[c.end_tok : p.start_tok]
             glue = all(w in lx.PREPOSITIONS or w in lx.DETERMINERS or w in lx.FILLERS or w in lx.COPULAS for w in between)
             return len(between) - (2.5 if glue and any(w in lx.PREPOSITIONS for w in between) else 0)
-        between = norms[p.end_tok : c.start_tok]  # place before cue: "the bakery is on fire"
+        # place before cue: "the bakery is on fire" (a hesitation is no distance: "the viaduct has, um, lost a parapet
+        # into the marina")
+        between = tuple(w for w in norms[p.end_tok : c.start_tok] if w not in lx.HESITATIONS)
         glue = all(w in lx.COPULAS or w in lx.FILLERS or w in lx.PREPOSITIONS or w in lx.DETERMINERS or w in lx.PRONOUNS for w in between)
         # ("rockfall on the coast path live ground at the top car park": a cue that goes on "at the" names its
         # own place after it)
@@ -8190,6 +8286,9 @@ _PERSON_WORDS = frozenset(lx.PERSON_NOUNS) | {"pensioner", "residents", "neighbo
 # Any word for people, a group said as a subject too ("the men in there", "the folk at the chapel")
 _UNREACHABLE = (("cant", "get", "hold", "of"), ("not", "answering"), ("isnt", "answering"), ("hes", "not", "answering"),
                 ("she", "not", "answering"), ("shes", "not", "answering"), ("not", "picking", "up"))
+# Water that stands or is held, besides the flowing kind ("the dew pond's bone dry": no water in it)
+_STILL_WATERS = frozenset({"pond", "pool", "reservoir", "ditch", "drain", "dyke", "rhyne", "well", "fountain", "lagoon",
+                           "moat", "leat", "cistern", "tarn", "lido"})
 _PEOPLE_WORDS = _PERSON_WORDS | lx.LAY_PERSONS | lx.WORKER_PERSONS | {"men", "women", "folk", "folks"}
 _LIST_OPENERS = frozenset({"and", "there", "theres", "is", "are", "lots", "of", "loads", "some", "also", "got", "weve"})
 

@@ -32,7 +32,7 @@ def _add(role: str, phrases: str) -> None:
 
 
 _add(UNDESIRABLE, """
-have come off the|has come off the|slates have come off|shed half its|has shed half its|
+have come off the|has come off the|running brown|properly under|broken straight through its bank|broken through its bank|broken through the bank|is also water|scouring the bank|scouring the bank away|metre above normal|metres above normal|foot above normal|feet above normal|taking the fences with it|up to his windowsills|up to her windowsills|up to their windowsills|up to the windowsills|up to the sills|water is already up to|water's already up to|water is up to the|water's up to the|dropped and split|split in two|split in half|slates have come off|shed half its|has shed half its|
 been torn off|torn away|
 have toppled|has toppled|toppled over|toppled all over|it's a wreck|its a wreck|a complete wreck|a total wreck|
 back wall in|side wall in|front wall in|gable wall in|pushed the wall in|pushed its wall in|
@@ -371,7 +371,7 @@ BACK_REFERENCE_WORDS = {"it", "its", "s", "is", "has", "been", "thats", "that", 
                         "ive"}
 
 # Phrases that contain cue words but claim nothing ("the smoke alarm went off", "fire crew on site").
-NEUTRAL_PHRASES = ["a bonfire", "burning hedge trimmings", "burning garden waste", "burning rubbish", "controlled burn", "fire drill", "evacuation drill", "fire practice", "half in the water", "i'm shattered", "im shattered", "i am shattered", "we're shattered", "we are shattered",
+NEUTRAL_PHRASES = ["a bonfire", "drill smoke", "exercise smoke", "smoke grenade", "smoke grenades", "burning hedge trimmings", "burning garden waste", "burning rubbish", "controlled burn", "fire drill", "evacuation drill", "fire practice", "half in the water", "i'm shattered", "im shattered", "i am shattered", "we're shattered", "we are shattered",
                    "keeping the children inside", "keeping the kids inside", "keeping everyone inside",
                    "keeping them inside", "kept the children inside", "kept the kids inside", "went under in the crash", "went bust", "gone bust", "above the flood line", "above the waterline", "above the water line", "above the flood level",
                    "above the high water mark", "roof is still on", "roof's still on", "been found safe", "found safe and well", "found safe at", "stable staff", "stable lads", "stable lad", "stable hands", "stable hand", "stable girls",
@@ -902,7 +902,7 @@ PERSON_NOUNS = ["man", "woman", "person", "someone", "somebody", "firefighter", 
                 "patient", "resident", "worker", "officer", "lady", "guy", "bloke", "fella", "casualty", "boy", "girl",
                 "customer", "driver", "student", "teacher", "nurse", "someone's", "somebody's", "chap", "lad", "roofer",
                 "builder", "labourer", "painter", "climber", "mechanic", "spectator", "camper", "walker", "rider",
-                "technician"]
+                "technician", "farmer", "farmhand"]
 for _p in PERSON_NOUNS:
     ROLE_CUES[f"{_p} fallen through"] = CRITICAL  # ("a worker's fallen through the roof"; a roof that fell is none)
     ROLE_CUES[f"{_p} has fallen through"] = CRITICAL
@@ -913,6 +913,8 @@ for _p in PERSON_NOUNS:
     ROLE_CUES[f"{_p} collapsed"] = CRITICAL
     ROLE_CUES[f"{_p} has collapsed"] = CRITICAL
     ROLE_CUES[f"{_p} s collapsed"] = CRITICAL
+    ROLE_CUES[f"{_p} underneath it"] = CRITICAL  # ("the barn's come down and the farmer's underneath it")
+    ROLE_CUES[f"{_p} under it"] = CRITICAL
 
 # Danger words that say what happened to a person when a person is their subject ("two residents have
 # collapsed", "one of our crew is burned very bad").
@@ -1423,7 +1425,7 @@ DESCRIBED_COMFORTS: dict[str, tuple[frozenset[str], list[str]]] = {
 # More phrases of the kinds above that read as their kind but do not vote on which category a kind is (so the
 # kinds map onto a KB's categories as they did before these were added).
 DANGER_KIND_EXTRA: dict[str, list[str]] = {
-    "explosion": ["from the bang", "by the bang", "in the bang"],
+    "explosion": ["from the bang", "by the bang", "in the bang", "cooking off", "rounds cooking off"],
     "breakage": ["been ripped out", "ripped out", "hole right through it", "hole right through", "punched a hole in", "punched a hole through", "hole punched", "punched right through", "punched through"],  # "a hole punched right through the wall"
     # (the surge's damage to moorings: "the diesel jetty has broken loose", "pontoons torn off their piles")
     "storm": ["blown over", "been blown over", "has blown over", "torn off their piles", "torn off its piles", "off their piles", "off its piles", "broken loose",
@@ -1432,7 +1434,7 @@ DANGER_KIND_EXTRA: dict[str, list[str]] = {
               "lost the roof", "lost its leads", "lost the leads", "roof lifted", "blown clean off", "blown off",
               "off its hinges", "pulled up by the roots", "open to the sky", "rain's coming in", "rain is coming in",
               "rain coming straight in", "rain's coming straight in", "rain pouring in", "rain is pouring"],
-    "fire": ["flare-up", "flare up", "flared up", "flaring up", "burning debris", "roof is going up", "houses have caught", "have caught", "is going up", "s going up", "going up properly", "roof's going up", "roofs going up", "thatch is going up", "thatch's going up",
+    "fire": ["taken hold of", "has taken hold", "taken hold in", "took hold of", "taking hold of", "flare-up", "flare up", "flared up", "flaring up", "burning debris", "roof is going up", "houses have caught", "have caught", "is going up", "s going up", "going up properly", "roof's going up", "roofs going up", "thatch is going up", "thatch's going up",
              "thatch going up", "embers are landing", "embers landing", "embers are falling", "embers falling", "embers coming down"],
     "electric": ["wire is hot", "wires are hot", "line is hot", "lines are hot", "wire as hot", "wires as hot",
                  "conductors are on", "conductor down", "conductors down", "feeder is down", "feeder down", "lines down",

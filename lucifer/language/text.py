@@ -35,7 +35,7 @@ ABBREVIATIONS = {"stn": "station", "stuk": "stuck", "trapt": "trapped", "bldg": 
                  "crk": "crack", "chan": "channel", "est": "established",
                  # texting ("sorry ment the shower blok", "send sum1 asap")
                  "ment": "meant", "smel": "smell", "realy": "really", "sum1": "someone", "some1": "someone",
-                 "any1": "anyone", "every1": "everyone", "evry1": "everyone",
+                 "any1": "anyone", "every1": "everyone", "evry1": "everyone", "thru": "through", "tho": "though",
                  "saint": "st"}  # ("Saint Brendan" reads as a KB's "st brendan")
 # Shorthand written with a full stop that does not end the sentence before a lower-case word.
 _PERIOD_ABBREVIATIONS = set(ABBREVIATIONS) | {"est", "st", "vs", "etc"}
