@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev71) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev72) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -112,6 +112,9 @@ WITHY_LEVELS = ROOT / "knowledge_bases" / "withy_levels"
 BIRD_RESERVE = ROOT / "knowledge_bases" / "bird_reserve"
 ARMY_CAMP = ROOT / "knowledge_bases" / "army_camp"
 PILGRIM_PASS = ROOT / "knowledge_bases" / "pilgrim_pass"
+SUGAR_FACTORY_TOWN = ROOT / "knowledge_bases" / "sugar_factory_town"
+QUARRY_LAKE_PARK = ROOT / "knowledge_bases" / "quarry_lake_park"
+MILL_RACE_TOWN = ROOT / "knowledge_bases" / "mill_race_town"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -375,6 +378,9 @@ SETS = {
     "dev71/bird_reserve": _set("dev71/bird_reserve.jsonl", BIRD_RESERVE, "br71", TWENTY, sep=""),
     "dev71/army_camp": _set("dev71/army_camp.jsonl", ARMY_CAMP, "ac71", TWENTY, sep=""),
     "dev71/pilgrim_pass": _set("dev71/pilgrim_pass.jsonl", PILGRIM_PASS, "pp71", TWENTY, sep=""),
+    "dev72/sugar_factory_town": _set("dev72/sugar_factory_town.jsonl", SUGAR_FACTORY_TOWN, "sf72", TWENTY, sep=""),
+    "dev72/quarry_lake_park": _set("dev72/quarry_lake_park.jsonl", QUARRY_LAKE_PARK, "ql72", TWENTY, sep=""),
+    "dev72/mill_race_town": _set("dev72/mill_race_town.jsonl", MILL_RACE_TOWN, "mr72", TWENTY, sep=""),
 }
 
 
