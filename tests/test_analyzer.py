@@ -3701,6 +3701,39 @@ def test_dev66_phenomena(kb_analyzers, kb, text, expected):
                   "that's the rally point.", [("alamein block", "casevac_case"), ("kohima block", "rally_point")]),
     # "the place that patches up": a verb, no slip of "the patch"
     ("army_camp", "the place that patches up the gym's casualties is on fire", [("medical centre", "burnline")]),
+    ("army_camp", "man down at the casevac pad for whatever patches up the assault course's casualties, he's not moving",
+     [("helicopter landing site", "casevac_case")]),
+    # a fire that "has jumped to" a place spreads there
+    ("army_camp", "running fire on the range the control tower watches over, and it's jumped to the tower itself now",
+     [("gallery range", "burnline"), ("range control tower", "burnline")]),
+    # "Kohima I mean" after a description says which block; it repairs no cue ...
+    ("army_camp", "the block that marches out onto the square, it's got smoke in the stairwell, uh, Kohima I mean, and "
+                  "there's a recruit trapped in the drying room",
+     [("kohima block", "burnline"), ("kohima block", "casevac_case")]),
+    # ... but "the church — sorry, the chapel — I mean the hardware store" is still a double repair
+    ("knowledge_base", "two casualties at the library and, er, one at the church — sorry, the chapel — I mean the "
+                       "hardware store, one casualty at the hardware store",
+     [("hardware store", "victim"), ("library", "victim")]),
+    # hearsay nobody has confirmed
+    ("army_camp", "we heard there was smoke round the armoury but nobody's confirmed anything", []),
+    # dev72: the radio's "to control" is no relation; "anyone from X can come": where people come from
+    ("sugar_factory_town", "Beet Six to control: the toaster's well alight, flames through the roof at the drum end.",
+     [("pulp drying plant", "flame_and_fume")]),
+    ("sugar_factory_town", "I'm the steward at the Bethel. We've opened it as a shelter hall, anyone from Kiln Terrace "
+                           "can come over here.", [("bethel chapel", "safe_harbourage")]),
+    ("sugar_factory_town", "The big house on the hill is open for the families from the railway cottages, it's safe and "
+                           "dry up there.", [("manager's house", "safe_harbourage")]),
+    ("sugar_factory_town", "Kiln Terrace, number nine, a man's gone through the floor, the whole floor's collapsed.",
+     [("kiln terrace", "person_in_peril"), ("kiln terrace", "slurry_and_slump")]),
+    # "same thing": another name, no repair
+    ("quarry_lake_park", "the club that tows its skiers round pit two -- er, sorry, the ski pit, same thing -- its roof's "
+                         "come clean off", [("water-ski club", "under_or_broken")]),
+    # a relative clause ending in two prepositions ("puts its boats in from") only says which ramp
+    ("quarry_lake_park", "the ramp the sailing club puts its boats in from has cracked and slid into the water",
+     [("public slipway", "under_or_broken")]),
+    # "over" for "across" in a relation's name; a bridge swept away is damage, no person
+    ("quarry_lake_park", "the bridge carrying the towpath over the weir has been swept away",
+     [("weir footbridge", "under_or_broken")]),
 ])
 def test_dev70_phenomena(kb_analyzers, kb, text, expected):
     assert claims(kb_analyzers[kb], text) == expected

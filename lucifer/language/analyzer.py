@@ -871,6 +871,13 @@ class ReportAnalyzer:
             self._resolve_relations(ex)
         self._resolve_itself(ex)
         self._relative_clause_anchors(ex, norms)
+        for idx, p in enumerate(ex.places):
+            if p.status == "active" and p.via is None and norms[p.end_tok:p.end_tok + 2] in (
+                    ("same", "thing"), ("same", "place"), ("same", "difference")) \
+                    and any(q.landmark == p.landmark and q.end_tok <= p.start_tok and q.status == "reference"
+                            for q in ex.places):
+                # "round pit two -- er, sorry, the ski pit, same thing --": another name for a description's anchor
+                ex.places[idx] = replace(p, status="reference", reason="another name for a place said before")
         self._resolve_containers(ex, norms)
         heads = self._definite_heads(toks, norms, ex.places)  # again, after descriptions ("the portal with ...")
         ex.places.extend(heads)
@@ -1136,10 +1143,14 @@ class ReportAnalyzer:
                 end += 1
             if end >= len(norms) or norms[end] not in lx.RELATION_ENDINGS or end == p2.end_tok:
                 continue
+            if end + 1 < len(norms) and norms[end + 1] in lx.RELATION_ENDINGS | {"from"} and not toks.clause_start[end + 1]:
+                end += 1  # "the ramp the sailing club puts its boats in from has cracked"
             verb = norms[p2.end_tok]
             nxt = end + 1
             closed = nxt >= len(norms) or toks.clause_start[nxt] or norms[nxt] in lx.COPULAS | {"has", "have", "had"}
-            if closed and (verb.endswith(("s", "ed")) or verb in ("look", "take", "draw", "feed", "face")) \
+            raw_verb = toks.tokens[p2.end_tok].text.lower()  # (the key drops a verb's "s": "puts" is "put")
+            if closed and (verb.endswith(("s", "ed")) or verb in ("look", "take", "draw", "feed", "face")
+                           or raw_verb.endswith("s") and raw_verb.isalpha() and len(raw_verb) >= 4) \
                     and verb not in lx.COPULAS:
                 only_describes(p1, p2)
                 continue
@@ -1709,6 +1720,7 @@ class ReportAnalyzer:
                 if len(key) < n or key not in self._headless_forms or any(j in taken for j in range(i, end)):
                     continue
                 if n == 1 and (toks.sentence_start[i] or norms[i - 1] not in ("the", "at", "in", "inside", "from", "not")) \
+                        and norms[end:end + 2] != ("i", "mean") \
                         and not (toks.sentence_start[i] and toks.tokens[i].text.lower().endswith(("'s", "’s"))
                                  and norms[i + 1:i + 2] in (("where",), ("now",), ("being",), ("our",), ("the",))):
                     continue  # (one capitalised word where a sentence starts, or "Mr Rowley", names no place; but
@@ -1721,7 +1733,8 @@ class ReportAnalyzer:
                     # "the greencaps' house": whose it is, named lowercase too)
                 if end < len(norms) and not toks.clause_start[end] and norms[end] not in lx.FUNCTION_WORDS \
                         and norms[end] not in lx.COPULAS and not re.search(r"[,.;:!?—–\-(]", toks.gaps[end]) \
-                        and not (key in self._possessive_headless and toks.tokens[end - 1].text.lower().endswith("s")):
+                        and not (key in self._possessive_headless and toks.tokens[end - 1].text.lower().endswith("s")) \
+                        and norms[end:end + 2] != ("i", "mean"):
                     continue  # "the Cavendish family": the word modifies a noun of its own ("the greencaps keep
                     # an eye on it": the people, plural, doing it)
                 out.append(self._mention(toks, i, end, self._headless_forms[key]))
@@ -2088,7 +2101,8 @@ class ReportAnalyzer:
                         or any(toks.clause_start[j] for j in range(i + 1, i + n)):
                     continue  # ("fuel from" is not "fuel farm"; "the munisipal building" is the municipal one)
                 word = "".join(norms[j] for j in span)  # ("hanger two's": the keys drop the "'s")
-                if n == 1 and i > 0 and norms[i - 1] in ("that", "which", "who") and norms[i + 1:i + 2] in (
+                if n == 1 and i > 0 and (norms[i - 1] in ("that", "which", "who") or norms[i - 1] in lx.WHATEVER) \
+                        and norms[i + 1:i + 2] in (
                         ("up",), ("out",), ("off",), ("down",), ("over",)):
                     continue  # "the place that patches up its casualties": a verb and its particle, no "the patch"
                 if self._cut_off_here(toks, i + n - 1):
@@ -2380,6 +2394,9 @@ class ReportAnalyzer:
         # "the park's under water": a word of a danger phrase, not a relation
         rel_hits = [h for h in rel_hits if not (h[1] - h[0] == 1 and (m := self._cues.match_at(norms, h[0])) is not None
                                                 and m[0] > h[1])]
+        # "Beet Six to control: ...": the radio's addressee, not ``controls_the_points_of``
+        rel_hits = [h for h in rel_hits if not (h[1] - h[0] == 1 and norms[h[0]] == "control" and (
+            h[0] > 0 and norms[h[0] - 1] in ("to", "from", "calling") or h[1] < len(norms) and ":" in toks.gaps[h[1]]))]
         # "sand boils all along the back of it": a part of the place, not ``backs_onto``
         rel_hits = [h for h in rel_hits if not (norms[h[0]] in ("back", "front") and h[0] >= 2
                                                 and norms[h[0] - 1] == "the"
@@ -3625,13 +3642,19 @@ class ReportAnalyzer:
             return False
         start = p.start_tok if idx >= 0 else k - 1
         v = start - 1
-        if idx >= 0 and v >= 2 and hit[1] == "active" and _link_stems(norms[v]) & _link_stems(verb):
+        if v >= 3 and norms[v] == "the" and norms[v - 1] in ("up", "out", "off", "down", "over"):
+            v -= 1  # ("patches up the assault course's casualties")
+        if v >= 2 and norms[v] in ("up", "out", "off", "down", "over") and norms[v - 1].isalpha():
+            v -= 1  # ("whatever patches up the assault course's casualties": the verb's particle)
+        if idx >= 0 and v >= 1 and hit[1] == "active" and _link_stems(norms[v]) & _link_stems(verb):
             # "the oast that dries cherry hill's hops": the head and its relative clause name the place, so that a
             # relation said of it ("the barn that leans on the oast that ...") anchors on the whole
             h = v - 1 if norms[v - 1] in ("that", "which") else v
             if h >= 2 and norms[h - 1].isalpha() and norms[h - 1] not in lx.FUNCTION_WORDS \
                     and norms[h - 2] in lx.ARTICLES and not any(q.start_tok <= h - 1 < q.end_tok for q in ex.places):
                 start = h - 2
+            elif norms[v - 1] in lx.WHATEVER and not any(q.start_tok <= v - 1 < q.end_tok for q in ex.places):
+                start = v - 1  # "the casevac pad for whatever patches up the assault course's casualties"
         if idx >= 0:
             ex.places[idx] = replace(p, status="reference", reason=f"reference point: {via}")
         ex.places.append(self._mention(toks, start, end, target, via=via))
@@ -4577,7 +4600,8 @@ class ReportAnalyzer:
             if stop < len(norms) and toks.sentence_start[stop] and stop not in starts:
                 nxt = range(stop, next((i for i in range(stop + 1, len(norms)) if toks.sentence_start[i]), len(norms)))
                 it = next((i for i in nxt if norms[i] in ("it", "its")), None)
-                if it is not None and not any(i in starts for i in range(stop, it)) \
+                if it is not None and not any(i in starts for i in range(stop, it)) and not any(
+                        q is not p and toks.sentence_of[q.start_tok] == toks.sentence_of[p.start_tok] for q in ex.places) \
                         and any(self._cues.match_at(norms, i) is not None for i in range(it, nxt.stop)):
                     continue  # "Everyone from the bunkhouse is accounted for. We're using it as the rest point"
             ex.places[idx] = replace(p, status="reference", reason="where people came from: no claim")
@@ -4757,6 +4781,13 @@ class ReportAnalyzer:
         "sorry, it's on fire" the category, "correction, fire at the library" restates both.
         """
         norms = ex.tokens.norms(0, len(ex.tokens))
+        ma = ex.markers[k][0]
+        if norms[ma:ma + 2] == ("i", "mean") and any(
+                p.end_tok == ma and p.via is None and any(q.landmark == p.landmark and q.end_tok <= p.start_tok
+                                                          and q.status == "active" and q.via is not None
+                                                          for q in ex.places)
+                for p in ex.places):
+            return None  # "the block that marches out onto the square, it's got smoke ..., Kohima I mean": which one it is
         b, end = self._after_clause(ex, k)
         first_place = min((p for p in ex.places if b <= p.start_tok < end and p.status != "reference"),
                           key=lambda p: p.start_tok, default=None)
@@ -4924,6 +4955,12 @@ class ReportAnalyzer:
             if first_after is not None and norms[a:ex.markers[k][1]] in (("wait",), ("hang", "on"), ("hold", "on")) \
                     and self._adds_to(toks, norms, first_after):
                 continue  # "wait... crew three says the bank's alight as well": more news, not a repair
+            if first_after is not None and last.via is not None \
+                    and norms[first_after.end_tok:first_after.end_tok + 2] in (("same", "thing"), ("same", "place")) \
+                    and any(q.status == "reference" and q.landmark == first_after.landmark and q.end_tok == last.end_tok
+                            for q in ex.places):
+                continue  # "the club that tows its skiers round pit two -- er, sorry, the ski pit, same thing": the
+                # description's anchor named again, the description stands
             i = ex.places.index(last)
             ex.places[i] = replace(last, status="retracted",
                                    reason=f"self-repair: '{toks.span_text(a, b)}' then '{after[0].text}'")
@@ -5280,6 +5317,11 @@ class ReportAnalyzer:
                 und = self._category_for_role(lx.UNDESIRABLE, "slumped, collapsed ground")
                 if und is not None:
                     cue = replace(cue, category=und, reason="ground slumped")  # "part of the face has slumped"
+            if source == "lexicon" and norms[a:b] == ("swept", "away") and cue.category == self._person_category \
+                    and self._thing_before(norms, a, self._place_tokens) and not self._person_before(norms, a):
+                und = self._category_for_role(lx.UNDESIRABLE, "washed away by the flood")
+                if und is not None:
+                    cue = replace(cue, category=und, reason="a thing swept away")  # "the bridge ... has been swept away"
             if source in ("lexicon", "category") and norms[a:b] == ("buried",) and a > 0 and (
                     norms[a - 1] in lx.THING_SUBJECTS or self._thing_before(norms, a, self._place_tokens)
                     or next((w for w in reversed(norms[max(0, a - 4):a]) if w not in lx.FILLERS and w != "all"), "")
@@ -8785,6 +8827,11 @@ def _with_other_preposition(phrase: str, out: list[tuple[str, bool]]) -> None:
             and words[-2] not in lx.NOT_VERBS and (words[-1] != "of" or words[-3] in lx.ARTICLES):
         others = {"for": ["to"], "to": ["for"], "of": ["for"]}[words[-1]]
         out.extend((f"{form[:-len(words[-1])]}{other}", inv) for form, inv in list(out) for other in others
+                   if form.endswith(f" {words[-1]}") and len(form.split()) >= 3)
+    if len(words) >= 3 and words[-1] in ("across", "over") and words[-2] not in lx.ARTICLES:
+        # "the bridge carrying the towpath over the weir" for ``carries the towpath across``
+        other = "over" if words[-1] == "across" else "across"
+        out.extend((f"{form[:-len(words[-1])]}{other}", inv) for form, inv in list(out)
                    if form.endswith(f" {words[-1]}") and len(form.split()) >= 3)
 
 

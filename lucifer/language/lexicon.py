@@ -32,7 +32,7 @@ def _add(role: str, phrases: str) -> None:
 
 
 _add(UNDESIRABLE, """
-have come off the|has come off the|running brown|properly under|broken straight through its bank|broken through its bank|broken through the bank|is also water|scouring the bank|scouring the bank away|metre above normal|metres above normal|foot above normal|feet above normal|taking the fences with it|up to his windowsills|up to her windowsills|up to their windowsills|up to the windowsills|up to the sills|water is already up to|water's already up to|water is up to the|water's up to the|dropped and split|split in two|split in half|slates have come off|shed half its|has shed half its|
+have come off the|has come off the|running brown|properly under|come clean off|roof's come off|roof has come off|roof came off|broken straight through its bank|broken through its bank|broken through the bank|is also water|scouring the bank|scouring the bank away|metre above normal|metres above normal|foot above normal|feet above normal|taking the fences with it|up to his windowsills|up to her windowsills|up to their windowsills|up to the windowsills|up to the sills|water is already up to|water's already up to|water is up to the|water's up to the|dropped and split|split in two|split in half|slates have come off|shed half its|has shed half its|
 been torn off|torn away|
 have toppled|has toppled|toppled over|toppled all over|it's a wreck|its a wreck|a complete wreck|a total wreck|
 back wall in|side wall in|front wall in|gable wall in|pushed the wall in|pushed its wall in|
@@ -221,7 +221,7 @@ cpr in progress|a body|body|bodies|non ambulatory|non-ambulatory|overcome|office
 occupants unaccounted for|entrapment|trapped occupant|casualty pinned|
 person in the water|in the water|unaccounted for|still inside|not responding|no pulse|crush injury|burns|
 piw|medic needed|medics needed|medic required|need a medic|need medics|paramedic needed|paramedics needed|
-ambulance needed|ambulance required|need an ambulance|send an ambulance|needs medical attention|medical attention|chest pain|chest pains|in difficulty|in difficulties|not accounted for|clinging to|clinging on|broken hip|
+ambulance needed|ambulance required|need an ambulance|send an ambulance|needs medical attention|medical attention|chest pain|chest pains|in difficulty|in difficulties|not accounted for|hasn't been accounted for|has not been accounted for|haven't been accounted for|have not been accounted for|not been accounted for|clinging to|clinging on|broken hip|
 broken ankle|broken wrist|head injury|fractured|fracture|crushed|crushed foot|crushed leg|concussion|
 can hear someone|can hear her|can hear him|can hear them|can hear voices|hear someone|hear her|hear him|
 hear voices|waving at us|waving to us|calling from|shouting from|trapped under|under the timbers|overdue|
@@ -926,7 +926,7 @@ THING_SUBJECTS = {"car", "vehicle", "van", "truck", "lorry", "bus", "road", "tra
 SPREAD_PHRASES = [("has", "reached"), ("have", "reached"), ("reached",), ("spread", "to"), ("spreading", "to"),
                   ("spread", "into"), ("spreading", "into"), ("now", "covering"), ("covering",), ("its", "into"),
                   ("s", "into"), ("got", "into"), ("drifting", "over"), ("drifting", "across"), ("blowing", "across"),
-                  ("blowing", "over"), ("reaching",), ("gone", "through")]
+                  ("blowing", "over"), ("reaching",), ("gone", "through"), ("jumped", "to"), ("jumped", "onto"), ("jumped", "across", "to")]
 # Cues that say a place is shut: a danger only where a category is about access.
 LOCK_CUES = {("locked",), ("padlocked",), ("chained",), ("chained", "shut"), ("locked", "up")}
 # Parts of a structure that can be the subject of "collapsed" (no person is).
@@ -939,7 +939,8 @@ EARTHWORKS = {"face", "bank", "banking", "slope", "spoil", "tip", "heap", "emban
               "earth", "hillside", "verge", "mound", "bund", "levee", "dyke", "dike"}
 
 PERSON_STATE_CUES = {("collapsed",), ("collapse",), ("collapsing",), ("burned",), ("burnt",), ("burned", "out"),
-                     ("fallen", "in"), ("fell", "in"), ("slipped", "in"), ("falling", "in")}
+                     ("fallen", "in"), ("fell", "in"), ("slipped", "in"), ("falling", "in"),
+                     ("gone", "through", "the", "floor"), ("fallen", "through", "the", "floor"), ("fell", "through", "the", "floor")}
 
 # Parts of a person: "his arm is burned" is said of a person
 BODY_PARTS = _keyed({"arm", "arms", "leg", "legs", "hand", "hands", "head", "face", "foot", "feet", "back", "chest", "neck",
@@ -1265,7 +1266,7 @@ DISTRESS_VERBS = {"shouting", "yelling", "screaming", "waving", "crying", "bangi
 # People said to come from a place ("twenty folk from the almshouses"): the place is where they came from.
 # (as the tokenizer normalises them: "families" -> "familie", "residents" -> "resident")
 ORIGIN_PEOPLE = MOVED_PEOPLE | {"folk", "family", "villager", "camper", "local", "neighbour", "neighbor", "passenger",
-                                "visitor"}
+                                "visitor", "anyone", "anybody"}
 
 # What a speaker says of a place that is all right, and not a safe place ("the bridge is fine, it's the barn ...").
 FINE_WORDS = frozenset({"fine", "okay", "ok", "alright", "grand"})
@@ -1309,7 +1310,10 @@ CONTRADICTIONS = [("it", "isnt"), ("its", "not"), ("it", "is", "standing"), ("it
                   ("found", "nobody", "there"), ("found", "no", "one"), ("found", "nobody"), ("nobody", "there"),
                   ("theres", "nothing"), ("there", "nothing"), ("no", "smell"), ("nothing", "at", "all"),
                   ("nobody", "was"), ("no", "one", "was"), ("nobody", "is"), ("nobody", "hurt"),
-                  ("nothing", "there"), ("its", "just"), ("bone", "dry"), ("no", "water"), ("its", "dry")]
+                  ("nothing", "there"), ("its", "just"), ("bone", "dry"), ("no", "water"), ("its", "dry"),
+                  ("nobody", "confirmed"), ("nobody", "has", "confirmed"), ("no", "one", "confirmed"),
+                  ("not", "confirmed"), ("unconfirmed",), ("nobody", "confirmed", "anything"),
+                  ("nobody", "confirmed", "it"), ("no", "one", "confirmed", "anything")]
 
 # A person as the subject of a sentence that says where they are: "she's in the back of the shop".
 PERSON_SUBJECTS = {"he", "she", "hes", "shes", "they", "theyre"}
