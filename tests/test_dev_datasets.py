@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev72) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev73) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -115,6 +115,9 @@ PILGRIM_PASS = ROOT / "knowledge_bases" / "pilgrim_pass"
 SUGAR_FACTORY_TOWN = ROOT / "knowledge_bases" / "sugar_factory_town"
 QUARRY_LAKE_PARK = ROOT / "knowledge_bases" / "quarry_lake_park"
 MILL_RACE_TOWN = ROOT / "knowledge_bases" / "mill_race_town"
+LEAD_MINING_DALE = ROOT / "knowledge_bases" / "lead_mining_dale"
+RIVER_FESTIVAL = ROOT / "knowledge_bases" / "river_festival"
+GARRISON_TOWN = ROOT / "knowledge_bases" / "garrison_town"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -381,6 +384,9 @@ SETS = {
     "dev72/sugar_factory_town": _set("dev72/sugar_factory_town.jsonl", SUGAR_FACTORY_TOWN, "sf72", TWENTY, sep=""),
     "dev72/quarry_lake_park": _set("dev72/quarry_lake_park.jsonl", QUARRY_LAKE_PARK, "ql72", TWENTY, sep=""),
     "dev72/mill_race_town": _set("dev72/mill_race_town.jsonl", MILL_RACE_TOWN, "mr72", TWENTY, sep=""),
+    "dev73/lead_mining_dale": _set("dev73/lead_mining_dale.jsonl", LEAD_MINING_DALE, "ld73", TWENTY, sep=""),
+    "dev73/river_festival": _set("dev73/river_festival.jsonl", RIVER_FESTIVAL, "rf73", TWENTY, sep=""),
+    "dev73/garrison_town": _set("dev73/garrison_town.jsonl", GARRISON_TOWN, "gt73", TWENTY, sep=""),
 }
 
 
