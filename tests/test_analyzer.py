@@ -3734,6 +3734,39 @@ def test_dev66_phenomena(kb_analyzers, kb, text, expected):
     # "over" for "across" in a relation's name; a bridge swept away is damage, no person
     ("quarry_lake_park", "the bridge carrying the towpath over the weir has been swept away",
      [("weir footbridge", "under_or_broken")]),
+    # a relation's verb before its own noun phrase is one description ("whatever controls the points on the siding");
+    # the same relation said twice is a chain ("whatever's behind the thing that's behind the office block")
+    ("sugar_factory_town", "whatever controls the points on the siding is on fire, the siding itself isn't touched",
+     [("signal box", "flame_and_fume")]),
+    ("industrial_estate", "Someone's trapped in whatever's behind the thing that's behind the office block.",
+     [("pallet yard", "worker_casualty")]),
+    # "the back row's dry" after "the front row is flooded": no claim to guess at
+    ("sugar_factory_town", "the front row is flooded and the back row's dry, and the welfare's open as a shelter",
+     [("social club", "safe_harbourage"), ("station terrace", "slurry_and_slump")]),
+    # dev73: a bridge that "has gone." has collapsed; a fire "is now out"
+    ("lead_mining_dale", "Jenny's arch has gone. The beck took the parapet with it.",
+     [("packhorse bridge", "inrush_and_slump")]),
+    ("lead_mining_dale", "the fire at the pack bridge has gone.", []),
+    ("lead_mining_dale", "you're telling me the fire at the crushing mill is now out and crews are making up. Confirm.", []),
+    # a named place, then a participle and its relation: the place after only says which heaps
+    ("lead_mining_dale", "the heaps tipped out of the level the magazine kept the blasting powder for have slid right "
+                         "across the path", [("spoil heaps", "inrush_and_slump")]),
+    # "the smelter's flue": a head word, the one the KB relates to the owner
+    ("lead_mining_dale", "smoke pouring out the top of the thing the smelter's flue carries the fumes up to",
+     [("flue chimney", "reek_and_blaze")]),
+    # people moved through a gate are no relation word; drifting towards a place claims nothing there
+    ("river_festival", "The camping field's flooded. We're walking campers out through the campers' gate, which is dry "
+                       "and safe to use.", [("campsite field", "swamped_or_wrecked"), ("meadow gate", "safe_muster")]),
+    ("river_festival", "the floating stage is adrift and swinging out into the current towards the footbridge.",
+     [("main stage barge", "swamped_or_wrecked")]),
+    ("river_festival", "the car park, the north- no, the south meadow car park, er, sorry, car park A, the top one, cars "
+                       "are floating in it", [("north meadow car park", "swamped_or_wrecked")]),
+    # "is tucked in behind" said without its particle, with a pronoun anchor
+    ("river_festival", "The loos tucked in behind the beer tent - one of the cabins is on fire and it's spread to the tent "
+                       "they're tucked behind.", [("beer tent", "flame_and_reek"), ("portaloo row", "flame_and_reek")]),
+    # "no problems with X": X is fine; "the whole fair's a lake" after a contracted "'s"
+    ("river_festival", "No problems with the big wheel itself, but the ground it's the centrepiece of is getting swamped, "
+                       "the whole fair's a lake.", [("fairground", "swamped_or_wrecked")]),
 ])
 def test_dev70_phenomena(kb_analyzers, kb, text, expected):
     assert claims(kb_analyzers[kb], text) == expected

@@ -562,6 +562,8 @@ class ReportAnalyzer:
                 continue
             if t + 1 < len(norms) and ":" in toks.gaps[t + 1]:
                 continue  # "From the medical lead: the saucer ...": a speaker's label, not "leads_off"
+            if t > 0 and norms[t - 1].endswith("ing") and norms[t] in _PEOPLE_WORDS | {"camper", "visitor", "guest"}:
+                continue  # "we're walking campers out through the gate": the people moved, not ``lets_the_campers_into``
             if t >= 2 and word.lower().endswith("ing") and toks.tokens[t - 1].text.lower().replace("’", "'").endswith("'s") \
                     and (t - 1) not in covered and norms[t - 1] not in lx.GENERIC_HEADS | lx.DESCRIPTION_HEADS \
                     and norms[t - 2] in lx.ARTICLES:
@@ -878,6 +880,11 @@ class ReportAnalyzer:
                             for q in ex.places):
                 # "round pit two -- er, sorry, the ski pit, same thing --": another name for a description's anchor
                 ex.places[idx] = replace(p, status="reference", reason="another name for a place said before")
+            elif p.status == "active" and p.start_tok >= 3 and any(
+                    norms[k:k + 3] in (("no", "problem", "with"), ("nothing", "wrong", "with"))
+                    and all(w in lx.DETERMINERS for w in norms[k + 3:p.start_tok]) for k in range(max(0, p.start_tok - 5), p.start_tok - 2)):
+                # "No problems with the big wheel itself, but the ground it's the centrepiece of is getting swamped"
+                ex.places[idx] = replace(p, status="reference", reason="said to be fine: no claim")
         self._resolve_containers(ex, norms)
         heads = self._definite_heads(toks, norms, ex.places)  # again, after descriptions ("the portal with ...")
         ex.places.extend(heads)
@@ -1093,6 +1100,12 @@ class ReportAnalyzer:
             if p2 is None or p2 not in described or (p1.landmark, p2.landmark) not in related:
                 continue
             gap = norms[p1.end_tok:p2.start_tok]
+            participle = toks.tokens[p1.end_tok].text.lower().endswith("ed") if gap else False
+            if 2 <= len(gap) <= 4 and participle and all(w in lx.PREPOSITIONS | lx.RELATION_ENDINGS | {"out", "up", "off", "down"}
+                                                          for w in gap[1:]) \
+                    and not any(toks.clause_start[i] for i in range(p1.end_tok, p2.start_tok + 1)):
+                only_describes(p1, p2)  # "the heaps tipped out of the level the magazine kept the powder for"
+                continue
             if 2 <= len(gap) <= 4 and gap[0] in ("that", "which") and norms[p1.end_tok + 1].isalpha() \
                     and len(norms[p1.end_tok + 1]) >= 4 and norms[p1.end_tok + 1] not in lx.COPULAS | lx.FUNCTION_WORDS \
                     and (toks.tokens[p1.end_tok + 1].text.lower().endswith(("s", "ed")) or p1.text.lower().endswith("s")) \
@@ -1540,8 +1553,11 @@ class ReportAnalyzer:
                 # "the terrace" names the one terrace only as a relation's anchor ("back to back with the terrace"),
                 # or as what a predicate is said of ("the barn's out now")
                 continue
-            if i + 1 < len(norms) and norms[i + 1] in ("that", "which", "where", "who") and not toks.clause_start[i + 1]:
-                continue  # "the compound that supplies it": a description for the relation passes
+            if i + 1 < len(norms) and norms[i + 1] in ("that", "which", "where", "who") and not toks.clause_start[i + 1] \
+                    and not (i >= 2 and norms[i - 1] == "the" and (norms[i - 2] == "its" or norms[i - 3:i - 1] == ("it", "is"))
+                             and norms[i + 1] == "that"):
+                continue  # "the compound that supplies it": a description for the relation passes (but "it's the
+                # slipway that's under": a cleft, the place named)
             if i + 1 < len(norms) and not toks.clause_start[i + 1] and norms[i + 1].isalpha() \
                     and not selfsame and norms[i + 1] not in lx.FUNCTION_WORDS \
                     and self._relations.match_at(norms, i + 1) is None \
@@ -3126,6 +3142,19 @@ class ReportAnalyzer:
         if any(i in place_tokens for i in range(a, b)):
             return  # already inside a resolved description
         anchor, anchor_end, pronoun = self._anchor_after(ex, norms, b, phrase)
+        if anchor is not None and not pronoun and anchor.via is not None and not inverse_pass \
+                and f" {phrase.replace('_', ' ')} " in f" {anchor.via.replace('_', ' ')} " \
+                and anchor.start_tok <= b + 1 and a > 0 and norms[a - 1] in lx.WHATEVER | {"that", "which"} \
+                and next((w for w in norms[anchor.start_tok:anchor.end_tok] if w not in lx.DETERMINERS), "") in {
+                    norm(w) for w in phrase.replace("_", " ").split()}:
+            # "whatever controls the points on the siding": the relation's verb said before its own noun phrase, one
+            # description of the signal box, not the relation followed twice
+            h = a - 1 if norms[a - 1] in lx.WHATEVER else a - 2 if a >= 2 and norms[a - 2] in lx.GENERIC_HEADS else None
+            if h is not None:
+                ex.places[ex.places.index(anchor)] = replace(anchor, start_tok=h, start=toks.tokens[h].start,
+                                                             text=toks.text[toks.tokens[h].start:toks.tokens[anchor.end_tok - 1].end])
+                place_tokens.update(range(h, anchor.end_tok))
+                return
         if pronoun and anchor is not None and anchor.end_tok < a and ex.tokens.clause_start[anchor.end_tok] \
                 and a - anchor.end_tok <= 4 and norms[anchor.end_tok] in lx.ARTICLES \
                 and all(w in lx.DETERMINERS or w.isalpha() for w in norms[anchor.end_tok:a]):
@@ -3595,13 +3624,17 @@ class ReportAnalyzer:
     def _possessive_tail(self, ex: Extraction, idx: int, p: PlaceMention, norms: tuple[str, ...]) -> bool:
         """"the café's car park": after a possessive, the last words of landmarks' names ("car park": upper and
         lower car park), of which the KB relates exactly one to the owner."""
-        for n in (3, 2):
+        for n in (3, 2, 1):
             key = norms[p.end_tok:p.end_tok + n]
             if len(key) < n or any(q.start_tok < p.end_tok + n and q.end_tok > p.end_tok for q in ex.places):
                 continue
             owners = self._tail_owners.get(key, set())
-            if len(owners) < 2:
+            if len(owners) < (1 if n == 1 else 2):
                 continue
+            if n == 1 and (key[0] in lx.GENERIC_HEADS | lx.STOREY_WORDS | lx.PART_NOUNS or len(key[0]) < 4
+                           or p.end_tok + 1 < len(norms) and not ex.tokens.clause_start[p.end_tok + 1]
+                           and norms[p.end_tok + 1] in self._place_nouns()):
+                continue  # ("the smelter's flue": one head word; not "the mill's roof", nor "the mill's flue pipe")
             related = {other for rel in self.kb.relations for other in (rel.subject, rel.object)
                        if p.landmark in (rel.subject, rel.object) and other != p.landmark and other in owners}
             if len(related) != 1:
@@ -5130,6 +5163,58 @@ class ReportAnalyzer:
         with self._call_lock:
             return self._classify(ex)
 
+    def _contracted_is_cues(self, ex: Extraction, norms: tuple[str, ...], blocked: set[int]) -> list[CueMention]:
+        """"the whole fair's a lake": a cue phrase the vocabulary writes after a split "'s" ("s a lake"), read
+        after a place's contracted "'s" (whose key drops it)."""
+        toks = ex.tokens
+        out: list[CueMention] = []
+        for p in ex.places:
+            i = p.end_tok - 1
+            if p.status != "active" or not toks.tokens[i].text.lower().endswith(("'s", "’s")) or p.end_tok >= len(norms) \
+                    or p.end_tok in blocked or toks.clause_start[p.end_tok]:
+                continue
+            if self._cues.match_at(norms, p.end_tok) is not None:
+                continue  # (a cue of its own follows: "the barn's on fire")
+            spliced = norms[:p.end_tok] + ("s",) + norms[p.end_tok:]
+            hit = self._cues.match_at(spliced, p.end_tok)
+            if hit is None or hit[0] - p.end_tok < 3 or hit[1][1] == "neutral" \
+                    or any(j in blocked for j in range(p.end_tok, hit[0] - 1)):
+                continue
+            end = hit[0] - 1
+            a, b = toks.tokens[p.end_tok].start, toks.tokens[end - 1].end
+            out.append(CueMention(p.end_tok, end, a, b, toks.text[a:b], hit[1][0], hit[1][1], reason="after a contracted 's"))
+        return out
+
+    def _structure_gone(self, ex: Extraction, norms: tuple[str, ...], blocked: set[int]) -> list[CueMention]:
+        """"Jenny's arch has gone.": a bridge, an arch or a wall said to have gone, closing its clause, has
+        collapsed (a fire "has gone" out is the cancellation's business; a place named so is no cue word)."""
+        toks = ex.tokens
+        out: list[CueMention] = []
+        for p in ex.places:
+            k = p.end_tok
+            if p.status != "active" or p.via is not None or k >= len(norms) or k in blocked:
+                continue
+            last = norm(p.text.split()[-1])
+            if last not in lx.STRUCTURE_WORDS | _SPANS:
+                continue
+            if norms[k:k + 2] in (("has", "gone"), ("s", "gone")):
+                end = k + 2
+            elif norms[k] == "gone" and toks.tokens[k - 1].text.lower().endswith(("'s", "’s")):
+                end = k + 1
+            else:
+                continue
+            if end < len(norms) and not toks.clause_start[end]:
+                continue  # ("the bridge has gone under", "has gone to ...": more words, another meaning)
+            c0 = next((i for i in range(p.start_tok, -1, -1) if toks.clause_start[i]), 0)
+            if any((h := self._cues.match_at(norms, i)) is not None and h[1][1] != "neutral" for i in range(c0, p.start_tok)):
+                continue  # "the fire at the pack bridge has gone.": the fire is what has gone
+            und = self._category_for_role(lx.UNDESIRABLE, "collapsed, fallen down")
+            if und is not None:
+                out.append(CueMention(k, end, toks.tokens[k].start, toks.tokens[end - 1].end,
+                                      toks.text[toks.tokens[k].start:toks.tokens[end - 1].end], und, "lexicon",
+                                      reason="a structure gone"))
+        return out
+
     def _dry_water(self, ex: Extraction, norms: tuple[str, ...], a: int) -> bool:
         """Is the subject of "(bone) dry" at token ``a`` a water body (a pond, a pool, a ditch): water not there,
         no dry place to shelter in?"""
@@ -5163,10 +5248,14 @@ class ReportAnalyzer:
         self._shut_tokens = shut
         neutral: set[int] = set()
         self._neutral_tokens = neutral
+        cues.extend(self._structure_gone(ex, norms, blocked))
+        cues.extend(self._contracted_is_cues(ex, norms, blocked))
         for a, b, (cat, source) in self._cues.find_all(norms, blocked):
             if source == "neutral":
                 neutral.update(range(a, b))  # ("people sitting in here out of the smoke": no person, no smoke)
                 continue
+            if norms[b - 1] == "swamped" and norms[b:b + 1] == ("with",):
+                continue  # "swamped with injured guests": overwhelmed, no water
             if norms[a:b] == ("clear",) and toks.sentence_start[a] and b < len(norms) \
                     and norms[b] in ("everyone", "everybody", "people", "all", "out", "the", "them"):
                 continue  # "Clear everyone out of the building": an order, not a place said to be clear
@@ -5974,6 +6063,10 @@ class ReportAnalyzer:
                 continue  # "All the flats.": a place said alone, nothing said of it to guess at
             if {"saying", "says", "said"} & set(norms[a:b]):
                 continue  # "people keep saying garage": what others say, no claim to guess at
+            if [w for w in norms[p.end_tok:b] if w not in lx.FILLERS | lx.COPULAS | {"s", "bone", "quite", "all"}][:1] \
+                    == ["dry"] and not any(re.search(r"\bdry\b", c.description.lower()) for c in self.kb.categories):
+                continue  # "the front row is flooded and the back row's dry": not flooded, no claim to guess at (where
+                # no category is described as dry: in a KB whose shelter is "a dry, safe place", it is the guess's)
             if any(norms[i] in ("full", "capacity") and norms[i + 1:i + 2] != ("of",) for i in range(p.end_tok, b)):
                 continue  # "moved to the rec because the welfare hall is full": how many it holds, no claim
             said = [w for w in norms[p.end_tok:b] if w not in lx.FILLERS]
@@ -7492,6 +7585,9 @@ class ReportAnalyzer:
             if tail in ([], ["itself"], ["themselve"]) and (nxt_words[:2] in (["no", "problem"], ["nothing", "wrong"])
                                                             or nxt_words[:1] in (["fine"], ["unaffected"], ["untouched"])):
                 continue  # "the huts themselves, no problem there, they're dry": a word of its own, no danger
+            if [w for w in tail if w not in ("itself", "themselve")][:2] in (["isnt", "touched"], ["not", "touched"],
+                                                                              ["untouched"], ["unaffected"]):
+                continue  # "the siding itself isn't touched": said to be spared, no danger borrowed
             if "still" in tail[:3] and len(seg_places.get(k, [])) == 1 \
                     and {"running", "working", "chugging", "pumping", "operating", "turning"} & set(tail + nxt_words[:5]):
                 continue  # "the crowtree pumps have tripped out ... and old thumper's still chugging away": working
@@ -8328,6 +8424,9 @@ _PERSON_WORDS = frozenset(lx.PERSON_NOUNS) | {"pensioner", "residents", "neighbo
 # Any word for people, a group said as a subject too ("the men in there", "the folk at the chapel")
 _UNREACHABLE = (("cant", "get", "hold", "of"), ("not", "answering"), ("isnt", "answering"), ("hes", "not", "answering"),
                 ("she", "not", "answering"), ("shes", "not", "answering"), ("not", "picking", "up"))
+# What spans or holds back water, besides the structures of a building ("Jenny's arch has gone.": collapsed)
+_SPANS = frozenset({"arch", "bridge", "span", "viaduct", "weir", "dam", "bund", "embankment", "footbridge", "culvert",
+                    "aqueduct", "pier", "jetty", "quay", "sluice", "lock", "gate"})
 # Water that stands or is held, besides the flowing kind ("the dew pond's bone dry": no water in it)
 _STILL_WATERS = frozenset({"pond", "pool", "reservoir", "ditch", "drain", "dyke", "rhyne", "well", "fountain", "lagoon",
                            "moat", "leat", "cistern", "tarn", "lido"})
@@ -8650,6 +8749,10 @@ def _relation_forms(phrase: str) -> list[tuple[str, bool]]:
         for copula in ("is", "are", "was", "were"):
             out.extend(((f"{copula} {rest}", False), (f"that {copula} {rest}", False), (f"which {copula} {rest}", False)))
         out.extend(((f"that {rest}", False), (rest, False)))
+        if len(words) == 4 and words[1].endswith("ed") and words[2] in ("in", "up", "away", "out") \
+                and words[3] in lx.RELATION_ENDINGS:
+            # "is tucked in behind" said without its particle: "the tent they're tucked behind"
+            out.append((f"{words[1]} {words[3]}", False))
         if cut is not None and cut >= 3 and words[-1] == "of":
             # "whatever the dry dock is dug into" for "is dug into the yard of": said short, the noun unsaid
             out.extend(_relation_forms(" ".join(words[:cut])))
