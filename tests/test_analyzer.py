@@ -3767,6 +3767,24 @@ def test_dev66_phenomena(kb_analyzers, kb, text, expected):
     # "no problems with X": X is fine; "the whole fair's a lake" after a contracted "'s"
     ("river_festival", "No problems with the big wheel itself, but the ground it's the centrepiece of is getting swamped, "
                        "the whole fair's a lake.", [("fairground", "swamped_or_wrecked")]),
+    # "with the beck running over the stones": an absolute clause, the beck's own predicate, nothing borrowed
+    ("lead_mining_dale", "the splash is impassable with the beck running a metre over the stepping stones, and the "
+                         "little bethel has been checked and is safe.",
+     [("ebenezer chapel", "firm_footing"), ("scarsgill ford", "inrush_and_slump")]),
+    # "the roof of X is down" closing its clause: collapsed, besides the people under it
+    ("army_camp", "the roof of the vehicle hangar is down, and there's two fitters under it",
+     [("vehicle hangar", "blast_and_leak"), ("vehicle hangar", "casevac_case")]),
+    # "I was right first time, it's the footbridge": the place named after it says which first place
+    ("river_festival", "People stuck on the bridge - the footbridge - no, the pontoon one - wait, no, I was right first "
+                       "time, it's the footbridge, the iron one, they're trapped in the middle of it.",
+     [("iron footbridge", "casualty_call")]),
+    # "negative" past a speaker's label takes the claim back (not an answer to a question read back: dev21's
+    # "..., yeah? Milkman: no, no, ..."); "it's the slipway that's under": under water
+    ("river_festival", "Steward: the rowing club's flooding! -- Supervisor, cutting in: negative, the rowing club is "
+                       "dry, that's where we're putting people; it's the slipway that's under.",
+     [("boathouse slipway", "swamped_or_wrecked"), ("town boathouse", "safe_muster")]),
+    ("river_festival", "the slipway's under, the fire at the beer tent is under control", [("boathouse slipway", "swamped_or_wrecked")]),
+    ("river_festival", "the slipway is under the bridge", []),
 ])
 def test_dev70_phenomena(kb_analyzers, kb, text, expected):
     assert claims(kb_analyzers[kb], text) == expected

@@ -1026,13 +1026,19 @@ class ReportAnalyzer:
             if len(said) < 2 or not any(p.status == "retracted" for p in said) \
                     or len({p.landmark for p in said}) < 2:
                 continue
-            first = said[0].landmark
+            first, first_text = said[0].landmark, said[0].text
+            named = next((q for q in sorted(ex.places, key=lambda q: q.start_tok) if m < q.start_tok <= m + 12
+                          and q.status == "active" and q.via is None), None)
+            if named is not None and named.landmark in {p.landmark for p in said} and named.landmark != first:
+                # "the bridge - the footbridge - no, the pontoon one - wait, I was right first time, it's the
+                # footbridge": the place named after it says which "first" the speaker means
+                first, first_text = named.landmark, named.text
             for p in said:
                 i = ex.places.index(p)
                 if p.landmark == first:
                     ex.places[i] = replace(p, status="active", reason="the speaker went back to it")
                 else:
-                    ex.places[i] = replace(p, status="retracted", reason=f"the speaker went back to '{said[0].text}'")
+                    ex.places[i] = replace(p, status="retracted", reason=f"the speaker went back to '{first_text}'")
 
     @staticmethod
     def _apply_hesitation_chains(ex: Extraction, norms: tuple[str, ...]) -> None:
@@ -5152,7 +5158,11 @@ class ReportAnalyzer:
         # "Fire at the hotel. No. Fire at the warehouse.": a marker set off by a pause at the start of
         # a sentence reaches into the previous one, as a strong marker always does
         alone = b >= len(toks) or toks.clause_start[b]
-        opens = all(toks.tokens[t].norm in lx.FILLERS | {"actually", "wait", "sorry", "oh", "no"} for t in range(start, a))
+        # (past a speaker's label: "Supervisor, cutting in: negative, the boathouse is dry")
+        # (not an answer to a question read back: "..., yeah? Milkman: no, no, ...")
+        label = next((t for t in range(start + 1, min(a, start + 5) + 1) if ":" in toks.gaps[t]), start) \
+            if strong and "?" not in toks.gaps[start] else start
+        opens = all(toks.tokens[t].norm in lx.FILLERS | {"actually", "wait", "sorry", "oh", "no"} for t in range(label, a))
         if (strong or alone) and opens and len(sent_starts) >= 2:
             start = sent_starts[-2]  # (words before the marker are only fillers: "Actually no, ...")
         return max(start, prev_marker_end)
@@ -5186,8 +5196,8 @@ class ReportAnalyzer:
         return out
 
     def _structure_gone(self, ex: Extraction, norms: tuple[str, ...], blocked: set[int]) -> list[CueMention]:
-        """"Jenny's arch has gone.": a bridge, an arch or a wall said to have gone, closing its clause, has
-        collapsed (a fire "has gone" out is the cancellation's business; a place named so is no cue word)."""
+        """"Jenny's arch has gone.": a bridge, an arch or a wall said to have gone (or the roof of a place said to be
+        down), closing its clause, has collapsed (a fire "has gone" out is the cancellation's business; a place named so is no cue word)."""
         toks = ex.tokens
         out: list[CueMention] = []
         for p in ex.places:
@@ -5195,14 +5205,19 @@ class ReportAnalyzer:
             if p.status != "active" or p.via is not None or k >= len(norms) or k in blocked:
                 continue
             last = norm(p.text.split()[-1])
-            if last not in lx.STRUCTURE_WORDS | _SPANS:
+            np0 = _noun_phrase_start(norms, p)
+            part_of = np0 >= 2 and norms[np0 - 1] == "of" and norms[np0 - 2] in _FALLING_PARTS
+            if last not in lx.STRUCTURE_WORDS | _SPANS and not part_of:
                 continue
-            if norms[k:k + 2] in (("has", "gone"), ("s", "gone")):
+            if norms[k:k + 2] in (("has", "gone"), ("s", "gone")) or part_of and norms[k:k + 2] in (
+                    ("is", "down"), ("s", "down"), ("was", "down")):
                 end = k + 2
-            elif norms[k] == "gone" and toks.tokens[k - 1].text.lower().endswith(("'s", "’s")):
+            elif norms[k] in ("gone", "down" if part_of else "gone") and toks.tokens[k - 1].text.lower().endswith(("'s", "’s")):
                 end = k + 1
             else:
                 continue
+            if norms[end:end + 1] == ("flat",):
+                end += 1  # "the roof of the hangar is down flat"
             if end < len(norms) and not toks.clause_start[end]:
                 continue  # ("the bridge has gone under", "has gone to ...": more words, another meaning)
             c0 = next((i for i in range(p.start_tok, -1, -1) if toks.clause_start[i]), 0)
@@ -5213,6 +5228,33 @@ class ReportAnalyzer:
                 out.append(CueMention(k, end, toks.tokens[k].start, toks.tokens[end - 1].end,
                                       toks.text[toks.tokens[k].start:toks.tokens[end - 1].end], und, "lexicon",
                                       reason="a structure gone"))
+        return out
+
+    def _under_final(self, ex: Extraction, norms: tuple[str, ...], blocked: set[int]) -> list[CueMention]:
+        """"it's the slipway that's under.": a place said to be "under", closing its clause, is under water (the
+        category the vocabulary gives "under water"); "under control", "under the bridge" say more."""
+        hit = self._cues.match_at(("under", "water"), 0)
+        if hit is None or hit[1][1] == "neutral":
+            return []
+        toks = ex.tokens
+        out: list[CueMention] = []
+        for p in ex.places:
+            k = p.end_tok
+            if p.status != "active" or k >= len(norms) or k in blocked:
+                continue
+            if norms[k] in ("that", "which") and not toks.clause_start[k]:
+                k += 1
+            if k + 1 < len(norms) and norms[k] in ("is", "s", "are", "was") and norms[k + 1] == "under":
+                a, end = k, k + 2
+            elif k < len(norms) and norms[k] == "under" and toks.tokens[k - 1].text.lower().endswith(("'s", "’s")):
+                a, end = k, k + 1
+            else:
+                continue
+            if end < len(norms) and not toks.clause_start[end] or any(j in blocked for j in range(a, end)):
+                continue
+            out.append(CueMention(a, end, toks.tokens[a].start, toks.tokens[end - 1].end,
+                                  toks.text[toks.tokens[a].start:toks.tokens[end - 1].end], hit[1][0], "lexicon",
+                                  reason="said to be under"))
         return out
 
     def _dry_water(self, ex: Extraction, norms: tuple[str, ...], a: int) -> bool:
@@ -5250,6 +5292,7 @@ class ReportAnalyzer:
         self._neutral_tokens = neutral
         cues.extend(self._structure_gone(ex, norms, blocked))
         cues.extend(self._contracted_is_cues(ex, norms, blocked))
+        cues.extend(self._under_final(ex, norms, blocked))
         for a, b, (cat, source) in self._cues.find_all(norms, blocked):
             if source == "neutral":
                 neutral.update(range(a, b))  # ("people sitting in here out of the smoke": no person, no smoke)
@@ -7588,6 +7631,10 @@ class ReportAnalyzer:
             if [w for w in tail if w not in ("itself", "themselve")][:2] in (["isnt", "touched"], ["not", "touched"],
                                                                               ["untouched"], ["unaffected"]):
                 continue  # "the siding itself isn't touched": said to be spared, no danger borrowed
+            np0 = _noun_phrase_start(norms, p)
+            if np0 >= 1 and norms[np0 - 1] == "with" and len(tail) >= 3 and tail[0].endswith("ing") and len(tail[0]) >= 5:
+                continue  # "the splash is impassable with the beck running a metre over the stepping stones, and the
+                # bethel is safe": an absolute clause, the beck's own predicate
             if "still" in tail[:3] and len(seg_places.get(k, [])) == 1 \
                     and {"running", "working", "chugging", "pumping", "operating", "turning"} & set(tail + nxt_words[:5]):
                 continue  # "the crowtree pumps have tripped out ... and old thumper's still chugging away": working
@@ -8424,6 +8471,8 @@ _PERSON_WORDS = frozenset(lx.PERSON_NOUNS) | {"pensioner", "residents", "neighbo
 # Any word for people, a group said as a subject too ("the men in there", "the folk at the chapel")
 _UNREACHABLE = (("cant", "get", "hold", "of"), ("not", "answering"), ("isnt", "answering"), ("hes", "not", "answering"),
                 ("she", "not", "answering"), ("shes", "not", "answering"), ("not", "picking", "up"))
+# The parts of a building that fall in ("the roof of the vehicle hangar is down": collapsed)
+_FALLING_PARTS = frozenset({"roof", "ceiling", "gable", "chimney", "spire", "tower", "canopy", "floor"})
 # What spans or holds back water, besides the structures of a building ("Jenny's arch has gone.": collapsed)
 _SPANS = frozenset({"arch", "bridge", "span", "viaduct", "weir", "dam", "bund", "embankment", "footbridge", "culvert",
                     "aqueduct", "pier", "jetty", "quay", "sluice", "lock", "gate"})
