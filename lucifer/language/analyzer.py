@@ -5212,7 +5212,8 @@ class ReportAnalyzer:
             if norms[k:k + 2] in (("has", "gone"), ("s", "gone")) or part_of and norms[k:k + 2] in (
                     ("is", "down"), ("s", "down"), ("was", "down")):
                 end = k + 2
-            elif norms[k] in ("gone", "down" if part_of else "gone") and toks.tokens[k - 1].text.lower().endswith(("'s", "’s")):
+            elif (norms[k] == "gone" or part_of and norms[k] == "down") \
+                    and toks.tokens[k - 1].text.lower().endswith(("'s", "’s")):
                 end = k + 1
             else:
                 continue
@@ -5230,11 +5231,22 @@ class ReportAnalyzer:
                                       reason="a structure gone"))
         return out
 
+    @functools.cached_property
+    def _dry_described(self) -> bool:
+        """Does any category's description call its places dry ("a dry, safe place to shelter")?"""
+        return any(re.search(r"\bdry\b", c.description.lower()) for c in self.kb.categories)
+
+    @functools.cached_property
+    def _under_water_category(self) -> str | None:
+        """The category the vocabulary gives "under water" in this KB (None where it reads as no claim)."""
+        hit = self._cues.match_at(("under", "water"), 0)
+        return None if hit is None or hit[1][1] == "neutral" else hit[1][0]
+
     def _under_final(self, ex: Extraction, norms: tuple[str, ...], blocked: set[int]) -> list[CueMention]:
         """"it's the slipway that's under.": a place said to be "under", closing its clause, is under water (the
         category the vocabulary gives "under water"); "under control", "under the bridge" say more."""
-        hit = self._cues.match_at(("under", "water"), 0)
-        if hit is None or hit[1][1] == "neutral":
+        cat = self._under_water_category
+        if cat is None:
             return []
         toks = ex.tokens
         out: list[CueMention] = []
@@ -5253,7 +5265,7 @@ class ReportAnalyzer:
             if end < len(norms) and not toks.clause_start[end] or any(j in blocked for j in range(a, end)):
                 continue
             out.append(CueMention(a, end, toks.tokens[a].start, toks.tokens[end - 1].end,
-                                  toks.text[toks.tokens[a].start:toks.tokens[end - 1].end], hit[1][0], "lexicon",
+                                  toks.text[toks.tokens[a].start:toks.tokens[end - 1].end], cat, "lexicon",
                                   reason="said to be under"))
         return out
 
@@ -6107,7 +6119,7 @@ class ReportAnalyzer:
             if {"saying", "says", "said"} & set(norms[a:b]):
                 continue  # "people keep saying garage": what others say, no claim to guess at
             if [w for w in norms[p.end_tok:b] if w not in lx.FILLERS | lx.COPULAS | {"s", "bone", "quite", "all"}][:1] \
-                    == ["dry"] and not any(re.search(r"\bdry\b", c.description.lower()) for c in self.kb.categories):
+                    == ["dry"] and not self._dry_described:
                 continue  # "the front row is flooded and the back row's dry": not flooded, no claim to guess at (where
                 # no category is described as dry: in a KB whose shelter is "a dry, safe place", it is the guess's)
             if any(norms[i] in ("full", "capacity") and norms[i + 1:i + 2] != ("of",) for i in range(p.end_tok, b)):
@@ -8474,7 +8486,7 @@ _UNREACHABLE = (("cant", "get", "hold", "of"), ("not", "answering"), ("isnt", "a
 # The parts of a building that fall in ("the roof of the vehicle hangar is down": collapsed)
 _FALLING_PARTS = frozenset({"roof", "ceiling", "gable", "chimney", "spire", "tower", "canopy", "floor"})
 # What spans or holds back water, besides the structures of a building ("Jenny's arch has gone.": collapsed)
-_SPANS = frozenset({"arch", "bridge", "span", "viaduct", "weir", "dam", "bund", "embankment", "footbridge", "culvert",
+_SPANS = frozenset({"arch", "span", "viaduct", "weir", "dam", "bund", "embankment", "footbridge", "culvert",
                     "aqueduct", "pier", "jetty", "quay", "sluice", "lock", "gate"})
 # Water that stands or is held, besides the flowing kind ("the dew pond's bone dry": no water in it)
 _STILL_WATERS = frozenset({"pond", "pool", "reservoir", "ditch", "drain", "dyke", "rhyne", "well", "fountain", "lagoon",
