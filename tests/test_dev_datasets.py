@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev73) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev75) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -118,6 +118,10 @@ MILL_RACE_TOWN = ROOT / "knowledge_bases" / "mill_race_town"
 LEAD_MINING_DALE = ROOT / "knowledge_bases" / "lead_mining_dale"
 RIVER_FESTIVAL = ROOT / "knowledge_bases" / "river_festival"
 GARRISON_TOWN = ROOT / "knowledge_bases" / "garrison_town"
+WATER_PARK = ROOT / "knowledge_bases" / "water_park"
+BRICK_KILN_VILLAGE = ROOT / "knowledge_bases" / "brick_kiln_village"
+STEAM_RALLY = ROOT / "knowledge_bases" / "steam_rally"
+TIN_MINE_COAST = ROOT / "knowledge_bases" / "tin_mine_coast"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -387,6 +391,10 @@ SETS = {
     "dev73/lead_mining_dale": _set("dev73/lead_mining_dale.jsonl", LEAD_MINING_DALE, "ld73", TWENTY, sep=""),
     "dev73/river_festival": _set("dev73/river_festival.jsonl", RIVER_FESTIVAL, "rf73", TWENTY, sep=""),
     "dev73/garrison_town": _set("dev73/garrison_town.jsonl", GARRISON_TOWN, "gt73", TWENTY, sep=""),
+    "dev74/water_park": _set("dev74/water_park.jsonl", WATER_PARK, "wp74", TWENTY, sep=""),
+    "dev74/brick_kiln_village": _set("dev74/brick_kiln_village.jsonl", BRICK_KILN_VILLAGE, "bk74", TWENTY, sep=""),
+    "dev74/steam_rally": _set("dev74/steam_rally.jsonl", STEAM_RALLY, "sr74", TWENTY, sep=""),
+    "dev74/tin_mine_coast": _set("dev74/tin_mine_coast.jsonl", TIN_MINE_COAST, "tm74", TWENTY, sep=""),
 }
 
 

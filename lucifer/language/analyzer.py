@@ -277,8 +277,23 @@ class ReportAnalyzer:
         # (nor "filling": filled with smoke or with water, it is what fills that says the kind)
         described = [self._affirmed_words(c.description) for c in cats]
         overlap = [sum(any(_same_stem(w, d) for d in ds) for w in words) for ds in described]
+        if overlap and max(overlap) == 1 and role == lx.UNDESIRABLE:
+            # one word shared, against the whole kind of danger the phrase names: "water's coming up" where the
+            # fire category speaks of escaping "hot water" and the storm one of flooded, waterlogged places
+            key = norm_phrase(phrase)
+            kind = self._danger_kind_by_words.get(key)
+            votes = self._kind_votes(kind, cats) if kind in lx.DANGER_KINDS and not any(
+                f" {' '.join(key)} " in f" {' '.join(norm_phrase(c.description))} " for c in cats) else None
+            # (not where a description says the very phrase: "tanks at risk of boiling over")
+            if votes is not None and len(votes) > 1 and max(votes) >= sorted(votes)[-2] + 2:
+                return cats[votes.index(max(votes))].name
         if overlap and max(overlap) > 0 and overlap.count(max(overlap)) == 1:
             return cats[overlap.index(max(overlap))].name
+        if overlap and max(overlap) > 0:
+            # a tie of stems goes to the one that has the word itself ("blown in": "tents blown down", not "blowbacks")
+            exact = [sum(w in ds for w in words) if n == max(overlap) else -1 for n, ds in zip(overlap, described, strict=True)]
+            if max(exact) > 0 and exact.count(max(exact)) == 1:
+                return cats[exact.index(max(exact))].name
         kind = self._danger_kind_of.get(phrase) if role == lx.UNDESIRABLE else None
         if kind is not None:
             cat = self._kind_category(kind, cats)
@@ -292,6 +307,21 @@ class ReportAnalyzer:
 
     _danger_kind_of = {p: kind for kinds in (lx.DANGER_KINDS, lx.DANGER_KIND_EXTRA)
                        for kind, phrases in kinds.items() for p in phrases}
+    _danger_kind_by_words = {norm_phrase(p): kind for kinds in (lx.DANGER_KINDS, lx.DANGER_KIND_EXTRA)
+                             for kind, phrases in kinds.items() for p in phrases}
+
+    def _kind_votes(self, kind: str, cats: list[Category]) -> list[int]:
+        """For each category, how many of its description's words the kind's words name (stems; no function
+        word votes: "the fumes have drifted" shares "have" with "have fallen into"; nor "shedding", whose stem
+        is any shed)."""
+        cache = self.__dict__.setdefault("_kind_vote_cache", {})
+        key = (kind, tuple(c.name for c in cats))
+        if key not in cache:
+            described = [self._affirmed_words(c.description) - lx.KIND_VOTE_STOPWORDS for c in cats]
+            words = {w for p in lx.DANGER_KINDS[kind] for w in norm_phrase(p)
+                     if len(w) >= 4 and w not in lx.DANGER_KIND_PARTS and w not in lx.KIND_VOTE_STOPWORDS}
+            cache[key] = [sum(any(_same_stem(w, d) for w in words) for d in ds) for ds in described]
+        return cache[key]
 
     def _kind_category(self, kind: str, cats: list[Category]) -> str | None:
         """The category a kind of danger (``lexicon.DANGER_KINDS``) reads as in this KB: the one whose
@@ -299,13 +329,7 @@ class ReportAnalyzer:
         closest in MiniLM space to the kind's words together."""
         cache = self.__dict__.setdefault("_kind_cache", {})
         if kind not in cache:
-            # (no function word votes: "the fumes have drifted" shares "have" with "have fallen into"; nor
-            # "shedding", whose stem is any shed)
-            described = [self._affirmed_words(c.description) - lx.KIND_VOTE_STOPWORDS for c in cats]
-            words = {w for p in lx.DANGER_KINDS[kind] for w in norm_phrase(p)
-                     if len(w) >= 4 and w not in lx.DANGER_KIND_PARTS and w not in lx.KIND_VOTE_STOPWORDS}
-            # how many of its description's words the kind's words name
-            votes = [sum(any(_same_stem(w, d) for w in words) for d in ds) for ds in described]
+            votes = self._kind_votes(kind, cats)
             near = lx.KIND_FALLBACK.get(kind)
             if max(votes) > 0 and votes.count(max(votes)) == 1:
                 cache[kind] = cats[votes.index(max(votes))].name
@@ -390,7 +414,8 @@ class ReportAnalyzer:
         for term in self.kb.glossary:
             entries[norm_phrase(term.term)] = (term.category, "glossary")
         for term in self.kb.glossary:
-            for form in _verb_forms(term.term):  # "undercut": "the spate is undercutting its back wall"
+            for form in _verb_forms(term.term) + _determined_forms(term.term):
+                # "undercut": "the spate is undercutting its back wall"; "dropped plug": "she's dropped her plug"
                 entries.setdefault(norm_phrase(form), (term.category, "glossary"))
         for phrase in lx.NEUTRAL_PHRASES:
             entries[norm_phrase(phrase)] = ("", "neutral")
@@ -697,6 +722,9 @@ class ReportAnalyzer:
             heading = heading or (a == 0 or toks.sentence_start[a]) and toks.tokens[a].text[:1].isupper() \
                 and norms[b:b + 1] == ("to",) and b + 1 < len(norms) and toks.tokens[b + 1].text[:1].isupper()
             # ("Wetsuit Shack to Lake Rescue.": a place calling by its name, the article left off as call signs do)
+            heading = heading or (a == 0 or toks.sentence_start[a]) and b + 1 < len(norms) \
+                and norms[b] in lx.ROLE_LABELS | lx.SPEAKER_ROLES and (norms[b + 1] == "here" or ":" in toks.gaps[b + 1])
+            # ("Little railway driver here: my train's stalled": who calls, by the place they work)
             if norms[a:b] in self._derived_keys and prev in ("a", "an", "another"):
                 continue  # "he fell off the back of a hire boat": any boat, not the hire base's "kingfisher boats"
             if norms[a:b] in self._needs_article and prev in ("a", "an", "another") and b - a == 1 \
@@ -775,6 +803,11 @@ class ReportAnalyzer:
                     and (b >= len(norms) or norms[b] not in ("is", "has", "was", "got", "been", "gone", "just")):
                 # (but "the unions got its windows blown in": the "'s" left out)
                 continue  # "that's the lanterns on the water": many lanterns, not the minster called "the lantern"
+            if b - a == 1 and prev == "the" and not raw.endswith("s") and b < len(norms) \
+                    and norms[b] in ("it", "they", "we", "you", "that", "which") and not toks.clause_start[b] and all(
+                        f.lower().endswith("s") for f in self.kb.landmark_by_name[landmark].surface_forms
+                        if norm_phrase(f)[-1:] == norms[a:b]):
+                continue  # "the ride it powers": one ride, described, not the fairground called "the rides"
             if b - a == 1 and a > 0 and toks.tokens[a - 1].text.lower() in ("their", "his", "her", "my", "your") \
                     and norms[a] in lx.BODY_PARTS:
                 continue  # "a lad with burns on his arms": his arms, not "the arms" (a pub)
@@ -959,7 +992,8 @@ class ReportAnalyzer:
         * what a place used to be ("across from the church there used to be a bank");
         * a place the speaker never said ("I never said the bank was burning, I said the grocer's");
         * a place a danger has not reached ("fire on the embankment, it hasn't reached the allotments yet");
-        * a place the speaker cannot see ("the granary next to it -- actually I can't see the granary from here");
+        * a place the speaker cannot see or does not know about ("the granary next to it -- actually I can't see the
+          granary from here", "I don't actually know about the front car park");
           named just before and taken back by a repair, that mention goes too."""
         toks = ex.tokens
         marker_starts = {a for a, _, _ in ex.markers}
@@ -980,11 +1014,17 @@ class ReportAnalyzer:
                 # "fire on the embankment, it hasn't reached the allotments yet": nothing there yet
                 ex.places[idx] = replace(p, status="reference", reason="not reached yet: no claim")
                 continue
-            if p.status != "active" or j < 2 or norms[j - 1] != "see" \
-                    or norms[j - 2] not in ("cant", "cannot", "couldnt", "not") or p.via is not None:
+            if p.status != "active" or j < 2 or p.via is not None:
                 continue
-            ex.places[idx] = replace(p, status="reference", reason="the speaker cannot see it: no claim")
-            k = j - 2
+            if norms[j - 1] == "see" and norms[j - 2] in ("cant", "cannot", "couldnt", "not"):
+                k, why = j - 2, "the speaker cannot see it"
+            elif j >= 3 and norms[j - 1] == "about" and norms[j - 2] in ("know", "sure") and (k := next(
+                    (m for m in range(j - 3, max(-1, j - 6), -1) if norms[m] in ("dont", "didnt", "not", "cant")), -1)) >= 0:
+                why = "the speaker does not know"  # "the front car park -- no wait, I don't actually know about the
+                # front car park, forget that"
+            else:
+                continue
+            ex.places[idx] = replace(p, status="reference", reason=f"{why}: no claim")
             while k > 0 and norms[k - 1] in {"i", "we", "you"} | lx.FILLERS:
                 k -= 1
             if not any(k - 3 <= m <= k for m in marker_starts):
@@ -992,7 +1032,7 @@ class ReportAnalyzer:
             for idx2, q in enumerate(ex.places):
                 if q.status == "active" and q.landmark == p.landmark and q.end_tok <= k and k - q.end_tok <= 8 \
                         and toks.sentence_of[q.start_tok] == toks.sentence_of[p.start_tok]:
-                    ex.places[idx2] = replace(q, status="retracted", reason="taken back: the speaker cannot see it")
+                    ex.places[idx2] = replace(q, status="retracted", reason=f"taken back: {why}")
 
     @staticmethod
     def _apply_other_times(ex: Extraction, norms: tuple[str, ...]) -> None:
@@ -1301,6 +1341,10 @@ class ReportAnalyzer:
             and norms[a - 1].isdigit() and ":" in toks.gaps[a - 1]  # ("23:09 fosse overtopping": a log's time first)
         if not opens or b >= len(norms) or (norms[a] in lx.DESCRIPTIVE_WORDS and not contracted):
             return False
+        if not contracted and b + 1 < len(norms) and norms[b] in lx.STOREY_WORDS | lx.PART_NOUNS | lx.ROOMS_OF_A_BUILDING \
+                | {"kitchen", "kitchens"} and not toks.clause_start[b] \
+                and not toks.clause_start[b + 1]:
+            b += 1  # "Gym roof's come down": the part of the place is the subject's head, the place said before it
         return toks.clause_start[b] or norms[b] in lx.COPULAS \
             or self._cues.match_at(norms, b) is not None \
             or (norms[b] in lx.TELEGRAPHIC_LINKS and (self._cues.match_at(norms, b + 1) is not None
@@ -1814,17 +1858,19 @@ class ReportAnalyzer:
             if nxt < len(norms) and (norms[nxt] in lx.VAGUE_PLACE_HEADS or norms[nxt] in self._place_nouns()
                                      and norms[nxt] in self._description_words()[self._first_words[w]]) \
                     and not toks.clause_start[nxt] \
-                    and norms[i - 1] in lx.ARTICLES and nxt not in taken \
+                    and norms[i - 1] in lx.ARTICLES - {"a", "an"} and nxt not in taken \
+                    and not any(norm_phrase(t.term) == (w, norms[nxt]) for t in self.kb.glossary) \
                     and (after >= len(norms) or toks.clause_start[after] or norms[after] in lx.COPULAS
                          or norms[after] in lx.PERSON_SUBJECTS | lx.COORDINATORS | {"theres", "there"}) \
                     and not (after < len(norms) and self._relations.match_at(norms, after) is not None):
                 # (only a noun phrase that ends there: "the ferry building upstream of the weir" is a description
-                # for the relation passes, headed by "building")
+                # for the relation passes, headed by "building"; not "it's a rally point", any one, a glossary term)
                 out.append(self._mention(toks, i - 1, nxt + 1, self._first_words[w]))
                 continue
             j = i - 1 if norms[i - 1] == "the" else i
             if j in rel_ends and (nxt >= len(norms) or toks.clause_start[nxt] or norms[nxt] in lx.COPULAS | {"has", "have"}) \
-                    and not toks.tokens[i].text.lower().endswith(("'s", "’s")):
+                    and not toks.tokens[i].text.lower().endswith(("'s", "’s")) and w not in lx.WATER_WORDS:
+                # (not "where it dips through the water": the water itself, not the "water bowser")
                 out.append(self._mention(toks, i, nxt, self._first_words[w]))
         return out
 
@@ -2276,6 +2322,9 @@ class ReportAnalyzer:
             if t.norm == "uh" and frag != "uh" and nxt_gap[:1] == "-" and t.i + 1 < len(toks) \
                     and not any(ch.isspace() for ch in nxt_gap):
                 continue  # "ember sh-shower": the next word said again whole (``_respell``), no name begun
+            if t.i + 1 < len(toks) and norms[t.i + 1].startswith(frag) and norms[t.i + 1] != frag \
+                    and norms[t.i + 1] not in self._name_word_owners and norms[t.i + 1] not in lx.FUNCTION_WORDS:
+                continue  # "we need the the bo-- boats down there": the next word said whole, no name begun
             if t.i > 0 and any((hit := self._cues.match_at(norms, k)) is not None
                                and hit[0] == t.i + 1 and k < t.i for k in range(max(0, t.i - 3), t.i)):
                 continue  # "the bank's on fire— wait": a cue said whole, not "fire st—"
@@ -2287,7 +2336,9 @@ class ReportAnalyzer:
                         if start < 0 or any(i in taken for i in range(start, t.i + 1)):
                             continue
                         if list(toks.norms(start, t.i)) == words[: n - 1] and words[n - 1].startswith(frag) \
-                                and words[n - 1] != frag and (n > 1 or len(frag) >= 2):
+                                and words[n - 1] != frag and (n > 1 or len(frag) >= 3 or len(frag) == 2 and (
+                                    t.i == 0 or norms[t.i - 1] != "to")):
+                            # ("the ba-- the bakery"; not "it's safe to br— no, ...": a verb begun)
                             out.append(self._mention(toks, start, t.i + 1, lm.name, status="retracted",
                                                      reason="false start (word cut off)"))
                             taken.update(range(start, t.i + 1))
@@ -2484,6 +2535,9 @@ class ReportAnalyzer:
         self._restated_anchors(ex, toks, norms)
         self._coordinated_anchors(ex, toks, norms)
         if self.kb.relations:
+            self._contact_clause_subjects(ex, toks, norms)
+            self._agreeing_clauses(ex, toks, norms)
+        if self.kb.relations:
             self._possessive_roles(ex, toks, norms)
         for d in [p for p in ex.places if p.via is not None and p.status == "active"]:
             for idx, p in enumerate(ex.places):
@@ -2546,6 +2600,56 @@ class ReportAnalyzer:
                 ex.places[ex.places.index(p)] = replace(p, status="reference", reason=f"reference point: {via}")
                 ex.places.append(self._mention(toks, p.start_tok, end, target, via=via))
                 break
+
+    def _agreeing_clauses(self, ex: Extraction, toks: Tokens, norms: tuple[str, ...]) -> None:
+        """"the stack that takes the smoke off the kiln is leaning": a named place, then "that" and a clause that says
+        one of its own KB relations (two or more of the relation's content words, "smoke" and "off" of `draws the smoke
+        off`). The clause only says which place is meant: its words are no cues, and a place it names as the
+        relation's other end is a reference point."""
+        for p in [q for q in ex.places if q.status == "active" and q.via is None]:
+            k = p.end_tok
+            if k + 2 >= len(norms) or norms[k] not in ("that", "which") or toks.clause_start[k] or toks.clause_start[k + 1]:
+                continue
+            e = k + 1
+            while e < len(norms) and e - k <= 8 and not toks.clause_start[e] and norms[e] not in lx.COPULAS - {"s"} \
+                    and norms[e] not in ("has", "have", "had"):
+                e += 1
+            said = {w for w in norms[k + 1:e] if w not in lx.FUNCTION_WORDS | lx.ARTICLES}
+            for rel in self.kb.relations:
+                if p.landmark not in (rel.subject, rel.object):
+                    continue
+                words = {w for w in norm_phrase(rel.phrase) if w not in lx.ARTICLES}
+                content = {w for w in words if w not in lx.FUNCTION_WORDS}
+                if len(said & words) < 2 or not said & content:
+                    continue
+                ex.relation_tokens.update(range(k, e))
+                other = rel.object if rel.subject == p.landmark else rel.subject
+                for idx, q in enumerate(ex.places):
+                    if q.status == "active" and q.landmark == other and k < q.start_tok < e:
+                        ex.places[idx] = replace(q, status="reference",
+                                                 reason=f"reference point: {rel.subject} {rel.phrase} {rel.object}")
+                break
+
+    def _contact_clause_subjects(self, ex: Extraction, toks: Tokens, norms: tuple[str, ...]) -> None:
+        """"the line-up the water cart keeps topped up has three engines ...": a named place, then at once a
+        clause whose subject is another named place and whose verb follows it, with no "that" between. Where
+        the KB relates the second to the first (subject to object), the second only says which: a reference point."""
+        named = sorted((p for p in ex.places if p.status == "active" and p.via is None), key=lambda p: p.start_tok)
+        for first, second in zip(named, named[1:], strict=False):
+            between = norms[first.end_tok:second.start_tok]
+            if between not in (("the",),) or toks.clause_start[second.start_tok - 1] or second.end_tok >= len(norms):
+                continue
+            verb = norms[second.end_tok]
+            rels = [r for r in self.kb.relations if r.subject == second.landmark and r.object == first.landmark]
+            if not rels or toks.clause_start[second.end_tok] or verb in lx.COPULAS | lx.FUNCTION_WORDS | lx.COORDINATORS \
+                    or verb in ("has", "have", "had", "got") or not verb.isalpha():
+                continue
+            if self._cues.match_at(norms, second.end_tok) is None or any(
+                    verb in norm_phrase(r.phrase) for r in rels):  # ("the channel the old lido spills into")
+                ex.relation_tokens.add(second.end_tok)  # (the relation's verb, no cue: "spills" is no chemical spill)
+                idx = ex.places.index(second)
+                ex.places[idx] = replace(second, status="reference",
+                                         reason=f"subject of a clause describing '{first.text}': reference point")
 
     def _coordinated_anchors(self, ex: Extraction, toks: Tokens, norms: tuple[str, ...]) -> None:
         """"the place that sends the drays out to the market hall and the Mow": a second anchor joined to a
@@ -2617,12 +2721,21 @@ class ReportAnalyzer:
             name = heads[w]
             said = [(a, phrase, flipped) for a, _b, (phrase, flipped) in rel_hits if i + 1 <= a <= i + 4
                     and not any(toks.gaps[k].strip() for k in range(i + 2, a + 1))]
-            if not any(rel.phrase == phrase and (rel.object if flipped else rel.subject) == name
-                       for _a, phrase, flipped in said for rel in self.kb.relations):
+            agreeing = [(a, rel) for a, phrase, flipped in said for rel in self.kb.relations
+                        if rel.phrase == phrase and (rel.object if flipped else rel.subject) == name]
+            if not agreeing:
                 continue
             ex.places.append(replace(self._mention(toks, i - 1, i + 1, name),
                                      reason=f"'{toks.tokens[i].text}' names it; the description after it only agrees"))
             covered.update((i - 1, i))
+            for a, rel in agreeing:
+                other = rel.subject if rel.object == name else rel.object
+                for idx, q in enumerate(ex.places):
+                    if q.status == "active" and q.via is None and q.landmark == other and a < q.start_tok <= a + 8 \
+                            and not any(toks.clause_start[m] for m in range(a + 1, q.start_tok + 1)):
+                        # "the cart that tops up the engines on the big lines": the clause's anchor, no claim
+                        ex.places[idx] = replace(q, status="reference",
+                                                 reason=f"reference point: {rel.subject} {rel.phrase} {rel.object}")
 
     def _shared_tails(self) -> dict[tuple[str, ...], set[str]]:
         """Last words of names that several landmarks share ("escalator shaft": main and deep escalator
@@ -2955,7 +3068,8 @@ class ReportAnalyzer:
             heads = (_name_head(f) or "".join(name_words(f)[-1:]) for lm in self.kb.landmarks for f in lm.surface_forms)
             words = {head for head in heads if head.isalpha() and len(head) >= 3 and head not in lx.FUNCTION_WORDS}
             words |= {w for lm in self.kb.landmarks if (w := _description_head(lm.description or ""))}
-            self._place_noun_cache = frozenset(words | lx.GENERIC_HEADS)
+            self._place_noun_cache = frozenset(words | lx.GENERIC_HEADS | {"track", "tracks"})
+            # ("the tracks the brick yard sends its loads down": a tramway's)
         return self._place_noun_cache
 
     def _resolve_related(self, ex: Extraction, toks: Tokens, norms: tuple[str, ...], place_tokens: set[int],
@@ -2970,6 +3084,8 @@ class ReportAnalyzer:
         nouns = self._place_nouns()
         found = False
         blocked = place_tokens | marker_tokens | cue_tokens
+        pronoun_anchors = self._pronoun_anchors(ex, toks, norms, blocked)
+        ex.places.extend(pronoun_anchors)
         # (a name that only modifies a noun may still anchor one: "the cottages they built for the bobbin mill's workers")
         for anchor in [p for p in ex.places if p.via is None and (p.status == "active" or p.status == "reference"
                                                                   and p.reason.startswith(("reference point of an unresolved",
@@ -3019,8 +3135,10 @@ class ReportAnalyzer:
                     # the head names the one landmark the KB relates to it: "the bridge over the sixteen foot")
                     locative = True
                 if not (between[0] in lx.PREPOSITIONS | lx.RELATION_ENDINGS | lx.DESCRIPTION_OPENERS
-                        or between[0].endswith(("s", "ed", "ing"))):
-                    continue  # "a tank wagon on the siding": the noun goes on, it heads nothing
+                        or between[0].endswith(("s", "ed", "ing"))
+                        or between[0] in ("they", "we", "you") and len(between) >= 2 and not toks.clause_start[head + 1]):
+                    continue  # "a tank wagon on the siding": the noun goes on, it heads nothing (but "the tower they send
+                    # people down the kamikaze from": a clause with a subject of its own describes it)
                 if between[0] == "past":
                     continue  # "gritting the hill road past the caravan park": a way that goes by it, no relation
                 if between in (["into"], ["onto"]) and any(
@@ -3066,9 +3184,14 @@ class ReportAnalyzer:
                 hword = norms[head - 2]  # "the terrace, the one where the bottling hall's workers lodge"
             named = {n: v for n, v in related.items() if hword in name_words(n)
                      or any(hword in name_words(f) for f in self.kb.landmark_by_name[n].surface_forms)}
+            if not toks.tokens[head].text.lower().endswith("s"):
+                # ("the ride it powers": one ride, not the fairground only ever called "the rides")
+                named = {n: v for n, v in named.items() if any(
+                    hword in name_words(f) and not any(w.lower().rstrip("'’").endswith("s") and norm(w) == hword
+                                                       for w in f.split()) for f in self.kb.landmark_by_name[n].surface_forms)}
             if locative and (len(named) != 1 or between[0] in ("of", "at", "in", "inside")):
                 continue
-            if described_anchor and (len(named) != 1 or not between or between[0] not in lx.PREPOSITIONS
+            if described_anchor and (len(named) != 1 or not between or between[0] not in lx.PREPOSITIONS | lx.PLACE_PREPOSITIONS
                                      or norms[anchor.start_tok] != "the" or len(between) > 2 and not (
                         len(between) <= 4 and all(w in lx.FUNCTION_WORDS or w in phrases[next(iter(named))].replace("_", " ").split()
                                                   for w in between))):
@@ -3132,7 +3255,35 @@ class ReportAnalyzer:
             ex.places.append(self._mention(toks, hs, end, target, via=f"{via} (related to {anchor.landmark})"))
             place_tokens.update(range(hs, end))
             found = True
+        for p in pronoun_anchors:
+            if p in ex.places:
+                ex.places.remove(p)  # (a pronoun no description took up as its anchor)
         return found
+
+    def _pronoun_anchors(self, ex: Extraction, toks: Tokens, norms: tuple[str, ...],
+                         blocked: set[int]) -> list[PlaceMention]:
+        """"the big ear's smouldering, and the hostel where its crews sleep": "its" in a relative clause anchors the
+        description on the place named last before it, in an earlier clause. Each comes back as a reference
+        mention of that place on the pronoun, for :meth:`_resolve_related` to take up or drop."""
+        out = []
+        for k in range(3, len(norms)):
+            raw = toks.tokens[k].text.lower()
+            contact = raw == "it" and k + 1 < len(norms) and norms[k - 2] in lx.ARTICLES \
+                and norms[k - 1] in self._place_nouns() and toks.tokens[k + 1].text.lower().endswith(("s", "ed")) \
+                and norms[k + 1] not in lx.COPULAS | lx.FUNCTION_WORDS and not toks.clause_start[k + 1]
+            # ("the ride it powers": the place the one said before powers)
+            if not contact and (raw not in ("its", "their") or norms[k - 1] not in ("where", "that", "which")) \
+                    or k in blocked or toks.clause_start[k] or toks.clause_start[k - 1]:
+                continue
+            before = [p for p in ex.places if p.status == "active" and p.end_tok <= k - 3
+                      and any(toks.clause_start[i] for i in range(p.end_tok, k - 2))]
+            if not before:
+                continue
+            last = max(before, key=lambda p: p.end_tok)
+            if any(q.end_tok > last.end_tok and q.start_tok < k for q in ex.places if q is not last):
+                continue  # (another place said between: which one "its" means is not sure)
+            out.append(self._mention(toks, k, k + 1, last.landmark, status="reference", reason="modifier of 'its'"))
+        return out
 
     @staticmethod
     def _names_other_object(toks: Tokens, norms: tuple[str, ...], b: int) -> bool:
@@ -3147,6 +3298,10 @@ class ReportAnalyzer:
                      flipped: bool, place_tokens: set[int], marker_tokens: set[int], inverse_pass: bool) -> None:
         if any(i in place_tokens for i in range(a, b)):
             return  # already inside a resolved description
+        unit = next((i for i in range(a, b) if norms[i] in lx.MEASURE_UNITS), None)
+        if unit is not None and unit > 0 and (norms[unit - 1] in ("a", "an", "one") or is_number(norms[unit - 1])
+                                              or norms[unit - 1] in lx.NUMBER_WORDS):
+            return  # "the caravans are standing in a foot of it": how deep, not "the foot of" a place
         anchor, anchor_end, pronoun = self._anchor_after(ex, norms, b, phrase)
         if anchor is not None and not pronoun and anchor.via is not None and not inverse_pass \
                 and f" {phrase.replace('_', ' ')} " in f" {anchor.via.replace('_', ' ')} " \
@@ -3556,8 +3711,11 @@ class ReportAnalyzer:
                 ex.places.append(self._mention(toks, a, e, scores[0][1], via=f"description of {scores[0][1]}"))
                 stop.update(range(a, e))
                 for idx, p in enumerate(ex.places):
-                    if p.status == "active" and p.via is None and e <= p.start_tok <= e + 1 \
-                            and all(norms[t] in lx.DETERMINERS for t in range(e, p.start_tok)):
+                    if p.status == "active" and p.via is None and e <= p.start_tok <= e + 3 \
+                            and all(norms[t] in lx.DETERMINERS or norms[t] in lx.PREPOSITIONS and t < e + 1
+                                    for t in range(e, p.start_tok)) \
+                            and not any(toks.clause_start[t] for t in range(e, p.start_tok + 1)):
+                        # ("the shed where they mix the clay before it goes to the drying sheds": where it goes)
                         # "the station with the crash road out to the two seven end": the place ends the description
                         ex.places[idx] = replace(p, status="reference", reason=f"part of the description of {scores[0][1]}")
                 i = e
@@ -3593,6 +3751,8 @@ class ReportAnalyzer:
                 continue
             if any(a < k - 1 and b > k for a, b in said):
                 continue  # "the dock that's dug into its yard": a relative clause's relation, said of the place before
+            if any((hit := self._cues.match_at(norms, j)) is not None and hit[0] > k for j in range(max(0, k - 4), k)):
+                continue  # "the canal has come over its banks": a cue's own words, no place
             # a noun phrase of its own ("..., its twin, ...", "in their sister hangar"), not an object ("sharing its wall")
             if toks.clause_start[k - 1] or (k >= 2 and norms[k - 2] in lx.PREPOSITIONS):
                 before = [p for p in ex.places if p.end_tok < k]
@@ -4389,8 +4549,11 @@ class ReportAnalyzer:
         before = range(0, a - 1)
         caller = next((q for q in places if q.start_tok == 0 and q.end_tok == a - 1), None)
         # ("Fuel bay to race control, we've got ...": a place calling by its own name)
+        numbered = len(before) >= 2 and (is_number(norms[a - 2]) or norms[a - 2] in lx.NUMBER_WORDS)
+        # ("Fire Two to rally office: ...": a call sign's word and number, no fire)
         return len(before) <= 4 and (caller is not None or all(toks.tokens[i].text[:1].isupper() or toks.tokens[i].text.isdigit()
-                                                               for i in before)) and not any(self._cues.match_at(norms, i) for i in before)
+                                                               for i in before)) \
+            and (numbered or not any(self._cues.match_at(norms, i) for i in before))
 
     @staticmethod
     def _calls_by_name(toks: Tokens, norms: tuple[str, ...], p: PlaceMention) -> bool:
@@ -4415,6 +4578,10 @@ class ReportAnalyzer:
         if k >= 2 and norms[k - 1] == "at" and toks.sentence_start[k - 2] and norms[k - 2] in lx.ROLE_LABELS \
                 and p.end_tok < len(norms) and toks.gaps[p.end_tok].strip().startswith(":"):
             return True  # "Marshal at post nine: the rainbow bridge is secure": who is calling, from where
+        if k == 2 and norms[0] in lx.STATIONS_CALLED and norms[1] == "from" and p.end_tok < len(norms) \
+                and (toks.sentence_start[p.end_tok] or toks.gaps[p.end_tok].strip()[:1] in (",", ":")
+                     and norms[p.end_tok] == "over"):
+            return True  # "Control from tower one, over. Cafe kitchen's on fire": who is calling, from where
         if k < 1 or norms[k - 1] != "from" or p.end_tok >= len(norms) or not toks.gaps[p.end_tok].strip().startswith(":"):
             return False
         opener = k - 1
@@ -4531,6 +4698,16 @@ class ReportAnalyzer:
                 continue
             if self._calls_by_name(toks, norms, p):
                 ex.places[idx] = replace(p, status="reference", reason="who is calling ('X to Y:'), said of no more")
+                continue
+            j = _noun_phrase_start(norms, p)
+            if 0 < j <= 3 and toks.sentence_of[p.start_tok] == 0 and all(w in lx.STATIONS_CALLED | lx.FILLERS for w in norms[:j]) \
+                    and norms[0] in lx.STATIONS_CALLED and p.end_tok + 1 < len(norms) and norms[p.end_tok] in lx.ARTICLES \
+                    and not toks.tokens[p.end_tok].text[:1].isupper() and not any(
+                        toks.gaps[i].strip() for i in range(1, p.end_tok + 1)) and any(
+                        q.start_tok == p.end_tok + 1 and q.status == "active" for q in ex.places):
+                # "control control tower two the old pool is full of brown water": the station called, who calls,
+                # then the place told of, unpunctuated
+                ex.places[idx] = replace(p, status="reference", reason="who is calling ('control X'): no claim")
                 continue
             if toks.sentence_start[p.start_tok] and p.end_tok + 1 < len(norms) \
                     and norms[p.end_tok] in ("reporting", "calling", "speaking") and toks.clause_start[p.end_tok + 1]:
@@ -5401,9 +5578,12 @@ class ReportAnalyzer:
             if b == a + 1 and a > 0 and norms[a] in self._kb_nouns and norms[a - 1] in lx.ARTICLES \
                     and source != "glossary" and not undesirable:
                 continue  # "the burn's burst its banks": a thing of the KB's own ("beside the burn"), no burns
-            if norms[a:b] == ("clear",) and any(norms[k] in ("keep", "stay") for k in range(max(0, a - 4), a)) \
+            if norms[a:b] == ("clear",) and any(norms[k] in ("keep", "stay") or norms[k] in lx.MOVED_CLEAR_VERBS
+                                                and all(w in ("well", "right", "away") for w in norms[k + 1:a])
+                                                for k in range(max(0, a - 4), a)) \
                     and not any(toks.clause_start[k] for k in range(max(1, a - 3), a + 1)):
-                continue  # "keep all boats clear of the lock", "stay well clear": an instruction, like "keep clear"
+                continue  # "keep all boats clear of the lock", "stay well clear": an instruction, like "keep clear"; "crew
+                # have stepped well clear": people who moved away, nothing said of the place
             if norms[a:b] in (("cleared",), ("lifted",)) and a >= 2 and norms[a - 1] in ("has", "have", "s") \
                     and any(self._cues.match_at(norms, k) is not None for k in range(max(0, a - 4), a - 1)):
                 continue  # "the smoke has cleared": the danger has gone, the place is not said to be cleared
@@ -5531,6 +5711,11 @@ class ReportAnalyzer:
                     toks.clause_start[t] for t in range(j + 1, a + 1)) for j in range(max(0, a - 8), a)):
                 continue  # "keep the road in front of the supermarket clear": an order, not a safe place
             checked = self._apply_cue_negation(toks, norms, cue)
+            if checked.polarity == "denied" and checked.category == cue.category and norms[b:b + 1] == ("yet",) \
+                    and norms[a - 1:a] == ("no",) \
+                    and any(c.category == cue.category and c.polarity == "affirmed"
+                            and toks.sentence_of[c.start_tok] == toks.sentence_of[a] for c in cues):
+                continue  # "Hot spot on the coal staithe, ..., no flame yet": how far it has got, not that it is out
             cues.append(checked)
             if checked.category != cue.category:  # "no longer safe": unsafe now, and no longer safe
                 cues.append(replace(cue, polarity="denied", reason=checked.reason))
@@ -6072,6 +6257,10 @@ class ReportAnalyzer:
                 nxt = next((w for w in norms[p.end_tok:] if w not in lx.FILLERS), "")
                 if nxt in lx.RADIO_CALL_WORDS:
                     continue  # "Port Control, uh, all stations, ...": the station called, no claim to guess at
+                e = p.end_tok + 2
+                if e <= len(norms) and (is_number(norms[e - 1]) or norms[e - 1] in lx.NUMBER_WORDS) \
+                        and toks.tokens[p.end_tok].text[:1].isupper() and (e == len(norms) or toks.sentence_start[e]):
+                    continue  # "Rally office, Fire Two.": the station called and who calls, no claim to guess at
             a, b = self._predicate_region(ex, p, norms)
             if any(a <= c.start_tok < b for c in all_cues) or any(a <= ma < b for ma, _, _ in ex.markers) \
                     or any(a <= i < b for i in getattr(self, "_shut_tokens", ())) \
@@ -7343,6 +7532,7 @@ class ReportAnalyzer:
         # (a short sentence that names no place goes on about it too: "That's the one.", "Windows all blown out.")
         transparent = {n for n in sent_words if n not in placed and (n in questions or n in cued or sent_words[n] <= 5)}
 
+        floated: set[int] = set()  # places given only the cues of a later segment with no place of its own
         # 3. cue-only segments attach to the places they talk about; a segment whose place was
         #    repaired away keeps its cues for the replacement (step 2), they do not float
         for k, cs in seg_cues.items():
@@ -7530,10 +7720,22 @@ class ReportAnalyzer:
                     fq = forward(q)
                     if fq is not None:
                         pairs.extend(Claim(fq, c) for c in cs)
+                        if fq.start_tok not in claimed_places and target < k:
+                            floated.add(fq.start_tok)
                         claimed_places.add(fq.start_tok)
 
         # 2b/4. places without a cue: inherit from the place they replaced, else borrow from a list
         for p in sorted(active, key=lambda p: p.start_tok):
+            if p.start_tok in floated:
+                # "water coming in at the school and at the terrace across the lane from it, and the old lady at the
+                # far end of that terrace needs lifting out": a later sentence's word, and the list's as well
+                np0 = _noun_phrase_start(norms, p)
+                prior = next((r for r in active if np0 >= 3 and r.end_tok == np0 - 2 and norms[np0 - 2] == "and"
+                              and norms[np0 - 1] in lx.PREPOSITIONS
+                              and norms[_noun_phrase_start(norms, r) - 1:_noun_phrase_start(norms, r)] == (norms[np0 - 1],)),
+                             None)
+                if prior is not None:
+                    pairs.extend(Claim(p, c.cue) for c in list(pairs) if c.place is prior and c.cue.polarity == "affirmed")
             if p.start_tok in claimed_places:
                 continue
             if _moved_from(norms, p, [r for r in active if seg_index[r.start_tok] == seg_index[p.start_tok]]):
@@ -7656,6 +7858,10 @@ class ReportAnalyzer:
             if len(tail) >= 3 and set(tail[:3]) & {"got", "has", "have", "is", "was", "are", "had"} \
                     and len(seg_places.get(k, [])) == 1 and not {"too", "also", "well", "same"} & set(tail):
                 continue  # "the hotel's got the gas leak, the bank's just got its alarm ringing": a predicate of its own
+            done_to = [w for w in norms[max(0, np0 - 4):np0] if w not in lx.FILLERS]
+            if len(done_to) >= 2 and done_to[-1] in lx.CREW_ACTION_VERBS \
+                    and done_to[-2] in ("we", "weve", "ive", "i", "theyve", "they", "have", "ve"):
+                continue  # "the engine's on fire and we've shut the gallopers down": what the crew did to it, no claim
             donor = self._donor_for_places(k, segs, seg_places, seg_cues, sentence_of, hollow | counting,
                                            [self._opening(norms, a, b) for a, b in segs],
                                            [norms[a:b] for a, b in segs])
@@ -7668,6 +7874,11 @@ class ReportAnalyzer:
                                                   for m in range(q.end_tok + 1, min(len(norms), q.end_tok + 5))))
                                          for q in ex.places):
                 continue  # "the snake is -- nah nah the snake's ok -- its the adventure thats flooded"
+            if donor is not None and donor != k and any(
+                    _anchored_at(q, p.landmark) and not any(r.landmark == p.landmark and q.start_tok <= r.start_tok < q.end_tok
+                                                            for r in ex.places) for q in seg_places.get(donor, [])):
+                continue  # "following the brook down from the ford - the field it runs along the bottom of has gone
+                # under": the brook is the "it" of the place described there, not said to be under
             if donor is not None and tail[:1] and tail[0] in lx.COPULAS | {"looks", "seems", "has", "got"} and any(
                     _anchored_at(q, p.landmark) for q in seg_places.get(donor, [])):
                 continue  # "the library is quiet but the hall next to it is burning": its own word, then the anchor
@@ -8367,6 +8578,17 @@ def _verb_forms(term: str) -> list[str]:
     if w[-1] not in "aeiouwxy" and w[-2] in "aeiou" and w[-3] not in "aeiou":
         forms += [w + w[-1] + "ing", w + w[-1] + "ed"]  # ("undercutting")
     return forms
+
+
+def _determined_forms(term: str) -> list[str]:
+    """A two-word glossary term whose first word is a verb's participle, said with a determiner between:
+    "dropped plug" -> "dropped her plug", "dropped a plug"; "blowing a gland" -> "blowing her gland"."""
+    words = term.strip().lower().split()
+    if len(words) == 3 and words[1] in ("a", "an", "the") and words[0].endswith(("ed", "ing")):
+        words = [words[0], words[2]]
+    if len(words) != 2 or not words[0].endswith(("ed", "ing")) or not all(w.isalpha() for w in words):
+        return []
+    return [f"{words[0]} {d} {words[1]}" for d in ("a", "the", "her", "his", "its", "their") if d != words[1]]
 
 
 def _indirect_questions(toks: Tokens, norms: tuple[str, ...]) -> set[int]:

@@ -384,6 +384,8 @@ NEUTRAL_PHRASES = ["a bonfire", "drill smoke", "exercise smoke", "smoke grenade"
                    "keeping people clear", "keeping them clear", "keeping the public clear", "keeping well clear",
                    "keep them clear", "keep the public clear", "keep well clear", "clear the public", "keep it clear",
                    "keep that clear", "keep this clear",
+                   "you're breaking up", "youre breaking up", "you are breaking up", "breaking up on me", "you keep breaking up",
+                   "signal's breaking up", "signal is breaking up", "radio's breaking up", "line's breaking up",
                    "clear everyone away", "clear everybody away", "clear people away", "clear the crowd",
                    "gas monitor", "gas monitors", "gas detector", "gas detectors", "gas reading", "gas readings",
                    "burnt toast", "burned toast", "burnt food", "burned food",
@@ -629,6 +631,8 @@ VEHICLE_WORDS = {"car", "cars", "van", "vans", "lorry", "lorries", "bus", "truck
                  "tractor", "boat", "boats", "coach", "taxi", "ambulance", "bike", "motorbike"}
 # Bodies of water a flood brings in ("it's got the river in the bar")
 WATER_BODIES = {"river", "sea", "tide", "brook", "beck", "burn", "stream", "canal", "lake", "loch", "mere", "creek"}
+# Water itself, a substance: said bare it is the water, not a landmark whose name opens with the word
+WATER_WORDS = frozenset({"water", "waters", "floodwater", "flood"})
 # Verbs of taking people somewhere ("we've moved our old people up to the chapel")
 MOVING_VERBS = {"moved", "moving", "taken", "taking", "took", "brought", "bringing", "sent", "sending", "walked",
                 "ferried", "evacuated", "shifted", "got"}
@@ -825,6 +829,8 @@ NAME_ADJECTIVES = {"big", "large", "huge", "small", "little", "tall", "old", "ne
                    "flooded", "wooden", "concrete", "brick", "white", "red", "blue", "green", "grey", "gray", "black",
                    "yellow", "derelict", "abandoned", "empty", "whole", "entire", "same", "main", "local", "nearest"}
 # Words after "<station>," that make the station the one called ("Port Control, all stations, ...").
+# Who a message is addressed to, said first ("Control from tower one, over.")
+STATIONS_CALLED = frozenset({"control", "base", "hq", "command", "ops", "dispatch"})
 RADIO_CALL_WORDS = {"this", "all", "come", "receiving", "do", "from", "over", "radio", "calling"}
 PRONOUNS = {"it", "its", "there", "that", "they", "them", "this", "place", "building", "same"}
 COORDINATORS = {"and", "but", "while", "whereas", "plus", "also", "then", "meanwhile", "however",
@@ -893,6 +899,9 @@ PART_NOUNS = {"side", "wall", "end", "rear", "corner", "gable", "flank"}
 STOREY_WORDS = {"floor", "roof", "basement", "cellar", "storey", "attic", "loft", "level"}
 
 # Words for people: "<person> collapsed" is a casualty, not a structural collapse.
+# Who calls, by the place they work ("Little railway driver here: ...")
+SPEAKER_ROLES = frozenset({"driver", "operator", "attendant", "manager", "staff", "owner", "keeper", "guard", "porter",
+                           "cleaner", "caretaker", "volunteer", "volunteers"})
 # Who a speaker's label names before where they are ("Marshal at post nine: ...")
 ROLE_LABELS = {"marshal", "steward", "warden", "ranger", "paramedic", "crew", "team", "unit", "lifeguard", "keeper",
                "supervisor", "controller", "dispatcher", "sergeant", "constable", "inspector", "engineer", "security"}
@@ -1102,7 +1111,10 @@ DANGER_KINDS: dict[str, list[str]] = {
                  "roof collapsed", "roof has come in", "roof's come in", "roof came in", "ceiling has come in",
                  "ceiling's come in", "ceiling collapsed", "given way", "gave way", "has given way",
                  "unstable masonry", "falling in", "unstable chimney", "bulging", "bulging out", "bulge", "could let go",
-                 "might let go", "about to let go", "going to let go", "cracked open", "split in two", "split open", "pancaked", "spongy",
+                 "might let go", "about to let go", "going to let go", "cracked open", "split in two", "split open", "split in half", "split clean in half", "split clean in two",
+                 "snapped in half", "snapped in two", "snapped clean", "split down the middle",
+                 "slumped away", "slumped off", "slumped into", "slumped onto", "has slumped away", "side has slumped",
+                 "bank has slumped", "folded in", "folded in on itself", "folded in on themselves", "caved in on itself", "pancaked", "spongy",
                  "floor's spongy", "sinking", "subsiding", "subsidence", "slumping", "floor's gone", "floor has gone",
                  "floor's gone through", "gone through the floor", "roof's going", "roof is going", "span down", "span's down",
                  "span is down", "could go at any minute", "could go any minute", "broken up", "has broken up", "broken away", "broke away", "come through the roof", "came through the roof", "twisted", "leaning badly", "leaning over", "listing", "sagged", "sagged down",
@@ -1150,7 +1162,8 @@ DANGER_KINDS: dict[str, list[str]] = {
               "water's come up", "water has come up", "water's come in", "water has come in", "river's come up", "river has come up", "river came up", "river's up", "river's risen", "river has risen",
               "flood", "floods", "flooded", "flooding", "underwater", "under water", "water rising", "rising water",
               "submerged", "knee deep", "waist deep", "chest deep", "ankle deep", "water's up", "water up to",
-              "up to the windowsills", "overtopping", "burst its banks", "waterlogged", "water logged", "flooded out",
+              "up to the windowsills", "overtopping", "burst its banks", "over its banks", "come over its banks", "came over its banks", "coming over its banks",
+              "over the banks", "over the bank", "come over the top", "burst the banks", "broken its banks", "waterlogged", "water logged", "flooded out",
               "water everywhere", "water coming over", "taking on water", "taking water", "foot of water",
               "feet of water", "under a foot of water", "water coming up", "water coming in", "water's coming in",
               "coming in under the door", "coming in under the doors", "coming under the door", "coming under the doors", "washed away", "water coming into",
@@ -1455,7 +1468,8 @@ DANGER_KIND_EXTRA: dict[str, list[str]] = {
               "water coming through the roof", "ceiling's leaking", "ceiling is leaking", "water pouring through"],
     "access": ["rocks across", "rocks across it", "rocks across the road", "debris across", "debris right across", "fallen oak", "fallen beech", "fallen ash", "fallen branch", "fallen branches"],
     "ground": ["scree moving", "scree is moving", "ground is moving", "ground moving", "slope is moving", "hillside is moving", "rocks are coming off", "rocks are coming down", "rocks are falling", "dropping rocks", "rocks dropping", "dropping stones", "has sunk", "have sunk", "its sunk", "ground dropped", "ground has dropped", "ground dropping", "ground is dropping", "ground gone", "ground has gone", "ground just gone", "floor dropped", "floor has dropped", "hole opened up", "hole has opened up", "hole just opened up", "floor has opened", "floor's opened", "sinkhole", "sink hole", "ash a foot deep", "ash is knee deep", "ash knee deep", "ash's knee deep", "ash is ankle deep", "a foot of ash", "feet of ash", "inches of ash", "deep in ash", "covered in ash", "heaped with ash", "buried in ash", "under the ash", "drifts of ash", "ash drifts", "half buried", "half-buried", "slurry", "full of slurry", "sludge", "silt", "full of silt"],
-    "fallen": ["hole in the roof", "holes in the roof", "hole in its roof", "hole in the wall", "lost a parapet", "lost its parapet", "lost the parapet", "lost a wall", "lost its wall", "lost a gable", "lost its gable"],
+    "fallen": ["branch through the roof", "branch through its roof", "branches through the roof", "limb through the roof",
+               "tree through its roof", "trees through the roof", "hole in the roof", "holes in the roof", "hole in its roof", "hole in the wall", "lost a parapet", "lost its parapet", "lost the parapet", "lost a wall", "lost its wall", "lost a gable", "lost its gable"],
 }
 
 for _phrases in DANGER_KIND_EXTRA.values():  # each an undesirable cue as well, as the kinds' own phrases are
@@ -1469,6 +1483,17 @@ APPROACH_NOUNS = _keyed({"way", "approach", "approaches", "entrance", "road", "p
 PLURAL_FIRES = frozenset({"flames", "flame", "fires", "fire"})
 
 # Place nouns of three letters that may stand for a name they end ("the gym" for "hollis school gym")
+# Units a depth or a length is measured in ("in a foot of it", "two metres of water")
+MEASURE_UNITS = frozenset({"foot", "feet", "metre", "metres", "meter", "meters", "inch", "inches", "mile", "miles"})
+# (not "yard": "the place that shares a yard with the hut")
+# Prepositions of place that PREPOSITIONS leaves out ("the heap above the pit the slurry pond spills into")
+PLACE_PREPOSITIONS = frozenset({"above", "below", "beneath", "underneath", "beyond", "opposite", "onto", "off"})
+# What a crew does to a place ("we've shut the gallopers down"): said of the place, it claims nothing of it
+CREW_ACTION_VERBS = frozenset({"shut", "closed", "evacuated", "emptied", "cleared", "cordoned", "taped", "sealed",
+                               "locked", "stopped", "searched", "checked", "swept"})
+# Verbs of people moving away that take "clear" ("crew have stepped well clear"): no safe place said
+MOVED_CLEAR_VERBS = frozenset({"stepped", "stood", "backed", "moved", "pulled", "jumped", "scrambled",
+                               "step", "stand", "move", "pull", "standing", "stepping", "backing"})
 SHORT_PLACE_NOUNS = frozenset({"gym", "pub", "inn", "spa", "zoo", "dam"})
 # Kinds of place said by another word ("the pub" for a landmark its description calls an inn)
 PLACE_KIND_SYNONYMS = {"pub": ("inn", "tavern", "alehouse"), "inn": ("pub", "tavern"), "tavern": ("pub", "inn"),
