@@ -122,6 +122,9 @@ WATER_PARK = ROOT / "knowledge_bases" / "water_park"
 BRICK_KILN_VILLAGE = ROOT / "knowledge_bases" / "brick_kiln_village"
 STEAM_RALLY = ROOT / "knowledge_bases" / "steam_rally"
 TIN_MINE_COAST = ROOT / "knowledge_bases" / "tin_mine_coast"
+CITY_MARATHON = ROOT / "knowledge_bases" / "city_marathon"
+CATTLE_MARKET_TOWN = ROOT / "knowledge_bases" / "cattle_market_town"
+FILM_STUDIO_LOT = ROOT / "knowledge_bases" / "film_studio_lot"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -395,6 +398,9 @@ SETS = {
     "dev74/brick_kiln_village": _set("dev74/brick_kiln_village.jsonl", BRICK_KILN_VILLAGE, "bk74", TWENTY, sep=""),
     "dev74/steam_rally": _set("dev74/steam_rally.jsonl", STEAM_RALLY, "sr74", TWENTY, sep=""),
     "dev74/tin_mine_coast": _set("dev74/tin_mine_coast.jsonl", TIN_MINE_COAST, "tm74", TWENTY, sep=""),
+    "dev75/city_marathon": _set("dev75/city_marathon.jsonl", CITY_MARATHON, "cm75", TWENTY, sep=""),
+    "dev75/cattle_market_town": _set("dev75/cattle_market_town.jsonl", CATTLE_MARKET_TOWN, "ct75", TWENTY, sep=""),
+    "dev75/film_studio_lot": _set("dev75/film_studio_lot.jsonl", FILM_STUDIO_LOT, "fs75", TWENTY, sep=""),
 }
 
 

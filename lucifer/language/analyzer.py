@@ -289,8 +289,9 @@ class ReportAnalyzer:
                 return cats[votes.index(max(votes))].name
         if overlap and max(overlap) > 0 and overlap.count(max(overlap)) == 1:
             return cats[overlap.index(max(overlap))].name
-        if overlap and max(overlap) > 0:
-            # a tie of stems goes to the one that has the word itself ("blown in": "tents blown down", not "blowbacks")
+        if overlap and max(overlap) > 0 and not set(words) <= lx.GENERIC_DANGER_WORDS:
+            # a tie of stems goes to the one that has the word itself ("blown in": "tents blown down", not "blowbacks";
+            # but "dangerous" says no kind, whichever description has the very word)
             exact = [sum(w in ds for w in words) if n == max(overlap) else -1 for n, ds in zip(overlap, described, strict=True)]
             if max(exact) > 0 and exact.count(max(exact)) == 1:
                 return cats[exact.index(max(exact))].name
@@ -372,6 +373,11 @@ class ReportAnalyzer:
             cat = self._category_for_role(role, phrase)
             if cat:
                 entries[norm_phrase(phrase)] = (cat, "lexicon")
+        if self._animal_category is not None:
+            # 1b. animals in trouble, where the KB has a category for them ("a bullock loose", "ewes swimming")
+            for animal in lx.ANIMAL_WORDS:
+                for state in lx.ANIMAL_TROUBLE:
+                    entries.setdefault(norm_phrase(f"{animal} {state}"), (self._animal_category, "lexicon"))
         # 2. words listed in category descriptions, e.g. "(fire, gas, collapse, flooding)"
         for cat in self.kb.categories:
             for inner in re.findall(r"\(([^)]*)\)", cat.description):
@@ -723,7 +729,11 @@ class ReportAnalyzer:
                 and norms[b:b + 1] == ("to",) and b + 1 < len(norms) and toks.tokens[b + 1].text[:1].isupper()
             # ("Wetsuit Shack to Lake Rescue.": a place calling by its name, the article left off as call signs do)
             heading = heading or (a == 0 or toks.sentence_start[a]) and b + 1 < len(norms) \
-                and norms[b] in lx.ROLE_LABELS | lx.SPEAKER_ROLES and (norms[b + 1] == "here" or ":" in toks.gaps[b + 1])
+                and norms[b] in lx.ROLE_LABELS | lx.SPEAKER_ROLES \
+                and (norms[b + 1] == "here" or norms[b + 1:b + 4] == ("on", "the", "phone")) \
+                or (a == 0 or toks.sentence_start[a]) and norms[b:b + 1] == ("here",) \
+                and (b + 1 == len(norms) or toks.sentence_start[b + 1] or ":" in toks.gaps[b + 1])
+            # ("TV compound here. Our generator took a lightning strike": who calls, from where)
             # ("Little railway driver here: my train's stalled": who calls, by the place they work)
             if norms[a:b] in self._derived_keys and prev in ("a", "an", "another"):
                 continue  # "he fell off the back of a hire boat": any boat, not the hire base's "kingfisher boats"
@@ -2175,6 +2185,8 @@ class ReportAnalyzer:
                     continue  # "the place that patches up its casualties": a verb and its particle, no "the patch"
                 if self._cut_off_here(toks, i + n - 1):
                     continue  # "outside the hote-- outside the bank": a word cut off, for ``_false_starts``
+                if n == 1 and i > 0 and norms[i - 1] in ("have", "has", "had", "ve", "havent", "hasnt", "hadnt"):
+                    continue  # "Harker's have rung in": a verb after its auxiliary, no "the ring"
                 typo = self._typo_of(word, [norms[j] for j in span],
                                      raw=toks.tokens[i].text.lower() if n == 1 else None)
                 if typo is None and n > 1 and word in self._spellings and len(word) >= 8 \
@@ -3191,7 +3203,11 @@ class ReportAnalyzer:
                                                        for w in f.split()) for f in self.kb.landmark_by_name[n].surface_forms)}
             if locative and (len(named) != 1 or between[0] in ("of", "at", "in", "inside")):
                 continue
-            if described_anchor and (len(named) != 1 or not between or between[0] not in lx.PREPOSITIONS | lx.PLACE_PREPOSITIONS
+            relative = len(between) == 2 and between[0] in ("that", "which") \
+                and toks.tokens[linked[1]].text.lower().endswith("s") and between[1] not in lx.COPULAS
+            # ("the water station that feeds the arch at the bottom of heartbreak hill": a verb of its own)
+            if described_anchor and (len(named) != 1 or not between
+                                     or between[0] not in lx.PREPOSITIONS | lx.PLACE_PREPOSITIONS and not relative
                                      or norms[anchor.start_tok] != "the" or len(between) > 2 and not (
                         len(between) <= 4 and all(w in lx.FUNCTION_WORDS or w in phrases[next(iter(named))].replace("_", " ").split()
                                                   for w in between))):
@@ -3535,10 +3551,12 @@ class ReportAnalyzer:
                 cue_end -= 1  # "our casualty's actually round the back of the hardware store"
             if cue_end < head_end and cue_end > 0 and self._is_cue_end(norms, cue_end):
                 words = []
-            if norms[a:b] in lx.AMBIGUOUS_HEADLESS or (words and not self._is_cue_end(norms, head_end) and not participle
+            bare = norms[a + 1:b] if b - a >= 2 and norms[a] in lx.RELATION_ADVERBS else norms[a:b]
+            if bare in lx.AMBIGUOUS_HEADLESS or (words and not self._is_cue_end(norms, head_end) and not participle
                                                        and not set(words) <= lx.HEADLESS_OK
                                                        and words[-1] not in lx.LAY_PERSONS | {"folk", "folks"}):
-                # ("there's folk over the road from the brewery coughing": people placed by the relation)
+                # ("there's folk over the road from the brewery coughing": people placed by the relation; "a runner
+                # down right under the finish arch": where he lies)
                 return
             head_start, head_text = a, ""
         target, via = self._follow(anchor.landmark, phrase, head_text, inverse=flipped)
@@ -3712,9 +3730,9 @@ class ReportAnalyzer:
                 stop.update(range(a, e))
                 for idx, p in enumerate(ex.places):
                     if p.status == "active" and p.via is None and e <= p.start_tok <= e + 3 \
-                            and all(norms[t] in lx.DETERMINERS or norms[t] in lx.PREPOSITIONS and t < e + 1
-                                    for t in range(e, p.start_tok)) \
-                            and not any(toks.clause_start[t] for t in range(e, p.start_tok + 1)):
+                            and (p.start_tok <= e + 1 and all(norms[t] in lx.DETERMINERS for t in range(e, p.start_tok))
+                                 or norms[e] in lx.PREPOSITIONS and all(norms[t] in lx.DETERMINERS for t in range(e + 1, p.start_tok))
+                                 and not any(toks.clause_start[t] for t in range(e, p.start_tok + 1))):
                         # ("the shed where they mix the clay before it goes to the drying sheds": where it goes)
                         # "the station with the crash road out to the two seven end": the place ends the description
                         ex.places[idx] = replace(p, status="reference", reason=f"part of the description of {scores[0][1]}")
@@ -4274,7 +4292,8 @@ class ReportAnalyzer:
                 continue  # ("... and it isn't. The cafe is, though": the negation ends with its sentence; "it's
                 # not it's the one next to it": a new clause)
             neg = norms[j] in ("not", "nt", "isnt", "wasnt") or norms[j] in lx.RETRACT_VERBS and not any(
-                (m := self._cues.match_at(norms, i)) is not None and i < j < m[0] for i in range(max(0, j - 3), j)) or (
+                (m := self._cues.match_at(norms, i)) is not None and i < j < m[0] for i in range(max(0, j - 3), j)) \
+                and not (j > 0 and norms[j - 1] in lx.ARTICLES | {"lightning", "direct"}) or (  # ("took a lightning strike")
                 norms[j] == "negative" and norms[j + 1] == "on"  # "negative on the quarry, it's the campsite"
             ) or (
                 # "from the school, no, the post office, negative the school": said again only to deny it
@@ -4700,6 +4719,10 @@ class ReportAnalyzer:
                 ex.places[idx] = replace(p, status="reference", reason="who is calling ('X to Y:'), said of no more")
                 continue
             j = _noun_phrase_start(norms, p)
+            if j >= 3 and norms[j - 1] == "from" and norms[j - 2] in ("up", "down", "in", "over", "back", "out") \
+                    and norms[j - 3] in lx.BRING_VERBS:
+                ex.places[idx] = replace(p, status="reference", reason="where people are brought from: no claim")
+                continue  # "a rest point for anyone you bring up from the river end"
             if 0 < j <= 3 and toks.sentence_of[p.start_tok] == 0 and all(w in lx.STATIONS_CALLED | lx.FILLERS for w in norms[:j]) \
                     and norms[0] in lx.STATIONS_CALLED and p.end_tok + 1 < len(norms) and norms[p.end_tok] in lx.ARTICLES \
                     and not toks.tokens[p.end_tok].text[:1].isupper() and not any(
@@ -5697,6 +5720,28 @@ class ReportAnalyzer:
                     c.end_tok in (a, a - 1) and c.polarity == "affirmed" for c in cues) and (
                     cues and cues[-1].end_tok == a or a >= 1 and norms[a - 1] in ("is", "s", "now", "still")):
                 continue  # "Tanker leak spreading in the park": the leak's own verb, no other danger
+            if norms[a:b] in (("gone", "under"), ("went", "under"), ("going", "under")) \
+                    and self.kb.category_by_name[cue.category].role == Role.CRITICAL:
+                j = a - 1
+                while j >= 0 and (norms[j] in ("has", "have", "s", "is", "was", "just", "now", "completely", "all", "totally")
+                                  or norms[j] in lx.FILLERS):
+                    j -= 1
+                if j >= 0 and norms[j] not in _PERSON_WORDS | lx.LAY_PERSONS | lx.WORKER_PERSONS | lx.PERSON_SUBJECTS \
+                        | {"someone", "somebody", "he", "she", "they", "who", "i", "we", "hes", "shes", "theyve", "whos"}:
+                    und = self._category_for_role(lx.UNDESIRABLE, "flooded, under water")
+                    if und is not None:
+                        cue = replace(cue, category=und, reason="a place gone under: flooded")
+                        # ("wherever the bridge comes down on the south bank has gone under": the place, not a person)
+            if norms[a:b] == ("missing",) and cue.category == self._person_category:
+                j = a - 1
+                while j >= 0 and (norms[j] in ("are", "is", "s", "were", "was", "all", "now", "just") or norms[j] in lx.FILLERS):
+                    j -= 1
+                if j >= 0 and norms[j] in lx.MISSING_PARTS:
+                    und = self._category_for_role(lx.UNDESIRABLE, "damaged, broken, torn off")
+                    if und is None:
+                        continue
+                    cue = replace(cue, category=und, reason="parts of it missing: damage, no person")
+                    # ("two deck panels are missing": torn away, nobody lost)
             if norms[a:b] == ("stuck",) and cue.category == self._person_category:
                 j = a - 1
                 while j >= 0 and (norms[j] in ("is", "s", "was", "got", "gets", "has", "been", "just", "now", "completely")
@@ -5711,11 +5756,6 @@ class ReportAnalyzer:
                     toks.clause_start[t] for t in range(j + 1, a + 1)) for j in range(max(0, a - 8), a)):
                 continue  # "keep the road in front of the supermarket clear": an order, not a safe place
             checked = self._apply_cue_negation(toks, norms, cue)
-            if checked.polarity == "denied" and checked.category == cue.category and norms[b:b + 1] == ("yet",) \
-                    and norms[a - 1:a] == ("no",) \
-                    and any(c.category == cue.category and c.polarity == "affirmed"
-                            and toks.sentence_of[c.start_tok] == toks.sentence_of[a] for c in cues):
-                continue  # "Hot spot on the coal staithe, ..., no flame yet": how far it has got, not that it is out
             cues.append(checked)
             if checked.category != cue.category:  # "no longer safe": unsafe now, and no longer safe
                 cues.append(replace(cue, polarity="denied", reason=checked.reason))
@@ -5724,6 +5764,7 @@ class ReportAnalyzer:
         cues = self._damage_by_cause(norms, cues)
         cues = self._spread_of_what(toks, norms, cues)
         cues = self._sheltered_people(norms, cues)
+        cues = self._animals_in_trouble(norms, cues)
         cues.extend(self._predicative_cues(ex, norms, blocked | {i for c in cues for i in range(c.start_tok, c.end_tok)}))
         cues.extend(self._person_cues(ex, norms, blocked | neutral | {i for c in cues for i in range(c.start_tok, c.end_tok)}))
         cues.extend(self._another_one_cues(toks, norms, cues, blocked))
@@ -6135,6 +6176,36 @@ class ReportAnalyzer:
             last = max(before, key=lambda d: d.start_tok, default=None)
             if last is not None and last.category != c.category:
                 out[i] = replace(c, category=last.category, reason="spreads the danger said before it")
+        return out
+
+    @functools.cached_property
+    def _animal_category(self) -> str | None:
+        """Where the KB splits the critical role into people and animals: the category its description gives to
+        livestock or animals (one only), else None."""
+        crit = self.kb.categories_with_role(Role.CRITICAL)
+        if len(crit) < 2:
+            return None
+        found = [c.name for c in crit if self._affirmed_words(c.description) & lx.ANIMAL_WORDS]
+        return found[0] if len(found) == 1 else None
+
+    def _animals_in_trouble(self, norms: tuple[str, ...], cues: list[CueMention]) -> list[CueMention]:
+        """"bullocks stuck in the cattle lines", "a bullock loose", "ewes swimming in there": a critical cue said of
+        animals takes the KB's category for animals, where it has one apart from the people's."""
+        animal = self._animal_category
+        if animal is None:
+            return cues
+        out = []
+        for c in cues:
+            if self.kb.category_by_name[c.category].role == Role.CRITICAL and c.category != animal:
+                j = c.start_tok - 1
+                while j >= 0 and c.start_tok - j <= 4 and (norms[j] in ("are", "is", "s", "re", "been", "got", "all", "still",
+                                                                         "now", "just", "a", "an", "the", "two", "three")
+                                                           or norms[j] in lx.FILLERS or is_number(norms[j])):
+                    j -= 1
+                said = set(norms[c.start_tok:c.end_tok])
+                if said & lx.ANIMAL_WORDS or j >= 0 and norms[j] in lx.ANIMAL_WORDS:
+                    c = replace(c, category=animal, reason="said of animals")
+            out.append(c)
         return out
 
     def _read_cue_pairs(self, toks: Tokens, norms: tuple[str, ...], cues: list[CueMention]) -> list[CueMention]:
@@ -6692,7 +6763,9 @@ class ReportAnalyzer:
                 elif n + 1 < len(sentences) and self._answered(toks, norms, sentences[n + 1], lx.NO_WORDS):
                     asked.update(range(start, b))  # "the church is flooded? -- no, no, the school": an echo denied
                 continue
-            opener = next((i for i in range(a, b) if norms[i] not in lx.FILLERS), a)
+            opener = next((i for i in range(a, b) if norms[i] not in lx.FILLERS
+                           and not (n == 0 and i <= a + 1 and norms[i] in lx.STATIONS_CALLED)), a)
+            # ("control er is the is the tunnel still closed or have they reopened it": the station called first)
             if norms[opener] in lx.YES_NO_OPENERS and opener + 1 < b and norms[opener + 1] in lx.YES_NO_SUBJECTS \
                     and opener not in marker_starts:
                 # "is the is the square safe can anyone confirm": speech without a question mark still asks
@@ -7820,9 +7893,11 @@ class ReportAnalyzer:
             tail = [w for w in norms[p.end_tok:segs[k][1]] if w not in lx.FILLERS]
             if tail in (["is"], ["s"], ["was"], ["are"]):  # ("the lifeguard hut is... standing": past the pause)
                 tail = [w for w in norms[p.end_tok:min(len(norms), segs[k][1] + 1)] if w not in lx.FILLERS]
-            if (tail[:1] in (["dry"], ["untouched"], ["unaffected"], ["solid"], ["holding"], ["standing"]) or tail[:2] in (
+            own = tail[1:] if tail[:1] in (["itself"], ["themselve"]) else tail  # ("the weir itself is holding")
+            if (own[:1] in (["dry"], ["untouched"], ["unaffected"], ["solid"], ["holding"], ["standing"]) or own[:2] in (
                     ["is", "dry"], ["s", "dry"], ["still", "dry"], ["is", "solid"], ["s", "solid"], ["still", "solid"],
-                    ["is", "standing"], ["s", "standing"], ["still", "standing"])) \
+                    ["is", "standing"], ["s", "standing"], ["still", "standing"], ["is", "holding"], ["s", "holding"],
+                    ["still", "holding"], ["are", "holding"])) \
                     and len(seg_places.get(k, [])) == 1:
                 continue  # "the gift shop, that's where the water's coming in... the tea room's dry": its own word
             if tail[:1] and tail[0] in ("evacuated", "evacuating", "closed", "shut", "locked") and len(tail) <= 2 \
@@ -9206,7 +9281,8 @@ def _with_other_preposition(phrase: str, out: list[tuple[str, bool]]) -> None:
     words = phrase.split()
     if len(words) >= 3 and words[-1] in ("onto", "into") and words[-2] in ("down", "up", "out", "back"):
         other = "into" if words[-1] == "onto" else "onto"  # ("hauls its boat down into it" for "down onto")
-        out.extend((f"{form[:-len(words[-1])]}{other}", inv) for form, inv in list(out)
+        shorter = "on" if words[-1] == "onto" else "in"  # ("wherever the bridge comes down on the south bank")
+        out.extend((f"{form[:-len(words[-1])]}{o}", inv) for form, inv in list(out) for o in (other, shorter)
                    if form.endswith(f" {words[-1]}") and len(form.split()) >= 3)
         return
     if len(words) >= 3 and words[-1] in ("for", "to", "of") and words[-2] not in lx.ARTICLES \

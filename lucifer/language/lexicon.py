@@ -126,7 +126,7 @@ reception centre|reception center|rest center|high ground|taking evacuees|taking
 opened as a rest centre|safe ground|dry and safe|bone dry|warming centre|warm and dry|sheltering there|
 meeting point|the meeting point|empty and checked|checked and empty|evacuated and checked|searched and clear|
 is open|s open|are open|still open|open again|reopened|open and usable|open for landing|
-decon point|decon area|decon tent|decontamination point|where we're putting everyone|putting everyone|high and dry|holding people in|holding everyone in|holding them in there|holding people there|we're holding people|place of safety|a place of safety|cots and blankets|put out cots|can shelter there|can shelter here|people can shelter|can come and wait|can wait there|can wait in there|can wait here|been walked and checked|walked and checked|opened up for|opened its doors|
+decon point|decon area|decon tent|decontamination point|where we're putting everyone|putting everyone|high and dry|well above the water|high above the water|well above the flood|well clear of the water|holding people in|holding everyone in|holding them in there|holding people there|we're holding people|place of safety|a place of safety|cots and blankets|put out cots|can shelter there|can shelter here|people can shelter|can come and wait|can wait there|can wait in there|can wait here|been walked and checked|walked and checked|opened up for|opened its doors|
 fine to walk through|fine to walk on|fine to cross|okay to walk through|ok to walk through|fine to pass through|
 fine for overflow|taking in families|taking in people|taking people in|can take people|we can take people|
 people are gathering there|people gathering there|everyone's gathering there|gathering there|taking in residents|
@@ -191,7 +191,7 @@ woman gone down|man gone down|bloke gone down|someone gone down|somebody gone do
 feeling sick|taken ill|been taken ill|can't manage the stairs|cannot manage the stairs|carry chair|with cuts|cuts from|cuts to his|cuts to her|cuts to their|cuts and bruises|nasty cuts|bad cuts|with a cut|
 scalded|scalds|scalding burns|badly scalded|with scalds|
 trapped|trapped inside|stuck|stuck inside|pinned|pinned down|buried|injured|injuries|injury|hurt|
-wounded|bleeding|unconscious|unresponsive|not breathing|not moving|cardiac arrest|broken leg|broken arm|
+wounded|bleeding|unconscious|unresponsive|not breathing|not moving|cardiac arrest|cardiac|a cardiac thing|heart thing|need the ambulance|needs the ambulance|need an ambulance|broken leg|broken arm|
 casualty|casualties|victim|victims|survivor|survivors|patient|patients|
 needs help|need help|needs rescue|need rescue|needs rescuing|need rescuing|calling for help|crying for help|
 cries for help|screaming|shouting for help|banging|knocking|someone inside|people inside|person inside|
@@ -784,7 +784,8 @@ TRANSIT = ["people in off", "taking people in off", "in off the", "walked up fro
            "parked up by", "parked up outside", "walking from", "driving from", "came out of", "stood down at",
            "standing down at", "pulled into", "pulling into",
            "about to check", "searching", "sweeping", "en route", "route via", "routing via", "routed via",
-           "route through", "routing through", "routed through", "go via", "called out to", "been called out to", "got called out to", "keep clear of", "stay clear of",
+           "route through", "routing through", "routed through", "go via", "looking across", "looking out across",
+           "looking out over", "looking out at", "called out to", "been called out to", "got called out to", "keep clear of", "stay clear of",
            "keep away from", "stay away from", "keep everyone away from", "keep people away from",
            "keep the public back from", "keep people back from", "keep everyone back from", "keep them back from",
            "got everyone out onto", "everyone out onto", "got everyone out into", "got them out onto",
@@ -901,7 +902,8 @@ STOREY_WORDS = {"floor", "roof", "basement", "cellar", "storey", "attic", "loft"
 # Words for people: "<person> collapsed" is a casualty, not a structural collapse.
 # Who calls, by the place they work ("Little railway driver here: ...")
 SPEAKER_ROLES = frozenset({"driver", "operator", "attendant", "manager", "staff", "owner", "keeper", "guard", "porter",
-                           "cleaner", "caretaker", "volunteer", "volunteers"})
+                           "cleaner", "caretaker", "volunteer", "volunteers", "landlord", "landlady", "barman", "vicar",
+                           "verger", "secretary", "clerk"})
 # Who a speaker's label names before where they are ("Marshal at post nine: ...")
 ROLE_LABELS = {"marshal", "steward", "warden", "ranger", "paramedic", "crew", "team", "unit", "lifeguard", "keeper",
                "supervisor", "controller", "dispatcher", "sergeant", "constable", "inspector", "engineer", "security"}
@@ -928,6 +930,10 @@ for _p in PERSON_NOUNS:
 # Danger words that say what happened to a person when a person is their subject ("two residents have
 # collapsed", "one of our crew is burned very bad").
 # Person words that say what happened to a thing when a thing is their subject ("cars buried").
+# Parts of a structure that may be "missing" (torn away; no person lost)
+MISSING_PARTS = _keyed({"panel", "panels", "slate", "slates", "tile", "tiles", "board", "boards", "plank", "planks",
+                        "sheet", "sheets", "sheeting", "railing", "railings", "handrail", "handrails", "roof", "section",
+                        "sections", "window", "windows", "door", "doors", "fence", "fencing", "barrier", "barriers"})
 THING_SUBJECTS = {"car", "vehicle", "van", "truck", "lorry", "bus", "road", "track", "path", "lift", "entrance",
                   "lane", "lanes", "roads", "cars", "vehicles", "tracks", "paths",
                   "door", "gate", "bike", "tent", "hut"}
@@ -1074,7 +1080,9 @@ DANGER_KINDS: dict[str, list[str]] = {
     "crowd": ["crowd crush", "crowd surge", "surge at", "surge in", "surging", "crammed", "packed solid", "pressed flat",
               "pressed against", "pushed up against", "crushing", "pile-up", "pile up", "overcrowded", "stampede",
               "people pushing", "everyone pushing", "crushed against", "being crushed against", "crush in there",
-              "it's a crush"],
+              "it's a crush", "a crush at", "a crush on", "a crush by", "got a crush", "crush at the", "a surge",
+              "people shoving", "shoving", "jammed solid", "jammed on the", "people jammed", "going over the tables",
+              "climbing the fences", "climbing over the barriers", "crowd pressure"],
     "fire": ["has caught", "s caught", "caught fire", "caught light", "fire", "fires", "on fire", "getting very hot", "getting hot", "red hot", "glowing red", "heavy heat", "burning", "burnt", "burned", "burned out", "burnt out", "blaze", "blazing",
              "ablaze", "flames", "flame", "in flames", "engulfed", "inferno", "alight", "well alight", "fully alight",
              "fully involved", "going up in flames", "gone up in flames", "smouldering", "smoldering", "charred",
@@ -1384,7 +1392,7 @@ ENTRANCE_PARTS = _keyed({"door", "doors", "entrance", "entrances", "gate", "gate
 # "the fire's spread from the bank to the bakery": a danger that reaches a second place.
 # Verbs of a thing falling into somewhere ("it's collapsed into the drain", "bricks falling into the river")
 FALLEN_VERBS = {"collapsed", "collapsing", "fallen", "falling", "fell", "dropped", "dropping", "slid", "sliding",
-                "tumbled", "tumbling", "toppled", "crashed", "slumped", "gone", "went"}
+                "tumbled", "tumbling", "toppled", "crashed", "slumped", "gone", "went", "going", "slipping"}
 # Cues that say a danger spreads, naming no kind of their own
 SPREAD_WORDS = {("spreading",), ("spread",), ("reignited",), ("spreading", "fast"), ("spreading", "quickly")}
 SPREAD_VERBS = {"spread", "spreading", "jumped", "jumping", "moved", "moving", "travelled", "traveled", "gone", "got",
@@ -1445,7 +1453,9 @@ DANGER_KIND_EXTRA: dict[str, list[str]] = {
     "explosion": ["from the bang", "by the bang", "in the bang", "cooking off", "rounds cooking off"],
     "breakage": ["been ripped out", "ripped out", "hole right through it", "hole right through", "punched a hole in", "punched a hole through", "hole punched", "punched right through", "punched through"],  # "a hole punched right through the wall"
     # (the surge's damage to moorings: "the diesel jetty has broken loose", "pontoons torn off their piles")
-    "storm": ["blown over", "been blown over", "has blown over", "torn off their piles", "torn off its piles", "off their piles", "off its piles", "broken loose",
+    "storm": ["lightning strike", "took a lightning strike", "struck by lightning", "hit by lightning", "lightning struck",
+              "lightning's struck", "lightning has struck", "lightning hit", "lightning's hit", "lightning has hit",
+              "blown over", "been blown over", "has blown over", "torn off their piles", "torn off its piles", "off their piles", "off its piles", "broken loose",
               "broke loose", "torn loose", "has broken free", "come adrift", "broken adrift", "torn from its moorings",
               "windows all blown out", "windows blown out", "windows are blown out", "windows have blown out", "all blown out", "strewn across", "strewn over", "strewn all over", "on their sides", "on its side", "onto its side", "onto their sides", "blew in", "blew straight in", "blown straight in", "roof is gone", "roof's torn", "torn clean off", "came down through", "peeled off", "been peeled off", "peeled back", "lost its roof", "lost their roof", "lost their roofs",
               "lost the roof", "lost its leads", "lost the leads", "roof lifted", "blown clean off", "blown off",
@@ -1458,7 +1468,8 @@ DANGER_KIND_EXTRA: dict[str, list[str]] = {
                  "line down", "lines are down", "line is down"],
     "gas": ["rotten egg", "rotten eggs", "rotten-egg smell", "rotten egg smell", "eggy smell", "smell like eggs", "smells like eggs", "smell of eggs", "smells of eggs", "smell like rotten eggs", "there's a hiss", "a loud hiss", "hissing out of", "h2s", "so2", "co2", "sulphur dioxide", "hydrogen sulphide", "carbon dioxide", "methane", "methane leak", "natural gas", "co detected", "co reading", "co readings", "co levels", "high co", "carbon monoxide", "carbon monoxide alarm", "co alarm"],
     "collapse": ["has snapped", "have snapped", "cable snapped", "cables snapped", "hanging sideways", "floor went through", "floor went thru", "floor gone through", "developed a lean", "has a lean", "bricks coming off", "bricks are coming off", "wall has split", "walls have split", "has split from", "split right across", "split from top to bottom", "roof's coming in", "roof is coming in", "ceiling's coming in", "ceiling is coming in", "coming off in chunks", "coming away in chunks", "falling off in chunks", "in chunks", "breaking up", "is breaking up", "coming adrift", "come adrift", "broken adrift", "peeling off", "coming off in slabs", "coming away in slabs", "roof fall on", "roof fall in", "roof has split", "roof split", "is bending", "it's bending", "is fall down", "has fall down", "fallen down"],
-    "water": ["getting swamped", "cars are floating", "cars are floating in it", "tents are floating", "standing in water", "stood in water", "standing in floodwater", "water through all the", "water through the front door", "water through the front doors", "water through the doors", "boiling over", "boiled over", "water is running across", "water running across", "water is lapping", "water lapping", "lapping the", "over the towpath", "across the towpath", "gates burst", "gates have burst", "gate burst", "gate has burst", "pouring over", "topped its bank", "topped its banks", "topped the bank", "topped the banks", "gone over the bank", "gone over its bank", "gone over the south bank", "gone over the north bank", "gone over the east bank", "gone over the west bank", "metre deep", "metres deep", "meter deep", "a metre of water", "metre of water", "full to the top", "full to the brim", "water all the way round", "water is all the way round", "water all round", "water is all round", "water right round", "water is right round", "tide's coming straight through", "tide's coming through", "tide coming through", "sea's coming through", "one sheet of water", "a sheet of water", "sheet of water", "washing out", "washing away", "logs floating", "floating away", "floating off the floor", "floating about", "floating around",
+    "water": ["lifting off their stands", "lifted off their stands", "off their stands", "floating off", "floated off",
+              "getting swamped", "cars are floating", "cars are floating in it", "tents are floating", "standing in water", "stood in water", "standing in floodwater", "water through all the", "water through the front door", "water through the front doors", "water through the doors", "boiling over", "boiled over", "water is running across", "water running across", "water is lapping", "water lapping", "lapping the", "over the towpath", "across the towpath", "gates burst", "gates have burst", "gate burst", "gate has burst", "pouring over", "topped its bank", "topped its banks", "topped the bank", "topped the banks", "gone over the bank", "gone over its bank", "gone over the south bank", "gone over the north bank", "gone over the east bank", "gone over the west bank", "metre deep", "metres deep", "meter deep", "a metre of water", "metre of water", "full to the top", "full to the brim", "water all the way round", "water is all the way round", "water all round", "water is all round", "water right round", "water is right round", "tide's coming straight through", "tide's coming through", "tide coming through", "sea's coming through", "one sheet of water", "a sheet of water", "sheet of water", "washing out", "washing away", "logs floating", "floating away", "floating off the floor", "floating about", "floating around",
               "furniture floating", "chairs floating", "cars floating",
               "water coming through", "water's coming through", "water is coming through", "seeping through the walls",
               "water at the front door", "water at the door", "water's at the door", "water's at the front door",
@@ -1468,7 +1479,9 @@ DANGER_KIND_EXTRA: dict[str, list[str]] = {
               "water coming through the roof", "ceiling's leaking", "ceiling is leaking", "water pouring through"],
     "access": ["rocks across", "rocks across it", "rocks across the road", "debris across", "debris right across", "fallen oak", "fallen beech", "fallen ash", "fallen branch", "fallen branches"],
     "ground": ["scree moving", "scree is moving", "ground is moving", "ground moving", "slope is moving", "hillside is moving", "rocks are coming off", "rocks are coming down", "rocks are falling", "dropping rocks", "rocks dropping", "dropping stones", "has sunk", "have sunk", "its sunk", "ground dropped", "ground has dropped", "ground dropping", "ground is dropping", "ground gone", "ground has gone", "ground just gone", "floor dropped", "floor has dropped", "hole opened up", "hole has opened up", "hole just opened up", "floor has opened", "floor's opened", "sinkhole", "sink hole", "ash a foot deep", "ash is knee deep", "ash knee deep", "ash's knee deep", "ash is ankle deep", "a foot of ash", "feet of ash", "inches of ash", "deep in ash", "covered in ash", "heaped with ash", "buried in ash", "under the ash", "drifts of ash", "ash drifts", "half buried", "half-buried", "slurry", "full of slurry", "sludge", "silt", "full of silt"],
-    "fallen": ["branch through the roof", "branch through its roof", "branches through the roof", "limb through the roof",
+    "fallen": ["taken the top off", "took the top off", "knocked the top off", "blown the top off", "blew the top off",
+               "stonework through", "masonry through", "through the glass roof", "debris through the roof",
+               "rubble through the roof", "branch through the roof", "branch through its roof", "branches through the roof", "limb through the roof",
                "tree through its roof", "trees through the roof", "hole in the roof", "holes in the roof", "hole in its roof", "hole in the wall", "lost a parapet", "lost its parapet", "lost the parapet", "lost a wall", "lost its wall", "lost a gable", "lost its gable"],
 }
 
@@ -1488,6 +1501,16 @@ MEASURE_UNITS = frozenset({"foot", "feet", "metre", "metres", "meter", "meters",
 # (not "yard": "the place that shares a yard with the hut")
 # Prepositions of place that PREPOSITIONS leaves out ("the heap above the pit the slurry pond spills into")
 PLACE_PREPOSITIONS = frozenset({"above", "below", "beneath", "underneath", "beyond", "opposite", "onto", "off"})
+# Words of danger that name no kind of it ("it's getting dangerous")
+GENERIC_DANGER_WORDS = frozenset({"danger", "dangerous", "dangerously", "unsafe", "hazard", "hazardous", "hazards",
+                                  "threat", "risk", "risky", "getting"})
+# Animals, where a KB gives them a category of their own ("bullocks stuck in the cattle lines")
+ANIMAL_WORDS = frozenset({"sheep", "ewe", "ewes", "lamb", "lambs", "tup", "tups", "ram", "rams", "cow", "cows", "cattle", "bullock", "bullocks", "heifer", "heifers", "calf", "calves", "bull", "bulls", "steer", "steers", "beast", "beasts", "stock", "livestock", "horse", "horses", "pony", "ponies", "foal", "pig", "pigs", "sow", "sows", "goat", "goats", "dog", "dogs", "animal", "animals", "hens", "chickens"})
+# What animals in trouble are said to be ("a bullock loose", "ewes swimming"), for a KB with a category for them
+ANIMAL_TROUBLE = ("loose", "on the loose", "got loose", "got out", "escaped", "swimming", "stranded", "trapped", "stuck",
+                  "down", "cast", "in the water", "washed away", "drowning", "panicking")
+# Verbs of bringing people ("anyone you bring up from the river end": where they come from, no claim)
+BRING_VERBS = frozenset({"bring", "brought", "bringing", "fetch", "fetched", "fetching", "carry", "carried", "carrying"})
 # What a crew does to a place ("we've shut the gallopers down"): said of the place, it claims nothing of it
 CREW_ACTION_VERBS = frozenset({"shut", "closed", "evacuated", "emptied", "cleared", "cordoned", "taped", "sealed",
                                "locked", "stopped", "searched", "checked", "swept"})
