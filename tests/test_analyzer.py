@@ -3926,6 +3926,12 @@ def test_dev70_phenomena(kb_analyzers, kb, text, expected):
     ("cattle_market_town", "the ring has a bullock loose in it, and a steward's pinned against the rails",
      [("auction ring", "beasts_in_trouble"), ("auction ring", "folk_in_trouble")]),
     ("cattle_market_town", "a farmer is stuck in the cattle lines", [("cattle pens", "folk_in_trouble")]),
+    # the relation after a place said in its sentence still says where that place is
+    ("wine_estate", "Flare-up on the black hill again, right above the frog pool.", [("pine ridge", "fire_front")]),
+    # "Same for X": what the sentence before said
+    ("lock_flight", "Ma Baxter's is taking in families, kettle's on, it sits well above the water. Same for St "
+                    "Bartholomew's, the vicar has opened the doors for anyone who needs a roof.",
+     [("bottom lock cottage", "high_and_dry"), ("st bartholomew's church", "high_and_dry")]),
 ])
 def test_dev74_phenomena(kb_analyzers, kb, text, expected):
     assert claims(kb_analyzers[kb], text) == expected

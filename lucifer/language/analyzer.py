@@ -3551,7 +3551,13 @@ class ReportAnalyzer:
                 cue_end -= 1  # "our casualty's actually round the back of the hardware store"
             if cue_end < head_end and cue_end > 0 and self._is_cue_end(norms, cue_end):
                 words = []
-            bare = norms[a + 1:b] if b - a >= 2 and norms[a] in lx.RELATION_ADVERBS else norms[a:b]
+            s0 = a
+            while s0 > 0 and not toks.sentence_start[s0]:
+                s0 -= 1
+            appositive = toks.clause_start[a] and any(s0 <= q.start_tok and q.end_tok <= a for q in ex.places)
+            bare = norms[a + 1:b] if b - a >= 2 and norms[a] in lx.RELATION_ADVERBS and not appositive else norms[a:b]
+            # ("a runner down right under the finish arch", "it's right under the snake bridge now"; not "flare-up on
+            # the black hill, right above the frog pool": a phrase of its own that says where the place before it is)
             if bare in lx.AMBIGUOUS_HEADLESS or (words and not self._is_cue_end(norms, head_end) and not participle
                                                        and not set(words) <= lx.HEADLESS_OK
                                                        and words[-1] not in lx.LAY_PERSONS | {"folk", "folks"}):
@@ -7799,6 +7805,16 @@ class ReportAnalyzer:
 
         # 2b/4. places without a cue: inherit from the place they replaced, else borrow from a list
         for p in sorted(active, key=lambda p: p.start_tok):
+            n = sentence_of[p.start_tok]
+            lead = [w for i, w in enumerate(norms[:p.start_tok]) if sentence_of[i] == n
+                    and w not in lx.FILLERS and w not in lx.DETERMINERS]
+            if n > 0 and lead in (["same", "for"], ["same", "with"], ["same", "goes", "for"], ["and", "same", "for"]):
+                # "Ma Baxter's is taking in families, ... Same for St Bartholomew's": what the sentence before says
+                said = {c.cue.category: c.cue for c in pairs if sentence_of[c.place.start_tok] == n - 1
+                        and c.cue.polarity == "affirmed" and c.place.landmark != p.landmark}
+                pairs.extend(Claim(p, c) for c in said.values())
+                claimed_places.add(p.start_tok)
+                continue
             if p.start_tok in floated:
                 # "water coming in at the school and at the terrace across the lane from it, and the old lady at the
                 # far end of that terrace needs lifting out": a later sentence's word, and the list's as well
