@@ -283,7 +283,7 @@ class ReportAnalyzer:
             key = norm_phrase(phrase)
             kind = self._danger_kind_by_words.get(key)
             votes = self._kind_votes(kind, cats) if kind in lx.DANGER_KINDS and not any(
-                f" {' '.join(key)} " in f" {' '.join(norm_phrase(c.description))} " for c in cats) else None
+                f" {' '.join(key)} " in self._description_text(c.description) for c in cats) else None
             # (not where a description says the very phrase: "tanks at risk of boiling over")
             if votes is not None and len(votes) > 1 and max(votes) >= sorted(votes)[-2] + 2:
                 return cats[votes.index(max(votes))].name
@@ -310,6 +310,12 @@ class ReportAnalyzer:
                        for kind, phrases in kinds.items() for p in phrases}
     _danger_kind_by_words = {norm_phrase(p): kind for kinds in (lx.DANGER_KINDS, lx.DANGER_KIND_EXTRA)
                              for kind, phrases in kinds.items() for p in phrases}
+
+    @staticmethod
+    @functools.lru_cache(maxsize=256)
+    def _description_text(description: str) -> str:
+        """A category description as normalised words, space-padded, to find a phrase in it."""
+        return f" {' '.join(norm_phrase(description))} "
 
     def _kind_votes(self, kind: str, cats: list[Category]) -> list[int]:
         """For each category, how many of its description's words the kind's words name (stems; no function
@@ -1869,7 +1875,7 @@ class ReportAnalyzer:
                                      and norms[nxt] in self._description_words()[self._first_words[w]]) \
                     and not toks.clause_start[nxt] \
                     and norms[i - 1] in lx.ARTICLES - {"a", "an"} and nxt not in taken \
-                    and not any(norm_phrase(t.term) == (w, norms[nxt]) for t in self.kb.glossary) \
+                    and (w, norms[nxt]) not in self._glossary_keys \
                     and (after >= len(norms) or toks.clause_start[after] or norms[after] in lx.COPULAS
                          or norms[after] in lx.PERSON_SUBJECTS | lx.COORDINATORS | {"theres", "there"}) \
                     and not (after < len(norms) and self._relations.match_at(norms, after) is not None):
@@ -2649,7 +2655,7 @@ class ReportAnalyzer:
         named = sorted((p for p in ex.places if p.status == "active" and p.via is None), key=lambda p: p.start_tok)
         for first, second in zip(named, named[1:], strict=False):
             between = norms[first.end_tok:second.start_tok]
-            if between not in (("the",),) or toks.clause_start[second.start_tok - 1] or second.end_tok >= len(norms):
+            if between != ("the",) or toks.clause_start[second.start_tok - 1] or second.end_tok >= len(norms):
                 continue
             verb = norms[second.end_tok]
             rels = [r for r in self.kb.relations if r.subject == second.landmark and r.object == first.landmark]
@@ -3298,7 +3304,7 @@ class ReportAnalyzer:
             last = max(before, key=lambda p: p.end_tok)
             if any(q.end_tok > last.end_tok and q.start_tok < k for q in ex.places if q is not last):
                 continue  # (another place said between: which one "its" means is not sure)
-            out.append(self._mention(toks, k, k + 1, last.landmark, status="reference", reason="modifier of 'its'"))
+            out.append(self._mention(toks, k, k + 1, last.landmark, status="reference", reason=f"modifier of '{raw}'"))
         return out
 
     @staticmethod
@@ -6183,6 +6189,11 @@ class ReportAnalyzer:
             if last is not None and last.category != c.category:
                 out[i] = replace(c, category=last.category, reason="spreads the danger said before it")
         return out
+
+    @functools.cached_property
+    def _glossary_keys(self) -> frozenset[tuple[str, ...]]:
+        """The KB's glossary terms as word keys."""
+        return frozenset(norm_phrase(t.term) for t in self.kb.glossary)
 
     @functools.cached_property
     def _animal_category(self) -> str | None:

@@ -1080,7 +1080,7 @@ DANGER_KINDS: dict[str, list[str]] = {
     "crowd": ["crowd crush", "crowd surge", "surge at", "surge in", "surging", "crammed", "packed solid", "pressed flat",
               "pressed against", "pushed up against", "crushing", "pile-up", "pile up", "overcrowded", "stampede",
               "people pushing", "everyone pushing", "crushed against", "being crushed against", "crush in there",
-              "it's a crush", "a crush at", "a crush on", "a crush by", "got a crush", "crush at the", "a surge",
+              "it's a crush", "a crush at", "a crush on", "a crush by", "crush at the", "a surge",
               "people shoving", "shoving", "jammed solid", "jammed on the", "people jammed", "going over the tables",
               "climbing the fences", "climbing over the barriers", "crowd pressure"],
     "fire": ["has caught", "s caught", "caught fire", "caught light", "fire", "fires", "on fire", "getting very hot", "getting hot", "red hot", "glowing red", "heavy heat", "burning", "burnt", "burned", "burned out", "burnt out", "blaze", "blazing",
