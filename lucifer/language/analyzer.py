@@ -2619,6 +2619,11 @@ class ReportAnalyzer:
                 ex.places.append(self._mention(toks, p.start_tok, end, target, via=via))
                 break
 
+    @functools.cached_property
+    def _relation_words(self) -> dict[str, frozenset[str]]:
+        """Each KB relation name's words, normalised."""
+        return {rel.phrase: frozenset(norm_phrase(rel.phrase)) for rel in self.kb.relations}
+
     def _agreeing_clauses(self, ex: Extraction, toks: Tokens, norms: tuple[str, ...]) -> None:
         """"the stack that takes the smoke off the kiln is leaning": a named place, then "that" and a clause that says
         one of its own KB relations (two or more of the relation's content words, "smoke" and "off" of `draws the smoke
@@ -2636,9 +2641,8 @@ class ReportAnalyzer:
             for rel in self.kb.relations:
                 if p.landmark not in (rel.subject, rel.object):
                     continue
-                words = {w for w in norm_phrase(rel.phrase) if w not in lx.ARTICLES}
-                content = {w for w in words if w not in lx.FUNCTION_WORDS}
-                if len(said & words) < 2 or not said & content:
+                words = self._relation_words[rel.phrase] - lx.ARTICLES
+                if len(said & words) < 2 or not said & words - lx.FUNCTION_WORDS:
                     continue
                 ex.relation_tokens.update(range(k, e))
                 other = rel.object if rel.subject == p.landmark else rel.subject
@@ -2663,7 +2667,7 @@ class ReportAnalyzer:
                     or verb in ("has", "have", "had", "got") or not verb.isalpha():
                 continue
             if self._cues.match_at(norms, second.end_tok) is None or any(
-                    verb in norm_phrase(r.phrase) for r in rels):  # ("the channel the old lido spills into")
+                    verb in self._relation_words[r.phrase] for r in rels):  # ("the channel the old lido spills into")
                 ex.relation_tokens.add(second.end_tok)  # (the relation's verb, no cue: "spills" is no chemical spill)
                 idx = ex.places.index(second)
                 ex.places[idx] = replace(second, status="reference",
@@ -5449,6 +5453,11 @@ class ReportAnalyzer:
         return any(re.search(r"\bdry\b", c.description.lower()) for c in self.kb.categories)
 
     @functools.cached_property
+    def _flooded_category(self) -> str | None:
+        """The undesirable category a place "flooded, under water" reads as in this KB (fixed by the KB)."""
+        return self._category_for_role(lx.UNDESIRABLE, "flooded, under water")
+
+    @functools.cached_property
     def _under_water_category(self) -> str | None:
         """The category the vocabulary gives "under water" in this KB (None where it reads as no claim)."""
         hit = self._cues.match_at(("under", "water"), 0)
@@ -5702,15 +5711,23 @@ class ReportAnalyzer:
             if norms[a] in ("come", "came", "coming") and norms[b:b + 1] == ("from",) and any(
                     norms[j] in lx.MOVING_PEOPLE for j in range(max(0, a - 4), a)):
                 continue  # "forty of us who came down from the campsite": people moving, nothing fallen
-            if cue.category == self._person_category and norms[a:b] in (("gone", "under"), ("going", "under"),
-                                                                         ("went", "under")) \
-                    and any(i in self._place_tokens or norms[i] in lx.PREMISES_PARTS | lx.STRUCTURE_WORDS
-                            or norms[i] in lx.DESCRIPTION_HEADS - {"one"} for i in range(max(0, a - 3), a)) \
-                    and not any(norms[i] in lx.PERSON_SUBJECTS or norms[i] in _PERSON_WORDS for i in range(max(0, a - 3), a)):
-                # (or a place's own thing said as a noun: "the yard's gone under")
-                und = self._category_for_role(lx.UNDESIRABLE, "flooded, under water")
-                if und is not None:  # "whatever the Fleece looks out over has gone under": the place, flooded
-                    cue = replace(cue, category=und, reason="a place gone under")
+            if norms[a:b] in (("gone", "under"), ("going", "under"), ("went", "under")) \
+                    and self.kb.category_by_name[cue.category].role == Role.CRITICAL:
+                near = range(max(0, a - 3), a)
+                # a place (or a place's own thing said as a noun: "the yard's gone under") before it, and no person
+                thing_near = cue.category == self._person_category and any(
+                    i in self._place_tokens or norms[i] in lx.PREMISES_PARTS | lx.STRUCTURE_WORDS
+                    or norms[i] in lx.DESCRIPTION_HEADS - {"one"} for i in near) \
+                    and not any(norms[i] in lx.PERSON_SUBJECTS or norms[i] in _PERSON_WORDS for i in near)
+                # or its subject is no person ("wherever the bridge comes down on the south bank has gone under")
+                j = _subject_before(norms, a, ("has", "have", "s", "is", "was", "just", "now", "completely", "all",
+                                               "totally"))
+                thing_subject = j >= 0 and norms[j] not in _PERSON_WORDS | lx.LAY_PERSONS | lx.WORKER_PERSONS \
+                    | lx.PERSON_SUBJECTS | {"someone", "somebody", "he", "she", "they", "who", "i", "we", "hes", "shes",
+                                            "theyve", "whos"}
+                if (thing_near or thing_subject) and self._flooded_category is not None:
+                    # "whatever the Fleece looks out over has gone under": the place, flooded
+                    cue = replace(cue, category=self._flooded_category, reason="a place gone under")
             if cue.category == self._person_category and norms[a] == "in" and any(
                     norms[j] in ("it", "its") for j in range(max(0, a - 3), a)) \
                     and not any(norms[j] in lx.PERSON_SUBJECTS for j in range(max(0, a - 3), a)):
@@ -5732,22 +5749,8 @@ class ReportAnalyzer:
                     c.end_tok in (a, a - 1) and c.polarity == "affirmed" for c in cues) and (
                     cues and cues[-1].end_tok == a or a >= 1 and norms[a - 1] in ("is", "s", "now", "still")):
                 continue  # "Tanker leak spreading in the park": the leak's own verb, no other danger
-            if norms[a:b] in (("gone", "under"), ("went", "under"), ("going", "under")) \
-                    and self.kb.category_by_name[cue.category].role == Role.CRITICAL:
-                j = a - 1
-                while j >= 0 and (norms[j] in ("has", "have", "s", "is", "was", "just", "now", "completely", "all", "totally")
-                                  or norms[j] in lx.FILLERS):
-                    j -= 1
-                if j >= 0 and norms[j] not in _PERSON_WORDS | lx.LAY_PERSONS | lx.WORKER_PERSONS | lx.PERSON_SUBJECTS \
-                        | {"someone", "somebody", "he", "she", "they", "who", "i", "we", "hes", "shes", "theyve", "whos"}:
-                    und = self._category_for_role(lx.UNDESIRABLE, "flooded, under water")
-                    if und is not None:
-                        cue = replace(cue, category=und, reason="a place gone under: flooded")
-                        # ("wherever the bridge comes down on the south bank has gone under": the place, not a person)
             if norms[a:b] == ("missing",) and cue.category == self._person_category:
-                j = a - 1
-                while j >= 0 and (norms[j] in ("are", "is", "s", "were", "was", "all", "now", "just") or norms[j] in lx.FILLERS):
-                    j -= 1
+                j = _subject_before(norms, a, ("are", "is", "s", "were", "was", "all", "now", "just"))
                 if j >= 0 and norms[j] in lx.MISSING_PARTS:
                     und = self._category_for_role(lx.UNDESIRABLE, "damaged, broken, torn off")
                     if und is None:
@@ -5755,10 +5758,7 @@ class ReportAnalyzer:
                     cue = replace(cue, category=und, reason="parts of it missing: damage, no person")
                     # ("two deck panels are missing": torn away, nobody lost)
             if norms[a:b] == ("stuck",) and cue.category == self._person_category:
-                j = a - 1
-                while j >= 0 and (norms[j] in ("is", "s", "was", "got", "gets", "has", "been", "just", "now", "completely")
-                                  or norms[j] in lx.FILLERS):
-                    j -= 1
+                j = _subject_before(norms, a, ("is", "s", "was", "got", "gets", "has", "been", "just", "now", "completely"))
                 if j >= 0 and norms[j] in lx.THING_SUBJECTS - {"lift"}:
                     continue  # "my bus is stuck in a flash flood": a vehicle stuck, no person said to be
             if a >= 4 and norms[a - 1] == "in" and norms[a - 4:a - 2] in (("to", "his"), ("to", "her"), ("to", "their")) \
@@ -8730,6 +8730,15 @@ def _asks_if_true(words: tuple[str, ...], alone: bool = False) -> bool:
     if kept[-3:] not in checks:
         return False
     return not alone or all(w in ("is", "that", "it", "true", "right", "correct") for w in kept)
+
+
+def _subject_before(norms: tuple[str, ...], a: int, skip: tuple[str, ...]) -> int:
+    """Where the word before token ``a`` stands, past the ``skip`` words (auxiliaries, adverbs) and fillers: the
+    subject of the cue at ``a`` ("the bus is just stuck": "bus"); -1 if none."""
+    j = a - 1
+    while j >= 0 and (norms[j] in skip or norms[j] in lx.FILLERS):
+        j -= 1
+    return j
 
 
 def _anchored_at(q: PlaceMention, landmark: str) -> bool:

@@ -191,7 +191,7 @@ woman gone down|man gone down|bloke gone down|someone gone down|somebody gone do
 feeling sick|taken ill|been taken ill|can't manage the stairs|cannot manage the stairs|carry chair|with cuts|cuts from|cuts to his|cuts to her|cuts to their|cuts and bruises|nasty cuts|bad cuts|with a cut|
 scalded|scalds|scalding burns|badly scalded|with scalds|
 trapped|trapped inside|stuck|stuck inside|pinned|pinned down|buried|injured|injuries|injury|hurt|
-wounded|bleeding|unconscious|unresponsive|not breathing|not moving|cardiac arrest|cardiac|a cardiac thing|heart thing|need the ambulance|needs the ambulance|need an ambulance|broken leg|broken arm|
+wounded|bleeding|unconscious|unresponsive|not breathing|not moving|cardiac arrest|cardiac|a cardiac thing|heart thing|need the ambulance|needs the ambulance|broken leg|broken arm|
 casualty|casualties|victim|victims|survivor|survivors|patient|patients|
 needs help|need help|needs rescue|need rescue|needs rescuing|need rescuing|calling for help|crying for help|
 cries for help|screaming|shouting for help|banging|knocking|someone inside|people inside|person inside|
@@ -1170,8 +1170,8 @@ DANGER_KINDS: dict[str, list[str]] = {
               "water's come up", "water has come up", "water's come in", "water has come in", "river's come up", "river has come up", "river came up", "river's up", "river's risen", "river has risen",
               "flood", "floods", "flooded", "flooding", "underwater", "under water", "water rising", "rising water",
               "submerged", "knee deep", "waist deep", "chest deep", "ankle deep", "water's up", "water up to",
-              "up to the windowsills", "overtopping", "burst its banks", "over its banks", "come over its banks", "came over its banks", "coming over its banks",
-              "over the banks", "over the bank", "come over the top", "burst the banks", "broken its banks", "waterlogged", "water logged", "flooded out",
+              "up to the windowsills", "overtopping", "burst its banks", "come over its banks", "came over its banks", "coming over its banks",
+              "over the bank", "come over the top", "burst the banks", "waterlogged", "water logged", "flooded out",
               "water everywhere", "water coming over", "taking on water", "taking water", "foot of water",
               "feet of water", "under a foot of water", "water coming up", "water coming in", "water's coming in",
               "coming in under the door", "coming in under the doors", "coming under the door", "coming under the doors", "washed away", "water coming into",
