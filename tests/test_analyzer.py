@@ -3935,3 +3935,114 @@ def test_dev70_phenomena(kb_analyzers, kb, text, expected):
 ])
 def test_dev74_phenomena(kb_analyzers, kb, text, expected):
     assert claims(kb_analyzers[kb], text) == expected
+
+
+@pytest.mark.parametrize("kb,text,expected", [
+    # dev76: "sorry meant"/"meant to say" repair; transcribed spellings meet the written ones
+    ("clifftop_park", "gas smell really strong in the clubhouse. sorry meant the shower block",
+     [("shower block", "spark_and_reek")]),
+    ("knowledge_base", "fire in the bakerie the back of it all flames", [("bakery", "hazard")]),
+    ("knowledge_base", "the polis station is on fire", [("police station", "hazard")]),
+    ("knowledge_base", "smoke at the farmacy", [("pharmacy", "hazard")]),
+    # a relation name "is built against" is a "built against" relation ("stuck onto the side of")
+    ("botanic_garden", "Control, Security One: the lean-to stuck onto the side of the cool house has lost all its glass.",
+     [("orchid house", "shattered_or_flooded")]),
+    # a named place's own relation said in its "that"/"where" clause with one of the relation's words: the other end
+    # is a reference point
+    ("botanic_garden", "The pump shed that sends water up to the waterfall is flooded.",
+     [("pump house", "shattered_or_flooded")]),
+    ("botanic_garden", "The shed where they pump water up to the top of the waterfall is flooded to the sockets.",
+     [("pump house", "shattered_or_flooded")]),
+    # a search for a word said aloud is a hesitation; a repair runs on past it
+    ("botanic_garden", "there's a lady collapsed at the main gate — no, in the, what's it, the building just inside it... "
+                       "yeah, that one, by the shop", [("visitor centre", "person_in_need")]),
+    ("botanic_garden", "there's a lady collapsed at the main gate — no, in the, um, the building just inside it",
+     [("visitor centre", "person_in_need")]),
+    # vocabulary: "taken a hit", a tree through a roof or an arbour, trees lost, "blocking" as a way blocked
+    ("botanic_garden", "the canopy walk has taken a hit too, decking's hanging off one span.",
+     [("treetop walkway", "shattered_or_flooded")]),
+    ("botanic_garden", "A tree's come straight through our roof at the curator's house",
+     [("head gardener's cottage", "shattered_or_flooded")]),
+    ("botanic_garden", "rose garden's got a, a tree through the arbour", [("rose garden", "shattered_or_flooded")]),
+    ("botanic_garden", "the island itself has lost three trees", [("heron island", "shattered_or_flooded")]),
+    # a satnav sends nobody anywhere safe; a preposition with its own pronoun object heads no description
+    ("botanic_garden", "we're on scene round the back of the depot, the satnav sent us to the lodge gate. Hot heap at "
+                       "the compost bays", [("compost bays", "burning_or_fuming")]),
+    ("botanic_garden", "uh security two the the turnstiles got a a tree on them the lodge gate is is blocked and smashed "
+                       "and uh theres a fella with a cut head there too over",
+     [("main gate", "person_in_need"), ("main gate", "shattered_or_flooded")]),
+    # a lower-case call sign after the station called; "leaking gas" is the gas category's
+    ("recycling_depot", "uh yeah control er fire two we're we're just er passing the pump house now heading down to the "
+                        "lagoon... over", []),
+    ("recycling_depot", "uh it's not the engines it's the, the flare, the flare stack's leaking gas at the base, you can "
+                        "smell it right across from the mess room", [("gas flare stack", "burning_or_gassing")]),
+    # a glossary "liner tear" / "bund failure" said as a clause
+    ("recycling_depot", "the liner's torn on the lagoon", [("leachate lagoon", "breach_or_slump")]),
+    ("recycling_depot", "the bund has failed on the tank beside the workshop", [("diesel tank", "breach_or_slump")]),
+    # counted things are no slip of a name; a pronoun waits for the description its place is the anchor of
+    ("recycling_depot", "Drone op, I've a hot spot in the yard behind the shed built onto the tipping hall, looks about "
+                        "three bales deep.", [("bale stack yard", "burning_or_gassing")]),
+    ("recycling_depot", "We've got a casualty in the yard round the back of the baler, lad's been clipped by a bale clamp, "
+                        "he's down. Over.", [("bale stack yard", "person_in_trouble")]),
+    ("recycling_depot", "The tank standing over the baler shed has split down a seam, water everywhere, and the shed "
+                        "underneath it is flooding. Over.",
+     [("baler shed", "breach_or_slump"), ("fire water tank", "breach_or_slump")]),
+    # "<role> from <place>." alone is who calls
+    ("recycling_depot", "Fitter from the workshop. Bund failure on the red diesel.", [("diesel tank", "breach_or_slump")]),
+    # harmless after a plain "no"; "get someone on it"; a name after opening fillers
+    ("smokehouse_harbour", "Smoke — no — it's steam, sorry, steam off the ice plant, that's normal — but the gut shed, "
+                           "that's proper smoke, that's a fire, get someone on it", [("gutting shed", "blaze_and_fumes")]),
+    ("smokehouse_harbour", "okay so um top car park's — that's the RVP, yeah? — top car park is the R, the RVP for the "
+                           "ambulances, and er, and the mission's a rest centre as well",
+     [("fishermen's mission", "safe_haven"), ("harbour car park", "safe_haven")]),
+    # what it gives the anchor is part of a description; "that place" waits for the description it means
+    ("smokehouse_harbour", "Ammonia leak from the place that feeds the auction hall its ice. And the block that's built "
+                           "up against that place has two people trapped inside, freezer door's jammed.",
+     [("cold store", "crew_in_peril"), ("ice plant", "blaze_and_fumes")]),
+    # the anchor said again in an aside; an adjective in an inverse description's head
+    ("smokehouse_harbour", "Fire! The pontoon tied off the pier — you know, the pier the lifeboat house sits at the "
+                           "landward end of — it's well alight, the diesel's going up.", [("fuel berth", "blaze_and_fumes")]),
+    ("smokehouse_harbour", "uh coastguard, lifeboat two, man in the water, out in the open water the lifeboat slip drops "
+                           "into, he's drifting east, we're on him now", [("outer harbour", "crew_in_peril")]),
+    # "X reporting," with no other place told of: the news is its own
+    ("smokehouse_harbour", "Pascoe's yard reporting, two boats blown off their cradles, one of them's stove in. We've also "
+                           "got a lad with a crush injury, he was under the hull when it went over.",
+     [("boatyard", "crew_in_peril"), ("boatyard", "sea_damage")]),
+    # dev77: "evac" is an evacuation ("chair evac needed" revokes nobody); a gas supply isolated leaves the fire
+    ("bike_park", "we've got people stuck up on the chair, er, chair evac needed", [("chairlift", "rider_down")]),
+    ("bike_park", "Fat fire in the kitchen of the building in front of the bike wash, everyone's out, gas is isolated.",
+     [("trail centre cafe", "burning_ground")]),
+    ("bike_park", "gas leak at the cafe, gas is isolated now", []),
+    # who calls: "X to control." and "control X er we have ..."
+    ("bike_park", "Marshal hut to control. Chair evac in progress, about fifteen riders stuck on the chairlift. The hire "
+                  "shop is safe and open as a warm room for them once they're down.",
+     [("chairlift", "rider_down"), ("hire shop", "safe_staging")]),
+    ("bike_park", "control marshal hut er we have we have a casualty at the ford no not the ford the bike wash she "
+                  "slipped on the wet concrete", [("bike wash", "rider_down")]),
+    # "it" takes up the place said between, not where the speaker is; "that same track"
+    ("bike_park", "We're at the bike wash, and the stream it drains into is coming up fast, it's burst its banks right "
+                  "along here, keep people away from it.", [("cwm brook", "blocked_or_broken")]),
+    ("bike_park", "Fire Three: spot fire in the shed at the bottom of the forestry track, and a second one in the pile "
+                  "stacked up beside that same track.", [("plant shed", "burning_ground"), ("timber stack", "burning_ground")]),
+    ("bike_park", "Kid's gone into the quarry pond after a dog, we're pulling him out now. The car park the pond sits in "
+                  "the corner of is clear, ambulances can come straight in, that's the holding area.",
+     [("quarry car park", "safe_staging"), ("quarry pond", "rider_down")]),
+    # a name after "X:" before what the crew did; families coming off a place; "not the whole fair"
+    ("open_air_museum", "Fire crew Alpha: chapel searched, swept and clear, we're using it as a rally point for the "
+                        "families coming off the fair.", [("ebenezer chapel", "clear_for_visitors")]),
+    ("open_air_museum", "it's the carousel that's smoking, not the whole fair, just the, the horses",
+     [("steam gallopers", "fire_or_fumes")]),
+    # a word begun, then said whole
+    ("open_air_museum", "sm smoke in the in the sch school theres kids trapped in there still year six group",
+     [("board school", "fire_or_fumes"), ("board school", "person_in_need")]),
+    # "X manager here" is where the speaker is; a relation name's article may be another
+    ("open_air_museum", "Tea room manager here, the place we get our bread from is on fire, I can see flames from our "
+                        "window.", [("bakehouse", "fire_or_fumes")]),
+    ("open_air_museum", "Smoke's come through into the shop that shares the oven wall with the bakehouse, and a volunteer "
+                        "behind its counter is struggling to breathe.",
+     [("co-operative store", "fire_or_fumes"), ("co-operative store", "person_in_need")]),
+    ("open_air_museum", "the pond that supplies water to the forge — its bank is slumping, and a volunteer's gone in "
+                        "after a dog and is struggling.", [("mill pond", "broken_or_flooded"), ("mill pond", "person_in_need")]),
+])
+def test_dev76_phenomena(kb_analyzers, kb, text, expected):
+    assert claims(kb_analyzers[kb], text) == expected

@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev75) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev77) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -125,6 +125,13 @@ TIN_MINE_COAST = ROOT / "knowledge_bases" / "tin_mine_coast"
 CITY_MARATHON = ROOT / "knowledge_bases" / "city_marathon"
 CATTLE_MARKET_TOWN = ROOT / "knowledge_bases" / "cattle_market_town"
 FILM_STUDIO_LOT = ROOT / "knowledge_bases" / "film_studio_lot"
+BOTANIC_GARDEN = ROOT / "knowledge_bases" / "botanic_garden"
+RECYCLING_DEPOT = ROOT / "knowledge_bases" / "recycling_depot"
+SMOKEHOUSE_HARBOUR = ROOT / "knowledge_bases" / "smokehouse_harbour"
+WIND_FARM_COAST = ROOT / "knowledge_bases" / "wind_farm_coast"
+OPEN_AIR_MUSEUM = ROOT / "knowledge_bases" / "open_air_museum"
+BIKE_PARK = ROOT / "knowledge_bases" / "bike_park"
+BEACH_PROMENADE = ROOT / "knowledge_bases" / "beach_promenade"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -401,6 +408,13 @@ SETS = {
     "dev75/city_marathon": _set("dev75/city_marathon.jsonl", CITY_MARATHON, "cm75", TWENTY, sep=""),
     "dev75/cattle_market_town": _set("dev75/cattle_market_town.jsonl", CATTLE_MARKET_TOWN, "ct75", TWENTY, sep=""),
     "dev75/film_studio_lot": _set("dev75/film_studio_lot.jsonl", FILM_STUDIO_LOT, "fs75", TWENTY, sep=""),
+    "dev76/botanic_garden": _set("dev76/botanic_garden.jsonl", BOTANIC_GARDEN, "bg76", TWENTY, sep=""),
+    "dev76/recycling_depot": _set("dev76/recycling_depot.jsonl", RECYCLING_DEPOT, "rd76", TWENTY, sep=""),
+    "dev76/smokehouse_harbour": _set("dev76/smokehouse_harbour.jsonl", SMOKEHOUSE_HARBOUR, "sh76", TWENTY, sep=""),
+    "dev76/wind_farm_coast": _set("dev76/wind_farm_coast.jsonl", WIND_FARM_COAST, "wf76", TWENTY, sep=""),
+    "dev77/open_air_museum": _set("dev77/open_air_museum.jsonl", OPEN_AIR_MUSEUM, "oa77", TWENTY, sep=""),
+    "dev77/bike_park": _set("dev77/bike_park.jsonl", BIKE_PARK, "bp77", TWENTY, sep=""),
+    "dev77/beach_promenade": _set("dev77/beach_promenade.jsonl", BEACH_PROMENADE, "bh77", TWENTY, sep=""),
 }
 
 

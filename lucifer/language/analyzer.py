@@ -146,6 +146,23 @@ def _one_edit(a: str, b: str) -> bool:
     return short[i:] == long_[i + 1:]
 
 
+_SOUND_SPELLINGS = (("ph", "f"), ("tion", "shun"), ("sion", "shun"), ("ck", "k"))
+_SOUND_ENDINGS = (("ce", "s"),)
+_HEARD_ENDINGS = (("ie", "y"), ("ey", "y"), ("ee", "y"))  # (a name's own "-ie" is the singular of "-ies": "gantries")
+
+
+def _sound_of(word: str, heard: bool = False) -> str:
+    """A word spelt as it sounds, so that transcribed spellings (``heard``) meet the written ones: "station" and
+    "stayshun" -> "stashun"/"stayshun" (one edit apart), "police" and "polis" -> "polis", "bakery" and
+    "bakerie" -> "bakery"."""
+    for a, b in _SOUND_SPELLINGS:
+        word = word.replace(a, b)
+    for a, b in _SOUND_ENDINGS + (_HEARD_ENDINGS if heard else ()):
+        if word.endswith(a) and len(word) > 3:
+            word = word[:-len(a)] + b
+    return word
+
+
 class ReportAnalyzer:
     """Builtin, LLM-free analysis of one report against one knowledge base."""
 
@@ -272,7 +289,7 @@ class ReportAnalyzer:
             return None
         # words the descriptions themselves use decide first ("flooding" -> "... floodwater pouring over ...")
         # (not the words for parts and motion: "coming down" is no "water coming through floors")
-        words = [w for w in norm_phrase(phrase) if len(w) >= 4 and w not in lx.DANGER_KIND_PARTS
+        words = [w for w in norm_phrase(phrase) if (len(w) >= 4 or w in lx.SHORT_DANGER_WORDS) and w not in lx.DANGER_KIND_PARTS
                  and w not in ("come", "came", "comes", "filling", "filled", "fill", "full")]
         # (nor "filling": filled with smoke or with water, it is what fills that says the kind)
         described = [self._affirmed_words(c.description) for c in cats]
@@ -363,13 +380,13 @@ class ReportAnalyzer:
                 ws = norm_phrase(re.sub(r"(?<=[a-z])-(?=[a-z])", "", part))
                 neg = next((i for i, w in enumerate(ws) if w in lx.NEGATORS), None)
                 if neg is None:
-                    out.update(w for w in ws if len(w) >= 4)
+                    out.update(w for w in ws if len(w) >= 4 or w in lx.SHORT_DANGER_WORDS)
                     continue
                 rel = next((i for i, w in enumerate(ws[:neg]) if w in ("where", "which", "when", "that")), None)
                 if rel is None:
                     break  # "Nothing is burning, smoke or fire": the negation runs on through the clause's list
                 # "water where it should not be, such as ...": only the relative clause is negated
-                out.update(w for w in ws[:rel] if len(w) >= 4)
+                out.update(w for w in ws[:rel] if len(w) >= 4 or w in lx.SHORT_DANGER_WORDS)
         return frozenset(out)
 
     def _build_cues(self) -> None:
@@ -426,7 +443,7 @@ class ReportAnalyzer:
         for term in self.kb.glossary:
             entries[norm_phrase(term.term)] = (term.category, "glossary")
         for term in self.kb.glossary:
-            for form in _verb_forms(term.term) + _determined_forms(term.term):
+            for form in _verb_forms(term.term) + _determined_forms(term.term) + _event_forms(term.term):
                 # "undercut": "the spate is undercutting its back wall"; "dropped plug": "she's dropped her plug"
                 entries.setdefault(norm_phrase(form), (term.category, "glossary"))
         for phrase in lx.NEUTRAL_PHRASES:
@@ -470,6 +487,11 @@ class ReportAnalyzer:
             bare = tuple(w for w in key if w != "the")
             if len(bare) >= 2 and bare != key:
                 forms.setdefault(bare, val)  # a log drops articles: "bldg over rd from community hall"
+            for n, w in enumerate(key[1:-3], start=1):  # (an article with a noun and a word after it: not "at its top")
+                if w in ("a", "an", "the", "its", "their"):
+                    for other in ("a", "an", "the", "its", "their"):
+                        # "shares the oven wall with" for `shares an oven wall with`
+                        forms.setdefault((*key[:n], other, *key[n + 1:]), val)
         for key, val in forms.items():
             self._relations.add(key, val)
 
@@ -724,13 +746,16 @@ class ReportAnalyzer:
                 continue  # "Control to Alpha one", "Oscar Two here": a call sign, not the spoken letter of a place
             prev = norms[a - 1] if a > 0 else ""
             k = a - 1
-            while k > 0 and a - k <= 2 and norms[k] in lx.NAME_ADJECTIVES and not toks.clause_start[k + 1]:
-                k -= 1  # "the big rusty dredger": the article before the adjectives
+            while k > 0 and a - k <= 2 and (norms[k] in lx.NAME_ADJECTIVES or norms[k] in lx.HESITATIONS) \
+                    and not toks.clause_start[k + 1]:
+                k -= 1  # "the big rusty dredger", "the sch school": the article before the adjectives or a word begun
             if k < a - 1 and norms[k] in lx.ARTICLES:
                 prev = norms[k]
             acronym = b == a + 1 and a > 0 and len(toks.tokens[a].text) >= 2 and toks.tokens[a].text.isupper()
             # (not the first word: "ECR to bridge" is who calls)
-            heading = (a == 0 or toks.sentence_start[a]) and b < len(norms) and toks.gaps[b].strip().startswith(":")
+            heading = (a == 0 or toks.sentence_start[a]) and b < len(norms) and (
+                toks.gaps[b].strip().startswith(":") or b + 1 < len(norms) and toks.gaps[b + 1].strip().startswith(":")
+                and norms[b] in lx.PART_NOUNS | lx.LOCATIVE_PARTS | {"steps", "step"})  # ("Cenotaph steps: ...")
             heading = heading or (a == 0 or toks.sentence_start[a]) and toks.tokens[a].text[:1].isupper() \
                 and norms[b:b + 1] == ("to",) and b + 1 < len(norms) and toks.tokens[b + 1].text[:1].isupper()
             # ("Wetsuit Shack to Lake Rescue.": a place calling by its name, the article left off as call signs do)
@@ -1355,13 +1380,19 @@ class ReportAnalyzer:
         contracted = toks.tokens[b - 1].text.lower().endswith(("'s", "’s"))  # "tower's clear"
         opens = toks.sentence_start[a] or a > 1 and toks.sentence_start[a - 2] and norms[a - 2].isdigit() \
             and norms[a - 1].isdigit() and ":" in toks.gaps[a - 1]  # ("23:09 fosse overtopping": a log's time first)
+        if not opens and a > 0 and ":" in toks.gaps[a]:
+            opens = True  # "Fire crew Alpha: chapel searched, swept and clear": the message after who calls
+        if not opens and a > 0:
+            s0 = max((t for t in range(a) if toks.sentence_start[t]), default=0)
+            # ("okay so um top car park's ...": fillers first)
+            opens = a - s0 <= 4 and all(norms[t] in lx.FILLERS | {"and", "but", "then"} for t in range(s0, a))
         if not opens or b >= len(norms) or (norms[a] in lx.DESCRIPTIVE_WORDS and not contracted):
             return False
         if not contracted and b + 1 < len(norms) and norms[b] in lx.STOREY_WORDS | lx.PART_NOUNS | lx.ROOMS_OF_A_BUILDING \
                 | {"kitchen", "kitchens"} and not toks.clause_start[b] \
                 and not toks.clause_start[b + 1]:
             b += 1  # "Gym roof's come down": the part of the place is the subject's head, the place said before it
-        return toks.clause_start[b] or norms[b] in lx.COPULAS \
+        return toks.clause_start[b] or norms[b] in lx.COPULAS | lx.CREW_ACTION_VERBS \
             or self._cues.match_at(norms, b) is not None \
             or (norms[b] in lx.TELEGRAPHIC_LINKS and (self._cues.match_at(norms, b + 1) is not None
                                                         or norms[b + 1:b + 2] == ("and",)  # "Sidings checked and clear"
@@ -2199,6 +2230,11 @@ class ReportAnalyzer:
                         and not any(norms[j] in closed for j in span) and any(
                             name_words(f) == (word,) for f in self.kb.landmark_by_name[self._spellings[word]].surface_forms):
                     typo = self._spellings[word]  # "the super market": a one-word name split in two
+                if typo is not None and i > 0 and norms[i - 1] in ("a", "an") and i + n < len(norms) \
+                        and not toks.clause_start[i + n] and norms[i + n] not in lx.FUNCTION_WORDS:
+                    typo = None  # "clipped by a bale clamp": a thing counted and named by what it is for, no "baler"
+                if typo is not None and n == 1 and i > 0 and (norms[i - 1] in lx.NUMBER_WORDS or is_number(norms[i - 1])):
+                    typo = None  # "about three bales deep": things counted, no slip of "the baler"
                 if typo is not None and not all(j in cue_tokens for j in span):
                     # ("the fire staytion": one slipped word keeps the name, a cue word in it or not)
                     if best is None or 0.99 > best[0]:
@@ -2239,7 +2275,9 @@ class ReportAnalyzer:
     def _respell(self, toks: Tokens) -> Tokens:
         """Typed and transcribed slips of the words descriptions are built from: "the bilding in frunt of
         the bus station", "the shop atached to it". A word that is no English word (not in MiniLM's
-        vocabulary) and one edit from exactly one relation or place-noun word is read as that word."""
+        vocabulary) and one edit from exactly one relation or place-noun word is read as that word. And a search
+        for a word said aloud ("in the, what's it called, the building ...") is a hesitation."""
+        toks = _searched_words(toks)
         if self.embedder is None:
             return toks
         if not hasattr(self, "_respellings"):
@@ -2305,11 +2343,17 @@ class ReportAnalyzer:
                 if key[0] == word[0] and abs(len(key) - len(word)) <= 1 and _one_edit(word, key)
                 and (raw is None or len(key) >= 5 or raw == word or _one_edit(raw, key))}
         if not hits:
-            # a transcribed sound: "farmacy" for "pharmacy", "fone" for "phone"
-            sound = word.replace("ph", "f")
-            hits = {name for key, name in self._typo_spellings.items()
-                    if len(key) >= 5 and "ph" in key and (k := key.replace("ph", "f"))[0] == sound[0]
-                    and abs(len(k) - len(sound)) <= 1 and (k == sound or _one_edit(sound, k))}
+            # a transcribed sound: "farmacy" for "pharmacy", "fire stayshun", "the polis station", "the bakerie"
+            if not hasattr(self, "_typo_sounds"):
+                self._typo_sounds = {("".join(_sound_of(w) for w in name_words(form)), "".join(name_words(form))): lm.name
+                                     for lm in self.kb.landmarks for form in lm.surface_forms
+                                     if len("".join(name_words(form))) >= 5 and "".join(name_words(form)).isalpha()}
+            sound = "".join(_sound_of(w, heard=True) for w in words)
+            hits = {name for (k, written), name in self._typo_sounds.items()
+                    if k[0] == sound[0] and abs(len(k) - len(sound)) <= 1 and (k == sound or _one_edit(sound, k))
+                    and written != word and not _one_edit(written, word)}
+            # (a name's own spelling, or one slip of it, is for the name finder and the rule above: "pillbox" for
+            # "the pillbox" keeps that name's need of its article)
         # (a short name is one letter from the stem of too many plurals: "sills" is no slip of "silo")
         return next(iter(hits)) if len(hits) == 1 else None
 
@@ -2629,12 +2673,17 @@ class ReportAnalyzer:
         one of its own KB relations (two or more of the relation's content words, "smoke" and "off" of `draws the smoke
         off`). The clause only says which place is meant: its words are no cues, and a place it names as the
         relation's other end is a reference point."""
-        for p in [q for q in ex.places if q.status == "active" and q.via is None]:
+        for p in [q for q in ex.places if q.status == "active" and (q.via is None or q.via.startswith("description of"))]:
             k = p.end_tok
-            if k + 2 >= len(norms) or norms[k] not in ("that", "which") or toks.clause_start[k] or toks.clause_start[k + 1]:
+            # ("the shed where they pump water up to the waterfall": a name read out of its own "where" clause)
+            inner = next((j for j in range(p.start_tok + 1, p.end_tok) if norms[j] in ("where", "that", "which")), None)
+            if inner is not None:
+                k = inner
+            elif k + 2 >= len(norms) or norms[k] not in ("that", "which", "where") or toks.clause_start[k] \
+                    or toks.clause_start[k + 1]:
                 continue
             e = k + 1
-            while e < len(norms) and e - k <= 8 and not toks.clause_start[e] and norms[e] not in lx.COPULAS - {"s"} \
+            while e < len(norms) and e - k <= 10 and not toks.clause_start[e] and norms[e] not in lx.COPULAS - {"s"} \
                     and norms[e] not in ("has", "have", "had"):
                 e += 1
             said = {w for w in norms[k + 1:e] if w not in lx.FUNCTION_WORDS | lx.ARTICLES}
@@ -2642,14 +2691,20 @@ class ReportAnalyzer:
                 if p.landmark not in (rel.subject, rel.object):
                     continue
                 words = self._relation_words[rel.phrase] - lx.ARTICLES
-                if len(said & words) < 2 or not said & words - lx.FUNCTION_WORDS:
-                    continue
-                ex.relation_tokens.update(range(k, e))
                 other = rel.object if rel.subject == p.landmark else rel.subject
-                for idx, q in enumerate(ex.places):
-                    if q.status == "active" and q.landmark == other and k < q.start_tok < e:
-                        ex.places[idx] = replace(q, status="reference",
-                                                 reason=f"reference point: {rel.subject} {rel.phrase} {rel.object}")
+                named = [idx for idx, q in enumerate(ex.places)
+                         if q.status == "active" and q.landmark == other and max(k, p.end_tok) <= q.start_tok < e]
+                if len(said & words) < 2 or not said & words - lx.FUNCTION_WORDS:
+                    # one word of the relation's own, where the clause names the relation's other end: "the pump shed
+                    # that sends water up to the waterfall" (``pipes water into``)
+                    if not named or not any(_same_stem(w, r) for w in said if len(w) >= 4
+                                            for r in words - lx.FUNCTION_WORDS - lx.RELATION_NAME_STOPWORDS if len(r) >= 4):
+                        continue
+                ex.relation_tokens.update(range(k, e))
+                for idx in named:
+                    q = ex.places[idx]
+                    ex.places[idx] = replace(q, status="reference",
+                                             reason=f"reference point: {rel.subject} {rel.phrase} {rel.object}")
                 break
 
     def _contact_clause_subjects(self, ex: Extraction, toks: Tokens, norms: tuple[str, ...]) -> None:
@@ -2711,12 +2766,15 @@ class ReportAnalyzer:
                 h += 1
             s0 = q.start_tok - 1 if q.start_tok > 0 and norms[q.start_tok - 1] in lx.ARTICLES else q.start_tok
             k = s0 - 1
-            while k > 0 and norms[k] in lx.FILLERS:
-                k -= 1
+            while k > 0 and (norms[k] in lx.FILLERS or norms[k - 1:k + 1] in (("you", "know"), ("i", "mean"))):
+                k -= 2 if norms[k] in ("know", "mean") and norms[k - 1] in ("you", "i") else 1
+            # ("the pontoon tied off the pier — you know, the pier the lifeboat house sits at the end of —")
             if k < 2 or not toks.clause_start[s0] or norms[k] != norms[h] or norms[k - 1] not in lx.ARTICLES \
                     or not (norms[k - 2] in lx.RELATION_ENDINGS or norms[k - 2] in ("under", "beneath", "below", "above")):
                 continue
-            if any(p.start_tok <= k < p.end_tok for p in ex.places):
+            if any(p.start_tok <= k < p.end_tok and not (p.status == "reference" and p.landmark == q.landmark)
+                   and not (p.via is not None and p.end_tok == k + 1 and p.via.endswith(f" {q.landmark}"))
+                   for p in ex.places):
                 continue  # (the word said before is a place of its own: its own rules)
             ex.places[idx] = replace(q, status="reference", reason=f"the anchor said again to say which: {q.via}")
         for idx, q in enumerate(ex.places):
@@ -3163,6 +3221,11 @@ class ReportAnalyzer:
                     # people down the kamikaze from": a clause with a subject of its own describes it)
                 if between[0] == "past":
                     continue  # "gritting the hill road past the caravan park": a way that goes by it, no relation
+                if set(between) & {"call", "calls", "called", "name", "names", "named", "know", "knows"}:
+                    continue  # "the one they call the cripple shed": the place named, not one related to it
+                if len(between) >= 2 and between[0] in lx.PREPOSITIONS and between[1] in ("them", "him", "us", "me"):
+                    continue  # "the turnstiles got a tree on them the lodge gate is blocked": the preposition's own object
+                    # (not "her", a possessive as often: "the building across the road from her cafe")
                 if between in (["into"], ["onto"]) and any(
                         norms[i] in lx.FALLEN_VERBS | {"jumped", "slipped", "thrown", "knocked"}
                         and not any(toks.clause_start[m] for m in range(i + 1, head + 1)) for i in range(max(0, head - 8), head)):
@@ -3190,6 +3253,14 @@ class ReportAnalyzer:
                 if not after or after[0] in lx.COPULAS | lx.PREPOSITIONS \
                         or not (verb or any(w.endswith("s") or w.endswith("ed") or w in lx.RELATION_ENDINGS for w in after)):
                     continue  # ("a tank wagon on the loading siding is leaking": the anchor's own predicate)
+            if between and end < len(norms) and norms[end] in ("its", "their") and not toks.clause_start[end]:
+                # "the place that feeds the auction hall its ice": what it gives the anchor is part of the description
+                e2 = end + 1
+                while e2 < len(norms) and e2 - end <= 3 and not toks.clause_start[e2] and norms[e2].isalpha() \
+                        and e2 not in blocked and norms[e2] not in lx.FUNCTION_WORDS:
+                    e2 += 1
+                if e2 > end + 1 and (e2 == len(norms) or toks.clause_start[e2]):
+                    end = e2
             outer = next((q for q in ex.places if q is not anchor and q.via is not None and q.status == "active"
                           and q.start_tok <= anchor.start_tok and anchor.end_tok <= q.end_tok), None)
             if outer is not None:
@@ -3246,7 +3317,7 @@ class ReportAnalyzer:
             pool = named or head_described or related
             target = None
             linking = [norms[i] for i in range(head + 1, end) if not anchor.start_tok <= i < anchor.end_tok
-                       and len(norms[i]) >= 4 and norms[i].isalpha() and norms[i] not in lx.FUNCTION_WORDS
+                       and (len(norms[i]) >= 4 or norms[i] in lx.SHORT_DANGER_WORDS) and norms[i].isalpha() and norms[i] not in lx.FUNCTION_WORDS
                        and norms[i] not in lx.DESCRIPTION_STOPWORDS]
             described = {n: sum(any(_same_stem(w, d) for d in self._description_words()[n]) for w in linking)
                          for n in pool} if len(pool) > 1 else {}
@@ -3984,8 +4055,18 @@ class ReportAnalyzer:
             # "smoke in the building behind the hardware store ... someone trapped in the shop in front of that
             # building": the place just spoken of
             before = [p for p in ex.places if p.end_tok <= b and p.status == "active"]
+            if len(before) == 1 and "and" in norms[before[0].end_tok:b] and self._relation_object(ex, norms, before[0]) \
+                    and not any(before[0].end_tok <= ma < b for ma, _, _ in ex.markers):
+                return None, b, False  # (the place spoken of is a description not read yet: it waits for it)
             if before:
                 return max(before, key=lambda p: p.end_tok), j + 1, True
+        if j > b and norms[j - 1] == "same" and j < len(norms) and norms[j].isalpha() \
+                and not any(ex.tokens.clause_start[t] for t in range(b, j + 1)):
+            # "a second one in the pile stacked up beside that same track": the place of that name said before
+            same = [p for p in ex.places if p.end_tok <= b and p.status != "retracted" and any(
+                name_words(f)[-1:] == (norms[j],) for f in self.kb.landmark_by_name[p.landmark].surface_forms)]
+            if same:
+                return max(same, key=lambda p: p.end_tok), j + 1, True
         its = its and j == b
         if j < len(norms) and (norms[j] in ("it", "them", "that", "there") + lx.SPEAKER_ANCHORS or its) \
                 and not ex.tokens.clause_start[j]:
@@ -4000,6 +4081,14 @@ class ReportAnalyzer:
             # "the park behind the warehouse. Across the street from it": the pronoun takes up the place
             # spoken of, not the reference point of its description
             before = [p for p in before if p.status != "reference"] or before
+            if len(before) == 1 and "and" in norms[before[0].end_tok:b] and self._relation_object(ex, norms, before[0]) \
+                    and not any(before[0].end_tok <= ma < b for ma, _, _ in ex.markers):
+                # "The tank standing over the baler shed has split, and the shed underneath it is flooding": a place
+                # said as another's reference point, that one not yet read, and a new clause on "and"; the pronoun
+                # waits for it (not in an aside, "the terraces above lavender row, the ones that step down to it", nor
+                # after a repair, whose "it" keeps the anchor: "the room under the exam hall — sorry, not under,
+                # across from it")
+                return None, b, False
             if norms[j] == "them":  # "the arches Del's gym is on the end of -- and the yard that backs onto them"
                 before = [p for p in before if p.text.lower().endswith("s")
                           and not p.text.lower().replace("’", "'").endswith("'s")] or before
@@ -4007,6 +4096,20 @@ class ReportAnalyzer:
                 ante = max(before, key=lambda p: p.end_tok)
                 return ante, j + 1, True
         return None, b, False
+
+    def _relation_object(self, ex: Extraction, norms: tuple[str, ...], p: PlaceMention) -> bool:
+        """Does a relation phrase end right before ``p`` (its article aside), after a noun that could head a
+        description, in the same clause ("the tank standing over the baler shed")?"""
+        k = _noun_phrase_start(norms, p)
+        for m in range(max(1, k - 6), k):
+            hit = self._relations.match_at(norms, m)
+            if hit is not None and hit[0] == k and norms[m - 1] in self._place_nouns() \
+                    and not any(ex.tokens.clause_start[t] for t in range(m - 1, k + 1)):
+                return True
+            if norms[m] in ("that", "which") and norms[m - 1] in lx.GENERIC_HEADS and m >= 2 and norms[m - 2] in lx.ARTICLES \
+                    and k - m <= 4 and not any(ex.tokens.clause_start[t] for t in range(m - 1, k + 1)):
+                return True  # "the place that feeds the auction hall its ice": a description not read yet
+        return False
 
     @staticmethod
     def _speaker_at(norms: tuple[str, ...], p: PlaceMention) -> bool:
@@ -4033,6 +4136,12 @@ class ReportAnalyzer:
         """The place the speaker says they are at: "I'm at the pharmacy", "Coastguard lookout here"."""
         if cls._speaker_at(norms, p) or norms[p.end_tok:p.end_tok + 1] == ("here",):
             return True
+        if p.end_tok < len(norms) and norms[p.end_tok] in ("reporting", "calling") and (
+                p.start_tok == 0 or all(w in lx.FILLERS | lx.DETERMINERS for w in norms[:p.start_tok])):
+            return True  # "Coastguard hut reporting, the station we look down on ...": who calls, from where
+        if p.end_tok + 1 < len(norms) and norms[p.end_tok + 1] == "here" and norms[p.end_tok] in lx.CALLER_ROLES \
+                | lx.ROLE_LABELS | lx.SPEAKER_ROLES | {"manager", "owner", "landlord", "landlady", "driver", "staff"}:
+            return True  # "Tea room manager here, the place we get our bread from ...": where the speaker works
         if norms[p.end_tok:p.end_tok + 1] == ("to",) and norms[p.end_tok + 1:p.end_tok + 2] in lx.CALL_RECEIVERS \
                 and all(w in lx.DETERMINERS | lx.FILLERS for w in norms[:p.start_tok]):
             return True  # a call sign opening the report: "St John's tent to control: ..."
@@ -4131,6 +4240,9 @@ class ReportAnalyzer:
             # ("the problem's the flats across the way": "'s" is a verb, "problem" heads nothing)
             hs -= 1
             if norms[hs] in lx.GENERIC_HEADS or (hs == k - 1 and self._plain_head(norms, hs)):
+                if hs == k - 1 and hs > 1 and norms[hs] not in lx.GENERIC_HEADS and norms[hs - 2] in lx.ARTICLES \
+                        and norms[hs - 1] in lx.NAME_ADJECTIVES | _HEAD_ADJECTIVES:
+                    hs -= 1  # ("the open water the lifeboat slip drops into": its adjective too)
                 while hs > 0 and norms[hs - 1] in lx.DETERMINERS and (hs - 1) not in self._marker_cache:
                     hs -= 1
                 return anchor, hs, False
@@ -4142,6 +4254,9 @@ class ReportAnalyzer:
         w = norms[i]
         if i > 1 and norms[i - 2] in lx.ARTICLES and w in self._place_nouns() and norms[i - 1].isalpha():
             return True
+        if i > 1 and norms[i - 2] in lx.ARTICLES and norms[i - 1] in lx.NAME_ADJECTIVES | _HEAD_ADJECTIVES \
+                and w.isalpha() and len(w) >= 3 and w not in _NOT_HEADS and self._cues.match_at(norms, i) is None:
+            return True  # "the open water the lifeboat slip drops into": an adjective between
         return i > 0 and norms[i - 1] in lx.ARTICLES and w.isalpha() and len(w) >= 3 and (
             w not in _NOT_HEADS or w in lx.INVERSE_VERBS and self._place_head_word(w)) \
             and self._cues.match_at(norms, i) is None  # ("the stand the fan zone is set up behind": the KB's noun)
@@ -4284,10 +4399,11 @@ class ReportAnalyzer:
             if p.status != "active":
                 continue
             j = p.start_tok - 1
-            while j >= 0 and (norms[j] in lx.DETERMINERS or norms[j] in lx.PREPOSITIONS or norms[j] in lx.FILLERS) \
+            while j >= 0 and (norms[j] in lx.DETERMINERS or norms[j] in lx.PREPOSITIONS or norms[j] in lx.FILLERS
+                              or norms[j] in ("whole", "entire") and j > 0 and norms[j - 1] == "the") \
                     and p.start_tok - j <= 4 and not toks.clause_start[j + 1] \
                     and not (norms[j] == "its" and norms[j + 1] in lx.ARTICLES):  # "it's not it's the X": a new clause
-                j -= 1
+                j -= 1  # ("not the whole fair")
             if p.via is not None and norms[p.start_tok] == "not":
                 j = p.start_tok  # "the building across from the church -- no, scratch that, not across from it"
             tail = norms[p.end_tok : p.end_tok + 4]
@@ -4596,9 +4712,12 @@ class ReportAnalyzer:
         by name is who calls; unless the message speaks of its own place ("we", "our building"), it claims nothing."""
         a, e = p.start_tok, p.end_tok
         if toks.sentence_of[a] != 0 or not all(w in lx.FILLERS | lx.DETERMINERS for w in norms[:a]) \
-                or norms[e:e + 1] != ("to",) or e + 1 >= len(norms) or not toks.tokens[e + 1].text[:1].isupper():
-            return False
+                or norms[e:e + 1] != ("to",) or e + 1 >= len(norms) \
+                or not (toks.tokens[e + 1].text[:1].isupper() or norms[e + 1] in lx.STATIONS_CALLED):
+            return False  # ("Marshal hut to control. Chair evac in progress ...")
         k = e + 1
+        if norms[k] in lx.STATIONS_CALLED and not toks.tokens[k].text[:1].isupper():
+            k += 1
         while k < len(norms) and k - e <= 4 and not toks.clause_start[k] and (
                 toks.tokens[k].text[:1].isupper() or toks.tokens[k].text.isdigit()):
             k += 1
@@ -4617,6 +4736,11 @@ class ReportAnalyzer:
                 and (toks.sentence_start[p.end_tok] or toks.gaps[p.end_tok].strip()[:1] in (",", ":")
                      and norms[p.end_tok] == "over"):
             return True  # "Control from tower one, over. Cafe kitchen's on fire": who is calling, from where
+        if 2 <= k <= 3 and norms[k - 1] == "from" and toks.sentence_start[0] and not any(toks.sentence_start[i] for i in range(1, k)) \
+                and (p.end_tok == len(norms) or toks.sentence_start[p.end_tok]) and toks.tokens[0].text[:1].isupper() \
+                and all(w.isalpha() and w not in lx.FUNCTION_WORDS and w not in lx.FILLERS for w in norms[:k - 1]) \
+                and (norms[0] in lx.ROLE_LABELS or norms[0] in _PERSON_KEYS or norms[0].endswith(("er", "ist", "man", "or"))):
+            return True  # "Fitter from the workshop. Bund failure on the red diesel ...": who is calling, a sentence of its own
         if k < 1 or norms[k - 1] != "from" or p.end_tok >= len(norms) or not toks.gaps[p.end_tok].strip().startswith(":"):
             return False
         opener = k - 1
@@ -4662,9 +4786,12 @@ class ReportAnalyzer:
             return True  # "What I can see from the gate is smoke ... coming out of the sawmill"
         if k >= 4 and norms[k - 1] == "from" and any(
                 norms[i] in ("i", "we", "you") and norms[i + 1] in ("can", "could") and norms[i + 2] in ("hear", "see", "smell")
-                and norms[i + 3] in ("it", "them", "that", "this") and k - 1 - (i + 3) <= 2
-                and not any(toks.clause_start[j] for j in range(i + 1, k)) for i in range(max(0, k - 8), k - 3)):
-            return True  # "it's sparking, you can hear it cracking from the lodge": where the listener is
+                and norms[i + 3] in ("it", "them", "that", "this") and (k - 1 - (i + 3) <= 2 or k - 1 - (i + 3) <= 5 and all(
+                    w in ("right", "all", "the", "way", "over", "across", "out", "even", "up", "down", "here", "there")
+                    for w in norms[i + 4:k - 1]))
+                and not any(toks.clause_start[j] for j in range(i + 1, k)) for i in range(max(0, k - 10), k - 3)):
+            return True  # "it's sparking, you can hear it cracking from the lodge", "you can smell it right across
+            # from the mess room": where the listener is
         return k >= 1 and norms[k - 1] == "from" and bool(toks.sentence_start[k - 1]) and any(
             norms[p.end_tok + d:p.end_tok + d + 3] in see for d in range(3))
 
@@ -4748,8 +4875,20 @@ class ReportAnalyzer:
                 # then the place told of, unpunctuated
                 ex.places[idx] = replace(p, status="reference", reason="who is calling ('control X'): no claim")
                 continue
+            if 0 < j <= 3 and toks.sentence_of[p.start_tok] == 0 and norms[0] in lx.STATIONS_CALLED \
+                    and all(w in lx.STATIONS_CALLED | lx.FILLERS for w in norms[:j]) \
+                    and [w for w in norms[p.end_tok:p.end_tok + 4] if w not in lx.FILLERS][:1] in (["we"], ["i"]) \
+                    and any(q.status != "retracted" and q.landmark != p.landmark and q.start_tok > p.end_tok
+                            and toks.sentence_of[q.start_tok] == 0 for q in ex.places):
+                # "control marshal hut er we have a casualty at the ford": the station called, who calls, then "we"
+                # and the place told of
+                ex.places[idx] = replace(p, status="reference", reason="who is calling ('control X, we ...'): no claim")
+                continue
             if toks.sentence_start[p.start_tok] and p.end_tok + 1 < len(norms) \
-                    and norms[p.end_tok] in ("reporting", "calling", "speaking") and toks.clause_start[p.end_tok + 1]:
+                    and norms[p.end_tok] in ("reporting", "calling", "speaking") and toks.clause_start[p.end_tok + 1] \
+                    and any(q.landmark != p.landmark and q.status in ("active", "negated", "reference") for q in ex.places):
+                # (with no other place told of, the news is its own: "Pascoe's yard reporting, two boats blown off
+                # their cradles")
                 ex.places[idx] = replace(p, status="reference", reason="who is calling ('X reporting,'): no claim")
                 continue
             if self._from_label(toks, norms, p) and not (
@@ -4996,12 +5135,13 @@ class ReportAnalyzer:
         ran_on = False
         while end < nxt_marker:
             if end > b and (toks.clause_start[end] or norms[end] in lx.COORDINATORS):
-                if not toks.sentence_start[end] and toks.clause_start[end] and end - b <= 6 and not ran_on \
+                if not toks.sentence_start[end] and toks.clause_start[end] and end - b <= 6 and (
+                        not ran_on or all(w in lx.FILLERS | lx.ARTICLES | lx.PREPOSITIONS for w in norms[b:end])) \
                         and norms[end] not in lx.COORDINATORS \
                         and not any(b <= p.start_tok < end for p in ex.places) \
                         and not any(self._cues.match_at(norms, i) is not None for i in range(b, end)):
                     # an aside or a stutter runs on: "no, sorry, I'm reading this wrong, the fire's at the garage",
-                    # "no, in the, the med school"
+                    # "no, in the, the med school" (and on again past hesitations: "no, in the, um, the building")
                     end += 1
                     ran_on = True
                     continue
@@ -5635,10 +5775,11 @@ class ReportAnalyzer:
                     and toks.tokens[a - 1].text.lower().replace("’", "'") in ("we're", "were", "i'm", "im", "they're",
                                                                                "we", "they", "everyone's"):
                 continue  # "we're clear of the slipway and heading out": the crew has left it
-            if b == a + 1 and b < len(norms) and toks.tokens[a].text[:1].isupper() \
+            if b == a + 1 and b < len(norms) and (toks.tokens[a].text[:1].isupper() or _after_station(norms, a)) \
                     and (norms[b] in lx.NUMBER_WORDS | {"one"} or norms[b].isdigit()) and toks.gaps[b] == " " \
-                    and (b + 1 == len(norms) or toks.clause_start[b + 1] or norms[b + 1] in lx.COPULAS | {"to", "here"}):
-                continue  # "Control, Hazmat One, we're ...": a call sign
+                    and (b + 1 == len(norms) or toks.clause_start[b + 1] or norms[b + 1] in lx.COPULAS | {"to", "here"}
+                         or toks.tokens[b + 1].text.lower().replace("’", "'") in ("we're", "we've", "i'm", "we")):
+                continue  # "Control, Hazmat One, we're ...", "uh yeah control er fire two we're ...": a call sign
             if b == a + 1 and a > 0 and norms[a - 1] in lx.ARTICLES and norms[a] in lx.NEGATABLE_STATES \
                     and toks.tokens[a].text.lower() == norms[a] + "s":
                 continue  # "the stables that back onto it": a plural noun, not the state ("stable")
@@ -6574,6 +6715,9 @@ class ReportAnalyzer:
                 continue  # "the keeper's been stopping at his daughter's in town": her home, no person in need
             if norms[k] == "left" and k + 1 < len(norms) and norms[k + 1] in lx.ARTICLES | {"his", "her", "their", "it", "them"}:
                 continue  # "somebody's left a van right across the entrance": left something, not left behind
+            if w in ("someone", "somebody") and i > 0 and norms[i - 1] in ("get", "send", "put", "need", "needs") \
+                    and norms[k] == "on" and norms[k + 1:k + 2] in (("it",), ("that",), ("this",)):
+                continue  # "that's a fire, get someone on it": someone to deal with it, nobody in need
             if any(norms[m] in lx.NEGATORS and not toks.clause_start[m + 1] for m in range(max(0, j - 2), i)):
                 continue  # "no one at the window" is handled as a negation elsewhere (not "no, the man's at ...")
             if self._speaks_next(toks, norms, k + 1):
@@ -6620,6 +6764,9 @@ class ReportAnalyzer:
             order = w in ("take", "bring") and not (i > 0 and norms[i - 1] in lx.PLAN_WORDS)
             if not (evac or w in lx.MOVE_VERBS or put or order):
                 continue
+            if any(norms[m] in ("satnav", "sat", "nav", "gps", "map", "maps", "google", "signs", "sign")
+                   for m in range(max(0, i - 3), i)):
+                continue  # "the satnav sent us to the lodge gate": a way found, nobody taken anywhere
             into = ("to", "into", "in", "inside") if put else ("to", "into", "onto")
             k, people = i + 1, evac or any(norms[m] in lx.MOVED_PEOPLE for m in range(max(0, i - 3), i))
             origins = {p.start_tok: p.end_tok for p in ex.places if p.status == "active"}
@@ -7372,21 +7519,30 @@ class ReportAnalyzer:
             withdraw = _withdraws(norms_all[a:_b])
             if kind == "place" and strong and self._same_place_dismissed(ex, norms_all, a, b_after, e_after):
                 kind = None  # the place said again with a dismissal: a withdrawal of the cue, not a place repair
+            just_said = [c for c in out if c.status == "active" and c.end_tok <= a
+                         and all(w in lx.FILLERS for w in norms_all[c.end_tok:a])]
+            said_after = [w for w in norms_all[b_after:min(len(norms_all), b_after + 12)] if w not in lx.FILLERS]
+            harmless = ("steam", "mist", "dust", "fog", "spray", "vapour")
+            # "Smoke — no — it's steam, sorry, steam off the ice plant": what was seen, said again as harmless
+            explained = not strong and bool(just_said) and bool(
+                said_after[:1] and said_after[0] in harmless
+                or said_after[:1] in (["its"], ["thats"]) and said_after[1:2] and said_after[1] in harmless + ("just", "only"))
+            if kind == "place" and explained and not any(
+                    self._repair_window_start(ex, k) <= p.start_tok < a for p in ex.places):
+                kind = None  # (no place before the marker to repair: the place after is where the steam comes from)
             if kind == "place":
                 self._restated_category(ex, k, out, b_after, e_after, a, withdraw)
                 continue
-            just_said = [c for c in out if c.status == "active" and c.end_tok <= a
-                         and all(w in lx.FILLERS for w in norms_all[c.end_tok:a])]
             taken_back = kind is None and strong and bool(just_said) and e_after > b_after \
                 and not any(b_after <= c.start_tok < e_after for c in out) \
                 and not any(b_after <= p.start_tok < e_after for p in ex.places)
-            said_after = [w for w in norms_all[b_after:min(len(norms_all), b_after + 12)] if w not in lx.FILLERS]
             # "the hard's flooded - well, no, it's not, it's gone back down, it's just wet": the cue just said, denied
             # and explained away after a plain "no"
             denied_after = not strong and kind is None and bool(just_said) and said_after[:2] in (
                 ["its", "not"], ["it", "isnt"], ["it", "not"]) \
                 and bool(set(norms_all[b_after + 3:min(len(norms_all), b_after + 12)]) & lx.DISMISSALS) \
                 and not any(b_after <= p.start_tok < b_after + 12 for p in ex.places)
+            denied_after = denied_after or explained and kind is None
             if kind is None and (strong or denied_after) and (set(norms_all[b_after:e_after]) & lx.DISMISSALS or withdraw
                                                               or taken_back or denied_after):
                 # ("I'm trapped — no, no, sorry, the door's opened": the cue just said is taken back)
@@ -7736,7 +7892,11 @@ class ReportAnalyzer:
                     "at'" in q.reason or "in'" in q.reason) or (
                     q.status == "active" and self._speaker_here(norms, q))) and sent - 1 <= sentence_of[q.start_tok] <= sent
                     and q.start_tok < a}
-                if len(at) == 1:
+                if len(at) == 1 and not ({"it", "its"} & set(norms[a:b]) and any(
+                        r.status == "active" and r.landmark not in at and next(iter(at.values())).end_tok <= r.start_tok < a
+                        for r in ex.places)):
+                    # (not where "it" takes up a place said between: "We're at the bike wash, and the stream it
+                    # drains into is coming up fast, it's burst its banks right along here")
                     q = next(iter(at.values()))
                     pairs.extend(Claim(replace(q, status="active"), c) for c in cs)
                     continue
@@ -8038,6 +8198,11 @@ class ReportAnalyzer:
                     q.key == c.key and q.cue.polarity == "affirmed" and 0 <= c.cue.start_tok - q.cue.end_tok <= 1
                     and norms[q.cue.start_tok:q.cue.end_tok] != norms[c.cue.start_tok:c.cue.end_tok] for q in pairs):
                 continue  # "well, smoke, no flames really": a kind denied right after the kind there is
+            if c.cue.polarity == "denied" and c.cue.reason in _MADE_SAFE and (
+                    kind := self._danger_kind_by_words.get(norm_phrase(c.cue.text))) is not None and any(
+                    q.key == c.key and q.cue.polarity == "affirmed" and q.cue.start_tok < c.cue.start_tok
+                    and self._danger_kind_by_words.get(norm_phrase(q.cue.text)) not in (None, kind) for q in pairs):
+                continue  # "Fat fire in the kitchen of the cafe, gas is isolated": the gas made safe, the fire stands
             last[c.key] = (c.cue.start_tok, c.cue.polarity == "affirmed")
         for landmark, at in self._people_revoked(ex, norms, cues):
             # "1012 STILT VLG - 3 stranded on rf. 1014 UPD STILT VLG - all 3 lifted off": no cue is said
@@ -8682,6 +8847,31 @@ def _verb_forms(term: str) -> list[str]:
     return forms
 
 
+_EVENT_VERBS = {"tear": ("torn", "tore", "tearing"), "failure": ("failed", "failing", "fails", "gone", "given way", "burst"),
+                "slip": ("slipped", "slipping", "slips"), "leak": ("leaking", "leaked", "leaks"),
+                "overtopping": ("overtopped", "overtops", "overtopping"), "collapse": ("collapsed", "collapsing"),
+                "breach": ("breached", "breaching"), "burst": ("burst", "bursting"), "split": ("split", "splitting"),
+                "rupture": ("ruptured", "rupturing"), "breakout": ("breaking out", "broken out", "broke out"),
+                "blowout": ("blown out", "blew out", "blowing out"), "fall": ("fallen", "fell", "falling"),
+                "slide": ("sliding", "slid"), "slump": ("slumped", "slumping"), "washout": ("washed out",)}
+
+
+def _event_forms(term: str) -> list[str]:
+    """A glossary term that names a thing and what befell it, said as a clause: "liner tear" -> "liner torn" (so "the
+    liner's torn"), "the liner is torn", "torn liner"; "bund failure" -> "bund failed", "the bund has failed";
+    "gas breakout" -> "gas breaking out"."""
+    words = term.strip().lower().split()
+    if len(words) != 2 or words[1] not in _EVENT_VERBS or not words[0].isalpha():
+        return []
+    noun = words[0]
+    out = []
+    for form in _EVENT_VERBS[words[1]]:
+        out += [f"{noun} {form}", f"{noun} is {form}", f"{noun} has {form}", f"{noun} s {form}"]
+        if " " not in form and form.endswith(("ed", "n", "t")):
+            out.append(f"{form} {noun}")  # ("a torn liner", "the failed bund")
+    return out
+
+
 def _determined_forms(term: str) -> list[str]:
     """A two-word glossary term whose first word is a verb's participle, said with a determiner between:
     "dropped plug" -> "dropped her plug", "dropped a plug"; "blowing a gland" -> "blowing her gland"."""
@@ -8691,6 +8881,33 @@ def _determined_forms(term: str) -> list[str]:
     if len(words) != 2 or not words[0].endswith(("ed", "ing")) or not all(w.isalpha() for w in words):
         return []
     return [f"{words[0]} {d} {words[1]}" for d in ("a", "the", "her", "his", "its", "their") if d != words[1]]
+
+
+_WORD_SEARCHES = (("what", "dyou", "call", "it"), ("what", "do", "you", "call", "it"), ("what", "it", "called"),
+                  ("what", "its", "name"), ("what", "the", "word"), ("what", "it"))
+
+
+def _searched_words(toks: Tokens) -> Tokens:
+    """"in the, what's it, the building just inside it": a speaker's search for a word, set off as a clause of its
+    own (or asking what it is called), read as a hesitation ("um"); so is a word begun and then said whole ("the sch
+    school")."""
+    norms = toks.norms(0, len(toks))
+    fixed = list(toks.tokens)
+    for i in range(len(norms) - 1):
+        f, w = toks.tokens[i].text.lower(), norms[i + 1]
+        if f.isalpha() and 2 <= len(f) <= 4 and w.startswith(f) and len(w) >= len(f) + 2 and toks.gaps[i + 1] == " " \
+                and f not in lx.FUNCTION_WORDS and f not in ("st", "mt", "ft", "dr") and not f.isupper():
+            fixed[i] = replace(fixed[i], norm="um")  # "sm smoke in the sch school": a word begun, then said whole
+    for i in range(len(norms)):
+        if norms[i] != "what" or not toks.clause_start[i]:
+            continue
+        for key in _WORD_SEARCHES:
+            e = i + len(key)
+            if norms[i:e] == key and (key[-1] in ("called", "name", "word") or e == len(norms) or toks.clause_start[e]):
+                for j in range(i, e):
+                    fixed[j] = replace(fixed[j], norm="um")
+                break
+    return replace(toks, tokens=tuple(fixed)) if fixed != list(toks.tokens) else toks
 
 
 def _indirect_questions(toks: Tokens, norms: tuple[str, ...]) -> set[int]:
@@ -8732,6 +8949,15 @@ def _asks_if_true(words: tuple[str, ...], alone: bool = False) -> bool:
     return not alone or all(w in ("is", "that", "it", "true", "right", "correct") for w in kept)
 
 
+def _after_station(norms: tuple[str, ...], a: int) -> bool:
+    """Does token ``a`` come right after the station called ("control", "base", "this is"), past fillers, at
+    the opening of the message?"""
+    j = a - 1
+    while j >= 0 and norms[j] in lx.FILLERS:
+        j -= 1
+    return j >= 0 and j <= 6 and (norms[j] in ("control", "base") or norms[j - 1:j + 1] == ("this", "is"))
+
+
 def _subject_before(norms: tuple[str, ...], a: int, skip: tuple[str, ...]) -> int:
     """Where the word before token ``a`` stands, past the ``skip`` words (auxiliaries, adverbs) and fillers: the
     subject of the cue at ``a`` ("the bus is just stuck": "bus"); -1 if none."""
@@ -8746,6 +8972,9 @@ def _anchored_at(q: PlaceMention, landmark: str) -> bool:
     return bool(q.via) and q.landmark != landmark and (q.via.startswith(landmark + " ") or q.via.endswith(" " + landmark))
 
 
+_MADE_SAFE = frozenset({"negated by 'isolated'", "negated by 'been isolated'", "negated by 'made safe'",
+                        "negated by 'been made safe'"})  # (a supply made safe, not the place's danger over)
+_HEAD_ADJECTIVES = frozenset({"open", "deep", "far", "near"})  # (with NAME_ADJECTIVES: "the open water the slip drops into")
 _OWNED = "owned:"  # the ``via`` of "the café's car park" (``_possessive_tail``)
 _REPAIR_WORDS = frozenset({"no", "sorry", "correction", "mean", "rather", "wait", "scratch", "negative"})
 
@@ -9012,12 +9241,12 @@ def _relation_core(phrase: str) -> str:
     thing it crosses ("across the channel from" -> "across from").
 
     >>> [_relation_core(p) for p in ("directly above", "on the levee above", "across the tracks from", "feeds",
-    ...                              "built onto the side of")]
-    ['above', 'above', 'across from', 'feeds', 'built onto']
+    ...                              "built onto the side of", "is built against")]
+    ['above', 'above', 'across from', 'feeds', 'built onto', 'built against']
     """
     words = phrase.split()
-    while len(words) > 1 and words[0] in lx.RELATION_ADVERBS:
-        words = words[1:]
+    while len(words) > 1 and (words[0] in lx.RELATION_ADVERBS or words[0] in ("is", "are")):
+        words = words[1:]  # ("is built against" is a "built against" relation)
     if len(words) > 1 and words[-1] in _TRAILING_DIRECTIONS:
         return words[-1]
     if len(words) > 3 and words[-3] == "the" and words[-2] in lx.PART_NOUNS and words[-1] == "of":

@@ -258,6 +258,7 @@ knock to the head|knock on the head|taken a knock|took a knock|blow to the head|
 can't get his wheelchair|can't get her wheelchair|cannot get his wheelchair|cannot get her wheelchair|can't get up the stairs|can't manage the stairs|
 there's folk in|theres folk in|folk in them|folk in there|people in them|there's people in|theres people in|folk still in|
 gone in off the|someone's gone in|somebody's gone in|went in off the|gone in the water|went in the water|
+gone in after|went in after|jumped in after|gone in after a dog|went in after a dog|we're pulling him out|we're pulling her out|
 not come back|is not come back|look for him|look for her|search for him|search for her|had a fit|s had a fit|not with it|
 pulled out of the water|pulled from the water|pulled out of the river|pulled from the river|been pulled out|fell in the river|fell into the river|fallen in the river|fallen into the river|fell in the water|fell into the water|
 squashed|arm squashed|leg squashed|crushed under|can't account for|cannot account for|can't account for them|falling down the stairs|blood on his head|blood on her head|cold and confused|very cold and|
@@ -498,6 +499,7 @@ STRONG_REPAIR = [
     "voice in background", "voice in the background", "background voice", "another voice",
     "i'm all turned round", "i'm all turned around", "all turned round", "all turned around", "i got confused",
     "i'm confused", "got my bearings wrong", "i beg your pardon", "beg your pardon", "pardon me",
+    "sorry meant", "meant to say", "i meant to say",
 ]
 WEAK_REPAIR = ["sorry", "actually", "or rather", "rather", "wait", "no", "nope", "nah", "naw", "er no", "uh no", "well no",
                "oops", "whoops", "hang on", "hold on"]
@@ -763,7 +765,8 @@ RETRACT_VERBS = {"scratch", "strike", "forget", "cancel", "remove", "minus", "dr
 
 # Places in these phrases are being passed or travelled to: the report claims nothing about them.
 TRANSIT = ["people in off", "taking people in off", "in off the", "walked up from", "walked down from", "walked over from", "walked from", "drove from", "drove up from",
-           "driven from", "ran from", "run from", "cycled from", "anyone coming off", "anybody coming off", "everyone coming off", "people coming off", "evacuated from", "moved out of", "moved from", "relocated from", "decanted from", "brought out of",
+           "driven from", "ran from", "run from", "cycled from", "anyone coming off", "anybody coming off", "everyone coming off", "people coming off", "families coming off",
+           "visitors coming off", "crowds coming off", "folk coming off", "riders coming off", "families coming out of", "evacuated from", "moved out of", "moved from", "relocated from", "decanted from", "brought out of",
            "heading to", "heading for", "heading towards", "heading toward", "headed to", "headed for", "head to",
            "heading up towards", "heading down towards", "creeping towards", "drifting towards", "current towards", "swinging towards", "floating towards",
            "spreading towards", "moving up towards",
@@ -1048,7 +1051,7 @@ FUNCTION_WORDS = PREPOSITIONS | COPULAS | COORDINATORS | FILLERS | PRONOUNS | NE
 
 # "evacuated everyone to the church", "moving residents into the town hall": where people were taken to
 # is a place of safety. The plain evacuation verbs need no object; the others need people as object or subject.
-EVACUATE_VERBS = {"evacuated", "evacuating", "evacuate", "relocated", "relocating", "decanted", "decanting"}
+EVACUATE_VERBS = {"evacuated", "evacuating", "evacuate", "evacuation", "relocated", "relocating", "decanted", "decanting"}
 MOVE_VERBS = {"moved", "moving", "move", "took", "taken", "taking", "brought", "bringing", "sent", "sending", "ferried",
               "ferrying", "led", "leading", "directed", "directing", "walked", "walking", "sheltered", "sheltering"}
 MOVED_PEOPLE = {"everyone", "everybody", "people", "resident", "children", "kid", "pupil", "staff", "evacuee",
@@ -1074,7 +1077,8 @@ RELATIVE_COPULAS = {("that", "is"), ("which", "is"), ("that", "s"), ("which", "s
 # Words that say nothing of a kind of danger when a kind's words are matched against category descriptions.
 KIND_VOTE_STOPWORDS = frozenset({"have", "with", "from", "that", "this", "been", "were", "into", "onto", "their",
                                  "there", "they", "them", "what", "when", "where", "which", "while", "will", "would",
-                                 "shedding", "also", "just", "only", "some", "such", "than", "then", "very", "full"})
+                                 "shedding", "also", "just", "only", "some", "such", "than", "then", "very", "full",
+                                 "completely", "totally", "showing", "really"})
 KIND_FALLBACK = {"breakage": "collapse", "smoke": "fire", "storm": "collapse", "fire": "explosion", "vehicle": "access", "disorder": "fire"}
 DANGER_KINDS: dict[str, list[str]] = {
     "crowd": ["crowd crush", "crowd surge", "surge at", "surge in", "surging", "crammed", "packed solid", "pressed flat",
@@ -1467,7 +1471,7 @@ DANGER_KIND_EXTRA: dict[str, list[str]] = {
                  "conductors are on", "conductor down", "conductors down", "feeder is down", "feeder down", "lines down",
                  "line down", "lines are down", "line is down"],
     "gas": ["rotten egg", "rotten eggs", "rotten-egg smell", "rotten egg smell", "eggy smell", "smell like eggs", "smells like eggs", "smell of eggs", "smells of eggs", "smell like rotten eggs", "there's a hiss", "a loud hiss", "hissing out of", "h2s", "so2", "co2", "sulphur dioxide", "hydrogen sulphide", "carbon dioxide", "methane", "methane leak", "natural gas", "co detected", "co reading", "co readings", "co levels", "high co", "carbon monoxide", "carbon monoxide alarm", "co alarm"],
-    "collapse": ["has snapped", "have snapped", "cable snapped", "cables snapped", "hanging sideways", "floor went through", "floor went thru", "floor gone through", "developed a lean", "has a lean", "bricks coming off", "bricks are coming off", "wall has split", "walls have split", "has split from", "split right across", "split from top to bottom", "roof's coming in", "roof is coming in", "ceiling's coming in", "ceiling is coming in", "coming off in chunks", "coming away in chunks", "falling off in chunks", "in chunks", "breaking up", "is breaking up", "coming adrift", "come adrift", "broken adrift", "peeling off", "coming off in slabs", "coming away in slabs", "roof fall on", "roof fall in", "roof has split", "roof split", "is bending", "it's bending", "is fall down", "has fall down", "fallen down"],
+    "collapse": ["split down a seam", "split a seam", "split its seam", "split at the seam", "split along a seam", "has snapped", "have snapped", "cable snapped", "cables snapped", "hanging sideways", "floor went through", "floor went thru", "floor gone through", "developed a lean", "has a lean", "bricks coming off", "bricks are coming off", "wall has split", "walls have split", "has split from", "split right across", "split from top to bottom", "roof's coming in", "roof is coming in", "ceiling's coming in", "ceiling is coming in", "coming off in chunks", "coming away in chunks", "falling off in chunks", "in chunks", "breaking up", "is breaking up", "coming adrift", "come adrift", "broken adrift", "peeling off", "coming off in slabs", "coming away in slabs", "roof fall on", "roof fall in", "roof has split", "roof split", "is bending", "it's bending", "is fall down", "has fall down", "fallen down"],
     "water": ["lifting off their stands", "lifted off their stands", "off their stands", "floating off", "floated off",
               "getting swamped", "cars are floating", "cars are floating in it", "tents are floating", "standing in water", "stood in water", "standing in floodwater", "water through all the", "water through the front door", "water through the front doors", "water through the doors", "boiling over", "boiled over", "water is running across", "water running across", "water is lapping", "water lapping", "lapping the", "over the towpath", "across the towpath", "gates burst", "gates have burst", "gate burst", "gate has burst", "pouring over", "topped its bank", "topped its banks", "topped the bank", "topped the banks", "gone over the bank", "gone over its bank", "gone over the south bank", "gone over the north bank", "gone over the east bank", "gone over the west bank", "metre deep", "metres deep", "meter deep", "a metre of water", "metre of water", "full to the top", "full to the brim", "water all the way round", "water is all the way round", "water all round", "water is all round", "water right round", "water is right round", "tide's coming straight through", "tide's coming through", "tide coming through", "sea's coming through", "one sheet of water", "a sheet of water", "sheet of water", "washing out", "washing away", "logs floating", "floating away", "floating off the floor", "floating about", "floating around",
               "furniture floating", "chairs floating", "cars floating",
@@ -1477,12 +1481,16 @@ DANGER_KIND_EXTRA: dict[str, list[str]] = {
               "water right round", "water all round", "water's all round", "water all around", "water's all around",
               "yard's a lake", "is a lake", "'s a lake", "like a lake", "completely under", "cut off by water", "cut off by the water", "cut off by floodwater", "cut off by the flood", "over its banks", "over the banks", "out of its banks", "broken its banks", "burst their banks", "bursting its banks", "scoured", "scoured out", "water coming through the ceiling", "water through the ceiling", "water pouring through the ceiling",
               "water coming through the roof", "ceiling's leaking", "ceiling is leaking", "water pouring through"],
-    "access": ["rocks across", "rocks across it", "rocks across the road", "debris across", "debris right across", "fallen oak", "fallen beech", "fallen ash", "fallen branch", "fallen branches"],
+    "access": ["blocking", "blocking the way", "blocking it", "blocks the way", "rocks across", "rocks across it", "rocks across the road", "debris across", "debris right across", "fallen oak", "fallen beech", "fallen ash", "fallen branch", "fallen branches"],
     "ground": ["scree moving", "scree is moving", "ground is moving", "ground moving", "slope is moving", "hillside is moving", "rocks are coming off", "rocks are coming down", "rocks are falling", "dropping rocks", "rocks dropping", "dropping stones", "has sunk", "have sunk", "its sunk", "ground dropped", "ground has dropped", "ground dropping", "ground is dropping", "ground gone", "ground has gone", "ground just gone", "floor dropped", "floor has dropped", "hole opened up", "hole has opened up", "hole just opened up", "floor has opened", "floor's opened", "sinkhole", "sink hole", "ash a foot deep", "ash is knee deep", "ash knee deep", "ash's knee deep", "ash is ankle deep", "a foot of ash", "feet of ash", "inches of ash", "deep in ash", "covered in ash", "heaped with ash", "buried in ash", "under the ash", "drifts of ash", "ash drifts", "half buried", "half-buried", "slurry", "full of slurry", "sludge", "silt", "full of silt"],
     "fallen": ["taken the top off", "took the top off", "knocked the top off", "blown the top off", "blew the top off",
                "stonework through", "masonry through", "through the glass roof", "debris through the roof",
                "rubble through the roof", "branch through the roof", "branch through its roof", "branches through the roof", "limb through the roof",
-               "tree through its roof", "trees through the roof", "hole in the roof", "holes in the roof", "hole in its roof", "hole in the wall", "lost a parapet", "lost its parapet", "lost the parapet", "lost a wall", "lost its wall", "lost a gable", "lost its gable"],
+               "tree through its roof", "trees through the roof", "hole in the roof", "holes in the roof", "hole in its roof", "hole in the wall", "lost a parapet", "lost its parapet", "lost the parapet", "lost a wall", "lost its wall", "lost a gable", "lost its gable",
+               # ("a tree's come straight through our roof", "a tree through the arbour", "lost three trees")
+               "tree through", "trees through", "through our roof", "come through the roof", "come straight through the roof",
+               "lost a tree", "lost two trees", "lost three trees", "lost four trees", "lost some trees", "lost several trees",
+               "lost trees", "lost a few trees", "taken a hit", "took a hit", "taking a hit"],
 }
 
 for _phrases in DANGER_KIND_EXTRA.values():  # each an undesirable cue as well, as the kinds' own phrases are
@@ -1501,6 +1509,9 @@ MEASURE_UNITS = frozenset({"foot", "feet", "metre", "metres", "meter", "meters",
 # (not "yard": "the place that shares a yard with the hut")
 # Prepositions of place that PREPOSITIONS leaves out ("the heap above the pit the slurry pond spills into")
 PLACE_PREPOSITIONS = frozenset({"above", "below", "beneath", "underneath", "beyond", "opposite", "onto", "off"})
+# Words of danger too short for the four-letter floor on the words that match a phrase to a category description,
+# that still name its kind ("leaking gas": "gas leaks and breakouts", not "leaking lagoons")
+SHORT_DANGER_WORDS = frozenset({"gas", "oil", "mud", "ice", "ash", "fog"})
 # Words of danger that name no kind of it ("it's getting dangerous")
 GENERIC_DANGER_WORDS = frozenset({"danger", "dangerous", "dangerously", "unsafe", "hazard", "hazardous", "hazards",
                                   "threat", "risk", "risky", "getting"})

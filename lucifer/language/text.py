@@ -31,7 +31,7 @@ ABBREVIATIONS = {"stn": "station", "stuk": "stuck", "trapt": "trapped", "bldg": 
                  "bhd": "behind", "dn": "down", "clr": "clear", "mkt": "market", "vlg": "village",
                  "cntr": "centre", "ctr": "centre", "upd": "update", "rf": "roof", "flr": "floor", "blk": "block",
                  "apt": "apartment", "gdn": "garden", "corr": "correction", "cas": "casualty", "invlvd": "involved",
-                 "consc": "conscious", "uncon": "unconscious", "uncons": "unconscious", "evac": "evacuated",
+                 "consc": "conscious", "uncon": "unconscious", "uncons": "unconscious", "evac": "evacuation",
                  "crk": "crack", "chan": "channel", "est": "established",
                  # texting ("sorry ment the shower blok", "send sum1 asap")
                  "ment": "meant", "smel": "smell", "realy": "really", "sum1": "someone", "some1": "someone",
