@@ -163,6 +163,12 @@ def _sound_of(word: str, heard: bool = False) -> str:
     return word
 
 
+def _weighty(word: str) -> bool:
+    """A word long enough to say something when phrases and descriptions are matched word by word: four letters or
+    more, or a short word of danger ("gas", "oil", "ice")."""
+    return len(word) >= 4 or word in lx.SHORT_DANGER_WORDS
+
+
 class ReportAnalyzer:
     """Builtin, LLM-free analysis of one report against one knowledge base."""
 
@@ -289,7 +295,7 @@ class ReportAnalyzer:
             return None
         # words the descriptions themselves use decide first ("flooding" -> "... floodwater pouring over ...")
         # (not the words for parts and motion: "coming down" is no "water coming through floors")
-        words = [w for w in norm_phrase(phrase) if (len(w) >= 4 or w in lx.SHORT_DANGER_WORDS) and w not in lx.DANGER_KIND_PARTS
+        words = [w for w in norm_phrase(phrase) if _weighty(w) and w not in lx.DANGER_KIND_PARTS
                  and w not in ("come", "came", "comes", "filling", "filled", "fill", "full")]
         # (nor "filling": filled with smoke or with water, it is what fills that says the kind)
         described = [self._affirmed_words(c.description) for c in cats]
@@ -380,13 +386,13 @@ class ReportAnalyzer:
                 ws = norm_phrase(re.sub(r"(?<=[a-z])-(?=[a-z])", "", part))
                 neg = next((i for i, w in enumerate(ws) if w in lx.NEGATORS), None)
                 if neg is None:
-                    out.update(w for w in ws if len(w) >= 4 or w in lx.SHORT_DANGER_WORDS)
+                    out.update(w for w in ws if _weighty(w))
                     continue
                 rel = next((i for i, w in enumerate(ws[:neg]) if w in ("where", "which", "when", "that")), None)
                 if rel is None:
                     break  # "Nothing is burning, smoke or fire": the negation runs on through the clause's list
                 # "water where it should not be, such as ...": only the relative clause is negated
-                out.update(w for w in ws[:rel] if len(w) >= 4 or w in lx.SHORT_DANGER_WORDS)
+                out.update(w for w in ws[:rel] if _weighty(w))
         return frozenset(out)
 
     def _build_cues(self) -> None:
@@ -2345,9 +2351,13 @@ class ReportAnalyzer:
         if not hits:
             # a transcribed sound: "farmacy" for "pharmacy", "fire stayshun", "the polis station", "the bakerie"
             if not hasattr(self, "_typo_sounds"):
-                self._typo_sounds = {("".join(_sound_of(w) for w in name_words(form)), "".join(name_words(form))): lm.name
-                                     for lm in self.kb.landmarks for form in lm.surface_forms
-                                     if len("".join(name_words(form))) >= 5 and "".join(name_words(form)).isalpha()}
+                self._typo_sounds = {}
+                for lm in self.kb.landmarks:
+                    for form in lm.surface_forms:
+                        ws = name_words(form)
+                        written = "".join(ws)
+                        if len(written) >= 5 and written.isalpha():
+                            self._typo_sounds[("".join(_sound_of(w) for w in ws), written)] = lm.name
             sound = "".join(_sound_of(w, heard=True) for w in words)
             hits = {name for (k, written), name in self._typo_sounds.items()
                     if k[0] == sound[0] and abs(len(k) - len(sound)) <= 1 and (k == sound or _one_edit(sound, k))
@@ -3317,7 +3327,7 @@ class ReportAnalyzer:
             pool = named or head_described or related
             target = None
             linking = [norms[i] for i in range(head + 1, end) if not anchor.start_tok <= i < anchor.end_tok
-                       and (len(norms[i]) >= 4 or norms[i] in lx.SHORT_DANGER_WORDS) and norms[i].isalpha() and norms[i] not in lx.FUNCTION_WORDS
+                       and _weighty(norms[i]) and norms[i].isalpha() and norms[i] not in lx.FUNCTION_WORDS
                        and norms[i] not in lx.DESCRIPTION_STOPWORDS]
             described = {n: sum(any(_same_stem(w, d) for d in self._description_words()[n]) for w in linking)
                          for n in pool} if len(pool) > 1 else {}
@@ -4055,8 +4065,7 @@ class ReportAnalyzer:
             # "smoke in the building behind the hardware store ... someone trapped in the shop in front of that
             # building": the place just spoken of
             before = [p for p in ex.places if p.end_tok <= b and p.status == "active"]
-            if len(before) == 1 and "and" in norms[before[0].end_tok:b] and self._relation_object(ex, norms, before[0]) \
-                    and not any(before[0].end_tok <= ma < b for ma, _, _ in ex.markers):
+            if self._awaits_description(ex, norms, before, b):
                 return None, b, False  # (the place spoken of is a description not read yet: it waits for it)
             if before:
                 return max(before, key=lambda p: p.end_tok), j + 1, True
@@ -4081,8 +4090,7 @@ class ReportAnalyzer:
             # "the park behind the warehouse. Across the street from it": the pronoun takes up the place
             # spoken of, not the reference point of its description
             before = [p for p in before if p.status != "reference"] or before
-            if len(before) == 1 and "and" in norms[before[0].end_tok:b] and self._relation_object(ex, norms, before[0]) \
-                    and not any(before[0].end_tok <= ma < b for ma, _, _ in ex.markers):
+            if self._awaits_description(ex, norms, before, b):
                 # "The tank standing over the baler shed has split, and the shed underneath it is flooding": a place
                 # said as another's reference point, that one not yet read, and a new clause on "and"; the pronoun
                 # waits for it (not in an aside, "the terraces above lavender row, the ones that step down to it", nor
@@ -4096,6 +4104,12 @@ class ReportAnalyzer:
                 ante = max(before, key=lambda p: p.end_tok)
                 return ante, j + 1, True
         return None, b, False
+
+    def _awaits_description(self, ex: Extraction, norms: tuple[str, ...], before: list[PlaceMention], b: int) -> bool:
+        """Should a pronoun ending at ``b`` wait for a description not read yet? Its one antecedent so far is said as
+        another's reference point, and a new clause on "and" (no repair) stands between."""
+        return len(before) == 1 and "and" in norms[before[0].end_tok:b] and self._relation_object(ex, norms, before[0]) \
+            and not any(before[0].end_tok <= ma < b for ma, _, _ in ex.markers)
 
     def _relation_object(self, ex: Extraction, norms: tuple[str, ...], p: PlaceMention) -> bool:
         """Does a relation phrase end right before ``p`` (its article aside), after a noun that could head a
@@ -4136,11 +4150,10 @@ class ReportAnalyzer:
         """The place the speaker says they are at: "I'm at the pharmacy", "Coastguard lookout here"."""
         if cls._speaker_at(norms, p) or norms[p.end_tok:p.end_tok + 1] == ("here",):
             return True
-        if p.end_tok < len(norms) and norms[p.end_tok] in ("reporting", "calling") and (
-                p.start_tok == 0 or all(w in lx.FILLERS | lx.DETERMINERS for w in norms[:p.start_tok])):
+        if p.end_tok < len(norms) and norms[p.end_tok] in ("reporting", "calling") \
+                and all(w in lx.FILLERS | lx.DETERMINERS for w in norms[:p.start_tok]):
             return True  # "Coastguard hut reporting, the station we look down on ...": who calls, from where
-        if p.end_tok + 1 < len(norms) and norms[p.end_tok + 1] == "here" and norms[p.end_tok] in lx.CALLER_ROLES \
-                | lx.ROLE_LABELS | lx.SPEAKER_ROLES | {"manager", "owner", "landlord", "landlady", "driver", "staff"}:
+        if p.end_tok + 1 < len(norms) and norms[p.end_tok + 1] == "here" and norms[p.end_tok] in lx.WORKPLACE_ROLES:
             return True  # "Tea room manager here, the place we get our bread from ...": where the speaker works
         if norms[p.end_tok:p.end_tok + 1] == ("to",) and norms[p.end_tok + 1:p.end_tok + 2] in lx.CALL_RECEIVERS \
                 and all(w in lx.DETERMINERS | lx.FILLERS for w in norms[:p.start_tok]):
@@ -4736,7 +4749,7 @@ class ReportAnalyzer:
                 and (toks.sentence_start[p.end_tok] or toks.gaps[p.end_tok].strip()[:1] in (",", ":")
                      and norms[p.end_tok] == "over"):
             return True  # "Control from tower one, over. Cafe kitchen's on fire": who is calling, from where
-        if 2 <= k <= 3 and norms[k - 1] == "from" and toks.sentence_start[0] and not any(toks.sentence_start[i] for i in range(1, k)) \
+        if 2 <= k <= 3 and norms[k - 1] == "from" and not any(toks.sentence_start[i] for i in range(1, k)) \
                 and (p.end_tok == len(norms) or toks.sentence_start[p.end_tok]) and toks.tokens[0].text[:1].isupper() \
                 and all(w.isalpha() and w not in lx.FUNCTION_WORDS and w not in lx.FILLERS for w in norms[:k - 1]) \
                 and (norms[0] in lx.ROLE_LABELS or norms[0] in _PERSON_KEYS or norms[0].endswith(("er", "ist", "man", "or"))):
@@ -6764,8 +6777,7 @@ class ReportAnalyzer:
             order = w in ("take", "bring") and not (i > 0 and norms[i - 1] in lx.PLAN_WORDS)
             if not (evac or w in lx.MOVE_VERBS or put or order):
                 continue
-            if any(norms[m] in ("satnav", "sat", "nav", "gps", "map", "maps", "google", "signs", "sign")
-                   for m in range(max(0, i - 3), i)):
+            if any(norms[m] in lx.NAVIGATION_AIDS for m in range(max(0, i - 3), i)):
                 continue  # "the satnav sent us to the lodge gate": a way found, nobody taken anywhere
             into = ("to", "into", "in", "inside") if put else ("to", "into", "onto")
             k, people = i + 1, evac or any(norms[m] in lx.MOVED_PEOPLE for m in range(max(0, i - 3), i))
@@ -7522,11 +7534,11 @@ class ReportAnalyzer:
             just_said = [c for c in out if c.status == "active" and c.end_tok <= a
                          and all(w in lx.FILLERS for w in norms_all[c.end_tok:a])]
             said_after = [w for w in norms_all[b_after:min(len(norms_all), b_after + 12)] if w not in lx.FILLERS]
-            harmless = ("steam", "mist", "dust", "fog", "spray", "vapour")
             # "Smoke — no — it's steam, sorry, steam off the ice plant": what was seen, said again as harmless
             explained = not strong and bool(just_said) and bool(
-                said_after[:1] and said_after[0] in harmless
-                or said_after[:1] in (["its"], ["thats"]) and said_after[1:2] and said_after[1] in harmless + ("just", "only"))
+                said_after[:1] and said_after[0] in lx.HARMLESS_SIGHTS
+                or said_after[:1] in (["its"], ["thats"]) and said_after[1:2]
+                and said_after[1] in lx.HARMLESS_SIGHTS | {"just", "only"})
             if kind == "place" and explained and not any(
                     self._repair_window_start(ex, k) <= p.start_tok < a for p in ex.places):
                 kind = None  # (no place before the marker to repair: the place after is where the steam comes from)
@@ -8866,7 +8878,7 @@ def _event_forms(term: str) -> list[str]:
     noun = words[0]
     out = []
     for form in _EVENT_VERBS[words[1]]:
-        out += [f"{noun} {form}", f"{noun} is {form}", f"{noun} has {form}", f"{noun} s {form}"]
+        out += [f"{noun} {form}", f"{noun} is {form}", f"{noun} has {form}"]
         if " " not in form and form.endswith(("ed", "n", "t")):
             out.append(f"{form} {noun}")  # ("a torn liner", "the failed bund")
     return out

@@ -885,6 +885,10 @@ NEGATABLE_STATES = {"safe", "clear", "secure", "secured", "stable", "sound", "pa
                     "safe to enter", "safe to shelter", "all clear", "structurally sound", "green"}
 # Words after a correction that dismiss the claim before it ("correction, that's just steam").
 DISMISSALS = {"just", "only", "nothing", "false", "mistake", "steam", "mist", "dust", "fog", "nobody", "fine"}
+# What was seen, said again as harmless after a plain "no" ("Smoke — no — it's steam")
+HARMLESS_SIGHTS = frozenset({"steam", "mist", "dust", "fog", "spray", "vapour"})
+# Whatever finds a way, sending nobody anywhere ("the satnav sent us to the lodge gate")
+NAVIGATION_AIDS = frozenset({"satnav", "sat", "nav", "gps", "map", "maps", "google", "signs", "sign"})
 
 # Adverbs that may precede any relation phrase ("directly opposite", "immediately behind").
 RELATION_ADVERBS = ["directly", "immediately", "right", "just", "straight", "literally", "practically"]
@@ -985,6 +989,9 @@ CALLER_ROLES = {"guard", "warden", "officer", "patrol", "assistant", "attendant"
                 "firefighter", "watchman", "supervisor", "foreman", "receptionist", "janitor", "custodian",
                 "mechanic", "pharmacist", "landlord", "landlady", "publican", "postman", "postwoman", "postie",
                 "porter", "lifeguard", "verger", "vicar", "curate", "ranger", "keeper"}
+# Who says "X <role> here" of the place they work at ("Tea room manager here, the place we get our bread from ...")
+WORKPLACE_ROLES = frozenset(CALLER_ROLES | ROLE_LABELS | SPEAKER_ROLES
+                            | {"manager", "owner", "landlord", "landlady", "driver", "staff"})
 # Said before a place nobody has been to yet ("we haven't been to the deanery yet"): no claim there.
 NOT_VISITED = [("havent", "been", "to"), ("not", "been", "to"), ("havent", "been", "in"), ("not", "been", "in"),
                ("havent", "been", "into"), ("havent", "checked"), ("not", "checked"), ("havent", "reached"),
