@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev77) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev79) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -132,6 +132,13 @@ WIND_FARM_COAST = ROOT / "knowledge_bases" / "wind_farm_coast"
 OPEN_AIR_MUSEUM = ROOT / "knowledge_bases" / "open_air_museum"
 BIKE_PARK = ROOT / "knowledge_bases" / "bike_park"
 BEACH_PROMENADE = ROOT / "knowledge_bases" / "beach_promenade"
+SAWMILL_CAMP = ROOT / "knowledge_bases" / "sawmill_camp"
+CARAVAN_PARK = ROOT / "knowledge_bases" / "caravan_park"
+GLACIER_STATION = ROOT / "knowledge_bases" / "glacier_station"
+TEA_ESTATE = ROOT / "knowledge_bases" / "tea_estate"
+CIRCUS_QUARTERS = ROOT / "knowledge_bases" / "circus_quarters"
+CEMENT_WORKS = ROOT / "knowledge_bases" / "cement_works"
+CITY_FARM = ROOT / "knowledge_bases" / "city_farm"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -415,6 +422,13 @@ SETS = {
     "dev77/open_air_museum": _set("dev77/open_air_museum.jsonl", OPEN_AIR_MUSEUM, "oa77", TWENTY, sep=""),
     "dev77/bike_park": _set("dev77/bike_park.jsonl", BIKE_PARK, "bp77", TWENTY, sep=""),
     "dev77/beach_promenade": _set("dev77/beach_promenade.jsonl", BEACH_PROMENADE, "bh77", TWENTY, sep=""),
+    "dev78/sawmill_camp": _set("dev78/sawmill_camp.jsonl", SAWMILL_CAMP, "sm78", TWENTY, sep=""),
+    "dev78/caravan_park": _set("dev78/caravan_park.jsonl", CARAVAN_PARK, "cv78", TWENTY, sep=""),
+    "dev78/glacier_station": _set("dev78/glacier_station.jsonl", GLACIER_STATION, "gl78", TWENTY, sep=""),
+    "dev78/tea_estate": _set("dev78/tea_estate.jsonl", TEA_ESTATE, "te78", TWENTY, sep=""),
+    "dev79/circus_quarters": _set("dev79/circus_quarters.jsonl", CIRCUS_QUARTERS, "cq79", TWENTY, sep=""),
+    "dev79/cement_works": _set("dev79/cement_works.jsonl", CEMENT_WORKS, "cw79", TWENTY, sep=""),
+    "dev79/city_farm": _set("dev79/city_farm.jsonl", CITY_FARM, "cf79", TWENTY, sep=""),
 }
 
 
