@@ -223,7 +223,7 @@ class ReportAnalyzer:
         self._cancel: PhraseMatcher[str] = PhraseMatcher(lx.HESITATIONS)
         for c in lx.CANCEL_AFTER:
             self._cancel.add(norm_phrase(c), c)
-        self._transit: PhraseMatcher[str] = PhraseMatcher()
+        self._transit: PhraseMatcher[str] = PhraseMatcher(lx.HESITATIONS)  # "we're er at the car barn"
         for t in lx.TRANSIT:
             self._transit.add(norm_phrase(t), t)
         self._relations: PhraseMatcher[tuple[str, bool]] = PhraseMatcher()  # phrase -> (relation, inverse)
@@ -625,6 +625,11 @@ class ReportAnalyzer:
             hit = self._keyword_relation(word.lower())
             if hit is None:
                 continue
+            if t > 0 and (is_number(norms[t - 1]) or norms[t - 1] in lx.NUMBER_WORDS) and not word.lower().endswith(("ed", "ing")):
+                continue  # "two wagons on their sides": things counted, not ``loads_wagons_at``
+            if t > 0 and ("a" in norms[max(0, t - 2):t] or "an" in norms[max(0, t - 2):t]) \
+                    and not _same_stem(norms[t], hit[0].split()[0]) and not word.lower().endswith(("ed", "ing")):
+                continue  # "there's a derailed wagon on it": a thing, not the noun inside ``loads_wagons_at``
             if t + 1 < len(norms) and ":" in toks.gaps[t + 1]:
                 continue  # "From the medical lead: the saucer ...": a speaker's label, not "leads_off"
             if t > 0 and norms[t - 1].endswith("ing") and norms[t] in _PEOPLE_WORDS | {"camper", "visitor", "guest"}:
@@ -739,12 +744,21 @@ class ReportAnalyzer:
         log = _is_log(toks)
         glossary_ends = {cb for ca, cb, (_, src) in all_cues if src == "glossary" and cb - ca > 1
                          and norms[cb - 1] not in lx.GENERIC_HEADS | lx.UNNAMING_HEADS | lx.DESCRIPTION_HEADS}
+        # a cue that is only a preposition before a place's name ("casualty in the river" where "the river" is
+        # one): the place, not the cue
+        place_cues = {(a, b) for a, b, _ in all_cues if b - a > 1}
         for a, b, landmark in self._places.find_all(norms):
-            if any(ca <= a and b <= cb and cb - ca > b - a for ca, cb in cue_hits) and not (
+            if any(ca <= a and b <= cb and cb - ca > b - a and not (
+                    (ca, cb) in place_cues and cb == b and a - ca <= 2
+                    and all(norms[i] in lx.PREPOSITIONS or norms[i] in lx.ARTICLES for i in range(ca, a)))
+                   for ca, cb in cue_hits) and not (
                     b in glossary_ends and not any(ca <= a and b <= cb and cb - ca > b - a and cb not in glossary_ends
                                                    for ca, cb in cue_hits)):
                 # ("a backed-up goit", "water over the hatches": a glossary term that ends in a place's name names it)
                 continue  # "first aid post" is a cue, "across the square from" a relation
+            if b - a == 1 and norms[a] in lx.BODY_PARTS and a >= 2 and norms[a - 1] == "the" \
+                    and norms[a - 2] in ("to", "on") and any(norms[m] in lx.INJURY_WORDS for m in range(max(0, a - 5), a - 2)):
+                continue  # "a casualty with burns to the face": a body part, not "the face" of a quarry
             if b - a == 1 and norms[a] in lx.PHONETIC_LETTERS and (
                     b < len(norms) and is_number(norms[b]) and not toks.clause_start[b]
                     or a > 0 and norms[a - 1] == "to" and not toks.clause_start[a]
@@ -980,6 +994,7 @@ class ReportAnalyzer:
         self._apply_place_negation(ex)
         self._apply_pronoun_negation(ex, norms)
         self._apply_restarts(ex)
+        self._apply_dropped(ex)
         self._apply_other_times(ex, norms)
         self._apply_place_repairs(ex)
         self._apply_trailing_repairs(ex)
@@ -1574,6 +1589,7 @@ class ReportAnalyzer:
                            and len(described.get(w, set()) - names) < 3
                            and w not in cue_words and w not in rel_words and w not in lx.DESCRIPTIVE_WORDS
                            and w not in lx.STOREY_WORDS and w not in lx.PART_NOUNS  # ("the roof" of anything)
+                           and w not in lx.LOCATIVE_PARTS  # ("at tower five, full burial at the base": its base)
                            and w not in ("step", "steps", "door", "doors", "window", "windows")
                            and not (w in lx.WATER_BODIES and all(name_words(n)[-1:] != (w,) for n in names))}
             # ("the river is coming in under the doors": the water itself, where only "the back river" is a name)
@@ -1656,9 +1672,15 @@ class ReportAnalyzer:
                 # "the terrace" names the one terrace only as a relation's anchor ("back to back with the terrace"),
                 # or as what a predicate is said of ("the barn's out now")
                 continue
+            clause = range(i + 2, next((j for j in range(i + 2, min(len(norms), i + 10)) if toks.clause_start[j]),
+                                       min(len(norms), i + 10)))
             if i + 1 < len(norms) and norms[i + 1] in ("that", "which", "where", "who") and not toks.clause_start[i + 1] \
                     and not (i >= 2 and norms[i - 1] == "the" and (norms[i - 2] == "its" or norms[i - 3:i - 1] == ("it", "is"))
-                             and norms[i + 1] == "that"):
+                             and norms[i + 1] == "that") \
+                    and not (norms[i + 1] == "where" and (i + 2 >= len(norms) or norms[i + 2] in lx.ARTICLES) and not any(
+                        j in taken or norms[j] in lx.PRONOUNS or self._relations.match_at(norms, j) is not None
+                        for j in clause)):
+                # ("the cage where the spare gas bottles are kept": what is kept there, no place the relation needs)
                 continue  # "the compound that supplies it": a description for the relation passes (but "it's the
                 # slipway that's under": a cleft, the place named)
             if i + 1 < len(norms) and not toks.clause_start[i + 1] and norms[i + 1].isalpha() \
@@ -3180,7 +3202,7 @@ class ReportAnalyzer:
         for anchor in [p for p in ex.places if p.via is None and (p.status == "active" or p.status == "reference"
                                                                   and p.reason.startswith(("reference point of an unresolved",
                                                                                            "modifier of '")))
-                       or p.via is not None and p.status == "active" and not p.via.startswith("description of")]:
+                       or p.via is not None and p.status == "active"]:
             # (a resolved description anchors one only by a head that names its one relative: "the bridge over the
             # drain the tin shed drinks from")
             if anchor not in ex.places:
@@ -3194,6 +3216,8 @@ class ReportAnalyzer:
                 if h in blocked and not (h in cue_tokens and h not in place_tokens and "whose" in norms[max(0, h - 2):h]) \
                         or toks.clause_start[h + 1] and toks.gaps[h + 1] != "-" or norms[h] in lx.COORDINATORS:
                     break  # (a hyphen inside a word, "cross-passage", ends no clause; "whose old stables": no cue)
+                if norms[h] == "one" and norms[h - 1] in ("second", "third", "fourth", "another", "next"):
+                    break  # "big hot spot in the dutch barn, and a second one in the roof of the machinery shed"
                 if norms[h] in nouns and h > 0 and (norms[h - 1] in lx.ARTICLES | lx.WHATEVER or h > 1
                                                     and norms[h - 2] in lx.ARTICLES and norms[h - 1].isalpha()
                                                     and (h - 1) not in blocked) or norms[h] in lx.WHATEVER:
@@ -3390,6 +3414,18 @@ class ReportAnalyzer:
             if any(q.end_tok > last.end_tok and q.start_tok < k for q in ex.places if q is not last):
                 continue  # (another place said between: which one "its" means is not sure)
             out.append(self._mention(toks, k, k + 1, last.landmark, status="reference", reason=f"modifier of '{raw}'"))
+        # "the building the laundry's built onto ... And the playground that building looks out over": "that" and
+        # the head of a description said before take it up again
+        for k in range(3, len(norms) - 1):
+            if norms[k - 1] != "that" or k in blocked or (k - 1) in blocked or toks.clause_start[k] \
+                    or norms[k] not in lx.GENERIC_HEADS | lx.DESCRIPTION_HEADS or norms[k + 1] in lx.COPULAS \
+                    or toks.clause_start[k + 1] or not toks.tokens[k + 1].text.isalpha():
+                continue
+            said = {p.landmark: p for p in ex.places if p.status == "active" and p.via is not None and p.end_tok <= k - 1
+                    and norm_phrase(p.text)[:2] == ("the", norms[k])}
+            if len(said) == 1:
+                out.append(self._mention(toks, k - 1, k + 1, next(iter(said)), status="reference",
+                                         reason=f"modifier of 'that {norms[k]}'"))
         return out
 
     @staticmethod
@@ -3410,6 +3446,14 @@ class ReportAnalyzer:
                                               or norms[unit - 1] in lx.NUMBER_WORDS):
             return  # "the caravans are standing in a foot of it": how deep, not "the foot of" a place
         anchor, anchor_end, pronoun = self._anchor_after(ex, norms, b, phrase)
+        if anchor is not None and not pronoun and anchor.status == "active" and anchor.via is None \
+                and set(norms[a:b]) & _COMPASS and not any(set(norm_phrase(r.relation)) & _COMPASS for r in self.kb.relations):
+            # "a landslip just east of the lift line": a bearing from a place the KB relates nothing to by compass;
+            # the place only says where
+            ex.places[ex.places.index(anchor)] = replace(anchor, status="reference",
+                                                         reason="reference point of a compass bearing")
+            ex.relation_tokens.update(range(a, b))
+            return
         if anchor is not None and not pronoun and anchor.via is not None and not inverse_pass \
                 and f" {phrase.replace('_', ' ')} " in f" {anchor.via.replace('_', ' ')} " \
                 and anchor.start_tok <= b + 1 and a > 0 and norms[a - 1] in lx.WHATEVER | {"that", "which"} \
@@ -3576,6 +3620,24 @@ class ReportAnalyzer:
             if found is None:
                 return
             anchor_p, hs, named = found
+            head_p = next((p for p in ex.places if p.start_tok == hs and p.status == "active"), None) \
+                if named is True else None
+            if head_p is not None and head_p.end_tok - head_p.start_tok == 1 and hs > 0 and norms[hs - 1] == "the" \
+                    and norms[hs:hs + 1] not in {name_words(f) for f in self.kb.landmark_by_name[head_p.landmark].surface_forms}:
+                target, via = self._follow(anchor_p.landmark, phrase, toks.tokens[hs].text, inverse=not flipped)
+                if target is not None and target != head_p.landmark \
+                        and self._follow(anchor_p.landmark, phrase, "", inverse=not flipped)[0] == target \
+                        and norms[hs] in self._description_words().get(target, ()) \
+                        and (anchor_p.landmark, head_p.landmark) not in self._related_pairs:
+                    # "The bank the pumping station is built into": one word of a name ("the far bank") heads a
+                    # description whose relation reaches another place
+                    ex.places.remove(head_p)
+                    ex.places[ex.places.index(anchor_p)] = replace(anchor_p, status="reference",
+                                                                   reason=f"reference point: {via}")
+                    ex.places.append(self._mention(toks, hs - 1, b, target, via=via))
+                    place_tokens.update(range(hs - 1, b))
+                    ex.relation_tokens.update(range(a, b))
+                    return
             if named is True:
                 ex.places[ex.places.index(anchor_p)] = replace(anchor_p, status="reference",
                                                                reason="reference point of a named place")
@@ -3808,7 +3870,8 @@ class ReportAnalyzer:
                     and not toks.clause_start[e]:
                 e += 1
                 while e < len(norms) and e - i < 9 and not toks.clause_start[e] and e not in stop \
-                        and e not in relation_starts and norms[e] not in lx.COPULAS - {"s"} and norms[e] not in lx.COORDINATORS:
+                        and e not in relation_starts and (norms[e] not in lx.COPULAS - {"s"} or norms[e - 1] == "with") \
+                        and norms[e] not in lx.COORDINATORS:  # ("the barn with all the hay in")
                     e += 1
             words = {w for w in norms[s_:e] if w not in lx.DESCRIPTION_STOPWORDS and w not in closed}
             scores = sorted(((len(words & ws), name) for name, ws in desc.items()), reverse=True)
@@ -3819,6 +3882,13 @@ class ReportAnalyzer:
             if scores and norms[i] not in lx.UNNAMING_HEADS | lx.DESCRIPTION_STOPWORDS and norms[i] not in desc[scores[0][1]]:
                 i += 1  # "the pub where the drainage board lads ...": the depot's words, but no pub
                 continue
+            if scores and scores[0][0] >= 2 and len(scores) > 1 and scores[0][0] == scores[1][0] and e > i + 2:
+                # "the shed where they keep the snowcats": of the places whose descriptions say as much, the one
+                # whose own name the head word is in (not the helipad "on the snowcat shed's roof")
+                named = [sc for sc in scores if sc[0] == scores[0][0] and any(
+                    norms[i] in name_words(f) for f in self.kb.landmark_by_name[sc[1]].surface_forms)]
+                if len(named) == 1:
+                    scores = named
             if scores and scores[0][0] >= 2 and (len(scores) == 1 or scores[0][0] > scores[1][0]):
                 a = s_ - 1 if has_det else s_
                 while e - 1 > i and norms[e - 1] in lx.DETERMINERS:
@@ -4453,8 +4523,8 @@ class ReportAnalyzer:
             ) or norms[j] == "instead" or (
                 norms[j] in ("rule", "ruled", "ruling") and norms[j + 1] == "out"  # "rule out the park"
             ) or (
-                norms[j] == "nothing" and any(norms[i] in ("at", "in", "inside") for i in range(j + 1, p.start_tok))
-            )  # "nothing at the bus depot, it's the supermarket"
+                norms[j] == "nothing" and any(norms[i] in ("at", "in", "inside", "on") for i in range(j + 1, p.start_tok))
+            )  # "nothing at the bus depot, it's the supermarket"; "nothing on the quarry floor"
             if neg and norms[j] == "instead" and toks.clause_start[j + 1]:
                 neg = False  # "use the school instead, the school's the rest centre": the clause before ends there
             if neg and norms[j] == "not" and j > 0 and norms[j - 1] in ("do", "dont", "does", "did") \
@@ -4720,15 +4790,24 @@ class ReportAnalyzer:
             and (numbered or not any(self._cues.match_at(norms, i) for i in before))
 
     @staticmethod
-    def _calls_by_name(toks: Tokens, norms: tuple[str, ...], p: PlaceMention) -> bool:
+    def _calls_by_name(toks: Tokens, norms: tuple[str, ...], p: PlaceMention, places: list[PlaceMention]) -> bool:
         """"Tower to Rescue One: the flying club ... is safe": a place that opens the message calling a station
         by name is who calls; unless the message speaks of its own place ("we", "our building"), it claims nothing."""
         a, e = p.start_tok, p.end_tok
+        everyone = norms[e + 1:e + 2] == ("all",) and e + 2 < len(norms) and norms[e + 2] in (
+            "units", "unit", "stations", "station", "call", "callsigns", "teams", "crews", "channels", "parties")
         if toks.sentence_of[a] != 0 or not all(w in lx.FILLERS | lx.DETERMINERS for w in norms[:a]) \
                 or norms[e:e + 1] != ("to",) or e + 1 >= len(norms) \
-                or not (toks.tokens[e + 1].text[:1].isupper() or norms[e + 1] in lx.STATIONS_CALLED):
+                or not (toks.tokens[e + 1].text[:1].isupper() or norms[e + 1] in lx.STATIONS_CALLED or everyone):
             return False  # ("Marshal hut to control. Chair evac in progress ...")
         k = e + 1
+        if everyone:  # "Top station to all units: the sky restaurant is ... , we're using it as ...": a broadcast
+            k = e + 3 + (norms[e + 2] == "call" and norms[e + 3:e + 4] in (("signs",), ("sign",)))
+            first = next((m for m in range(k + 1, len(norms)) if toks.clause_start[m]), len(norms))
+            # (its message opens on another place it tells of; "X to all units: we have ..." is news of X)
+            return k < len(norms) and toks.clause_start[k] and any(
+                q.landmark != p.landmark and k <= q.start_tok < min(first, k + 4) for q in places) \
+                and not {"our", "us", "ours", "my", "here", "this"} & set(norms[k:])
         if norms[k] in lx.STATIONS_CALLED and not toks.tokens[k].text[:1].isupper():
             k += 1
         while k < len(norms) and k - e <= 4 and not toks.clause_start[k] and (
@@ -4871,7 +4950,7 @@ class ReportAnalyzer:
             if self._called_station(toks, norms, p, ex.places):
                 ex.places[idx] = replace(p, status="reference", reason="the station called ('X to Y,'): no claim")
                 continue
-            if self._calls_by_name(toks, norms, p):
+            if self._calls_by_name(toks, norms, p, ex.places):
                 ex.places[idx] = replace(p, status="reference", reason="who is calling ('X to Y:'), said of no more")
                 continue
             j = _noun_phrase_start(norms, p)
@@ -4923,6 +5002,17 @@ class ReportAnalyzer:
             if self._person_from(toks, norms, p, ex.places):
                 ex.places[idx] = replace(p, status="reference", reason="where the person is from, not where they are")
                 continue
+            k = _noun_phrase_start(norms, p)
+            if k >= 2 and norms[k - 1] == "off" and any(
+                    norms[t] in lx.SEND_VERBS and not any(toks.clause_start[m] for m in range(t + 1, k))
+                    for t in range(max(0, k - 6), k - 1)):
+                ex.places[idx] = replace(p, status="reference", reason="where people are sent from: no claim")
+                continue  # "we're sending the families off the tourer field in there to wait it out"
+            e = p.end_tok + (norms[p.end_tok:p.end_tok + 1] in (("up",), ("down",), ("over",), ("across",), ("back",)))
+            if k >= 1 and norms[k - 1] in ("moved", "move", "moving", "relocated", "shifted") \
+                    and norms[e:e + 1] in (("to",), ("into",)) and e + 1 < len(norms) and norms[e + 1] in lx.ARTICLES:
+                ex.places[idx] = replace(p, status="reference", reason="what was moved to another place: no claim")
+                continue  # "we've moved the office up to the warden's bungalow": the office goes, no news of its place
             where = self._locates_other(norms, p, ex.places)
             if where:
                 ex.places[idx] = replace(p, status="reference", reason=where)
@@ -5108,6 +5198,18 @@ class ReportAnalyzer:
         return not any(norms[i] == "for" and norms[i - 1] in ("area", "point", "post", "base", "centre", "center", "zone")
                        for i in range(max(1, k - 4), k))
 
+    def _apply_dropped(self, ex: Extraction) -> None:
+        """"there's a wash-through ... and the top block - never mind, haven't got to the top block yet": a place
+        just begun, then dropped with "never mind" before anything is said of it."""
+        norms = ex.tokens.norms(0, len(ex.tokens))
+        for idx, p in enumerate(ex.places):
+            k = p.end_tok
+            while k < len(norms) and norms[k] in lx.FILLERS:
+                k += 1
+            if p.status == "active" and norms[k:k + 2] == ("never", "mind") or norms[k:k + 1] == ("nevermind",) \
+                    and p.status == "active":
+                ex.places[idx] = replace(p, status="retracted", reason="dropped ('never mind')")
+
     def _apply_restarts(self, ex: Extraction) -> None:
         """"the church is — the church is being used": the first mention is a false start."""
         norms = ex.tokens.norms(0, len(ex.tokens))
@@ -5126,6 +5228,14 @@ class ReportAnalyzer:
                 ex.places[i] = replace(p, status="retracted", reason="restarted: the speaker repeats the place")
                 ex.places[j] = replace(q, replaces=p.start_tok)
                 continue
+            denied = {k for r in ex.places if r.status == "negated" and p.end_tok <= r.start_tok and r.end_tok <= q.start_tok
+                      for k in range(r.start_tok, r.end_tok)}
+            pre = _noun_phrase_start(norms, p)
+            if denied and norms[min(denied) - 1:min(denied)] in (("not",), ("the",)) and p.replaces is None \
+                    and not (pre > 0 and norms[pre - 1] in ("s", "is", "its", "was")):
+                # (not "it's the town hall, not the library. So, the town hall": the place said, then said again)
+                # "the chairlift, not the t-bar, the chairlift's got a chair ripped off": past the place denied
+                between = [norms[k] for k in range(p.end_tok, q.start_tok) if k not in denied and norms[k] != "not"]
             if between and len(between) <= 4 and all(w in lx.COPULAS | lx.FILLERS | lx.DETERMINERS | lx.PRONOUNS for w in between) \
                     and any(ex.tokens.clause_start[k] for k in range(p.end_tok, q.start_tok + 1)) \
                     and not any(";" in ex.tokens.gaps[k] for k in range(p.end_tok, q.start_tok + 1)) \
@@ -5679,6 +5789,14 @@ class ReportAnalyzer:
         cues.extend(self._structure_gone(ex, norms, blocked))
         cues.extend(self._contracted_is_cues(ex, norms, blocked))
         cues.extend(self._under_final(ex, norms, blocked))
+        for i in range(1, len(norms) - 1):
+            if norms[i:i + 2] == ("stove", "in") and not blocked & {i, i + 1} and _stove_in(toks, norms, i):
+                # "the whole front wall's stove in": smashed in (the vocabulary has no bare "stove in": "the stove in
+                # the refuge" is a stove)
+                und = self._category_for_role(lx.UNDESIRABLE, "smashed in, collapsed")
+                if und is not None:
+                    a_, b_ = toks.tokens[i].start, toks.tokens[i + 1].end
+                    cues.append(CueMention(i, i + 2, a_, b_, toks.text[a_:b_], und, "lexicon", reason="stove in"))
         for a, b, (cat, source) in self._cues.find_all(norms, blocked):
             if source == "neutral":
                 neutral.update(range(a, b))  # ("people sitting in here out of the smoke": no person, no smoke)
@@ -5791,7 +5909,11 @@ class ReportAnalyzer:
             if b == a + 1 and b < len(norms) and (toks.tokens[a].text[:1].isupper() or _after_station(norms, a)) \
                     and (norms[b] in lx.NUMBER_WORDS | {"one"} or norms[b].isdigit()) and toks.gaps[b] == " " \
                     and (b + 1 == len(norms) or toks.clause_start[b + 1] or norms[b + 1] in lx.COPULAS | {"to", "here"}
-                         or toks.tokens[b + 1].text.lower().replace("’", "'") in ("we're", "we've", "i'm", "we")):
+                         or toks.tokens[b + 1].text.lower().replace("’", "'") in ("we're", "we've", "i'm", "we")
+                         or (a == 0 or toks.sentence_start[a]) and norms[b + 1] in (
+                             "moving", "heading", "going", "proceeding", "arriving", "attending", "returning", "leaving",
+                             "approaching", "now", "en", "mobile", "mobilising", "mobilizing")):
+                # ("Fire Two moving from the lodge up to the weighbridge")
                 continue  # "Control, Hazmat One, we're ...", "uh yeah control er fire two we're ...": a call sign
             if b == a + 1 and a > 0 and norms[a - 1] in lx.ARTICLES and norms[a] in lx.NEGATABLE_STATES \
                     and toks.tokens[a].text.lower() == norms[a] + "s":
@@ -5930,7 +6052,9 @@ class ReportAnalyzer:
         cues = self._damage_by_cause(norms, cues)
         cues = self._spread_of_what(toks, norms, cues)
         cues = self._sheltered_people(norms, cues)
-        cues = self._animals_in_trouble(norms, cues)
+        cues = self._animals_in_trouble(norms, cues, toks)
+        cues.extend(self._animal_states(toks, norms, blocked | neutral | {i for c in cues for i in range(c.start_tok, c.end_tok)}))
+        cues.extend(self._cues_into_description(ex, norms, {i for c in cues for i in range(c.start_tok, c.end_tok)}))
         cues.extend(self._predicative_cues(ex, norms, blocked | {i for c in cues for i in range(c.start_tok, c.end_tok)}))
         cues.extend(self._person_cues(ex, norms, blocked | neutral | {i for c in cues for i in range(c.start_tok, c.end_tok)}))
         cues.extend(self._another_one_cues(toks, norms, cues, blocked))
@@ -6262,6 +6386,10 @@ class ReportAnalyzer:
             j -= 1
         if j < 0:
             return False
+        if j >= 2 and norms[j] in ("it", "them") and norms[j - 1] == "of":
+            j -= 2  # "the bottom end of it is buried": a part of the place
+            if norms[j] in ("end", "side", "half", "part", "section", "rest"):
+                return True
         return j in place_tokens or norms[j] in lx.DANGER_KIND_PARTS or norms[j] in lx.STRUCTURE_WORDS \
             or norms[j] in lx.LOCATIVE_PARTS
 
@@ -6355,11 +6483,67 @@ class ReportAnalyzer:
         livestock or animals (one only), else None."""
         crit = self.kb.categories_with_role(Role.CRITICAL)
         if len(crit) < 2:
-            return None
+            # (or an undesirable one: "The show's animals at a place that are loose, bolting, panicking ...", beside
+            # the people's critical category)
+            und = [c.name for c in self.kb.categories_with_role(Role.UNDESIRABLE)
+                   if self._affirmed_words(c.description) & lx.ANIMAL_WORDS]
+            return und[0] if len(und) == 1 and len(crit) == 1 else None
         found = [c.name for c in crit if self._affirmed_words(c.description) & lx.ANIMAL_WORDS]
         return found[0] if len(found) == 1 else None
 
-    def _animals_in_trouble(self, norms: tuple[str, ...], cues: list[CueMention]) -> list[CueMention]:
+    def _cues_into_description(self, ex: Extraction, norms: tuple[str, ...], taken: set[int]) -> list[CueMention]:
+        """"one of the grooms has gone into the water downhill of the lion shed": a cue phrase that runs on into a
+        description's head ("gone into the water") is said of the place described."""
+        toks = ex.tokens
+        out: list[CueMention] = []
+        for p in ex.places:
+            a = p.start_tok
+            if p.via is None or p.status != "active" or norms[a:a + 2] != ("the", "water") or a < 2:
+                continue
+            for k in range(max(0, a - 4), a):
+                if taken & set(range(k, a)) or any(toks.clause_start[m] for m in range(k + 1, a + 1)):
+                    continue
+                hit = self._cues.match_at(norms[:a + 2], k)
+                if hit is not None and hit[0] == a + 2 and hit[1][1] != "neutral":
+                    s_, e_ = toks.tokens[k].start, toks.tokens[a - 1].end
+                    out.append(CueMention(k, a, s_, e_, toks.text[s_:e_], hit[1][0], hit[1][1],
+                                          reason="runs on into the description's head"))
+                    break
+        return out
+
+    def _animal_subject(self, toks: Tokens, norms: tuple[str, ...], a: int) -> bool:
+        """An animal word before token ``a`` in its clause, with no person word between: "the bulls are chained in
+        there screaming", "The lions in the barn across the yard from the horse lines are panicking"."""
+        for j in range(a - 1, max(-1, a - 13), -1):
+            if norms[j] in _PERSON_WORDS or norms[j] in lx.PERSON_SUBJECTS:
+                return False
+            if norms[j] in lx.ANIMAL_WORDS:
+                return True
+            if toks.clause_start[j] and not (j > 0 and norms[j - 1] in lx.ANIMAL_WORDS):
+                return False
+        return False
+
+    def _animal_states(self, toks: Tokens, norms: tuple[str, ...], taken: set[int]) -> list[CueMention]:
+        """"the bulls in the barn it's built against are going frantic": a state only animals in trouble are said
+        to be in, its animal the subject of the clause, where the KB has a category for animals."""
+        animal = self._animal_category
+        out: list[CueMention] = []
+        if animal is None:
+            return out
+        for i in range(1, len(norms)):
+            n = 2 if norms[i:i + 2] in (("going", "frantic"), ("going", "mental"), ("going", "berserk"),
+                                         ("kicking", "off")) else 1
+            if n == 1 and norms[i] not in ("panicking", "frantic", "bolting", "bolted", "stampeding", "spooked",
+                                           "screaming", "trumpeting", "rearing"):
+                continue
+            if taken & set(range(i, i + n)) or not self._animal_subject(toks, norms, i):
+                continue
+            a_, b_ = toks.tokens[i].start, toks.tokens[i + n - 1].end
+            out.append(CueMention(i, i + n, a_, b_, toks.text[a_:b_], animal, "lexicon", reason="said of animals"))
+            taken = taken | set(range(i, i + n))
+        return out
+
+    def _animals_in_trouble(self, norms: tuple[str, ...], cues: list[CueMention], toks: Tokens | None = None) -> list[CueMention]:
         """"bullocks stuck in the cattle lines", "a bullock loose", "ewes swimming in there": a critical cue said of
         animals takes the KB's category for animals, where it has one apart from the people's."""
         animal = self._animal_category
@@ -6374,7 +6558,10 @@ class ReportAnalyzer:
                                                            or norms[j] in lx.FILLERS or is_number(norms[j])):
                     j -= 1
                 said = set(norms[c.start_tok:c.end_tok])
-                if said & lx.ANIMAL_WORDS or j >= 0 and norms[j] in lx.ANIMAL_WORDS:
+                if said & lx.ANIMAL_WORDS or j >= 0 and norms[j] in lx.ANIMAL_WORDS \
+                        or toks is not None and c.end_tok - c.start_tok == 1 and norms[c.start_tok] in (
+                            "screaming", "panicking", "trapped", "stuck", "hurt", "injured") \
+                        and self._animal_subject(toks, norms, c.start_tok):
                     c = replace(c, category=animal, reason="said of animals")
             out.append(c)
         return out
@@ -7084,6 +7271,13 @@ class ReportAnalyzer:
                     # "the copper house is burning, ... scratch the pagoda, that's just steam, just the copper house":
                     # said of the place taken back; the place said before it is said again and keeps its claim
                     continue
+                if phrase in ("never mind", "nevermind") and any(
+                        0 <= i - p.end_tok <= 2 and all(norms[m] in lx.FILLERS for m in range(p.end_tok, i))
+                        and any(c.start_tok < p.start_tok and sentence_of[c.start_tok] == sentence_of[i]
+                                and c.polarity == "affirmed" for c in cues)
+                        and not any(p.end_tok <= c.start_tok < i for c in cues) for p in places_now):
+                    continue  # "there's a wash-through ... and the top block - never mind, haven't got to the top
+                    # block yet": the speaker drops the place just begun, not what was said before it
                 if norms[i : i + len(key)] == key or stutter:
                     # "disregard my last, the spill is at the store": an earlier report is withdrawn and
                     # what follows replaces it
@@ -7880,7 +8074,10 @@ class ReportAnalyzer:
                         # ("past the caravan park and there's smoke, loads of smoke, from the -": from somewhere else)
                         and (sentence_of[p.start_tok] == sentence_of[a]
                              or opens and sentence_of[p.start_tok] == sentence_of[a] - 1)]
-                if here and not seg_usable.get(k - 1):
+                prev = k - 1
+                while prev > 0 and all(norms[i] in lx.FILLERS or norms[i] in ("and", "then") for i in range(*segs[prev])):
+                    prev -= 1  # ("heading up the tracks and um, there's a derailment": the tracks, past the "um")
+                if here and not seg_usable.get(prev):
                     pairs.extend(Claim(replace(here[-1], status="active"), c) for c in cs)
                     continue
             if all(c.category == self._person_category for c in cs) and self._person_category is not None:
@@ -9195,6 +9392,15 @@ def _withdraws(marker: tuple[str, ...]) -> bool:
     return any(words == m or words.startswith(m + " ") for m in _WITHDRAW_KEYS)
 
 
+def _stove_in(toks: Tokens, norms: tuple[str, ...], a: int) -> bool:
+    """"the front wall's stove in", "the door's been stove in": smashed in (not "the stove in the refuge")."""
+    return a > 0 and (norms[a - 1] in ("s", "is", "been", "was", "were", "are", "got", "get", "had", "has", "have",
+                                       "all", "completely")
+                      or toks.tokens[a - 1].text.lower().replace("’", "'").endswith("'s")) \
+        and norms[a + 2:a + 3] not in (("the",), ("a",), ("an",), ("our",), ("their",), ("there",), ("here",))
+
+
+_COMPASS = frozenset({"north", "south", "east", "west", "northeast", "northwest", "southeast", "southwest"})
 # Closed-class words that never head a description.
 _NOT_HEADS = lx.PREPOSITIONS | lx.COPULAS | lx.FILLERS | lx.PRONOUNS | lx.INVERSE_VERBS | lx.DETERMINERS
 
@@ -9208,6 +9414,9 @@ def _names_what_came(norms: tuple[str, ...], p: PlaceMention) -> bool:
     if norms[a] in lx.WATER_BODIES and norms[a - 2] in ("got", "get", "getting") \
             and norms[p.end_tok:p.end_tok + 1] in (("in",), ("into",)):
         return True
+    if norms[a] in lx.WATER_BODIES and a >= 3 and norms[a - 2] == "by" and norms[a - 3] in (
+            "off", "surrounded", "stranded", "isolated", "marooned"):
+        return True  # "stranded on the picnic field, cut off by the river": the water that strands them
     return norms[a] in lx.EVENT_NOUNS and a >= 3 and norms[a - 2] == "by" and norms[a - 3] in lx.CAUSED_BY_VERBS
 
 

@@ -131,7 +131,7 @@ fine to walk through|fine to walk on|fine to cross|okay to walk through|ok to wa
 fine for overflow|taking in families|taking in people|taking people in|can take people|we can take people|
 people are gathering there|people gathering there|everyone's gathering there|gathering there|taking in residents|
 taking in the evacuees|taking families|taking the overflow|taking overflow|taking the overspill|evac point|evac points|evac centre|evac center|evacuation points|
-anyone cold can go|heaters on|tea on|there's tea on|kettle's on|kettle on|warm, dry|can come here|got the heaters on|heating on|got the heating on|holding everyone|where we're holding|can go up there|soup on|hot food|hot drinks|warm drinks|rest stop|wait inside safely|letting people wait inside|letting people shelter|letting people in to shelter|
+anyone cold can go|stove going|stove is going|stove's going|stove lit|stove's lit|stoves going|got the stove going|has heat and power|has power and heat|heaters on|tea on|there's tea on|kettle's on|kettle on|warm, dry|can come here|got the heaters on|heating on|got the heating on|holding everyone|where we're holding|can go up there|soup on|hot food|hot drinks|warm drinks|rest stop|wait inside safely|letting people wait inside|letting people shelter|letting people in to shelter|
 where we're sending everyone|where we're sending people|where we're sending them|where we're taking everyone|
 where we're taking people|where we're putting people|where we're putting everyone|where everyone's going|
 where everyone is going|putting people there|putting people in there|putting everyone there|moving people there|send people there|
@@ -200,7 +200,7 @@ missing person|missing persons|missing|man down|person down|woman down|people do
 medical emergency|medical help|needs a medic|needs medic|needs an ambulance|needs evacuation|
 can't get out|cannot get out|can't move|cannot move|burns victim|overcome by smoke|
 stranded|cut off|trapped people|trapped persons|people trapped|someone trapped|somebody trapped|
-hypothermic|drowning|bleeding out|critical condition|in shock|lost consciousness|passed out|fainted|keeled over|keels over|has keeled over|collapsed inside|
+hypothermic|going hypo|gone hypo|hypoglycaemic|hypoglycemic|drowning|bleeding out|critical condition|in shock|lost consciousness|passed out|fainted|keeled over|keels over|has keeled over|collapsed inside|
 pinned under debris|pinned under rubble|trapped under debris|trapped under rubble|buried under rubble|buried under debris|
 trapped in rubble|under the rubble|needs medics|need medics|needs a doctor|requires evacuation|unaccounted for|
 people still inside|still inside|someone still inside|can't get back|cannot get back|can't get back to shore|water all round him|water all round her|water all round them|water all round us|water all around him|water all around them|on the roof with water|still in the cab|still in his cab|still in her cab|driver still in|people stuck|people stuck inside|with people inside|
@@ -372,7 +372,7 @@ BACK_REFERENCE_WORDS = {"it", "its", "s", "is", "has", "been", "thats", "that", 
                         "ive"}
 
 # Phrases that contain cue words but claim nothing ("the smoke alarm went off", "fire crew on site").
-NEUTRAL_PHRASES = ["a bonfire", "drill smoke", "exercise smoke", "smoke grenade", "smoke grenades", "burning hedge trimmings", "burning garden waste", "burning rubbish", "controlled burn", "fire drill", "evacuation drill", "fire practice", "half in the water", "i'm shattered", "im shattered", "i am shattered", "we're shattered", "we are shattered",
+NEUTRAL_PHRASES = ["a bonfire", "been cleared out", "cleared out", "drill smoke", "exercise smoke", "smoke grenade", "smoke grenades", "burning hedge trimmings", "burning garden waste", "burning rubbish", "controlled burn", "fire drill", "evacuation drill", "fire practice", "half in the water", "i'm shattered", "im shattered", "i am shattered", "we're shattered", "we are shattered",
                    "keeping the children inside", "keeping the kids inside", "keeping everyone inside",
                    "keeping them inside", "kept the children inside", "kept the kids inside", "went under in the crash", "went bust", "gone bust", "above the flood line", "above the waterline", "above the water line", "above the flood level",
                    "above the high water mark", "roof is still on", "roof's still on", "been found safe", "found safe and well", "found safe at", "stable staff", "stable lads", "stable lad", "stable hands", "stable hand", "stable girls",
@@ -535,6 +535,8 @@ RELATION_SYNONYMS: dict[str, list[str]] = {
                "just behind", "backs onto", "backing onto", "that backs onto", "round behind", "out the back of",
                "back behind", "built against the back of", "built onto the back of", "built on to the back of",
                "against the back of", "up against the back of", "stuck on the back of", "tacked onto the back of", "behind of", "in behind of"],
+    "set into": ["set into", "built into", "sunk into", "let into", "set right into", "built right into", "set in to",
+                 "built in to"],
     "in front of": ["in front of", "out front of", "directly in front of", "right in front of", "at the front of"],
     "inside": ["inside", "within"],
     "above": ["above", "on top of", "upstairs from", "overlooks", "overlooking", "overlook", "looks over",
@@ -765,8 +767,8 @@ RETRACT_VERBS = {"scratch", "strike", "forget", "cancel", "remove", "minus", "dr
 
 # Places in these phrases are being passed or travelled to: the report claims nothing about them.
 TRANSIT = ["people in off", "taking people in off", "in off the", "walked up from", "walked down from", "walked over from", "walked from", "drove from", "drove up from",
-           "driven from", "ran from", "run from", "cycled from", "anyone coming off", "anybody coming off", "everyone coming off", "people coming off", "families coming off",
-           "visitors coming off", "crowds coming off", "folk coming off", "riders coming off", "families coming out of", "evacuated from", "moved out of", "moved from", "relocated from", "decanted from", "brought out of",
+           "driven from", "ran from", "run from", "cycled from", "anyone coming off", "anyone walked off", "anybody walked off", "everyone walked off", "people walked off", "anyone walking off", "people walking off", "anybody coming off", "everyone coming off", "people coming off", "families coming off",
+           "visitors coming off", "crowds coming off", "folk coming off", "riders coming off", "families coming out of", "anyone coming out of", "anybody coming out of", "everyone coming out of", "people coming out of", "evacuated from", "moved out of", "moved from", "relocated from", "decanted from", "brought out of",
            "heading to", "heading for", "heading towards", "heading toward", "headed to", "headed for", "head to",
            "heading up towards", "heading down towards", "creeping towards", "drifting towards", "current towards", "swinging towards", "floating towards",
            "spreading towards", "moving up towards",
@@ -775,10 +777,10 @@ TRANSIT = ["people in off", "taking people in off", "in off the", "walked up fro
            "walking to", "moving to", "moving towards", "proceeding to", "approaching", "leaving",
            "just left", "came from", "come from", "just came from", "coming back from", "returning to",
            "came down from", "come down from", "coming down from", "came up from", "come up from", "coming up from",
-           "watching from", "watching it from", "looking on from", "see it from", "seen from",
+           "watching from", "watching it from", "looking on from", "see it from", "seen from", "spotted from", "spotted it from", "spotted them from", "spotted him from", "spotted her from", "sighted from", "seen it from",
            "returning from", "parked at", "parked by", "parked near", "parked the truck at", "parked the truck by",
            "staged at", "regrouping at", "relocating to", "diverting to", "rerouting to", "going round",
-           "we're at", "we are at", "currently at", "and i'm in", "and i'm at", "and we're in", "and i am in",
+           "we're at", "we are at", "currently at", "we're set up by", "we're set up at", "we are set up by", "we are set up at", "we're setting up at", "we're setting up by", "we're setting up on", "we're set up on", "and i'm in", "and i'm at", "and we're in", "and i am in",
            "and i am at", "positioned at", "standing by at", "checking", "will check",
            "we're outside", "we are outside", "we're by", "we are by", "we're in front of", "we're opposite",
            "we're standing at", "we're standing outside", "we are standing outside", "standing outside",
@@ -1155,7 +1157,7 @@ DANGER_KINDS: dict[str, list[str]] = {
                "ceiling down", "tree through the roof", "tree on it", "the tree on it", "tree on the roof",
                "roof fell on", "fell on them", "came down on them", "come down on them", "collapsed on them",
                "smashed", "smashed up", "smashed to pieces", "smashed to matchwood", "full of wreckage", "wreckage",
-               "a breach in it", "breach in the", "shedding stone", "shedding stones", "shedding masonry",
+               "a breach in it", "breach in the", "split down the side", "split down one side", "split wide open", "split right open", "split open", "taken a tree", "taken trees", "took a tree", "taken a falling tree", "ripped off", "ripped clean off", "ripped away", "is bent at", "s bent at", "bent at the top", "bent in half", "bent double", "badly bent", "has a breach", "got a breach", "breached", "been breached", "shedding stone", "shedding stones", "shedding masonry",
                "masonry dropping", "masonry falling", "masonry coming down", "bits of masonry", "trees are down",
                "trees down", "tree is down", "power lines tangled", "lines tangled in", "half the ceiling's",
                "has failed", "concrete's gone", "half gone", "ripped out the", "doors burst in", "burst in by the",
@@ -1194,7 +1196,7 @@ DANGER_KINDS: dict[str, list[str]] = {
               "only the roofs showing", "floor's gone under", "floor has gone under", "whole floor's gone under",
               "burst main", "burst pipe", "pipe burst", "pipe's burst", "overflowing", "overflowed", "overtopped",
               "burst its", "burst its bank", "burst its south bank", "burst its north bank", "washed out",
-              "washed clean away", "waves breaking over", "waves going over", "waves coming over", "waves over",
+              "washed clean away", "washed clean off", "washed off its", "washed off their", "been washed off", "waves breaking over", "waves going over", "waves coming over", "waves over",
               "waves are going right over", "waves going right over", "waves are going over", "waves crashing over",
               "lost all its windows", "lost its windows", "seaweed right through", "seaweed through the",
               "going right over the top", "sea's come through", "sea's come right through", "sea's pouring through",
@@ -1456,6 +1458,12 @@ DESCRIBED_COMFORTS: dict[str, tuple[frozenset[str], list[str]]] = {
               ["in the shade", "it's shady", "nice and shady", "under the trees", "out of the sun"]),
     "cool": (frozenset({"heat", "cool", "cooling"}),
              ["fans going", "fans on", "fans running", "fans and all", "it's cool", "cool in there", "cool inside"]),
+    "warm": (frozenset({"warm", "heated", "warmed"}),
+             ["is warm", "'s warm", "nice and warm", "warm inside", "warm in there", "heated and", "is heated",
+              "'s heated", "heating's on", "heating is on", "has heat", "got heat"]),
+    "dry": (frozenset({"dry"}),
+            ["is dry", "'s dry", "still dry", "bone dry", "dry inside", "dry in there", "nice and dry", "stayed dry",
+             "kept dry", "are dry", "totally dry", "completely dry"]),
 }
 
 # More phrases of the kinds above that read as their kind but do not vote on which category a kind is (so the
@@ -1523,10 +1531,17 @@ SHORT_DANGER_WORDS = frozenset({"gas", "oil", "mud", "ice", "ash", "fog"})
 GENERIC_DANGER_WORDS = frozenset({"danger", "dangerous", "dangerously", "unsafe", "hazard", "hazardous", "hazards",
                                   "threat", "risk", "risky", "getting"})
 # Animals, where a KB gives them a category of their own ("bullocks stuck in the cattle lines")
-ANIMAL_WORDS = frozenset({"sheep", "ewe", "ewes", "lamb", "lambs", "tup", "tups", "ram", "rams", "cow", "cows", "cattle", "bullock", "bullocks", "heifer", "heifers", "calf", "calves", "bull", "bulls", "steer", "steers", "beast", "beasts", "stock", "livestock", "horse", "horses", "pony", "ponies", "foal", "pig", "pigs", "sow", "sows", "goat", "goats", "dog", "dogs", "animal", "animals", "hens", "chickens"})
+ANIMAL_WORDS = frozenset({"sheep", "ewe", "ewes", "lamb", "lambs", "tup", "tups", "ram", "rams", "cow", "cows", "cattle", "bullock", "bullocks", "heifer", "heifers", "calf", "calves", "bull", "bulls", "steer", "steers", "beast", "beasts", "stock", "livestock", "horse", "horses", "pony", "ponies", "foal", "pig", "pigs", "sow", "sows", "goat", "goats", "dog", "dogs", "animal", "animals", "hens", "chickens", "elephant", "elephants", "lion", "lions", "tiger", "tigers", "cats", "camel",
+                          "camels", "donkey", "donkeys", "llama", "llamas", "alpaca", "alpacas", "mare", "mares",
+                          "stallion", "stallions", "geese"})
+# Injuries said of a body part ("burns to the face", "a cut on the head")
+INJURY_WORDS = frozenset({"burns", "burn", "burned", "burnt", "cut", "cuts", "injury", "injuries", "wound", "wounds",
+                          "hit", "struck", "blow", "bleeding", "lacerations", "laceration", "scalds", "scalded", "gash",
+                          "bruising", "bruised", "bump", "knock"})
 # What animals in trouble are said to be ("a bullock loose", "ewes swimming"), for a KB with a category for them
 ANIMAL_TROUBLE = ("loose", "on the loose", "got loose", "got out", "escaped", "swimming", "stranded", "trapped", "stuck",
-                  "down", "cast", "in the water", "washed away", "drowning", "panicking")
+                  "down", "cast", "in the water", "washed away", "drowning", "panicking", "bolting", "bolted", "stampeding",
+                  "going mental", "going frantic", "frantic", "screaming", "spooked", "kicking off", "going berserk")
 # Verbs of bringing people ("anyone you bring up from the river end": where they come from, no claim)
 BRING_VERBS = frozenset({"bring", "brought", "bringing", "fetch", "fetched", "fetching", "carry", "carried", "carrying"})
 # What a crew does to a place ("we've shut the gallopers down"): said of the place, it claims nothing of it
