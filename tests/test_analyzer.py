@@ -4150,6 +4150,9 @@ def test_dev78_phenomena(kb_analyzers, kb, text, expected):
     ("cement_works", "bench fall at the east end of the face, and nothing on the quarry floor.",
      [("quarry face", "fallen_or_flooded")]),
     ("cement_works", "Rescue Four, we're set up by the tank the pump house fills, waiting on the hose layer.", []),
+    # a description opens on "whatever", not on the cue before it
+    ("cement_works", "Quarry team, there's been a bench fall off whatever towers over the pit, and one of our drivers is "
+                     "hurt down in the pit itself.", [("quarry face", "fallen_or_flooded"), ("quarry floor", "person_in_trouble")]),
     # "stove in" after a verb is smashed in; a stove in a room is a stove
     ("glacier_station", "the hut's stove in", [("edelweiss hut", "avalanche_struck")]),
     ("glacier_station", "there's a wood stove in the hut and it's warm in there", [("edelweiss hut", "warm_refuge")]),

@@ -4252,8 +4252,8 @@ class ReportAnalyzer:
                     or prev in getattr(self, "_rel_tokens", ()):
                 break
             head_start -= 1
-            if w in lx.DETERMINERS:
-                break
+            if w in lx.DETERMINERS or w in lx.WHATEVER:
+                break  # ("a bench fall off whatever towers over the pit": the description opens on "whatever")
         words = [norms[j] for j in range(head_start, head_end)]
         while words and (words[0] in lx.DETERMINERS or words[0] in lx.FILLERS):
             words.pop(0)
