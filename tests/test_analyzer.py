@@ -4153,6 +4153,12 @@ def test_dev78_phenomena(kb_analyzers, kb, text, expected):
     # a description opens on "whatever", not on the cue before it
     ("cement_works", "Quarry team, there's been a bench fall off whatever towers over the pit, and one of our drivers is "
                      "hurt down in the pit itself.", [("quarry face", "fallen_or_flooded"), ("quarry floor", "person_in_trouble")]),
+    # "he's out of it" / "out cold" is dazed, no one got out; "<Role> at the — at the X, ..." then another place: who calls
+    ("cement_works", "there's a bloke collapsed at the coal mill, he's breathing but he's out of it.",
+     [("coal mill", "person_in_trouble")]),
+    ("cement_works", "man trapped at the coal mill, we got him out, he's out", []),
+    ("cement_works", "Steward at the — at the front gate, um, there's a bloke collapsed at the crusher — no sorry, the coal "
+                     "mill, he's breathing but he's out of it.", [("coal mill", "person_in_trouble")]),
     # "stove in" after a verb is smashed in; a stove in a room is a stove
     ("glacier_station", "the hut's stove in", [("edelweiss hut", "avalanche_struck")]),
     ("glacier_station", "there's a wood stove in the hut and it's warm in there", [("edelweiss hut", "warm_refuge")]),

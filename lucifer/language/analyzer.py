@@ -220,7 +220,7 @@ class ReportAnalyzer:
         self._negators: PhraseMatcher[str] = PhraseMatcher()
         for n in lx.NEGATOR_PHRASES:
             self._negators.add(norm_phrase(n), n)
-        self._cancel: PhraseMatcher[str] = PhraseMatcher(lx.HESITATIONS)
+        self._cancel: PhraseMatcher[str] = _CancelMatcher(lx.HESITATIONS)
         for c in lx.CANCEL_AFTER:
             self._cancel.add(norm_phrase(c), c)
         self._transit: PhraseMatcher[str] = PhraseMatcher(lx.HESITATIONS)  # "we're er at the car barn"
@@ -4818,12 +4818,21 @@ class ReportAnalyzer:
         return not {"we", "our", "us", "were", "weve", "ours", "i", "im", "my", "ive", "here", "this"} & set(norms[k:])
 
     @staticmethod
-    def _from_label(toks: Tokens, norms: tuple[str, ...], p: PlaceMention) -> bool:
+    def _from_label(toks: Tokens, norms: tuple[str, ...], p: PlaceMention, places: Sequence[PlaceMention] = ()) -> bool:
         """"From the pump house: ...", "Relay from a station on the east ridge: ...": who is calling."""
         k = _noun_phrase_start(norms, p)
         if k >= 2 and norms[k - 1] == "at" and toks.sentence_start[k - 2] and norms[k - 2] in lx.ROLE_LABELS \
                 and p.end_tok < len(norms) and toks.gaps[p.end_tok].strip().startswith(":"):
             return True  # "Marshal at post nine: the rainbow bridge is secure": who is calling, from where
+        j = k - 1
+        if j >= 3 and norms[j] == "at" and norms[j - 2:j] == ("at", "the"):
+            j -= 2  # ("Steward at the — at the front gate, ...": the words said twice)
+        if j >= 1 and norms[j] == "at" and toks.sentence_start[j - 1] and norms[j - 1] in lx.ROLE_LABELS \
+                and p.end_tok < len(norms) and toks.gaps[p.end_tok].strip().startswith(",") \
+                and not {"here", "us", "our", "we", "were"} & set(norms[p.end_tok:]) \
+                and any(q.start_tok > p.end_tok and q.landmark != p.landmark and q.status != "negated" for q in places) \
+                and toks.tokens[j - 1].text[:1].isupper():
+            return True  # "Steward at the front gate, um, there's a bloke collapsed at the coal mill": who calls, from where
         if k == 2 and norms[0] in lx.STATIONS_CALLED and norms[1] == "from" and p.end_tok < len(norms) \
                 and (toks.sentence_start[p.end_tok] or toks.gaps[p.end_tok].strip()[:1] in (",", ":")
                      and norms[p.end_tok] == "over"):
@@ -4983,7 +4992,7 @@ class ReportAnalyzer:
                 # their cradles")
                 ex.places[idx] = replace(p, status="reference", reason="who is calling ('X reporting,'): no claim")
                 continue
-            if self._from_label(toks, norms, p) and not (
+            if self._from_label(toks, norms, p, ex.places) and not (
                     norms[_noun_phrase_start(norms, p) - 1] == "at"
                     and not any(q.landmark != p.landmark and q.status != "retracted" for q in ex.places)):
                 # ("Paramedic at the mission hut: two lads brought in": no other place told of, the news is its own)
@@ -9390,6 +9399,18 @@ def _withdraws(marker: tuple[str, ...]) -> bool:
     """Is a marker's wording a withdrawal ("scratch that"; said twice, "cancel that, cancel that")?"""
     words = " ".join(marker)
     return any(words == m or words.startswith(m + " ") for m in _WITHDRAW_KEYS)
+
+
+class _CancelMatcher(PhraseMatcher[str]):
+    """Phrases that cancel a claim before them; "he's out" (got out) is none in "he's out of it" / "he's out cold"
+    (dazed, unconscious)."""
+
+    def match_at(self, norms: tuple[str, ...], i: int, blocked: Iterable[int] = ()) -> tuple[int, str] | None:
+        hit = super().match_at(norms, i, blocked)
+        if hit is not None and hit[1].endswith(" out") and (
+                norms[hit[0]:hit[0] + 2] == ("of", "it") or norms[hit[0]:hit[0] + 1] == ("cold",)):
+            return None
+        return hit
 
 
 def _stove_in(toks: Tokens, norms: tuple[str, ...], a: int) -> bool:
