@@ -739,14 +739,14 @@ class ReportAnalyzer:
         places: list[PlaceMention] = []
         all_cues = self._cues.find_all(norms)
         all_relations = self._relations.find_all(norms)
-        cue_hits = [(a, b) for a, b, (_, src) in all_cues if b - a > 1]
-        cue_hits += [(a, b) for a, b, _ in all_relations if b - a > 2]
+        cue_spans = [(a, b) for a, b, _ in all_cues if b - a > 1]
+        cue_hits = cue_spans + [(a, b) for a, b, _ in all_relations if b - a > 2]
         log = _is_log(toks)
         glossary_ends = {cb for ca, cb, (_, src) in all_cues if src == "glossary" and cb - ca > 1
                          and norms[cb - 1] not in lx.GENERIC_HEADS | lx.UNNAMING_HEADS | lx.DESCRIPTION_HEADS}
         # a cue that is only a preposition before a place's name ("casualty in the river" where "the river" is
         # one): the place, not the cue
-        place_cues = {(a, b) for a, b, _ in all_cues if b - a > 1}
+        place_cues = set(cue_spans)
         for a, b, landmark in self._places.find_all(norms):
             if any(ca <= a and b <= cb and cb - ca > b - a and not (
                     (ca, cb) in place_cues and cb == b and a - ca <= 2
@@ -1672,14 +1672,11 @@ class ReportAnalyzer:
                 # "the terrace" names the one terrace only as a relation's anchor ("back to back with the terrace"),
                 # or as what a predicate is said of ("the barn's out now")
                 continue
-            clause = range(i + 2, next((j for j in range(i + 2, min(len(norms), i + 10)) if toks.clause_start[j]),
-                                       min(len(norms), i + 10)))
             if i + 1 < len(norms) and norms[i + 1] in ("that", "which", "where", "who") and not toks.clause_start[i + 1] \
                     and not (i >= 2 and norms[i - 1] == "the" and (norms[i - 2] == "its" or norms[i - 3:i - 1] == ("it", "is"))
                              and norms[i + 1] == "that") \
-                    and not (norms[i + 1] == "where" and (i + 2 >= len(norms) or norms[i + 2] in lx.ARTICLES) and not any(
-                        j in taken or norms[j] in lx.PRONOUNS or self._relations.match_at(norms, j) is not None
-                        for j in clause)):
+                    and not (norms[i + 1] == "where" and (i + 2 >= len(norms) or norms[i + 2] in lx.ARTICLES)
+                             and not self._names_anchor(toks, norms, i + 2, taken)):
                 # ("the cage where the spare gas bottles are kept": what is kept there, no place the relation needs)
                 continue  # "the compound that supplies it": a description for the relation passes (but "it's the
                 # slipway that's under": a cleft, the place named)
@@ -3391,6 +3388,16 @@ class ReportAnalyzer:
                 ex.places.remove(p)  # (a pronoun no description took up as its anchor)
         return found
 
+    def _names_anchor(self, toks: Tokens, norms: tuple[str, ...], start: int, taken: Collection[int]) -> bool:
+        """Does the clause from ``start`` (to its end, at most eight words) name a place, a pronoun or a relation?"""
+        end = min(len(norms), start + 8)
+        for j in range(start, end):
+            if toks.clause_start[j]:
+                break
+            if j in taken or norms[j] in lx.PRONOUNS or self._relations.match_at(norms, j) is not None:
+                return True
+        return False
+
     def _pronoun_anchors(self, ex: Extraction, toks: Tokens, norms: tuple[str, ...],
                          blocked: set[int]) -> list[PlaceMention]:
         """"the big ear's smouldering, and the hostel where its crews sleep": "its" in a relative clause anchors the
@@ -3447,7 +3454,7 @@ class ReportAnalyzer:
             return  # "the caravans are standing in a foot of it": how deep, not "the foot of" a place
         anchor, anchor_end, pronoun = self._anchor_after(ex, norms, b, phrase)
         if anchor is not None and not pronoun and anchor.status == "active" and anchor.via is None \
-                and set(norms[a:b]) & _COMPASS and not any(set(norm_phrase(r.relation)) & _COMPASS for r in self.kb.relations):
+                and set(norms[a:b]) & _COMPASS and not self._compass_relations:
             # "a landslip just east of the lift line": a bearing from a place the KB relates nothing to by compass;
             # the place only says where
             ex.places[ex.places.index(anchor)] = replace(anchor, status="reference",
@@ -5215,8 +5222,7 @@ class ReportAnalyzer:
             k = p.end_tok
             while k < len(norms) and norms[k] in lx.FILLERS:
                 k += 1
-            if p.status == "active" and norms[k:k + 2] == ("never", "mind") or norms[k:k + 1] == ("nevermind",) \
-                    and p.status == "active":
+            if p.status == "active" and (norms[k:k + 2] == ("never", "mind") or norms[k:k + 1] == ("nevermind",)):
                 ex.places[idx] = replace(p, status="retracted", reason="dropped ('never mind')")
 
     def _apply_restarts(self, ex: Extraction) -> None:
@@ -5683,6 +5689,19 @@ class ReportAnalyzer:
             out.append(CueMention(p.end_tok, end, a, b, toks.text[a:b], hit[1][0], hit[1][1], reason="after a contracted 's"))
         return out
 
+    def _stove_in_cues(self, toks: Tokens, norms: tuple[str, ...], blocked: set[int]) -> list[CueMention]:
+        """"the whole front wall's stove in": smashed in, after a verb or a contracted "'s" (the vocabulary has no
+        bare "stove in": "the stove in the refuge" is a stove)."""
+        out: list[CueMention] = []
+        und = self._category_for_role(lx.UNDESIRABLE, "smashed in, collapsed")
+        if und is None:
+            return out
+        for i in range(1, len(norms) - 1):
+            if norms[i:i + 2] == ("stove", "in") and not blocked & {i, i + 1} and _stove_in(toks, norms, i):
+                a, b = toks.tokens[i].start, toks.tokens[i + 1].end
+                out.append(CueMention(i, i + 2, a, b, toks.text[a:b], und, "lexicon", reason="stove in"))
+        return out
+
     def _structure_gone(self, ex: Extraction, norms: tuple[str, ...], blocked: set[int]) -> list[CueMention]:
         """"Jenny's arch has gone.": a bridge, an arch or a wall said to have gone (or the roof of a place said to be
         down), closing its clause, has collapsed (a fire "has gone" out is the cancellation's business; a place named so is no cue word)."""
@@ -5798,14 +5817,7 @@ class ReportAnalyzer:
         cues.extend(self._structure_gone(ex, norms, blocked))
         cues.extend(self._contracted_is_cues(ex, norms, blocked))
         cues.extend(self._under_final(ex, norms, blocked))
-        for i in range(1, len(norms) - 1):
-            if norms[i:i + 2] == ("stove", "in") and not blocked & {i, i + 1} and _stove_in(toks, norms, i):
-                # "the whole front wall's stove in": smashed in (the vocabulary has no bare "stove in": "the stove in
-                # the refuge" is a stove)
-                und = self._category_for_role(lx.UNDESIRABLE, "smashed in, collapsed")
-                if und is not None:
-                    a_, b_ = toks.tokens[i].start, toks.tokens[i + 1].end
-                    cues.append(CueMention(i, i + 2, a_, b_, toks.text[a_:b_], und, "lexicon", reason="stove in"))
+        cues.extend(self._stove_in_cues(toks, norms, blocked))
         for a, b, (cat, source) in self._cues.find_all(norms, blocked):
             if source == "neutral":
                 neutral.update(range(a, b))  # ("people sitting in here out of the smoke": no person, no smoke)
@@ -6061,7 +6073,7 @@ class ReportAnalyzer:
         cues = self._damage_by_cause(norms, cues)
         cues = self._spread_of_what(toks, norms, cues)
         cues = self._sheltered_people(norms, cues)
-        cues = self._animals_in_trouble(norms, cues, toks)
+        cues = self._animals_in_trouble(toks, norms, cues)
         cues.extend(self._animal_states(toks, norms, blocked | neutral | {i for c in cues for i in range(c.start_tok, c.end_tok)}))
         cues.extend(self._cues_into_description(ex, norms, {i for c in cues for i in range(c.start_tok, c.end_tok)}))
         cues.extend(self._predicative_cues(ex, norms, blocked | {i for c in cues for i in range(c.start_tok, c.end_tok)}))
@@ -6487,6 +6499,11 @@ class ReportAnalyzer:
         return frozenset(norm_phrase(t.term) for t in self.kb.glossary)
 
     @functools.cached_property
+    def _compass_relations(self) -> bool:
+        """Does the KB name any relation by a compass point ("north_of")?"""
+        return any(set(norm_phrase(r.relation)) & _COMPASS for r in self.kb.relations)
+
+    @functools.cached_property
     def _animal_category(self) -> str | None:
         """Where the KB splits the critical role into people and animals: the category its description gives to
         livestock or animals (one only), else None."""
@@ -6540,10 +6557,8 @@ class ReportAnalyzer:
         if animal is None:
             return out
         for i in range(1, len(norms)):
-            n = 2 if norms[i:i + 2] in (("going", "frantic"), ("going", "mental"), ("going", "berserk"),
-                                         ("kicking", "off")) else 1
-            if n == 1 and norms[i] not in ("panicking", "frantic", "bolting", "bolted", "stampeding", "spooked",
-                                           "screaming", "trumpeting", "rearing"):
+            n = 2 if norms[i:i + 2] in _ANIMAL_STATE_KEYS else 1
+            if n == 1 and norms[i:i + 1] not in _ANIMAL_STATE_KEYS:
                 continue
             if taken & set(range(i, i + n)) or not self._animal_subject(toks, norms, i):
                 continue
@@ -6552,7 +6567,7 @@ class ReportAnalyzer:
             taken = taken | set(range(i, i + n))
         return out
 
-    def _animals_in_trouble(self, norms: tuple[str, ...], cues: list[CueMention], toks: Tokens | None = None) -> list[CueMention]:
+    def _animals_in_trouble(self, toks: Tokens, norms: tuple[str, ...], cues: list[CueMention]) -> list[CueMention]:
         """"bullocks stuck in the cattle lines", "a bullock loose", "ewes swimming in there": a critical cue said of
         animals takes the KB's category for animals, where it has one apart from the people's."""
         animal = self._animal_category
@@ -6568,7 +6583,7 @@ class ReportAnalyzer:
                     j -= 1
                 said = set(norms[c.start_tok:c.end_tok])
                 if said & lx.ANIMAL_WORDS or j >= 0 and norms[j] in lx.ANIMAL_WORDS \
-                        or toks is not None and c.end_tok - c.start_tok == 1 and norms[c.start_tok] in (
+                        or c.end_tok - c.start_tok == 1 and norms[c.start_tok] in (
                             "screaming", "panicking", "trapped", "stuck", "hurt", "injured") \
                         and self._animal_subject(toks, norms, c.start_tok):
                     c = replace(c, category=animal, reason="said of animals")
@@ -9421,6 +9436,7 @@ def _stove_in(toks: Tokens, norms: tuple[str, ...], a: int) -> bool:
         and norms[a + 2:a + 3] not in (("the",), ("a",), ("an",), ("our",), ("their",), ("there",), ("here",))
 
 
+_ANIMAL_STATE_KEYS = frozenset(norm_phrase(s) for s in lx.ANIMAL_STATES)
 _COMPASS = frozenset({"north", "south", "east", "west", "northeast", "northwest", "southeast", "southwest"})
 # Closed-class words that never head a description.
 _NOT_HEADS = lx.PREPOSITIONS | lx.COPULAS | lx.FILLERS | lx.PRONOUNS | lx.INVERSE_VERBS | lx.DETERMINERS

@@ -1460,10 +1460,10 @@ DESCRIBED_COMFORTS: dict[str, tuple[frozenset[str], list[str]]] = {
              ["fans going", "fans on", "fans running", "fans and all", "it's cool", "cool in there", "cool inside"]),
     "warm": (frozenset({"warm", "heated", "warmed"}),
              ["is warm", "'s warm", "nice and warm", "warm inside", "warm in there", "heated and", "is heated",
-              "'s heated", "heating's on", "heating is on", "has heat", "got heat"]),
+              "'s heated", "has heat", "got heat"]),
     "dry": (frozenset({"dry"}),
-            ["is dry", "'s dry", "still dry", "bone dry", "dry inside", "dry in there", "nice and dry", "stayed dry",
-             "kept dry", "are dry", "totally dry", "completely dry"]),
+            ["is dry", "'s dry", "still dry", "dry inside", "nice and dry", "stayed dry", "kept dry", "are dry",
+             "totally dry", "completely dry"]),
 }
 
 # More phrases of the kinds above that read as their kind but do not vote on which category a kind is (so the
@@ -1538,6 +1538,10 @@ ANIMAL_WORDS = frozenset({"sheep", "ewe", "ewes", "lamb", "lambs", "tup", "tups"
 INJURY_WORDS = frozenset({"burns", "burn", "burned", "burnt", "cut", "cuts", "injury", "injuries", "wound", "wounds",
                           "hit", "struck", "blow", "bleeding", "lacerations", "laceration", "scalds", "scalded", "gash",
                           "bruising", "bruised", "bump", "knock"})
+# States only animals in trouble are said to be in, read of a clause's animal subject ("the bulls ... are going
+# frantic"), where a KB has a category for animals
+ANIMAL_STATES = ("panicking", "frantic", "bolting", "bolted", "stampeding", "spooked", "screaming", "trumpeting",
+                 "rearing", "going frantic", "going mental", "going berserk", "kicking off")
 # What animals in trouble are said to be ("a bullock loose", "ewes swimming"), for a KB with a category for them
 ANIMAL_TROUBLE = ("loose", "on the loose", "got loose", "got out", "escaped", "swimming", "stranded", "trapped", "stuck",
                   "down", "cast", "in the water", "washed away", "drowning", "panicking", "bolting", "bolted", "stampeding",
