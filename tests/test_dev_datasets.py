@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev79) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev81) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -139,6 +139,13 @@ TEA_ESTATE = ROOT / "knowledge_bases" / "tea_estate"
 CIRCUS_QUARTERS = ROOT / "knowledge_bases" / "circus_quarters"
 CEMENT_WORKS = ROOT / "knowledge_bases" / "cement_works"
 CITY_FARM = ROOT / "knowledge_bases" / "city_farm"
+OIL_RIG = ROOT / "knowledge_bases" / "oil_rig"
+HYDRO_DAM = ROOT / "knowledge_bases" / "hydro_dam"
+POLDER_VILLAGE = ROOT / "knowledge_bases" / "polder_village"
+GRAIN_TERMINAL = ROOT / "knowledge_bases" / "grain_terminal"
+SAFARI_PARK = ROOT / "knowledge_bases" / "safari_park"
+MOUNTAIN_MONASTERY = ROOT / "knowledge_bases" / "mountain_monastery"
+COPPER_SMELTER = ROOT / "knowledge_bases" / "copper_smelter"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -429,6 +436,13 @@ SETS = {
     "dev79/circus_quarters": _set("dev79/circus_quarters.jsonl", CIRCUS_QUARTERS, "cq79", TWENTY, sep=""),
     "dev79/cement_works": _set("dev79/cement_works.jsonl", CEMENT_WORKS, "cw79", TWENTY, sep=""),
     "dev79/city_farm": _set("dev79/city_farm.jsonl", CITY_FARM, "cf79", TWENTY, sep=""),
+    "dev80/oil_rig": _set("dev80/oil_rig.jsonl", OIL_RIG, "or80", TWENTY, sep=""),
+    "dev80/hydro_dam": _set("dev80/hydro_dam.jsonl", HYDRO_DAM, "hd80", TWENTY, sep=""),
+    "dev80/polder_village": _set("dev80/polder_village.jsonl", POLDER_VILLAGE, "pv80", TWENTY, sep=""),
+    "dev80/grain_terminal": _set("dev80/grain_terminal.jsonl", GRAIN_TERMINAL, "gt80", TWENTY, sep=""),
+    "dev81/safari_park": _set("dev81/safari_park.jsonl", SAFARI_PARK, "sp81", TWENTY, sep=""),
+    "dev81/mountain_monastery": _set("dev81/mountain_monastery.jsonl", MOUNTAIN_MONASTERY, "mm81", TWENTY, sep=""),
+    "dev81/copper_smelter": _set("dev81/copper_smelter.jsonl", COPPER_SMELTER, "cs81", TWENTY, sep=""),
 }
 
 
