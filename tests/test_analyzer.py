@@ -4165,3 +4165,99 @@ def test_dev78_phenomena(kb_analyzers, kb, text, expected):
 ])
 def test_dev79_phenomena(kb_analyzers, kb, text, expected):
     assert claims(kb_analyzers[kb], text) == expected
+
+
+@pytest.mark.parametrize("kb, text, expected", [
+    # a wall or bank of a place gone or going, said after its name or with "of"; where along it is the same claim
+    ("cement_works", "the wall of the slurry pond has gone on the south side.", [("settling lagoon", "fallen_or_flooded")]),
+    ("cement_works", "the lagoon banks are going", [("settling lagoon", "fallen_or_flooded")]),
+    ("cement_works", "we're going along the lagoon bank, going slowly", []),
+    # the worse kind not seen yet leaves the kind seen standing
+    ("hydro_dam", "thermal shows a hot spot on the roof of the valve hut, no flames visible yet.",
+     [("valve house", "burn_and_arc")]),
+    # an aside about where the speaker is lets the next sentence's news reach the place said before it
+    ("hydro_dam", "this is Jean up at Keeper's Row. I've lived here thirty years and never seen it like this. The "
+                  "water's coming in under all our doors.", [("keeper's row", "breach_and_flood")]),
+    # a head count from a place is where the people came from
+    ("hydro_dam", "the top car park is our muster point, about forty from the dam houses up there already.",
+     [("west car park", "high_ground")]),
+    # a direction word another relation names, read the way it is said ("below" is ``is downhill of`` here, not
+    # ``sits above`` backwards); a relation that says which place is higher ("the room below the library")
+    ("hydro_dam", "The houses below the visitor centre are the muster point.", [("keeper's row", "high_ground")]),
+    ("hydro_dam", "fire in the building below the car park", [("visitor centre", "burn_and_arc")]),
+    ("mountain_monastery", "burst pipe in the room below the library", [("chapter house", "rockfall_and_ruin")]),
+    ("mountain_monastery", "fire in the octagon, no, the room above it", [("library", "ember_and_smoke")]),
+    # "capsized", "not come up"; "brim full"; "still got children upstairs"
+    ("hydro_dam", "a canoe's capsized in the plunge pool and one of them hasn't come up", [("stilling basin", "people_at_risk")]),
+    ("hydro_dam", "the plunge pool is brim full", [("stilling basin", "breach_and_flood")]),
+    ("hydro_dam", "I'm at the school, we've still got children upstairs and the water's coming in.",
+     [("nether garrow school", "breach_and_flood"), ("nether garrow school", "people_at_risk")]),
+    # a place broken off before a name said again more exactly, with "sorry", is repaired too
+    ("hydro_dam", "the spillway... the gates, sorry, the radial gates are jammed", [("radial gates", "breach_and_flood")]),
+    # a participle's "inside" said "in"; the pronoun takes up the place before a clause's subject when only it relates
+    ("hydro_dam", "lone worker alarm from inside the wall the top road runs along - the passage buried in it, that's where "
+                  "he is.",
+     [("inspection gallery", "people_at_risk")]),
+    ("hydro_dam", "Those pipes fed by the tower at the end of the catwalk have split open.", [("penstocks", "breach_and_flood")]),
+    # two names written with "the" said side by side without it; "a stack of" is any stack
+    ("oil_rig", "Starboard boats and port boats are both confirmed safe as muster stations.",
+     [("port lifeboat station", "safe_refuge"), ("starboard lifeboat station", "safe_refuge")]),
+    ("oil_rig", "Control, pipe deck. A stack of casing rolled over and the pipe rack's damaged.",
+     [("pipe deck", "damage_or_flooding")]),
+    # people said hurt in other words; one of the workers who has collapsed is a person
+    ("oil_rig", "jet fire at the christmas trees and two men down, both burnt",
+     [("wellhead area", "burning_or_gassing"), ("wellhead area", "person_in_distress")]),
+    ("oil_rig", "gas release on the riser deck and one of the riggers up there has collapsed.",
+     [("riser balcony", "burning_or_gassing"), ("riser balcony", "person_in_distress")]),
+    ("oil_rig", "one of the containers has collapsed on the laydown", [("laydown area", "damage_or_flooding")]),
+    ("oil_rig", "the standby boat has taken water into her engine room", [("standby vessel", "damage_or_flooding")]),
+    ("oil_rig", "Crane two operator here. I'm still in the cab, unhurt.", []),
+    # "the a leg" beside "the c leg": a letter, not an article; "that leg" is the one said before
+    ("oil_rig", "leg C is fine. There's smoke coming up through that leg.", [("southwest leg", "burning_or_gassing")]),
+    # a relation's "foot" said "bottom"; "from" said "off"
+    ("oil_rig", "casualty on the walkway that wraps round the bottom of leg C", [("spider deck", "person_in_distress")]),
+    ("oil_rig", "the crane that works the cargo off the Sea Tern has a hydraulic fire", [("north crane", "burning_or_gassing")]),
+    # "it" is the place a clause was about, not the subject of the clause that described it
+    ("polder_village", "Follow the ditch the electric pump empties into, right up to the building it feeds — black smoke "
+                       "from that building's roof.", [("steam pumping station", "fire_or_smoke")]),
+    # a description's words stop at a relation's verb; water "over the road"; gates "not closing"
+    ("polder_village", "The canal that the building with the big brick chimney pumps into is overtopping.",
+     [("ring canal", "breach_or_flood")]),
+    ("polder_village", "the main ditch is over the road at the south end", [("middle tocht", "breach_or_flood")]),
+    ("polder_village", "the pub is over the road from the tocht", []),
+    ("polder_village", "the big sluice, the gates, they're not closing", [("great sluice", "breach_or_flood")]),
+])
+def test_dev80_phenomena(kb_analyzers, kb, text, expected):
+    assert claims(kb_analyzers[kb], text) == expected
+
+
+@pytest.mark.parametrize("kb, text, expected", [
+    # a keeper is a person, not an animal; animals loose, through, out; "fence is down"
+    ("safari_park", "Tiger enclosure is on fire and one of the keepers is trapped in the night den.",
+     [("tiger reserve", "burnt_or_broken"), ("tiger reserve", "human_casualty")]),
+    ("safari_park", "we've got a lion, a lioness, loose in the car park, people are running for their cars",
+     [("visitor car park", "beast_at_large")]),
+    ("safari_park", "Tiger reserve fence is down and a tiger is out.", [("tiger reserve", "beast_at_large")]),
+    ("safari_park", "the fire at the hay barn is out", []),
+    # a cue noun is no relation's verb ("fence down on the deer fence", not ``shares a fence with``)
+    ("safari_park", "fence down on the deer fence north end", [("east boundary fence", "beast_at_large")]),
+    # "been bitten"; the roof's gone, "just gone", said again
+    ("safari_park", "the baboons are all over the monkey run and there's a kid been bitten", [("monkey drive", "human_casualty")]),
+    ("safari_park", "the giraffe barn, uh, the roof's gone, just gone.", [("giraffe house", "burnt_or_broken")]),
+    # "Control from hut two": the place that calls anchors "we"; a pool heads a description; "that pool" takes it up
+    ("safari_park", "Control from hut two. Keeper pinned in the building we keep watch on.",
+     [("elephant barn", "human_casualty")]),
+    ("safari_park", "The pool the header tank feeds is overflowing, and whatever that pool drains into has burst its bank.",
+     [("flamingo lake", "burnt_or_broken"), ("rhino wallow", "burnt_or_broken")]),
+    # a call sign and where it is claims nothing; a cue never spans two sentences
+    ("mountain_monastery", "Rescue Two at the gorge. One pilgrim stranded out on the helipad.", [("helipad", "soul_in_danger")]),
+    ("mountain_monastery", "We came up the thousand steps, legs are gone. Up top now.", []),
+    # "the step of the dining hall" is a part of it; "pipes water to" for ``pipes_water_into``
+    ("mountain_monastery", "a pilgrim with smoke inhalation sitting on the step of the dining hall",
+     [("refectory", "soul_in_danger")]),
+    ("mountain_monastery", "Someone's fallen into the tank the cloister roofs drain into. The room that tank pipes water to "
+                           "is our warm room for now.", [("great cistern", "soul_in_danger"),
+                                                         ("monastery kitchen", "sanctuary_point")]),
+])
+def test_dev81_phenomena(kb_analyzers, kb, text, expected):
+    assert claims(kb_analyzers[kb], text) == expected

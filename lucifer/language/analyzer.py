@@ -187,6 +187,7 @@ class ReportAnalyzer:
             for form in lm.surface_forms:
                 key = norm_phrase(form)
                 if key in labelled:
+                    key = key[1:] if key[0] == "the" else key
                     self._places.add(key, lm.name)  # ("a wing" beside "b wing": "a" is its letter, not an article)
                     plain.add(key)
                     continue
@@ -247,6 +248,18 @@ class ReportAnalyzer:
     def _person_cue_at(self, norms: tuple[str, ...], i: int) -> bool:
         """Does a cue of the critical role start at token ``i`` ("the baker | trapped")?"""
         return self._role_cue_at(norms, i, Role.CRITICAL)
+
+    def _bare_pair(self, norms: tuple[str, ...], a: int, b: int) -> bool:
+        """"Starboard boats and port boats are both safe": two names of several words, each written with "the" in
+        the KB, said side by side without it."""
+        if norms[b:b + 1] in (("and",), ("or",)) and b + 1 < len(norms):
+            h = self._places.match_at(norms, b + 1)
+            return h is not None and h[0] - b - 1 >= 2 and norms[b + 1:h[0]] in self._needs_article
+        if a >= 3 and norms[a - 1] in ("and", "or"):
+            return any((h := self._places.match_at(norms, c)) is not None and h[0] == a - 1
+                       and norms[c:a - 1] in self._needs_article and (c == 0 or norms[c - 1] not in lx.DETERMINERS)
+                       for c in range(max(0, a - 5), a - 2))
+        return False
 
     def _compound_forms(self) -> list[tuple[tuple[str, ...], str]]:
         """Names recombined from a landmark's own forms: "bus terminal" from "bus station" and "the terminal".
@@ -417,6 +430,8 @@ class ReportAnalyzer:
                         shared = key[0]
                     elif shared is not None and len(key) == 1 and not key[0].endswith("ing"):
                         key = (shared, key[0])
+                    if len(key) == 1 and key[0] in lx.VEHICLE_WORDS:
+                        continue  # ("burning buildings or cars": a car is no danger said alone)
                     if 0 < len(key) <= 3 and not (set(key) & {"e", "g", "eg", "etc"}):
                         entries[key] = (cat.name, "category")
         # 2b. a list after a colon or a dash: "Structural damage - collapsed or loose masonry, fallen trees"; the
@@ -608,8 +623,10 @@ class ReportAnalyzer:
                                               or norms[t - 1] not in lx.COPULAS | lx.DETERMINERS | {"re", "ve"}) \
                     and norms[k:k + 1] and norms[k] in lx.ARTICLES \
                     and (k + 1 in covered or k > t + 1 and k + 1 < len(norms) and self._place_head_word(norms[k + 1])) \
-                    and not toks.clause_start[t] and self._keyword_relation(toks.tokens[t].text.lower()) is not None:
-                pass  # "the wall sheltering the towpath": a cue word ("shelter") used as the relation's verb
+                    and not toks.clause_start[t] and self._keyword_relation(toks.tokens[t].text.lower()) is not None \
+                    and toks.tokens[t].text.lower().endswith(("ing", "ed", "s")):
+                pass  # "the wall sheltering the towpath": a cue word ("shelter") used as the relation's verb (not a noun:
+                # "fence down on the deer fence")
             elif t in taken or t in cue_tokens or t in known or t + 1 in known:
                 continue  # (a word right before a listed phrase heads it: "the annexe tacked onto X")
             word = toks.tokens[t].text
@@ -788,8 +805,13 @@ class ReportAnalyzer:
             # ("Little railway driver here: my train's stalled": who calls, by the place they work)
             if norms[a:b] in self._derived_keys and prev in ("a", "an", "another"):
                 continue  # "he fell off the back of a hire boat": any boat, not the hire base's "kingfisher boats"
+            if norms[a:b] in self._needs_article and b - a == 1 and norms[b:b + 1] == ("of",) and b + 2 < len(norms) \
+                    and (h := self._places.match_at(norms, b + 2 if norms[b + 1] in lx.ARTICLES else b + 1)) is not None \
+                    and h[1] != landmark:
+                continue  # "sitting on the step of the dining hall": a part of another place, not "the steps"
             if norms[a:b] in self._needs_article and prev in ("a", "an", "another") and b - a == 1 \
-                    and toks.tokens[a - 1].text.islower():  # (not a letter that labels it: "the A cabins")
+                    and (toks.tokens[a - 1].text.islower() or norms[b:b + 1] == ("of",)):
+                # (not a letter that labels it: "the A cabins"; but "A stack of casing rolled")
                 continue  # "a horse down in a box": the KB's "the box" is one place, "a box" any
             if norms[a:b] in self._needs_article and prev in ("that", "which") and b - a == 1 and b < len(norms) \
                     and norms[b] in lx.ARTICLES and norms[a] in self._relation_verbs:
@@ -800,6 +822,7 @@ class ReportAnalyzer:
                     and not (b - a >= 2 and prev in ("in", "at", "from") and a >= 2 and norms[a - 2] in ("live", "living", "lives", "stay", "staying")) \
                     and not (b - a >= 2 and (a == 0 or toks.sentence_start[a])
                              and toks.tokens[b - 1].text.lower().replace("’", "'").endswith("'s")) \
+                    and not (b - a >= 2 and self._bare_pair(norms, a, b)) \
                     and not (toks.clause_start[a] and toks.tokens[b - 1].text.lower().replace("’", "'").endswith("'s")
                              and any(norms[i - 1] == "the" and norms[i:i + b - a] == norms[a:b] for i in range(1, a))):
                 # ("we're at the kirk, ..., kirk's our rest centre now": said again, without its article)
@@ -2740,10 +2763,13 @@ class ReportAnalyzer:
         """"the line-up the water cart keeps topped up has three engines ...": a named place, then at once a
         clause whose subject is another named place and whose verb follows it, with no "that" between. Where
         the KB relates the second to the first (subject to object), the second only says which: a reference point."""
-        named = sorted((p for p in ex.places if p.status == "active" and p.via is None), key=lambda p: p.start_tok)
+        # (the first may be a reference point already: "inside the wall the top road runs along - the passage buried
+        # in it")
+        named = sorted((p for p in ex.places if p.status in ("active", "reference") and p.via is None),
+                       key=lambda p: p.start_tok)
         for first, second in zip(named, named[1:], strict=False):
             between = norms[first.end_tok:second.start_tok]
-            if between != ("the",) or toks.clause_start[second.start_tok - 1] or second.end_tok >= len(norms):
+            if second.status != "active" or between != ("the",) or toks.clause_start[second.start_tok - 1] or second.end_tok >= len(norms):
                 continue
             verb = norms[second.end_tok]
             rels = [r for r in self.kb.relations if r.subject == second.landmark and r.object == first.landmark]
@@ -2961,7 +2987,8 @@ class ReportAnalyzer:
             if target is not None:
                 return target, via
         phrase, inv = meta[int(order[0])]
-        return self._follow(anchor, phrase, head, inverse=_reads_backwards(link, phrase, inv) != inverse)
+        # (a link MiniLM only guesses at is read no further by height: "the gardens the Imperial looks out on")
+        return self._follow(anchor, phrase, head, inverse=_reads_backwards(link, phrase, inv) != inverse, _vertical=False)
 
     def _related_by_head(self, anchor: str, head: str) -> tuple[str | None, str | None]:
         """"the quay that the ice plant makes the ice for": a linking phrase MiniLM only half knows, and a head word
@@ -3178,6 +3205,7 @@ class ReportAnalyzer:
             words = {head for head in heads if head.isalpha() and len(head) >= 3 and head not in lx.FUNCTION_WORDS}
             words |= {w for lm in self.kb.landmarks if (w := _description_head(lm.description or ""))}
             self._place_noun_cache = frozenset(words | lx.GENERIC_HEADS | {"track", "tracks"})
+            # ("the pool the header tank feeds": a body of water heads one too)
             # ("the tracks the brick yard sends its loads down": a tramway's)
         return self._place_noun_cache
 
@@ -3190,7 +3218,7 @@ class ReportAnalyzer:
         point, and the place meant is one the KB relates to it: the only one, else the one whose name has
         the head noun, else the relation MiniLM reads closest to the description, if it stands clearly
         first. Where none stands out, nothing is claimed there rather than the anchor. True where it found any."""
-        nouns = self._place_nouns()
+        nouns = self._place_nouns() | _WATER_HEADS
         found = False
         blocked = place_tokens | marker_tokens | cue_tokens
         pronoun_anchors = self._pronoun_anchors(ex, toks, norms, blocked)
@@ -3234,6 +3262,10 @@ class ReportAnalyzer:
             between = [norms[i] for i in linked]
             end = anchor.end_tok
             locative = False
+            if norms[head] in _WATER_HEADS and norms[head] not in self._place_nouns() \
+                    and (between or head == 0 or norms[head - 1] != "the"):
+                continue  # a body of water heads only "the pool the header tank feeds" (not "the canal off the
+                # pontoons", where someone slipped in, nor "like a river")
             if between and between[0] == "whose":
                 pass  # "the chapel whose old vicarage is now Dinsdale's", "the farm whose old stables the team hut was"
             elif between:
@@ -3383,9 +3415,20 @@ class ReportAnalyzer:
             ex.places.append(self._mention(toks, hs, end, target, via=f"{via} (related to {anchor.landmark})"))
             place_tokens.update(range(hs, end))
             found = True
+        if found:  # ("The pool the header tank feeds ..., and whatever that pool drains into": the description just
+            # resolved is what "that pool" takes up)
+            spans = {(q.start_tok, q.end_tok) for q in ex.places}
+            later = [q for q in self._pronoun_anchors(ex, toks, norms, place_tokens | marker_tokens | cue_tokens)
+                     if q.reason.startswith("modifier of 'that ") and (q.start_tok, q.end_tok) not in spans]
+            ex.places.extend(later)
+            pronoun_anchors.extend(later)
         for p in pronoun_anchors:
-            if p in ex.places:
-                ex.places.remove(p)  # (a pronoun no description took up as its anchor)
+            if p in ex.places and not (p.reason.startswith("modifier of 'that ") and p.status == "reference"
+                                       and self._relations.match_at(norms, p.end_tok) is not None):
+                ex.places.remove(p)  # (a pronoun no description took up as its anchor; but "whatever that pool drains
+                # into" may still be read from it, the relation said right after it)
+            elif p in ex.places:
+                found = True
         return found
 
     def _names_anchor(self, toks: Tokens, norms: tuple[str, ...], start: int, taken: Collection[int]) -> bool:
@@ -3425,7 +3468,8 @@ class ReportAnalyzer:
         # the head of a description said before take it up again
         for k in range(3, len(norms) - 1):
             if norms[k - 1] != "that" or k in blocked or (k - 1) in blocked or toks.clause_start[k] \
-                    or norms[k] not in lx.GENERIC_HEADS | lx.DESCRIPTION_HEADS or norms[k + 1] in lx.COPULAS \
+                    or norms[k] not in lx.GENERIC_HEADS | lx.DESCRIPTION_HEADS | self._place_nouns() | _WATER_HEADS \
+                    or norms[k + 1] in lx.COPULAS \
                     or toks.clause_start[k + 1] or not toks.tokens[k + 1].text.isalpha():
                 continue
             said = {p.landmark: p for p in ex.places if p.status == "active" and p.via is not None and p.end_tok <= k - 1
@@ -3593,6 +3637,9 @@ class ReportAnalyzer:
                 and not any((m := self._cues.match_at(norms, j)) is not None and m[0] > head_start
                             and not (m[0] > head_end and b - a >= 4) for j in range(max(0, head_start - 3), head_end))
             # (but a cue that runs on into a long relation phrase is none: "the water lapping at the back doors of")
+        if generic and anchor is None and any(p.end_tok == a and p.start_tok < head_end
+                                              and p.reason.startswith("modifier of 'that ") for p in ex.places):
+            generic = False  # "whatever that pool drains into": "that pool" is the anchor, read backwards
         if not generic and anchor is not None and words and words[-1] in lx.STOREY_WORDS | {"rooms", "room", "storeys"} \
                 and self._follow(anchor.landmark, phrase, head_text, inverse=flipped)[0] is not None:
             generic = True  # "people trapped on the floor above the corn exchange", where the KB puts a place above it
@@ -3652,6 +3699,18 @@ class ReportAnalyzer:
                 return
             head_words = " ".join(toks.tokens[j].text for j in range(hs, min(anchor_p.start_tok, a)))
             target, via = self._follow(anchor_p.landmark, phrase, head_words, inverse=not flipped)
+            if named == "pronoun" \
+                    and self._follow(anchor_p.landmark, phrase, head_words, inverse=not flipped, _loose=True)[0] is None:
+                # "Follow the ditch the electric pump empties into, right up to the building it feeds": "it" is the
+                # place the clause was about, not the subject of the clause that described it, when only that one
+                # stands in the relation as named
+                main = max((p for p in ex.places if p.end_tok <= anchor_p.start_tok and p.status == "active"
+                            and p.landmark != anchor_p.landmark), key=lambda p: p.end_tok, default=None)
+                if main is not None and toks.sentence_of[main.start_tok] == toks.sentence_of[anchor_p.start_tok] \
+                        and (anchor_p.status == "reference" or norms[main.end_tok:anchor_p.start_tok] == ("the",)):
+                    exact = self._follow(main.landmark, phrase, head_words, inverse=not flipped, _loose=True)
+                    if exact[0] is not None:
+                        target, via = exact
             if target is None and named == "pronoun":
                 # "the crane on the quay. the shed it looms over": the pronoun takes up the place before the last
                 # one when only that one stands in the relation
@@ -3726,6 +3785,23 @@ class ReportAnalyzer:
                 return
             head_start, head_text = a, ""
         target, via = self._follow(anchor.landmark, phrase, head_text, inverse=flipped)
+        if target is None and pronoun and generic and any(
+                w.isalpha() and w not in lx.PREPOSITIONS and w not in lx.RELATION_ADVERBS and w not in lx.SPATIAL_WORDS
+                for w in norms[a:b]):
+            # "the wall the top road runs along - the passage buried in it": the pronoun takes up the place before
+            # the last one when only that one stands in the relation (as for inverse descriptions; a verb of the
+            # relation said, not only where: "the torrent's right over it")
+            for other in sorted((p for p in ex.places if p.end_tok <= anchor.start_tok
+                                 and (p.status == "active" or p.status == "reference" and p.reason.startswith(
+                                     ("reference point", "subject of a clause")))
+                                 and p.landmark != anchor.landmark and p.via is None
+                                 and toks.sentence_of[p.start_tok] >= toks.sentence_of[a] - 1),
+                                key=lambda p: -p.end_tok)[:2]:
+                target, via = self._follow(other.landmark, phrase, head_text, inverse=flipped)
+                if target is not None and target != anchor.landmark:
+                    anchor = other
+                    break
+                target, via = None, None
         if target is None and (generic or pronoun):
             target, via = self._follow_by_meaning(anchor.landmark, toks, a, b, inverse=flipped)
         if not pronoun:
@@ -3799,10 +3875,13 @@ class ReportAnalyzer:
             shared = {"both", "all", "each", "either"} & set(norms[anchor_end:anchor_end + 4])
             speaker = norms[anchor_end - 1] in ("us", "me", "here")  # "From our church steps I can see the place
             # directly across from us: ...": where the speaker stands, whatever is said between
-            if not shared and (speaker or all(w in lx.FILLERS or w in lx.DETERMINERS or w in ("and", "so")
+            inner = norms[a:b][-1:] in (("in",), ("inside",), ("within",)) and any(
+                d in toks.gaps[det_start] for d in ("—", "–", "--", " - ")) and not {"too", "also", "and"} & set(
+                norms[anchor_end:anchor_end + 3])  # ("from inside the wall ... - the passage buried in it, that's where")
+            if not shared and (speaker or inner or all(w in lx.FILLERS or w in lx.DETERMINERS or w in ("and", "so")
                                               or i in marker_tokens for i, w in enumerate(between, start=anchor.end_tok))) \
-                    and not any(self._cues.match_at(norms, i) is not None for i in range(lo, det_start)
-                                if not anchor.start_tok <= i < anchor.end_tok):
+                    and (inner or not any(self._cues.match_at(norms, i) is not None for i in range(lo, det_start)
+                                          if not anchor.start_tok <= i < anchor.end_tok)):
                 ex.places[ex.places.index(anchor)] = replace(anchor, status="reference",
                                                              reason=f"reference point: {via}")
 
@@ -3878,8 +3957,11 @@ class ReportAnalyzer:
                 e += 1
                 while e < len(norms) and e - i < 9 and not toks.clause_start[e] and e not in stop \
                         and e not in relation_starts and (norms[e] not in lx.COPULAS - {"s"} or norms[e - 1] == "with") \
-                        and norms[e] not in lx.COORDINATORS:  # ("the barn with all the hay in")
-                    e += 1
+                        and norms[e] not in lx.COORDINATORS and not (  # ("the barn with all the hay in")
+                            e + 1 < len(norms) and norms[e + 1] in lx.PREPOSITIONS and norms[e - 1] not in ("that", "which")
+                            and toks.tokens[e].text.lower().endswith("s") and self._keyword_relation(norms[e]) is not None):
+                    e += 1  # (not into a relation's verb: "the canal that the building with the big brick chimney pumps
+                    # into")
             words = {w for w in norms[s_:e] if w not in lx.DESCRIPTION_STOPWORDS and w not in closed}
             scores = sorted(((len(words & ws), name) for name, ws in desc.items()), reverse=True)
             head_of = {name for name, ws in desc.items() if norms[i] in ws} if norms[i] not in lx.DESCRIPTION_STOPWORDS else set()
@@ -4238,6 +4320,9 @@ class ReportAnalyzer:
         j = p.start_tok - 1
         while j >= 0 and norms[j] in lx.DETERMINERS | lx.FILLERS:
             j -= 1
+        if j >= 1 and norms[j] == "from" and norms[j - 1:j] in lx.CALL_RECEIVERS \
+                and all(w in lx.DETERMINERS | lx.FILLERS for w in norms[:j - 1]):
+            return True  # "Control from hut two. ... the building we keep watch on": the place that calls
         if j >= 2 and norms[j] in ("at", "in") and norms[j - 1] in ("work", "live") and norms[j - 2] in ("i", "we"):
             return True  # "I work at the chemist's. The shop we're built onto ...": where the speaker works or lives
         if j < 0 and p.end_tok + 1 < len(norms) and norms[p.end_tok] in lx.CALLER_ROLES | {"reception", "desk"} \
@@ -4279,7 +4364,9 @@ class ReportAnalyzer:
                          or verb and j == a and len(norms[j - 1]) >= 4 and _same_stem(norms[j - 1], verb.rstrip("s"))) \
                 and a - j < 3 and not any(p.end_tok == j and p.status == "active" for p in ex.places):
             j -= 1  # (not past a name's own last word: "car park A lies downhill of")
-        anchor = next((p for p in ex.places if p.end_tok == j and p.status == "active"), None)
+        anchor = next((p for p in ex.places if p.end_tok == j and (p.status == "active" or p.status == "reference"
+                                                                   and p.reason.startswith("modifier of 'that "))), None)
+        # ("whatever that pool drains into": the place "that pool" takes up)
         if anchor is None:
             # "the building that the park across from the flats sits behind": the anchor is the place the
             # reference point before the verb only said where it is
@@ -4362,7 +4449,7 @@ class ReportAnalyzer:
         return False
 
     def _follow(self, anchor: str, phrase: str, head: str, inverse: bool = False,
-                _loose: bool = False) -> tuple[str | None, str | None]:
+                _loose: bool = False, _vertical: bool = True) -> tuple[str | None, str | None]:
         """Landmarks standing in relation ``phrase`` to ``anchor``; ties broken by the head noun.
 
         ``X phrase anchor`` normally; with ``inverse`` the description reads ``anchor phrase X``.
@@ -4396,10 +4483,25 @@ class ReportAnalyzer:
         if not cands and not _loose and phrase not in lx.INVERSE_PHRASES and phrase not in lx.RELATION_SYNONYMS:
             # a description must lead somewhere: a relation the KB states only the other way round
             # ("the building across the skybridge from A&E" for "radiology linked_by_skybridge_to A&E")
-            # is read that way round
+            # is read that way round; but first another relation the same words name, read the way they are said
+            # ("the houses below the visitor centre": ``is downhill of``, not ``car park sits above visitor centre``)
+            found = {}
+            for other, mine, theirs in self._shared_forms.get(phrase, ()):
+                hit = self._follow(anchor, other, head, inverse=inverse ^ mine ^ theirs, _loose=True)
+                if hit[0] is not None:
+                    found.setdefault(hit[0], hit)
+            if len(found) == 1:
+                return next(iter(found.values()))
+            vertical = self._vertical_follow(anchor, phrase, head, inverse) if _vertical else (None, None)
+            if vertical[0] is not None:
+                return vertical
             back, via = self._follow(anchor, phrase, head, inverse=not inverse, _loose=True)
             if back is not None:
                 return back, via
+        if not cands and not _loose and _vertical and (phrase in lx.INVERSE_PHRASES or phrase in lx.RELATION_SYNONYMS):
+            vertical = self._vertical_follow(anchor, phrase, head, inverse)  # ("the room above it")
+            if vertical[0] is not None:
+                return vertical
         if not cands and not _loose:
             cands = self._sibling_relations(anchor, phrase, inverse)
         if not cands:
@@ -4410,6 +4512,41 @@ class ReportAnalyzer:
         if len(uniq) == 1:
             return next(iter(uniq.values()))
         return self._pick_by_head(list(uniq.values()), head)
+
+    def _vertical_follow(self, anchor: str, phrase: str, head: str, inverse: bool) -> tuple[str | None, str | None]:
+        """"the room below the library" for ``library is_built_over chapter house``: of the KB's other relations that
+        say which place is higher, the one place they put where the words put the place described."""
+        mine = _vertical_sense(phrase)
+        if mine is None:
+            return None, None
+        said = mine if not inverse else -mine
+        found: dict[str, tuple[str | None, str | None]] = {}
+        for rel in self.kb.relations:
+            theirs = _vertical_sense(rel.phrase)
+            if rel.phrase == phrase or theirs is None or rel.subject == rel.object:
+                continue
+            # the place described is the subject where the relation puts its subject as the words put it, else the
+            # object (the KB's own statement, no looser reading of the relation's name)
+            if theirs == said and rel.object == anchor:
+                found.setdefault(rel.subject, (rel.subject, f"{rel.subject} {rel.relation} {rel.object}"))
+            elif theirs != said and rel.subject == anchor:
+                found.setdefault(rel.object, (rel.object, f"{rel.subject} {rel.relation} {rel.object}"))
+        return next(iter(found.values())) if len(found) == 1 else (None, None)
+
+    @functools.cached_property
+    def _shared_forms(self) -> dict[str, list[tuple[str, bool, bool]]]:
+        """KB relation -> the direction relations that share a direction word's form with it ("below" of ``sits above``
+        and of ``is downhill of``), each with the direction that form has in the one and in the other."""
+        forms = {rel.phrase: {norm_phrase(f): inv for f, inv in _relation_forms(rel.phrase)} for rel in self.kb.relations}
+        out: dict[str, list[tuple[str, bool, bool]]] = {}
+        for phrase, mine in forms.items():
+            for other, theirs in forms.items():
+                if other == phrase or not set(norm_phrase(other)) & (set(lx.DIRECTION_FAMILIES) | lx.BARE_DIRECTIONS):
+                    continue  # (the other a direction's own relation: "is downhill of", not "looks out over")
+                shared = {(mine[k], theirs[k]) for k in mine.keys() & theirs.keys() if k[0] in _DIRECTION_BARE}
+                if len(shared) == 1:
+                    out.setdefault(phrase, []).append((other, *next(iter(shared))))
+        return out
 
     def _sibling_relations(self, anchor: str, phrase: str, inverse: bool) -> list[tuple[str, str]]:
         """The relation a word names may be another of the KB's than the one its stem was given to: "the
@@ -4927,7 +5064,7 @@ class ReportAnalyzer:
         if k < 3 or norms[k - 1] != "of" or norms[k - 2] not in ("side", "end", "edge"):
             return ""
         for q in places:
-            if q is not p and q.status == "active" and q.end_tok < k - 2 and k - q.end_tok <= 6 \
+            if q is not p and q.status in ("active", "reference") and q.end_tok < k - 2 and k - q.end_tok <= 6 \
                     and norms[q.end_tok] in ("on", "at") and all(w in _SIDE_WORDS for w in norms[q.end_tok:k]):
                 return f"where '{q.text}' stands ('{' '.join(norms[q.end_tok:k])}'): no claim"
         return ""
@@ -5104,8 +5241,10 @@ class ReportAnalyzer:
             if j >= 2 and norms[j - 1] == "than" and norms[j - 2] in lx.COMPARATIVES:
                 ex.places[idx] = replace(p, status="reference", reason="a comparison: no claim")
                 continue  # "flames going higher than the arches"
-            if not (j >= 2 and norms[j - 1] == "from" and norms[j - 2] in lx.ORIGIN_PEOPLE):
-                continue
+            if not (j >= 2 and norms[j - 1] == "from" and (norms[j - 2] in lx.ORIGIN_PEOPLE or (
+                    is_number(norms[j - 2]) and not is_ordinal(norms[j - 2])
+                    and (j < 3 or norms[j - 3] not in ("the", "number", "no"))))):
+                continue  # (and a head count: "about forty from the dam houses up there already")
             ahead = range(p.end_tok, min(len(norms), p.end_tok + 12))
             stop = next((i for i in ahead if i in starts or toks.sentence_start[i]), ahead.stop)
             if any(self._person_cue_at(norms, i) for i in range(p.end_tok, stop)):
@@ -5455,6 +5594,19 @@ class ReportAnalyzer:
                 continue
             first_after = min((p for p in after if p.status == "active"), key=lambda p: p.start_tok, default=None)
             if first_after is not None and first_after.landmark == last.landmark:
+                prev = max((p for p in ex.places if p.end_tok <= last.start_tok), key=lambda p: p.end_tok, default=None)
+                if prev is not None and prev.status == "active" and prev.via is None and prev.landmark != last.landmark \
+                        and _noun_phrase_start(norms, last) - prev.end_tok <= 1 \
+                        and all(norms[i] in lx.FILLERS for i in range(prev.end_tok, _noun_phrase_start(norms, last))) \
+                        and any(d in toks.gaps[t] for t in range(prev.end_tok, _noun_phrase_start(norms, last) + 1)
+                                for d in ("...", "…", "—", "–", "--", " - ")) \
+                        and not self._cue_between(norms, prev.end_tok, a):
+                    # "the spillway... the gates, sorry, the radial gates": the place the speaker broke off from
+                    # before the one said again more exactly is repaired too
+                    ex.places[ex.places.index(prev)] = replace(
+                        prev, status="retracted", reason=f"self-repair: '{toks.span_text(a, b)}' then '{first_after.text}'")
+                    if first_after.replaces is None:
+                        ex.places[ex.places.index(first_after)] = replace(first_after, replaces=prev.start_tok)
                 continue  # "I mean the chapel, st mary's, same place": a restatement, not a repair
             if first_after is not None and not _strong and first_after.landmark in self._replaced_chain(ex, last) \
                     and [w for w in norms[first_after.end_tok:first_after.end_tok + 2] if w not in ("s", "is")][:1] \
@@ -5713,19 +5865,28 @@ class ReportAnalyzer:
                 continue
             last = norm(p.text.split()[-1])
             np0 = _noun_phrase_start(norms, p)
-            part_of = np0 >= 2 and norms[np0 - 1] == "of" and norms[np0 - 2] in _FALLING_PARTS
+            part_of = np0 >= 2 and norms[np0 - 1] == "of" and norms[np0 - 2] in _FALLING_PARTS | _HOLDING_PARTS
+            if norms[k] in _HOLDING_PARTS and k + 1 < len(norms) and p.via is None:
+                part_of, k = True, k + 1  # "the lagoon banks are going", "the slurry pond wall has gone"
             if last not in lx.STRUCTURE_WORDS | _SPANS and not part_of:
                 continue
-            if norms[k:k + 2] in (("has", "gone"), ("s", "gone")) or part_of and norms[k:k + 2] in (
+            if norms[k:k + 2] in (("has", "gone"), ("s", "gone"), ("have", "gone")) or part_of and norms[k:k + 2] in (
                     ("is", "down"), ("s", "down"), ("was", "down")):
                 end = k + 2
             elif (norms[k] == "gone" or part_of and norms[k] == "down") \
                     and toks.tokens[k - 1].text.lower().endswith(("'s", "’s")):
                 end = k + 1
+            elif part_of and norms[k - 1] in _HOLDING_PARTS and norms[k:k + 2] in (("are", "going"), ("is", "going")):
+                end = k + 2  # a wall or bank "going" gives way as it is said
+            elif part_of and norms[k - 1] in _HOLDING_PARTS and norms[k] == "going" and norms[k - 1].endswith("s"):
+                end = k + 1  # "lagoon banks going"
             else:
                 continue
             if norms[end:end + 1] == ("flat",):
                 end += 1  # "the roof of the hangar is down flat"
+            if end + 3 < len(norms) and norms[end:end + 2] == ("on", "the") and norms[end + 3] in ("side", "end") \
+                    and (end + 4 == len(norms) or toks.clause_start[end + 4]):
+                end += 4  # "... has gone on the south side": where along it, the same claim
             if end < len(norms) and not toks.clause_start[end]:
                 continue  # ("the bridge has gone under", "has gone to ...": more words, another meaning)
             c0 = next((i for i in range(p.start_tok, -1, -1) if toks.clause_start[i]), 0)
@@ -5753,6 +5914,28 @@ class ReportAnalyzer:
         """The category the vocabulary gives "under water" in this KB (None where it reads as no claim)."""
         hit = self._cues.match_at(("under", "water"), 0)
         return None if hit is None or hit[1][1] == "neutral" else hit[1][0]
+
+    def _water_over_cues(self, ex: Extraction, norms: tuple[str, ...], blocked: set[int]) -> list[CueMention]:
+        """"The ditch the little pump lifts into is over the road at the south end": water said to be over the road
+        (the lane, the track, the fields) has left its bed, flooded (not "the pub is over the road": no water)."""
+        toks = ex.tokens
+        out: list[CueMention] = []
+        if self._flooded_category is None:
+            return out
+        for p in ex.places:
+            if p.status != "active" or norm(p.text.split()[-1]) not in WATERCOURSE_WORDS:
+                continue
+            for k in range(p.end_tok, min(len(norms) - 3, p.end_tok + 8)):
+                if k > p.end_tok and toks.sentence_start[k] or any(q.start_tok == k and q.status == "active"
+                                                                   for q in ex.places):
+                    break
+                if norms[k] in ("is", "s", "come", "gone", "right") and norms[k + 1:k + 3] == ("over", "the") \
+                        and norms[k + 3] in _OVERRUN_GROUND and not blocked & {k + 1, k + 2, k + 3}:
+                    a, b = toks.tokens[k + 1].start, toks.tokens[k + 3].end
+                    out.append(CueMention(k + 1, k + 4, a, b, toks.text[a:b], self._flooded_category, "lexicon",
+                                          reason="water over the road"))
+                    break
+        return out
 
     def _under_final(self, ex: Extraction, norms: tuple[str, ...], blocked: set[int]) -> list[CueMention]:
         """"it's the slipway that's under.": a place said to be "under", closing its clause, is under water (the
@@ -5817,6 +6000,7 @@ class ReportAnalyzer:
         cues.extend(self._structure_gone(ex, norms, blocked))
         cues.extend(self._contracted_is_cues(ex, norms, blocked))
         cues.extend(self._under_final(ex, norms, blocked))
+        cues.extend(self._water_over_cues(ex, norms, blocked))
         cues.extend(self._stove_in_cues(toks, norms, blocked))
         for a, b, (cat, source) in self._cues.find_all(norms, blocked):
             if source == "neutral":
@@ -5960,8 +6144,9 @@ class ReportAnalyzer:
                     and self.kb.category_by_name[cat].role == Role.UNDESIRABLE and self._person_before(norms, a):
                 # "two people cut off by the water at the allotments": the water there, and people to rescue
                 cues.append(replace(cue, category=self._person_category, reason="people cut off"))
-            if source == "lexicon" and norms[a:b] in lx.PERSON_STATE_CUES and self._person_category \
-                    and self._person_before(norms, a):
+            if (source == "lexicon" or source == "category" and self.kb.category_by_name[cat].role != Role.CRITICAL) \
+                    and norms[a:b] in lx.PERSON_STATE_CUES and self._person_category and self._person_before(norms, a):
+                # (the undesirable category's description may list "collapsed" too: "one of the riggers has collapsed")
                 cue = replace(cue, category=self._person_category, reason=f"a person {norms[a]}")
             if norms[a:b] == ("crushed", "against") and self._person_category and next(
                     (w for w in reversed(norms[max(0, a - 3):a]) if w not in lx.FILLERS), "") in (
@@ -6422,9 +6607,15 @@ class ReportAnalyzer:
         while j >= 0 and norms[j] in ("have", "has", "had", "s", "is", "are", "was", "were", "been", "got", "just",
                                       "both", "all", "also", "then", "suddenly", "badly", "very", "bad"):
             j -= 1
+        if j >= 1 and norms[j] in ("there", "here") and norms[j - 1] in ("up", "down", "in", "over", "out", "back"):
+            j -= 2  # "one of the riggers up there has collapsed": where they are, between
         if j < 0:
             return False
         w = norms[j]
+        if j >= 3 and norms[j - 2:j] == ("of", "the") and (norms[j - 3] in lx.NUMBER_WORDS or norms[j - 3] in (
+                "one", "some", "both", "all", "two")) and (w in ("man", "men", "woman", "women", "lad", "guy", "kid",
+                                                                 "child", "children", "crew") or w in lx.WORKER_PERSONS):
+            return True  # "one of the riggers has collapsed": one of the people doing the work
         if w == "after" and any(norms[m] in _PEOPLE_WORDS for m in range(max(0, j - 10), j)):
             return True  # "woman with hypothermia at the ferry landing after falling in"
         if w in lx.STRUCTURE_WORDS:
@@ -6541,8 +6732,9 @@ class ReportAnalyzer:
         """An animal word before token ``a`` in its clause, with no person word between: "the bulls are chained in
         there screaming", "The lions in the barn across the yard from the horse lines are panicking"."""
         for j in range(a - 1, max(-1, a - 13), -1):
-            if norms[j] in _PERSON_WORDS or norms[j] in lx.PERSON_SUBJECTS:
-                return False
+            if norms[j] in _PERSON_WORDS or norms[j] in lx.PERSON_SUBJECTS or norms[j] in _PEOPLE_WORDS \
+                    or norms[j] in lx.CALLER_ROLES:
+                return False  # ("one of the keepers is trapped in the night den": a person)
             if norms[j] in lx.ANIMAL_WORDS:
                 return True
             if toks.clause_start[j] and not (j > 0 and norms[j - 1] in lx.ANIMAL_WORDS):
@@ -6714,6 +6906,8 @@ class ReportAnalyzer:
                 if e <= len(norms) and (is_number(norms[e - 1]) or norms[e - 1] in lx.NUMBER_WORDS) \
                         and toks.tokens[p.end_tok].text[:1].isupper() and (e == len(norms) or toks.sentence_start[e]):
                     continue  # "Rally office, Fire Two.": the station called and who calls, no claim to guess at
+            if _call_sign_at(toks, norms, p):
+                continue  # "Rescue Two at the gorge.": who calls and where they are, no claim to guess at
             a, b = self._predicate_region(ex, p, norms)
             if any(a <= c.start_tok < b for c in all_cues) or any(a <= ma < b for ma, _, _ in ex.markers) \
                     or any(a <= i < b for i in getattr(self, "_shut_tokens", ())) \
@@ -7082,7 +7276,8 @@ class ReportAnalyzer:
         for i in range(1, len(norms) - 1):
             # "the bakery's going up", "the building opposite that's going up": burning, said of a place;
             # not "a tent going up at the school"
-            if norms[i : i + 2] not in (("going", "up"), ("gone", "up")) or i in blocked or i + 1 in blocked:
+            if norms[i : i + 2] not in (("going", "up"), ("gone", "up")) or i in blocked or i + 1 in blocked \
+                    or toks.sentence_start[i + 1]:  # ("legs are gone. Up top now.": two sentences)
                 continue
             prev = toks.tokens[i - 1].text.lower().replace("’", "'")
             if not (norms[i - 1] in ("is", "s", "are") or prev.endswith("'s") and (i - 1) in last_words
@@ -7398,6 +7593,10 @@ class ReportAnalyzer:
             j = -1  # "he's not, he's not breathing": a cue that is itself a negation is not negated again
         if cue.start_tok > 0 and norms[cue.start_tok - 1] == "negative" and cue.category == self._person_category:
             return replace(cue, polarity="denied", reason="negated by 'negative'")  # "negative casualties here"
+        if cue.category == self._person_category and norms[cue.start_tok] == "still" \
+                and norms[cue.end_tok:cue.end_tok + 1] in (("unhurt",), ("uninjured",), ("unharmed",), ("fine",), ("ok",)) \
+                and not toks.sentence_start[min(cue.end_tok, len(norms) - 1)]:
+            return replace(cue, polarity="denied", reason="said unhurt")  # "I'm still in the cab, unhurt."
         saw_or = False  # "haven't seen any damage or anyone hurt": the negation runs on over "or"
         while j >= 0 and steps < (8 if saw_or else 4) and j not in place_toks:
             if norms[j] in ("or", "nor") and not toks.clause_start[j + 1]:
@@ -7508,6 +7707,9 @@ class ReportAnalyzer:
                 if h[1].startswith("out") and k > 0 and norms[k - 1] in ("carried", "stretchered", "brought", "helped") \
                         and norms[cue.start_tok].startswith(("casualt", "injured", "wounded")):
                     break  # "two casualties being carried out now": hurt people being got out are still hurt
+                if h[1].endswith("out") and any(norms[i] in lx.ANIMAL_WORDS and i not in self._place_tokens
+                                                for i in range(max(cue.end_tok, k - 2), k)):
+                    break  # "the fence is down and a tiger is out": the animal got out, the fence stays down
                 if h[1] == "gone" and norms[h[0]:h[0] + 2] in (("out", "to"), ("over", "to"), ("to",), ("in", "to")):
                     break  # "our doctor's gone out to him": gone to help, nothing over
                 if h[1] in ("gone", "has gone", "is gone") and "and" in norms[cue.end_tok:k] and k > 0 \
@@ -7567,6 +7769,8 @@ class ReportAnalyzer:
             while j < len(norms) and j - k < 6 and norms[j] in lx.BACK_REFERENCE_WORDS | lx.FILLERS:
                 j += 1
             h = self._cancel.match_at(norms, j) if j < len(norms) else None
+            if h is not None and h[1] in ("gone", "is gone", "has gone") and norms[cue.end_tok - 1] == "gone":
+                h = None  # "the roof's gone, just gone": the cue's own word said again
             if h is not None and j == k and h[1] not in lx.CANCEL_CLAUSES and not predicate_cut:
                 h = None  # (a clause of its own, "no sign of him", needs no "it's" before it)
             if h is None and j > k and j < len(norms) and norms[j] == "out":
@@ -8007,6 +8211,10 @@ class ReportAnalyzer:
         cued = {sentence_of[c.start_tok] for c in cues if c.status == "active"}
         # (a short sentence that names no place goes on about it too: "That's the one.", "Windows all blown out.")
         transparent = {n for n in sent_words if n not in placed and (n in questions or n in cued or sent_words[n] <= 5)}
+        # (and an aside about where the speaker is: "I've lived here thirty years and never seen it like this.")
+        transparent |= {sentence_of[i] for i in range(len(toks)) if norms[i] == "here" and sentence_of[i] not in placed
+                        and sent_words[sentence_of[i]] <= 14
+                        and {"i", "ive", "weve", "id"} & {norms[j] for j in range(max(0, i - 3), i)}}
 
         floated: set[int] = set()  # places given only the cues of a later segment with no place of its own
         # 3. cue-only segments attach to the places they talk about; a segment whose place was
@@ -8431,6 +8639,12 @@ class ReportAnalyzer:
                     q.key == c.key and q.cue.polarity == "affirmed" and 0 <= c.cue.start_tok - q.cue.end_tok <= 1
                     and norms[q.cue.start_tok:q.cue.end_tok] != norms[c.cue.start_tok:c.cue.end_tok] for q in pairs):
                 continue  # "well, smoke, no flames really": a kind denied right after the kind there is
+            if c.cue.polarity == "denied" and c.cue.reason == "negated by 'no'" \
+                    and _not_seen_yet(norms, c.cue.end_tok) and any(
+                    q.key == c.key and q.cue.polarity == "affirmed" and q.cue.end_tok <= c.cue.start_tok
+                    and toks.sentence_of[q.cue.start_tok] == toks.sentence_of[c.cue.start_tok]
+                    and norms[q.cue.start_tok:q.cue.end_tok] != norms[c.cue.start_tok:c.cue.end_tok] for q in pairs):
+                continue  # "a hot spot on the roof of the valve hut, no flames visible yet": the worse kind not seen yet
             if c.cue.polarity == "denied" and c.cue.reason in _MADE_SAFE and (
                     kind := self._danger_kind_by_words.get(norm_phrase(c.cue.text))) is not None and any(
                     q.key == c.key and q.cue.polarity == "affirmed" and q.cue.start_tok < c.cue.start_tok
@@ -9215,8 +9429,10 @@ _REPAIR_WORDS = frozenset({"no", "sorry", "correction", "mean", "rather", "wait"
 def _letter_labelled(keys: set[tuple[str, ...]]) -> set[tuple[str, ...]]:
     """Of a KB's names (``keys``, as token keys), those whose first word is the letter "a" labelling one of a
     lettered series ("a wing" beside "b wing", "c wing"): the "a" is no article there."""
-    return {k for k in keys if len(k) >= 2 and k[0] == "a"
-            and any(o[1:] == k[1:] and len(o[0]) == 1 and o[0].isalpha() and o[0] != "a" for o in keys)}
+    bare = {k[1:] if k[:1] == ("the",) else k for k in keys}  # ("the a leg" beside "the c leg")
+    lettered = {k for k in bare if len(k) >= 2 and k[0] == "a"
+                and any(o[1:] == k[1:] and len(o[0]) == 1 and o[0].isalpha() and o[0] != "a" for o in bare)}
+    return {k for k in keys if (k[1:] if k[:1] == ("the",) else k) in lettered}
 
 
 def _phonetic_forms(kb: KnowledgeBase, keys: set[tuple[str, ...]],
@@ -9279,11 +9495,40 @@ _PERSON_WORDS = frozenset(lx.PERSON_NOUNS) | {"pensioner", "residents", "neighbo
 _UNREACHABLE = (("cant", "get", "hold", "of"), ("not", "answering"), ("isnt", "answering"), ("hes", "not", "answering"),
                 ("she", "not", "answering"), ("shes", "not", "answering"), ("not", "picking", "up"))
 # The parts of a building that fall in ("the roof of the vehicle hangar is down": collapsed)
+_UPPER_WORDS = frozenset({"over", "above", "atop", "uphill", "upslope"})
+_LOWER_WORDS = frozenset({"under", "below", "beneath", "underneath", "downhill", "downslope"})
+
+
+def _vertical_sense(phrase: str) -> int | None:
+    """Does a relation name put its subject higher (1: "is built over", "sits above") or lower (-1: "lies_beneath",
+    "is downhill of") than its object; None where it says neither (or a view: "looks out over")."""
+    said = norm_phrase(phrase.replace("_", " "))
+    words = set(said)
+    if words & {"look", "looks", "overlook", "overlooks", "watch", "watches", "view", "views", "spill", "spills"}:
+        return None
+    if "over" in words and said[-1:] != ("over",):
+        words = words - {"over"}  # ("leads over to": across, not above; "is built over": above)
+    up, down = bool(words & _UPPER_WORDS), bool(words & _LOWER_WORDS)
+    return None if up == down else (1 if up else -1)
+
+
+# The parts of a place a relation's name may say in other words ("the foot of" / "the bottom of" / "the base of")
+_PART_SYNONYMS = {"foot": ("bottom", "base"), "bottom": ("foot", "base"), "base": ("foot", "bottom")}
+# First words of the direction families' members ("below", "down the hill", "further inland")
+_DIRECTION_BARE = frozenset(m.split()[0] for fam in lx.DIRECTION_FAMILIES.values() for m in fam)
 _FALLING_PARTS = frozenset({"roof", "ceiling", "gable", "chimney", "spire", "tower", "canopy", "floor"})
+# The parts of a place that hold it up or hold water in ("the wall of the slurry pond has gone", "lagoon banks going")
+_HOLDING_PARTS = frozenset({"wall", "walls", "bank", "banks"})
 # What spans or holds back water, besides the structures of a building ("Jenny's arch has gone.": collapsed)
 _SPANS = frozenset({"arch", "span", "viaduct", "weir", "dam", "bund", "embankment", "footbridge", "culvert",
                     "aqueduct", "pier", "jetty", "quay", "sluice", "lock", "gate"})
 # Water that stands or is held, besides the flowing kind ("the dew pond's bone dry": no water in it)
+# Bodies of water that head a description of a place ("the pool the header tank feeds"; not "the drains", any drains)
+_WATER_HEADS = frozenset({"pool", "pond", "lake", "reservoir", "lagoon", "ditch", "canal", "channel", "moat", "tarn",
+                          "cistern", "mere", "loch", "creek", "brook", "stream", "river"})
+# Ground that water out of its bed runs over ("the ditch is over the road")
+_OVERRUN_GROUND = frozenset({"road", "lane", "track", "path", "towpath", "footpath", "field", "fields", "drive",
+                             "street", "causeway", "bank", "banks", "top"})
 _STILL_WATERS = frozenset({"pond", "pool", "reservoir", "ditch", "drain", "dyke", "rhyne", "well", "fountain", "lagoon",
                            "moat", "leat", "cistern", "tarn", "lido"})
 _PEOPLE_WORDS = _PERSON_WORDS | lx.LAY_PERSONS | lx.WORKER_PERSONS | {"men", "women", "folk", "folks"}
@@ -9312,6 +9557,30 @@ def _description_list_items(description: str) -> list[tuple[str, ...]]:
                     and key not in out:
                 out.append(key)
     return out
+
+
+def _call_sign_at(toks: Tokens, norms: tuple[str, ...], p: PlaceMention) -> bool:
+    """A sentence that is only a call sign and where it is: "Rescue Two at the gorge.", "Fire One, at the mill, over"."""
+    s0 = p.start_tok
+    while s0 > 0 and not toks.sentence_start[s0]:
+        s0 -= 1
+    before = [i for i in range(s0, p.start_tok) if norms[i] not in lx.FILLERS and norms[i] not in lx.ARTICLES]
+    if len(before) != 3 or norms[before[2]] not in ("at", "on", "by", "in") \
+            or not toks.tokens[before[0]].text[:1].isupper() \
+            or not (is_number(norms[before[1]]) or norms[before[1]] in lx.NUMBER_WORDS or norms[before[1]] == "one"):
+        return False
+    e = p.end_tok
+    while e < len(norms) and not toks.sentence_start[e]:
+        if norms[e] not in ("over", "here", "now") and norms[e] not in lx.FILLERS:
+            return False
+        e += 1
+    return True
+
+
+def _not_seen_yet(norms: tuple[str, ...], k: int) -> bool:
+    """The words after a denied cue say only that it is not seen (yet): "no flames visible yet", "no flames yet"."""
+    return norms[k:k + 1] in (("yet",), ("visible",)) or norms[k:k + 2] in (
+        ("showing", "yet"), ("seen", "yet"), ("as", "yet"), ("that", "we"))
 
 
 def _noun_phrase_start(norms: tuple[str, ...], p: PlaceMention) -> int:
@@ -9630,6 +9899,12 @@ def _relation_forms(phrase: str) -> list[tuple[str, bool]]:
         for copula in ("is", "are", "was", "were"):
             out.extend(((f"{copula} {rest}", False), (f"that {copula} {rest}", False), (f"which {copula} {rest}", False)))
         out.extend(((f"that {rest}", False), (rest, False)))
+        # ("the houses below the visitor centre" for "is downhill of": a direction word's family said bare too)
+        out.extend((f[3:], inv) for f, inv in list(out) if f.startswith("is ") and f[3:].split()[0] in _DIRECTION_BARE)
+        if len(words) == 3 and words[1].endswith(("ed", "lt", "wn")) and words[2] in ("against", "onto", "into", "on"):
+            # "the stretch of boundary the vets are built up against" for ``is built against``
+            out.extend(((f"{words[1]} up {words[2]}", False), (f"is {words[1]} up {words[2]}", False),
+                        (f"are {words[1]} up {words[2]}", False)))
         if len(words) == 4 and words[1].endswith("ed") and words[2] in ("in", "up", "away", "out") \
                 and words[3] in lx.RELATION_ENDINGS:
             # "is tucked in behind" said without its particle: "the tent they're tucked behind"
@@ -9664,8 +9939,8 @@ def _relation_forms(phrase: str) -> list[tuple[str, bool]]:
         for v in (stem, stem + "s", *sorted(ings)):
             out.append((f"{v} {rest}".strip(), False))
             out.append((f"that {v} {rest}".strip(), False))
-        for v in (base + "ed", stem + "ed"):
-            out.append((f"{v} by", True))
+        for v in (base + "ed", stem + "ed", *(k for k, val in lx.IRREGULAR_PARTICIPLES.items() if val == stem)):
+            out.append((f"{v} by", True))  # ("those pipes fed by the tower" for ``feeds water into``)
         if plain_verb and len(words) >= 2:
             # "the stalls huddled under the eaves of the market hall": the participle reads it forwards
             for v in {base + "ed", *(k for k, val in lx.IRREGULAR_PARTICIPLES.items() if val == stem)}:
@@ -9813,6 +10088,21 @@ def _with_other_preposition(phrase: str, out: list[tuple[str, bool]]) -> None:
         others = {"for": ["to"], "to": ["for"], "of": ["for"]}[words[-1]]
         out.extend((f"{form[:-len(words[-1])]}{other}", inv) for form, inv in list(out) for other in others
                    if form.endswith(f" {words[-1]}") and len(form.split()) >= 3)
+    if len(words) >= 3 and words[-1] == "into" and words[-2] not in lx.ARTICLES and words[-2] not in lx.NOT_VERBS:
+        # "the room that tank pipes water to" for ``pipes_water_into``
+        out.extend((f"{form[:-4]}to", inv) for form, inv in list(out) if form.endswith(" into") and len(form.split()) >= 3)
+    if len(words) >= 3 and words[-1] == "from" and words[-2] not in lx.ARTICLES and any(w in lx.ARTICLES for w in words):
+        # "the crane that works the cargo off the Sea Tern" for ``works_the_cargo_from``: a noun taken "off" a place
+        out.extend((f"{form[:-4]}off", inv) for form, inv in list(out) if form.endswith(" from") and len(form.split()) >= 3)
+    for i, w in enumerate(words[:-1]):
+        if w in _PART_SYNONYMS and words[i + 1] == "of":
+            # "wraps round the bottom of" for ``wraps round the foot of``
+            out.extend((f.replace(f" {w} of", f" {other} of"), inv) for f, inv in list(out) if f" {w} of" in f
+                       for other in _PART_SYNONYMS[w])
+    if len(words) >= 2 and words[-1] in ("inside", "within") and words[-2].endswith(("ed", "lt", "wn", "en")):
+        # "the passage buried in it" for ``is_buried_inside``: a participle's "inside" said "in"
+        out.extend((f"{form[:-len(words[-1])]}in", inv) for form, inv in list(out)
+                   if form.endswith(f" {words[-1]}") and len(form.split()) >= 2)
     if len(words) >= 3 and words[-1] in ("across", "over") and words[-2] not in lx.ARTICLES:
         # "the bridge carrying the towpath over the weir" for ``carries the towpath across``
         other = "over" if words[-1] == "across" else "across"

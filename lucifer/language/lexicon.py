@@ -74,10 +74,10 @@ gas main|water's up|water up to|up to the windowsills|smoke logged|smoke logging
 fully developed fire|ammonia|ammonia leak|asbestos|unstable chimney|hazmat incident|arcing|
 fuel pouring|pouring fuel|roof's going|roof is going|everyone out|get everyone out|evacuate|evacuating|
 smell of gas|strong smell of gas|gas smell|water damage|waist deep|chest deep|electrical hazard|exposed wiring|
-hot zone|exclusion zone|inner cordon|wall down|walls down|roof's in|roof is in|roof's gone|roof has gone|
+hot zone|exclusion zone|inner cordon|wall down|walls down|fence is down|fence's down|fences are down|fence is flat|roof's in|roof is in|roof's gone|roof has gone|
 roof's off|shedding bricks|shedding slates|unstable masonry|masonry falling|falling masonry|flooded out|mud slide|
 slumping|waterlogged|water logged|halfway up|burst main|burst pipe|pipe burst|pipe's burst|water everywhere|
-bowing out|bowing|bulging|bulge|water coming over|coming over the|ripping through|smoke-logged|fully alight|jammed open|
+bowing out|bowing|bulging|bulge|water coming over|coming over the|ripping through|smoke-logged|fully alight|jammed open|stuck open|won't close|wont close|will not close|not closing|won't shut|wont shut|not shutting|
 floor's gone|floor has gone|floor's gone through|gone through the floor|sinking|subsiding|subsidence|cracked right across|
 a crack|crack right across|cracks|venting|hissing|gas bottles|leaking fuel|diesel slick|slick|fuel slick|
 jammed shut|jammed|locked|padlocked|chained|chained shut|can't get in|cannot get in|can't get into|cannot get into|
@@ -196,7 +196,7 @@ casualty|casualties|victim|victims|survivor|survivors|patient|patients|
 needs help|need help|needs rescue|need rescue|needs rescuing|need rescuing|calling for help|crying for help|
 cries for help|screaming|shouting for help|banging|knocking|someone inside|people inside|person inside|
 kids inside|children inside|family inside|elderly inside|residents inside|
-missing person|missing persons|missing|man down|person down|woman down|people down|
+missing person|missing persons|missing|been bitten|got bitten|was bitten|bitten by|bitten on the|man down|person down|woman down|people down|men down|both burnt|both burned|cut up bad|cut up badly|badly cut up|
 medical emergency|medical help|needs a medic|needs medic|needs an ambulance|needs evacuation|
 can't get out|cannot get out|can't move|cannot move|burns victim|overcome by smoke|
 stranded|cut off|trapped people|trapped persons|people trapped|someone trapped|somebody trapped|
@@ -225,8 +225,8 @@ ambulance needed|ambulance required|need an ambulance|send an ambulance|needs me
 broken ankle|broken wrist|head injury|fractured|fracture|crushed|crushed foot|crushed leg|concussion|
 can hear someone|can hear her|can hear him|can hear them|can hear voices|hear someone|hear her|hear him|
 hear voices|waving at us|waving to us|calling from|shouting from|trapped under|under the timbers|overdue|
-gone under|went under|swept away by|in the river|in the sea|hypothermia|casualty recovered|recovered from the water|swept away|
-still in there|still in there somewhere|can't find him|can't find her|can't find them|cannot find him|
+gone under|went under|capsized|has capsized|not come up|hasn't come up|hasnt come up|not come back up|not surfaced|hasn't surfaced|swept away by|in the river|in the sea|hypothermia|casualty recovered|recovered from the water|swept away|
+still in there|still in there somewhere|still got children upstairs|still got kids upstairs|still got people upstairs|children still upstairs|kids still upstairs|people still upstairs|can't find him|can't find her|can't find them|cannot find him|
 people coughing|few of them collapsed|some of them collapsed|collapsed on the floor|
 live find|a live find|indicating a find|can't get down|cannot get down|can't get downstairs|cut his arm|cut her arm|
 cut his hand|cut his head|cut her head|badly cut|in trouble|in difficulty|in difficulties|has fever|has a fever|has a high fever|got a fever|need doctor|needs doctor|need a doctor|needs a doctor|cut very bad|cut very badly|cut really bad|cut bad|cut from the glass|cut by the glass|cut by flying glass|can't get back down|cannot get back down|can't get back out|can't get up the step|cannot get up the step|bleeding heavily|can't get the doors open|can't get the door open|
@@ -603,7 +603,7 @@ LINK_SYNONYMS = [{"suppl", "feed", "power", "serv"}, {"pair", "twin", "sister", 
                  {"annex", "extension"},
                  {"tunnel", "underpas", "subway", "passag"}, {"bridg", "walkway", "footbridg"},
                  {"moor", "tied", "tie", "berth"}, {"foot", "bottom"}, {"vent", "exhaust"},
-                 {"monitor", "watch", "observ", "surveil"}, {"supersed", "replac"}]
+                 {"monitor", "watch", "observ", "surveil"}, {"supersed", "replac"}, {"empt", "discharg"}]
 # Words of a relation name that are too common to identify it on their own in a report.
 RELATION_NAME_STOPWORDS = {"busy", "for", "by", "to", "of", "with", "onto", "on", "into", "from", "the", "a", "an", "is", "and", "in",
                            "at", "that", "its", "it", "side", "end", "other", "way", "same", "far", "near", "up",
@@ -771,7 +771,7 @@ TRANSIT = ["people in off", "taking people in off", "in off the", "walked up fro
            "visitors coming off", "crowds coming off", "folk coming off", "riders coming off", "families coming out of", "anyone coming out of", "anybody coming out of", "everyone coming out of", "people coming out of", "evacuated from", "moved out of", "moved from", "relocated from", "decanted from", "brought out of",
            "heading to", "heading for", "heading towards", "heading toward", "headed to", "headed for", "head to",
            "heading up towards", "heading down towards", "creeping towards", "drifting towards", "current towards", "swinging towards", "floating towards",
-           "spreading towards", "moving up towards",
+           "spreading towards", "moving up towards", "follow the", "following the", "followed the",
            "passing", "passed", "moving past", "going past", "driving past", "walking past", "past",
            "on our way to", "on the way to", "our way to", "on my way to", "my way to", "on his way to", "on her way to", "on their way to", "en route to", "enroute to", "going to", "driving to",
            "walking to", "moving to", "moving towards", "proceeding to", "approaching", "leaving",
@@ -984,7 +984,9 @@ LAY_PERSONS = {"man", "woman", "person", "people", "someone", "somebody", "child
 WORKER_PERSONS = {"driver", "worker", "workman", "lad", "labourer", "passenger", "pupil", "shopper", "baker",
                   "cleaner", "operator", "builder", "steward", "stewardess", "crewman", "deckhand", "fitter",
                   "engineer", "gardener", "fan", "punter", "marshal", "chemist", "resident", "technician", "keeper",
-                  "porter", "nurse", "midwife", "tourist", "walker", "climber", "swimmer", "diver", "angler", "member"}
+                  "porter", "nurse", "midwife", "tourist", "walker", "climber", "swimmer", "diver", "angler", "member",
+                  "rigger", "roustabout", "roughneck", "driller", "welder", "scaffolder", "miner", "logger", "docker",
+                  "stevedore", "farmhand", "kayaker", "canoeist", "skier"}
 # Who calls in, said before where they are ("Security guard at the savings bank."): a role, not a claim.
 CALLER_ROLES = {"guard", "warden", "officer", "patrol", "assistant", "attendant", "manager", "caretaker", "courier",
                 "inspector", "first-aider", "firstaider", "aider", "volunteer", "medic", "paramedic", "constable",
@@ -1185,7 +1187,7 @@ DANGER_KINDS: dict[str, list[str]] = {
               "submerged", "knee deep", "waist deep", "chest deep", "ankle deep", "water's up", "water up to",
               "up to the windowsills", "overtopping", "burst its banks", "come over its banks", "came over its banks", "coming over its banks",
               "over the bank", "come over the top", "burst the banks", "waterlogged", "water logged", "flooded out",
-              "water everywhere", "water coming over", "taking on water", "taking water", "foot of water",
+              "water everywhere", "water coming over", "taking on water", "taking water", "taken water into", "taken on water", "taken water in", "s taken water", "has taken water", "foot of water",
               "feet of water", "under a foot of water", "water coming up", "water coming in", "water's coming in",
               "coming in under the door", "coming in under the doors", "coming under the door", "coming under the doors", "washed away", "water coming into",
               "water's coming into", "water is coming into", "there's water in",
@@ -1222,7 +1224,7 @@ DANGER_KINDS: dict[str, list[str]] = {
               "lifting off their cradles", "ripped clean off", "water to the first floor", "water to the ground floor",
               "water up to the first floor", "has water to the", "over its bank", "got the river in",
               "river in the bar", "river in the house", "water's come into", "water has come into", "water came into",
-              "water's got into", "water has got into", "gone completely under", "brimming over", "river's come right over", "river's come over",
+              "water's got into", "water has got into", "gone completely under", "brimming over", "brim full", "brimful", "full to the brim", "full to the top and spilling", "out across the fields", "out over the fields", "out across the meadows", "out on the fields", "river's out", "river is out", "river's come right over", "river's come over",
               "river has come over", "river come over", "water's come right over", "water's come over",
               "water has come over",
               "floor is under", "whole floor's under"],
@@ -1446,6 +1448,9 @@ DESCRIBED_KINDS: dict[str, tuple[frozenset[str], list[str]]] = {
               ["lost power", "lost all power", "no power", "power's out", "power is out", "power's gone",
                "power has gone", "power cut", "power failure", "power outage", "lights are out", "lights have gone",
                "lights went out", "lights have gone out", "in the dark", "blackout"]),
+    # (a KB whose danger is a gate or fence left open, so animals get out: "the lion gates are standing wide open")
+    "open": (frozenset({"standing open", "left open", "wide open"}),
+             ["standing open", "standing wide open", "wide open", "left open", "been left open", "left wide open"]),
 }
 
 # Comforts a KB's safe-place category may name ("... with shade, water, clean air or generator power"): where
@@ -1533,7 +1538,10 @@ GENERIC_DANGER_WORDS = frozenset({"danger", "dangerous", "dangerously", "unsafe"
 # Animals, where a KB gives them a category of their own ("bullocks stuck in the cattle lines")
 ANIMAL_WORDS = frozenset({"sheep", "ewe", "ewes", "lamb", "lambs", "tup", "tups", "ram", "rams", "cow", "cows", "cattle", "bullock", "bullocks", "heifer", "heifers", "calf", "calves", "bull", "bulls", "steer", "steers", "beast", "beasts", "stock", "livestock", "horse", "horses", "pony", "ponies", "foal", "pig", "pigs", "sow", "sows", "goat", "goats", "dog", "dogs", "animal", "animals", "hens", "chickens", "elephant", "elephants", "lion", "lions", "tiger", "tigers", "cats", "camel",
                           "camels", "donkey", "donkeys", "llama", "llamas", "alpaca", "alpacas", "mare", "mares",
-                          "stallion", "stallions", "geese"})
+                          "stallion", "stallions", "geese", "lioness", "lionesses", "zebra", "zebras", "giraffe",
+                          "giraffes", "rhino", "rhinos", "hippo", "hippos", "baboon", "baboons", "monkey", "monkeys",
+                          "ostrich", "ostriches", "wolf", "wolves", "bear", "bears", "deer", "bison", "buffalo",
+                          "antelope", "antelopes", "cheetah", "cheetahs", "leopard", "leopards", "gibbon", "gibbons"})
 # Injuries said of a body part ("burns to the face", "a cut on the head")
 INJURY_WORDS = frozenset({"burns", "burn", "burned", "burnt", "cut", "cuts", "injury", "injuries", "wound", "wounds",
                           "hit", "struck", "blow", "bleeding", "lacerations", "laceration", "scalds", "scalded", "gash",
@@ -1541,7 +1549,9 @@ INJURY_WORDS = frozenset({"burns", "burn", "burned", "burnt", "cut", "cuts", "in
 # States only animals in trouble are said to be in, read of a clause's animal subject ("the bulls ... are going
 # frantic"), where a KB has a category for animals
 ANIMAL_STATES = ("panicking", "frantic", "bolting", "bolted", "stampeding", "spooked", "screaming", "trumpeting",
-                 "rearing", "going frantic", "going mental", "going berserk", "kicking off")
+                 "rearing", "going frantic", "going mental", "going berserk", "kicking off", "loose", "escaped",
+                 "got out", "roaming", "wandering about", "wandering around", "running loose", "are through",
+                 "got through", "broken through", "broke through", "is through", "is out", "are out", "s out")
 # What animals in trouble are said to be ("a bullock loose", "ewes swimming"), for a KB with a category for them
 ANIMAL_TROUBLE = ("loose", "on the loose", "got loose", "got out", "escaped", "swimming", "stranded", "trapped", "stuck",
                   "down", "cast", "in the water", "washed away", "drowning", "panicking", "bolting", "bolted", "stampeding",
