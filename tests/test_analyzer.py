@@ -4217,6 +4217,9 @@ def test_dev79_phenomena(kb_analyzers, kb, text, expected):
     # a relation's "foot" said "bottom"; "from" said "off"
     ("oil_rig", "casualty on the walkway that wraps round the bottom of leg C", [("spider deck", "person_in_distress")]),
     ("oil_rig", "the crane that works the cargo off the Sea Tern has a hydraulic fire", [("north crane", "burning_or_gassing")]),
+    # a description's head read past an adverb of where ("Grated access walkway just above the waves ..."): "the
+    # walkway round leg C" is the one of leg C's relatives whose description it heads
+    ("oil_rig", "Person in the water off the walkway round leg C, we're closing on him.", [("spider deck", "person_in_distress")]),
     # "it" is the place a clause was about, not the subject of the clause that described it
     ("polder_village", "Follow the ditch the electric pump empties into, right up to the building it feeds — black smoke "
                        "from that building's roof.", [("steam pumping station", "fire_or_smoke")]),

@@ -9668,6 +9668,9 @@ def _description_head(description: str) -> str | None:
             break
         if w == "and":
             continue  # ("Caravan and camping field below the quarry face")
+        if w in ("just", "right", "directly", "immediately", "high", "low", "far", "well") \
+                and nxt in lx.PREPOSITIONS | lx.SPATIAL_WORDS | lx.BARE_DIRECTIONS | {"behind", "beside", "under", "over"}:
+            break  # ("Grated access walkway just above the waves": where it is begins)
         if w in lx.FUNCTION_WORDS:
             return None  # ("Small pharmacy shop built onto ...": no plain noun phrase to read a head from)
         head = w
