@@ -3419,11 +3419,11 @@ class ReportAnalyzer:
             # resolved is what "that pool" takes up)
             spans = {(q.start_tok, q.end_tok) for q in ex.places}
             later = [q for q in self._pronoun_anchors(ex, toks, norms, place_tokens | marker_tokens | cue_tokens)
-                     if q.reason.startswith("modifier of 'that ") and (q.start_tok, q.end_tok) not in spans]
+                     if q.reason.startswith(_THAT_MODIFIER) and (q.start_tok, q.end_tok) not in spans]
             ex.places.extend(later)
             pronoun_anchors.extend(later)
         for p in pronoun_anchors:
-            if p in ex.places and not (p.reason.startswith("modifier of 'that ") and p.status == "reference"
+            if p in ex.places and not (p.reason.startswith(_THAT_MODIFIER) and p.status == "reference"
                                        and self._relations.match_at(norms, p.end_tok) is not None):
                 ex.places.remove(p)  # (a pronoun no description took up as its anchor; but "whatever that pool drains
                 # into" may still be read from it, the relation said right after it)
@@ -3466,17 +3466,17 @@ class ReportAnalyzer:
             out.append(self._mention(toks, k, k + 1, last.landmark, status="reference", reason=f"modifier of '{raw}'"))
         # "the building the laundry's built onto ... And the playground that building looks out over": "that" and
         # the head of a description said before take it up again
+        heads = lx.GENERIC_HEADS | lx.DESCRIPTION_HEADS | self._place_nouns() | _WATER_HEADS
         for k in range(3, len(norms) - 1):
             if norms[k - 1] != "that" or k in blocked or (k - 1) in blocked or toks.clause_start[k] \
-                    or norms[k] not in lx.GENERIC_HEADS | lx.DESCRIPTION_HEADS | self._place_nouns() | _WATER_HEADS \
-                    or norms[k + 1] in lx.COPULAS \
+                    or norms[k] not in heads or norms[k + 1] in lx.COPULAS \
                     or toks.clause_start[k + 1] or not toks.tokens[k + 1].text.isalpha():
                 continue
             said = {p.landmark: p for p in ex.places if p.status == "active" and p.via is not None and p.end_tok <= k - 1
                     and norm_phrase(p.text)[:2] == ("the", norms[k])}
             if len(said) == 1:
                 out.append(self._mention(toks, k - 1, k + 1, next(iter(said)), status="reference",
-                                         reason=f"modifier of 'that {norms[k]}'"))
+                                         reason=f"{_THAT_MODIFIER}{norms[k]}'"))
         return out
 
     @staticmethod
@@ -3638,7 +3638,7 @@ class ReportAnalyzer:
                             and not (m[0] > head_end and b - a >= 4) for j in range(max(0, head_start - 3), head_end))
             # (but a cue that runs on into a long relation phrase is none: "the water lapping at the back doors of")
         if generic and anchor is None and any(p.end_tok == a and p.start_tok < head_end
-                                              and p.reason.startswith("modifier of 'that ") for p in ex.places):
+                                              and p.reason.startswith(_THAT_MODIFIER) for p in ex.places):
             generic = False  # "whatever that pool drains into": "that pool" is the anchor, read backwards
         if not generic and anchor is not None and words and words[-1] in lx.STOREY_WORDS | {"rooms", "room", "storeys"} \
                 and self._follow(anchor.landmark, phrase, head_text, inverse=flipped)[0] is not None:
@@ -4365,7 +4365,7 @@ class ReportAnalyzer:
                 and a - j < 3 and not any(p.end_tok == j and p.status == "active" for p in ex.places):
             j -= 1  # (not past a name's own last word: "car park A lies downhill of")
         anchor = next((p for p in ex.places if p.end_tok == j and (p.status == "active" or p.status == "reference"
-                                                                   and p.reason.startswith("modifier of 'that "))), None)
+                                                                   and p.reason.startswith(_THAT_MODIFIER))), None)
         # ("whatever that pool drains into": the place "that pool" takes up)
         if anchor is None:
             # "the building that the park across from the flats sits behind": the anchor is the place the
@@ -4480,28 +4480,28 @@ class ReportAnalyzer:
                 if not _loose else (None, None)
             if loose is not None:
                 return self._follow(anchor, lx.LOOSE_EQUIVALENTS[phrase], head, inverse=False, _loose=True)
-        if not cands and not _loose and phrase not in lx.INVERSE_PHRASES and phrase not in lx.RELATION_SYNONYMS:
-            # a description must lead somewhere: a relation the KB states only the other way round
-            # ("the building across the skybridge from A&E" for "radiology linked_by_skybridge_to A&E")
-            # is read that way round; but first another relation the same words name, read the way they are said
-            # ("the houses below the visitor centre": ``is downhill of``, not ``car park sits above visitor centre``)
-            found = {}
+        # a description must lead somewhere: a relation the KB states only the other way round ("the building
+        # across the skybridge from A&E" for "radiology linked_by_skybridge_to A&E") is read that way round; but
+        # first another relation the same words name, read the way they are said ("the houses below the visitor
+        # centre": ``is downhill of``, not ``car park sits above visitor centre``), then one that says which place is
+        # higher ("the room above it"; not for a link MiniLM only guessed, ``_vertical`` False)
+        named = phrase not in lx.INVERSE_PHRASES and phrase not in lx.RELATION_SYNONYMS
+        if not cands and not _loose and named:
+            found: dict[str, tuple[str | None, str | None]] = {}
             for other, mine, theirs in self._shared_forms.get(phrase, ()):
                 hit = self._follow(anchor, other, head, inverse=inverse ^ mine ^ theirs, _loose=True)
                 if hit[0] is not None:
                     found.setdefault(hit[0], hit)
             if len(found) == 1:
                 return next(iter(found.values()))
-            vertical = self._vertical_follow(anchor, phrase, head, inverse) if _vertical else (None, None)
+        if not cands and not _loose and _vertical:
+            vertical = self._vertical_follow(anchor, phrase, head, inverse)
             if vertical[0] is not None:
                 return vertical
+        if not cands and not _loose and named:
             back, via = self._follow(anchor, phrase, head, inverse=not inverse, _loose=True)
             if back is not None:
                 return back, via
-        if not cands and not _loose and _vertical and (phrase in lx.INVERSE_PHRASES or phrase in lx.RELATION_SYNONYMS):
-            vertical = self._vertical_follow(anchor, phrase, head, inverse)  # ("the room above it")
-            if vertical[0] is not None:
-                return vertical
         if not cands and not _loose:
             cands = self._sibling_relations(anchor, phrase, inverse)
         if not cands:
@@ -6613,9 +6613,8 @@ class ReportAnalyzer:
             return False
         w = norms[j]
         if j >= 3 and norms[j - 2:j] == ("of", "the") and (norms[j - 3] in lx.NUMBER_WORDS or norms[j - 3] in (
-                "one", "some", "both", "all", "two")) and (w in ("man", "men", "woman", "women", "lad", "guy", "kid",
-                                                                 "child", "children", "crew") or w in lx.WORKER_PERSONS):
-            return True  # "one of the riggers has collapsed": one of the people doing the work
+                "one", "some", "both", "all", "two")) and w in ("men", "women"):
+            return True  # "one of the men has collapsed" (a worker, "one of the riggers", is read below)
         if w == "after" and any(norms[m] in _PEOPLE_WORDS for m in range(max(0, j - 10), j)):
             return True  # "woman with hypothermia at the ferry landing after falling in"
         if w in lx.STRUCTURE_WORDS:
@@ -6732,8 +6731,7 @@ class ReportAnalyzer:
         """An animal word before token ``a`` in its clause, with no person word between: "the bulls are chained in
         there screaming", "The lions in the barn across the yard from the horse lines are panicking"."""
         for j in range(a - 1, max(-1, a - 13), -1):
-            if norms[j] in _PERSON_WORDS or norms[j] in lx.PERSON_SUBJECTS or norms[j] in _PEOPLE_WORDS \
-                    or norms[j] in lx.CALLER_ROLES:
+            if norms[j] in _PEOPLE_WORDS or norms[j] in lx.PERSON_SUBJECTS or norms[j] in lx.CALLER_ROLES:
                 return False  # ("one of the keepers is trapped in the night den": a person)
             if norms[j] in lx.ANIMAL_WORDS:
                 return True
@@ -9494,7 +9492,7 @@ _PERSON_WORDS = frozenset(lx.PERSON_NOUNS) | {"pensioner", "residents", "neighbo
 # Any word for people, a group said as a subject too ("the men in there", "the folk at the chapel")
 _UNREACHABLE = (("cant", "get", "hold", "of"), ("not", "answering"), ("isnt", "answering"), ("hes", "not", "answering"),
                 ("she", "not", "answering"), ("shes", "not", "answering"), ("not", "picking", "up"))
-# The parts of a building that fall in ("the roof of the vehicle hangar is down": collapsed)
+# Words of a relation name that put its subject higher or lower than its object ("is built over", "lies_beneath")
 _UPPER_WORDS = frozenset({"over", "above", "atop", "uphill", "upslope"})
 _LOWER_WORDS = frozenset({"under", "below", "beneath", "underneath", "downhill", "downslope"})
 
@@ -9516,19 +9514,22 @@ def _vertical_sense(phrase: str) -> int | None:
 _PART_SYNONYMS = {"foot": ("bottom", "base"), "bottom": ("foot", "base"), "base": ("foot", "bottom")}
 # First words of the direction families' members ("below", "down the hill", "further inland")
 _DIRECTION_BARE = frozenset(m.split()[0] for fam in lx.DIRECTION_FAMILIES.values() for m in fam)
+# The parts of a building that fall in ("the roof of the vehicle hangar is down": collapsed)
 _FALLING_PARTS = frozenset({"roof", "ceiling", "gable", "chimney", "spire", "tower", "canopy", "floor"})
 # The parts of a place that hold it up or hold water in ("the wall of the slurry pond has gone", "lagoon banks going")
 _HOLDING_PARTS = frozenset({"wall", "walls", "bank", "banks"})
 # What spans or holds back water, besides the structures of a building ("Jenny's arch has gone.": collapsed)
 _SPANS = frozenset({"arch", "span", "viaduct", "weir", "dam", "bund", "embankment", "footbridge", "culvert",
                     "aqueduct", "pier", "jetty", "quay", "sluice", "lock", "gate"})
-# Water that stands or is held, besides the flowing kind ("the dew pond's bone dry": no water in it)
 # Bodies of water that head a description of a place ("the pool the header tank feeds"; not "the drains", any drains)
+# The reason a place "that <head>" takes up from a description said before carries ("whatever that pool drains into")
+_THAT_MODIFIER = "modifier of 'that "
 _WATER_HEADS = frozenset({"pool", "pond", "lake", "reservoir", "lagoon", "ditch", "canal", "channel", "moat", "tarn",
                           "cistern", "mere", "loch", "creek", "brook", "stream", "river"})
 # Ground that water out of its bed runs over ("the ditch is over the road")
 _OVERRUN_GROUND = frozenset({"road", "lane", "track", "path", "towpath", "footpath", "field", "fields", "drive",
                              "street", "causeway", "bank", "banks", "top"})
+# Water that stands or is held, besides the flowing kind ("the dew pond's bone dry": no water in it)
 _STILL_WATERS = frozenset({"pond", "pool", "reservoir", "ditch", "drain", "dyke", "rhyne", "well", "fountain", "lagoon",
                            "moat", "leat", "cistern", "tarn", "lido"})
 _PEOPLE_WORDS = _PERSON_WORDS | lx.LAY_PERSONS | lx.WORKER_PERSONS | {"men", "women", "folk", "folks"}
