@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev81) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev83) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -146,6 +146,13 @@ GRAIN_TERMINAL = ROOT / "knowledge_bases" / "grain_terminal"
 SAFARI_PARK = ROOT / "knowledge_bases" / "safari_park"
 MOUNTAIN_MONASTERY = ROOT / "knowledge_bases" / "mountain_monastery"
 COPPER_SMELTER = ROOT / "knowledge_bases" / "copper_smelter"
+SEWAGE_WORKS = ROOT / "knowledge_bases" / "sewage_works"
+LAUNCH_SITE = ROOT / "knowledge_bases" / "launch_site"
+STILT_VILLAGE = ROOT / "knowledge_bases" / "stilt_village"
+CABLE_CAR_RESORT = ROOT / "knowledge_bases" / "cable_car_resort"
+LANDFILL_SITE = ROOT / "knowledge_bases" / "landfill_site"
+AQUARIUM_CENTRE = ROOT / "knowledge_bases" / "aquarium_centre"
+FERRY_ROPEWAY_GORGE = ROOT / "knowledge_bases" / "ferry_ropeway_gorge"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -443,6 +450,13 @@ SETS = {
     "dev81/safari_park": _set("dev81/safari_park.jsonl", SAFARI_PARK, "sp81", TWENTY, sep=""),
     "dev81/mountain_monastery": _set("dev81/mountain_monastery.jsonl", MOUNTAIN_MONASTERY, "mm81", TWENTY, sep=""),
     "dev81/copper_smelter": _set("dev81/copper_smelter.jsonl", COPPER_SMELTER, "cs81", TWENTY, sep=""),
+    "dev82/sewage_works": _set("dev82/sewage_works.jsonl", SEWAGE_WORKS, "sw82", TWENTY, sep=""),
+    "dev82/launch_site": _set("dev82/launch_site.jsonl", LAUNCH_SITE, "ls82", TWENTY, sep=""),
+    "dev82/stilt_village": _set("dev82/stilt_village.jsonl", STILT_VILLAGE, "sv82", TWENTY, sep=""),
+    "dev82/cable_car_resort": _set("dev82/cable_car_resort.jsonl", CABLE_CAR_RESORT, "cc82", TWENTY, sep=""),
+    "dev83/landfill_site": _set("dev83/landfill_site.jsonl", LANDFILL_SITE, "lf83", TWENTY, sep=""),
+    "dev83/aquarium_centre": _set("dev83/aquarium_centre.jsonl", AQUARIUM_CENTRE, "aq83", TWENTY, sep=""),
+    "dev83/ferry_ropeway_gorge": _set("dev83/ferry_ropeway_gorge.jsonl", FERRY_ROPEWAY_GORGE, "fg83", TWENTY, sep=""),
 }
 
 
