@@ -4264,3 +4264,104 @@ def test_dev80_phenomena(kb_analyzers, kb, text, expected):
 ])
 def test_dev81_phenomena(kb_analyzers, kb, text, expected):
     assert claims(kb_analyzers[kb], text) == expected
+
+
+@pytest.mark.parametrize("kb, text, expected", [
+    # vocabulary: over the tops of their walls, "that's going over", torn open, gone over into the water, giving way,
+    # piles sheared, torn to bits, "two men burned"
+    ("sewage_works", "Drone One: the storm tanks are over the tops of their walls.",
+     [("storm tanks", "breach_and_spill")]),
+    ("sewage_works", "not the storm tanks, sorry, it's the inlet that's going over", [("inlet works", "breach_and_spill")]),
+    ("stilt_village", "The grow pens are torn open and the gauge post has gone over into the water.",
+     [("fish pens", "piles_and_planks_failing"), ("tide gauge platform", "piles_and_planks_failing")]),
+    ("stilt_village", "the school is sound -- correction -- no it's not, the piles are sheared and it's giving way",
+     [("stilt school", "piles_and_planks_failing")]),
+    ("stilt_village", "Fuel flash at the pumps, two men burned.", [("diesel jetty", "fire_and_fumes"),
+                                                                  ("diesel jetty", "soul_in_need")]),
+    # a thing in the water is no person: the crane's in the water
+    ("launch_site", "The jetty's been torn to bits and the crane's in the water.", [("recovery jetty", "wrecked_or_flooded")]),
+    # a way's noun takes "up" before "to"; "on to" for onward; "the next <noun>" heads a description; "those
+    # <name head>" takes up the place a description found
+    ("sewage_works", "Smoke at the hut that guards the road up to the ops block.", [("gatehouse", "fumes_and_fire")]),
+    ("sewage_works", "Someone has fallen into whatever the inlet sends its flow to, and the next stage those tanks send "
+                     "their flow on to is overtopping.", [("aeration lanes", "breach_and_spill"),
+                                                          ("primary settling tanks", "person_at_risk")]),
+    # "is dug beneath" said of whoever dug it; "the mound that overlooks ...": a synonym's verb keeps its head
+    ("launch_site", "Fire in the pit they dug beneath the old pad.", [("flame trench", "fire_or_vapour")]),
+    ("launch_site", "The mast on top of the mound that overlooks pad one has come down.",
+     [("weather mast", "wrecked_or_flooded")]),
+    # "sits inside the fence of" said "sits in"; the anchor of the described station is a reference point
+    ("launch_site", "Vapour leak at the compound the golf ball sits in.", [("fuel farm", "fire_or_vapour")]),
+    # "the pad, the pad above the trench": no anchor said before, the second says which pad; "the trench that the
+    # deluge tank fills": the tank only says which trench
+    ("launch_site", "three casualties on the pad, the pad above the trench that the deluge tank fills",
+     [("launch pad one", "crew_casualty")]),
+    ("launch_site", "Two casualties in the trench that the deluge tank fills.", [("flame trench", "crew_casualty")]),
+    # who is called or who called claims nothing: "can someone at X pick up", "a call from a lady up the terrace",
+    # "Harbour office to all boats"
+    ("launch_site", "is anyone at the fire shed? can someone at the fire shed pick up, over", []),
+    ("sewage_works", "Relaying a call from a lady up the terrace: the flare stack is throwing out black smoke.",
+     [("flare stack", "fumes_and_fire")]),
+    ("stilt_village", "Harbour office to all boats, the yard is a safe landing. Over.", [("boatyard", "sound_refuge")]),
+    # "confirmed sound", "looks sound"; people walked off a place, a way down off one: no claim there
+    ("stilt_village", "The market hall is confirmed sound. We're walking the evacuees off the boardwalk.",
+     [("fish market", "sound_refuge")]),
+    ("stilt_village", "Flames in the tar shed, and the slipway looks sound.", [("boatyard", "sound_refuge"),
+                                                                             ("tarring shed", "fire_and_fumes")]),
+    ("stilt_village", "The causeway road is high and dry, ambulances can come down off the top lot now.",
+     [("causeway", "sound_refuge")]),
+    # "gets its fuel off" said "take their fuel off it", after the place denied; "the cages they tend from it"
+    ("stilt_village", "Fuel flash at the diesel jetty, correction, not the jetty itself, the houses that take their fuel "
+                      "off it.", [("blue row", "fire_and_fumes")]),
+    ("stilt_village", "The back row is our gathering deck, and the cages they tend from it have broken up.",
+     [("fish pens", "piles_and_planks_failing"), ("widows' row", "sound_refuge")]),
+    # ``blows its smoke over`` said from the other end: "the place that gets all the smoke off the kipper house"
+    ("stilt_village", "The place that gets all the smoke off the kipper house is flooded.",
+     [("boatyard", "piles_and_planks_failing")]),
+])
+def test_dev82_phenomena(kb_analyzers, kb, text, expected):
+    assert claims(kb_analyzers[kb], text) == expected
+
+
+@pytest.mark.parametrize("kb, text, expected", [
+    # ground, not a person, has slumped; a roof come clean off is storm damage; "flattened"; "gone over on her
+    # ankle"; "a nasty bite"; "taken in loads of water"; "there's a slip on"
+    ("landfill_site", "not cell four, it's cell three, the whole south side's slumped", [("cell three", "slip_or_spill")]),
+    ("landfill_site", "an engineer has slumped in the office", [("site office", "person_at_risk")]),
+    ("landfill_site", "the weigh-in hut, its roof's come clean off in the wind", [("weighbridge", "slip_or_spill")]),
+    ("landfill_site", "the barrier's flattened at the front gate", [("site entrance", "slip_or_spill")]),
+    ("landfill_site", "a picker's gone over on her ankle in the TS", [("transfer hall", "person_at_risk")]),
+    ("aquarium_centre", "a keeper with a nasty bite on his hand down at the otters", [("otter holt", "person_in_trouble")]),
+    ("aquarium_centre", "the intake's taken in loads of water", [("sea intake pumphouse", "water_breach")]),
+    ("landfill_site", "there's a slip on the live cell", [("cell four", "slip_or_spill")]),
+    # a bearing from things a danger word only names: "east of the gas wells"
+    ("landfill_site", "there's a slip on the live cell, east of the gas wells", [("cell four", "slip_or_spill")]),
+    # a word cut off and said whole ("the leach-- the leachate's") names no place: the farm keeps the claim
+    ("landfill_site", "the piggeries - they're saying the leach-- the leachate's come through the hedge, it's flooded",
+     [("bracken end farm", "slip_or_spill")]),
+    # "the bank of the pond": the pond's own; a head noun two relations from the anchor names the place
+    ("landfill_site", "filthy water going over the bank of the pond where the lagoon's stuff ends up once it's been "
+                      "through the treatment plant", [("settlement pond", "slip_or_spill")]),
+    # "that's being dug out below" a description MiniLM found
+    ("landfill_site", "Man down in the cell that's being dug out below whatever the working face is pushed into.",
+     [("cell five", "person_at_risk")]),
+    # water pouring out the back of something no landmark, into the place named
+    ("aquarium_centre", "I can see water pouring out the back of the aquarium into the service yard",
+     [("loading bay", "water_breach")]),
+    # "gets its water piped in from" for ``pipes water into`` read backwards
+    ("aquarium_centre", "The tank that gets its water piped in from the plant room has a crack, losing water fast.",
+     [("ocean tank", "water_breach")]),
+    # "whatever it is that's moored off the big stone harbour wall": the head, and adjectives before the anchor
+    ("aquarium_centre", "the dock or whatever it is that's moored off the big stone harbour wall is on fire",
+     [("research pontoon", "smoke_and_gas")]),
+    # "where the education centre runs its school sessions" for ``runs_school_sessions_at``
+    ("aquarium_centre", "kids hurt where the education centre runs its school sessions", [("touch pools", "person_in_trouble")]),
+    # the animals said for the one place named after them, as a relation's anchor only
+    ("safari_park", "Hard shelter in the hut that watches over the elephants.", [("south ranger hut", "secure_haven")]),
+    ("safari_park", "the elephants are restless", []),
+    # "<noun> of <noun>" heads an inverse description
+    ("safari_park", "Flames running along the stretch of boundary the vets are built up against.",
+     [("east boundary fence", "burnt_or_broken")]),
+])
+def test_dev83_phenomena(kb_analyzers, kb, text, expected):
+    assert claims(kb_analyzers[kb], text) == expected

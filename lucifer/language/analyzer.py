@@ -1629,9 +1629,27 @@ class ReportAnalyzer:
                                           for f in self.kb.landmark_by_name[other].surface_forms)
                                   and w in last_words and w not in cue_words and w not in rel_words
                                   and w not in lx.UNNAMING_HEADS | lx.GENERIC_HEADS | lx.DESCRIPTION_HEADS}
+        if not hasattr(self, "_first_words"):
+            firsts: dict[str, set[str]] = {}
+            for lm in self.kb.landmarks:
+                for form in lm.surface_forms:
+                    words = [w for w in name_words(form) if w not in lx.ARTICLES]
+                    if len(words) >= 2 and words[0].isalpha() and len(words[0]) >= 4:
+                        firsts.setdefault(words[0], set()).add(lm.name)
+            self._first_words = {w: next(iter(names)) for w, names in firsts.items() if len(names) == 1
+                                 and w not in self._name_word_owners.keys() - {w} and w not in lx.DESCRIPTIVE_WORDS}
         out = []
         for i in range(0, len(norms)):
             w = norms[i]
+            if w in self._first_words and i >= 2 and i not in taken and norms[i - 1] == "the" \
+                    and ((i - 1) in rel_ends or norms[i - 2] in lx.RELATION_ENDINGS - {"of", "in", "at", "on", "by"}) \
+                    and toks.tokens[i].text.lower().endswith("s") and toks.tokens[i].text.lower() != w \
+                    and (i + 1 >= len(norms) or toks.clause_start[i + 1]) \
+                    and self._name_word_owners.get(w, set()) == {self._first_words[w]}:
+                # "the hut that watches over the elephants": the animals said for the one place named after them,
+                # as a relation's anchor only (after a relation's last word)
+                out.append(self._mention(toks, i, i + 1, self._first_words[w]))
+                continue
             if w in self._anchor_heads and i >= 2 and i not in taken and norms[i - 1] == "the" and (i - 1) in rel_ends \
                     and (i + 1 >= len(norms) or toks.clause_start[i + 1] or norms[i + 1] in lx.COPULAS):
                 out.append(self._mention(toks, i, i + 1, self._anchor_heads[w]))
@@ -1665,6 +1683,9 @@ class ReportAnalyzer:
             if i + 2 < len(norms) and norms[i + 1] in ("at", "of") and not contracted \
                     and any(t in taken for t in range(i + 2, min(len(norms), i + 5))):
                 continue  # "the playground at the primary school": that place's own, not the adventure playground
+            if i + 2 < len(norms) and norms[i + 1] == "of" and norms[i + 2] in lx.ARTICLES and w in lx.EARTHWORKS \
+                    and not contracted:
+                continue  # "over the bank of the pond": the pond's own bank, not "the bring bank"
             if raw.endswith("s") and not contracted and not raw.endswith("ss") and raw != w and not any(
                     name_words(f)[-1:] == (w,) and f.lower().rstrip().endswith("s")
                     for f in self.kb.landmark_by_name[self._heads[w]].surface_forms):
@@ -2439,6 +2460,11 @@ class ReportAnalyzer:
             if t.i + 1 < len(toks) and norms[t.i + 1].startswith(frag) and norms[t.i + 1] != frag \
                     and norms[t.i + 1] not in self._name_word_owners and norms[t.i + 1] not in lx.FUNCTION_WORDS:
                 continue  # "we need the the bo-- boats down there": the next word said whole, no name begun
+            j = t.i + 1
+            while j < len(toks) and j - t.i <= 3 and (norms[j] in lx.ARTICLES or norms[j] in lx.HESITATIONS):
+                j += 1
+            if j < len(toks) and j > t.i + 1 and norms[j].startswith(frag) and norms[j] != frag and j not in taken:
+                continue  # "the leach-- the leachate's come through the hedge": the word said whole names no place
             if t.i > 0 and any((hit := self._cues.match_at(norms, k)) is not None
                                and hit[0] == t.i + 1 and k < t.i for k in range(max(0, t.i - 3), t.i)):
                 continue  # "the bank's on fire— wait": a cue said whole, not "fire st—"
@@ -2640,6 +2666,9 @@ class ReportAnalyzer:
                 # "the building the new maltings malts its barley for ..., and the pub it casts its shadow over": a
                 # place so described may be the "it" of a description after it
                 again((False, True), on_pronouns=True)
+                # ("the cell that's being dug out below whatever the working face is pushed into": or the anchor of
+                # a description before it, read forwards)
+                again((False,))
             if self._resolve_related(ex, toks, norms, place_tokens, marker_tokens, cue_tokens):
                 # "the path that winds down to the row after the A cabins": a description so resolved may anchor
                 # a listed one, or an inverse one ("the station that the line ending at lakeside halt sets out from")
@@ -2761,7 +2790,7 @@ class ReportAnalyzer:
 
     def _contact_clause_subjects(self, ex: Extraction, toks: Tokens, norms: tuple[str, ...]) -> None:
         """"the line-up the water cart keeps topped up has three engines ...": a named place, then at once a
-        clause whose subject is another named place and whose verb follows it, with no "that" between. Where
+        clause whose subject is another named place and whose verb follows it, with no "that" between or one. Where
         the KB relates the second to the first (subject to object), the second only says which: a reference point."""
         # (the first may be a reference point already: "inside the wall the top road runs along - the passage buried
         # in it")
@@ -2769,7 +2798,9 @@ class ReportAnalyzer:
                        key=lambda p: p.start_tok)
         for first, second in zip(named, named[1:], strict=False):
             between = norms[first.end_tok:second.start_tok]
-            if second.status != "active" or between != ("the",) or toks.clause_start[second.start_tok - 1] or second.end_tok >= len(norms):
+            if second.status != "active" or between not in (("the",), ("that", "the"), ("which", "the")) \
+                    or toks.clause_start[second.start_tok - 1] or second.end_tok >= len(norms):
+                # ("the trench that the deluge tank fills": "that" may open the clause)
                 continue
             verb = norms[second.end_tok]
             rels = [r for r in self.kb.relations if r.subject == second.landmark and r.object == first.landmark]
@@ -2808,8 +2839,7 @@ class ReportAnalyzer:
                        for r in self.kb.relations):
                     ex.places[idx] = replace(q, status="reference", reason=f"a second reference point: {rel.relation}")
 
-    @staticmethod
-    def _restated_anchors(ex: Extraction, toks: Tokens, norms: tuple[str, ...]) -> None:
+    def _restated_anchors(self, ex: Extraction, toks: Tokens, norms: tuple[str, ...]) -> None:
         """"the tunnel that's dug under the straight, the straight that runs flat out into chapel bend": a
         relation's object, said again with a description of its own to say which one, is that relation's
         reference point, not a place claimed."""
@@ -2831,6 +2861,9 @@ class ReportAnalyzer:
                    and not (p.via is not None and p.end_tok == k + 1 and p.via.endswith(f" {q.landmark}"))
                    for p in ex.places):
                 continue  # (the word said before is a place of its own: its own rules)
+            if not any(p.start_tok <= k < p.end_tok for p in ex.places) and (k - 2) not in self._rel_tokens:
+                continue  # ("three casualties on the pad, the pad above the trench": no relation's anchor said before,
+                # a word that names no one place said again to say which)
             ex.places[idx] = replace(q, status="reference", reason=f"the anchor said again to say which: {q.via}")
         for idx, q in enumerate(ex.places):
             # "the loft leaning against the stack that carries hollins' boiler smoke": the relative clause only
@@ -3256,6 +3289,11 @@ class ReportAnalyzer:
                     break
             if head is None:
                 continue
+            if norms[head] in lx.PART_NOUNS | lx.LOCATIVE_PARTS | {"back", "middle", "edge"} and norms[head + 1:head + 2] == ("of",) \
+                    and not any(p.start_tok >= head + 2 and all(w in lx.DETERMINERS | _SIZE_WORDS | _MATERIALS
+                                                                for w in norms[head + 2:p.start_tok]) for p in ex.places):
+                continue  # "water pouring out the back of the aquarium into the service yard": a part of something
+                # no landmark, and the place after it is where the water goes
             linked = [i for i in range(head + 1, a) if norms[i] not in lx.FILLERS
                       or norms[i] == "over" and i + 1 < len(norms) and norms[i + 1] in lx.DETERMINERS]
             # (the radio's "over" is a filler; "the bridge over the sixteen foot" is no radio)
@@ -3345,6 +3383,19 @@ class ReportAnalyzer:
                 named = {n: v for n, v in named.items() if any(
                     hword in name_words(f) and not any(w.lower().rstrip("'’").endswith("s") and norm(w) == hword
                                                        for w in f.split()) for f in self.kb.landmark_by_name[n].surface_forms)}
+            if not named and not described_anchor and not locative and _weighty(hword) \
+                    and hword not in lx.UNNAMING_HEADS | lx.GENERIC_HEADS:
+                # "the pond where the lagoon's stuff ends up once it's been through the treatment plant": no place
+                # the KB relates to the anchor has the head noun in its names, but one two relations away does
+                hops: dict[str, str] = {}
+                for mid, (via1, _) in joined.items():
+                    for far, (via2, _) in self._related_to(mid).items():
+                        if far != anchor.landmark and far not in related and any(
+                                hword in name_words(f) for f in self.kb.landmark_by_name[far].surface_forms):
+                            hops.setdefault(far, f"{via1}; {via2}")
+                if len(hops) == 1:
+                    named = hops
+                    related = {**related, **hops}
             if locative and (len(named) != 1 or between[0] in ("of", "at", "in", "inside")):
                 continue
             relative = len(between) == 2 and between[0] in ("that", "which") \
@@ -3467,13 +3518,16 @@ class ReportAnalyzer:
         # "the building the laundry's built onto ... And the playground that building looks out over": "that" and
         # the head of a description said before take it up again
         heads = lx.GENERIC_HEADS | lx.DESCRIPTION_HEADS | self._place_nouns() | _WATER_HEADS
+        # ("... whatever the inlet sends its flow to, and the next stage those tanks send their flow on to": the
+        # head of the name of the place a description found, with "those")
         for k in range(3, len(norms) - 1):
-            if norms[k - 1] != "that" or k in blocked or (k - 1) in blocked or toks.clause_start[k] \
-                    or norms[k] not in heads or norms[k + 1] in lx.COPULAS \
+            if norms[k - 1] not in ("that", "those") or k in blocked or (k - 1) in blocked or toks.clause_start[k] \
+                    or norms[k] not in heads and norms[k - 1] == "that" or norms[k + 1] in lx.COPULAS \
                     or toks.clause_start[k + 1] or not toks.tokens[k + 1].text.isalpha():
                 continue
             said = {p.landmark: p for p in ex.places if p.status == "active" and p.via is not None and p.end_tok <= k - 1
-                    and norm_phrase(p.text)[:2] == ("the", norms[k])}
+                    and (norm_phrase(p.text)[:2] == ("the", norms[k]) if norms[k - 1] == "that"
+                         else name_words(p.landmark)[-1:] == (norms[k],))}
             if len(said) == 1:
                 out.append(self._mention(toks, k - 1, k + 1, next(iter(said)), status="reference",
                                          reason=f"{_THAT_MODIFIER}{norms[k]}'"))
@@ -3572,8 +3626,14 @@ class ReportAnalyzer:
             head_end = a - 1
         elif a >= 2 and norms[a - 2] in lx.WHATEVER and norms[a - 1] in ("is", "was"):
             head_end = a - 1  # "across from whatever is behind the warehouse": "whatever" heads it
-        elif a >= 3 and norms[a - 1] in ("that", "which") and norms[a - 2] in lx.GENERIC_HEADS:
-            head_end = a - 1  # "the hall that faces onto it"
+        elif a >= 3 and norms[a - 3] in lx.WHATEVER and norms[a - 2] == "it" and norms[a - 1] in ("is", "s", "was"):
+            head_end = a - 2  # "the dock or whatever it is that's moored off the harbour wall"
+        elif a >= 3 and norms[a - 1] in ("that", "which") and (norms[a - 2] in lx.GENERIC_HEADS or (
+                phrase in lx.RELATION_SYNONYMS and self._plain_head(norms, a - 2))):
+            head_end = a - 1  # "the hall that faces onto it"; "the mound that overlooks pad one" (a synonym's verb)
+        elif a >= 3 and norms[a - 1] in ("they", "we", "you") and pronoun and not toks.clause_start[a - 1] \
+                and any(p.end_tok == a - 1 and p.status == "active" and p.via is None for p in ex.places):
+            head_end = a - 1  # "the cages they tend from it": a named head, then a clause with its own subject
         head_place = next((p for p in ex.places if p.end_tok == head_end and p.status == "active"), None)
         if head_place is not None and (toks.sentence_start[head_end] or toks.clause_start[head_end] and pronoun):
             head_place = None  # "I'm at the warehouse. Behind it there's flooding": the place ends another clause
@@ -4183,8 +4243,10 @@ class ReportAnalyzer:
         # "the shop attached to it's got a live wire": "it's" right after the relation is "it has", the pronoun
         its = b < len(norms) and norms[b] == "its" and any(q in ex.tokens.tokens[b].text for q in ("'", "’"))
         while j < len(norms) and (norms[j] in lx.DETERMINERS or norms[j] in lx.FILLERS or norms[j] in ("my", "your")
-                                  or j > b and _after_same(norms, j + 1))\
-                and j - b < 3:
+                                  or j > b and _after_same(norms, j + 1)
+                                  or j > b and norms[j - 1] in lx.ARTICLES | _SIZE_WORDS | _MATERIALS
+                                  and norms[j] in _SIZE_WORDS | _MATERIALS)\
+                and j - b < 4:  # ("moored off the big stone harbour wall")
             if norms[j] in ("that", "this") and (j + 1 >= len(norms) or ex.tokens.clause_start[j + 1]
                                                  or norms[j + 1] in lx.COPULAS
                                                  or norms[j + 1] in ("there", "theres", "someone", "somebody")):
@@ -4423,6 +4485,10 @@ class ReportAnalyzer:
                 while hs > 0 and norms[hs - 1] in lx.DETERMINERS and (hs - 1) not in self._marker_cache:
                     hs -= 1
                 return anchor, hs, False
+        if hs == k - 1 and hs >= 3 and norms[hs - 1] == "of" and norms[hs - 3] in lx.ARTICLES and norms[hs].isalpha() \
+                and len(norms[hs]) >= 4 and norms[hs] not in lx.FUNCTION_WORDS and self._plain_head(norms, hs - 2) \
+                and not any(p.start_tok <= hs < p.end_tok for p in ex.places):
+            return anchor, hs - 3, False  # "the stretch of boundary the vets are built up against": "<noun> of <noun>"
         return None
 
     def _plain_head(self, norms: tuple[str, ...], i: int) -> bool:
@@ -4939,7 +5005,8 @@ class ReportAnalyzer:
         by name is who calls; unless the message speaks of its own place ("we", "our building"), it claims nothing."""
         a, e = p.start_tok, p.end_tok
         everyone = norms[e + 1:e + 2] == ("all",) and e + 2 < len(norms) and norms[e + 2] in (
-            "units", "unit", "stations", "station", "call", "callsigns", "teams", "crews", "channels", "parties")
+            "units", "unit", "stations", "station", "call", "callsigns", "teams", "crews", "channels", "parties",
+            "boats", "boat", "vessels", "vessel", "posts", "post", "marshals", "marshal", "stewards", "steward")
         if toks.sentence_of[a] != 0 or not all(w in lx.FILLERS | lx.DETERMINERS for w in norms[:a]) \
                 or norms[e:e + 1] != ("to",) or e + 1 >= len(norms) \
                 or not (toks.tokens[e + 1].text[:1].isupper() or norms[e + 1] in lx.STATIONS_CALLED or everyone):
@@ -5095,6 +5162,11 @@ class ReportAnalyzer:
             if p.status == "active" and (p.via or "").startswith("description of") and self._from_label(toks, norms, p):
                 ex.places[idx] = replace(p, status="reference", reason="who is calling ('From X:'): no claim")
                 continue
+            if p.status == "active" and (p.via or "").startswith("description of") and p.start_tok == 0 \
+                    and self._calls_by_name(toks, norms, p, ex.places):
+                # ("Harbour office to all boats, the yard is a safe landing": a name said without its article)
+                ex.places[idx] = replace(p, status="reference", reason="who is calling ('X to Y:'), said of no more")
+                continue
             if p.status != "active" or p.via is not None:
                 continue
             if p.start_tok in supposed:
@@ -5107,6 +5179,16 @@ class ReportAnalyzer:
                 ex.places[idx] = replace(p, status="reference", reason="who is calling ('X to Y:'), said of no more")
                 continue
             j = _noun_phrase_start(norms, p)
+            k = j - 1 if j >= 1 and norms[j - 1] in ("up", "at", "in", "on", "down", "from", "by") else j
+            if k >= 4 and norms[k - 1] in lx.LAY_PERSONS | lx.WORKER_PERSONS and norms[k - 2] in ("a", "an", "the") \
+                    and norms[k - 3] == "from" and norms[k - 4] in ("call", "calls", "message", "report", "phone", "text") \
+                    and not any(toks.clause_start[m] for m in range(k - 3, p.start_tok + 1)) \
+                    and any(q.start_tok > p.end_tok and q.landmark != p.landmark and q.status == "active" for q in ex.places):
+                # (only where the call tells of another place: "a call from a resident on Cinder Row: her neighbour ...
+                # has had a fall" is news of the row)
+                ex.places[idx] = replace(p, status="reference", reason="where a caller is ('a call from a lady up "
+                                                                      "the terrace'): no claim")
+                continue
             if j >= 3 and norms[j - 1] == "from" and norms[j - 2] in ("up", "down", "in", "over", "back", "out") \
                     and norms[j - 3] in lx.BRING_VERBS:
                 ex.places[idx] = replace(p, status="reference", reason="where people are brought from: no claim")
@@ -6148,6 +6230,13 @@ class ReportAnalyzer:
                     and norms[a:b] in lx.PERSON_STATE_CUES and self._person_category and self._person_before(norms, a):
                 # (the undesirable category's description may list "collapsed" too: "one of the riggers has collapsed")
                 cue = replace(cue, category=self._person_category, reason=f"a person {norms[a]}")
+            if norms[a:b] == ("slumped",) and cue.category == self._person_category and not self._person_before(norms, a) \
+                    and (self._thing_before(norms, a, self._place_tokens) or next(
+                        (w for w in reversed(norms[max(0, a - 3):a]) if w not in lx.FILLERS | {"s", "has", "have", "is"}),
+                        "") in lx.EARTHWORKS | {"side", "end", "edge", "half"}):
+                und = self._category_for_role(lx.UNDESIRABLE, "the ground has slumped and given way")
+                if und is not None:  # "the whole south side's slumped": ground, no person
+                    cue = replace(cue, category=und, reason="ground slumped")
             if norms[a:b] == ("crushed", "against") and self._person_category and next(
                     (w for w in reversed(norms[max(0, a - 3):a]) if w not in lx.FILLERS), "") in (
                     "man", "woman", "lad", "kid", "child", "boy", "girl", "he", "she", "hes", "shes", "bloke"):
@@ -6190,6 +6279,14 @@ class ReportAnalyzer:
                                                                   or norms[a - 1] in ("re", "m") and a > 1
                                                                   and norms[a - 2] in ("we", "i", "you")):
                 continue  # "we come down past the fish market": the speaker moving, nothing fallen
+            if b - a == 1 and a >= 3 and norms[a - 1] == "the" and norms[a - 2] == "of" and norms[a - 3] in _COMPASS \
+                    and b < len(norms) and norms[b].isalpha() and not toks.clause_start[b] \
+                    and (norms[b] not in lx.COPULAS | lx.FUNCTION_WORDS or norms[b] == "well") \
+                    and self._cues.match_at(norms, b) is None:
+                continue  # "east of the gas wells": a bearing from things the word only names, no gas there
+            if norms[a] == "come" and a > 0 and norms[a - 1] in ("can", "could", "should", "will", "ll", "to") \
+                    and norms[b:b + 1] in (("off",), ("from",), ("to",), ("into",), ("onto",)):
+                continue  # "ambulances can come down off the top lot": a way to go, nothing fallen
             if norms[a] in ("come", "came", "coming") and norms[b:b + 1] == ("from",) and any(
                     norms[j] in lx.MOVING_PEOPLE for j in range(max(0, a - 4), a)):
                 continue  # "forty of us who came down from the campsite": people moving, nothing fallen
@@ -6215,7 +6312,7 @@ class ReportAnalyzer:
                     and not any(norms[j] in lx.PERSON_SUBJECTS for j in range(max(0, a - 3), a)):
                 continue  # "it's got a span down, it's hanging in the water": a thing in the water, no person
             if cue.category == self._person_category and norms[a] == "in" and any(
-                    norms[j] in lx.FLOATING_THINGS for j in range(max(0, a - 3), a)) \
+                    norms[j] in lx.SUNK_THINGS for j in range(max(0, a - 3), a)) \
                     and not any(norms[j] in lx.PERSON_SUBJECTS or norms[j] in _PERSON_WORDS for j in range(max(0, a - 4), a)):
                 und = self._category_for_role(lx.UNDESIRABLE, "debris in the flood water")
                 if und is None:
@@ -6937,9 +7034,11 @@ class ReportAnalyzer:
                 continue  # "I'm on the quad at the top of the pit, the gravel pit, and ...": where the speaker is
             if self._kept_clear_for(toks, norms, p.start_tok):
                 continue  # "keep the road clear for the ladder coming down from the fire station": no claim to guess
-            if "from" in norms[max(0, p.start_tok - 3):p.start_tok] and any(
-                    norms[i] in lx.MOVE_VERBS | lx.EVACUATE_VERBS for i in sent if i < p.start_tok - 1):
-                continue  # "we've walked about forty people up there from the caravan park": where they came from
+            if ("from" in norms[max(0, p.start_tok - 3):p.start_tok] or "off" in norms[max(0, p.start_tok - 2):p.start_tok]) \
+                    and any(norms[i] in lx.MOVE_VERBS | lx.EVACUATE_VERBS or norms[i] in ("come", "drive")
+                            and norms[i - 1] in ("can", "could", "will", "ll", "should") for i in sent if i < p.start_tok - 1):
+                continue  # "we've walked about forty people up there from the caravan park", "walking the evacuees
+                # off the boardwalk": where they came from
             after = [w for w in norms[p.end_tok:p.end_tok + 5] if w not in lx.FILLERS]
             if after[:2] in (["and", "i"], ["and", "we"]) and after[2:3] and after[2] in lx.PERCEPTION_VERBS:
                 continue  # "up on the scaffold at the town hall and i seen the roof of the sports hall fold in": where
@@ -7134,6 +7233,10 @@ class ReportAnalyzer:
             if w in ("someone", "somebody") and i > 0 and norms[i - 1] in ("get", "send", "put", "need", "needs") \
                     and norms[k] == "on" and norms[k + 1:k + 2] in (("it",), ("that",), ("this",)):
                 continue  # "that's a fire, get someone on it": someone to deal with it, nobody in need
+            if j >= 2 and norms[j - 1] == "from" and norms[j - 2] in ("call", "calls", "message", "report", "phone", "text"):
+                continue  # "relaying a 999 call from a lady up the terrace": who called, not someone in need
+            if w in ("someone", "somebody") and i > 0 and norms[i - 1] in ("can", "could", "will", "would"):
+                continue  # "can someone at the fire shed pick up": a call to whoever is there, nobody in need
             if any(norms[m] in lx.NEGATORS and not toks.clause_start[m + 1] for m in range(max(0, j - 2), i)):
                 continue  # "no one at the window" is handled as a negation elsewhere (not "no, the man's at ...")
             if self._speaks_next(toks, norms, k + 1):
@@ -7259,8 +7362,9 @@ class ReportAnalyzer:
             after = norms[i + 1] if i + 1 < len(norms) else ""
             if after in lx.GENERIC_HEADS or after in ("light", "zone", "tag", "line", "team", "of"):
                 continue
-            if not (norms[i - 1] in ("is", "s", "are", "was", "now", "still", "as", "looks", "seems", "be", "completely",
-                                     "structurally", "totally", "all", "thats", "its", "theyre", "whos", "both")
+            if not (norms[i - 1] in ("is", "s", "are", "was", "now", "still", "as", "looks", "look", "seems", "seem", "be", "completely",
+                                     "structurally", "totally", "all", "thats", "its", "theyre", "whos", "both",
+                                     "confirmed", "declared", "reported")  # ("the market hall is confirmed sound")
                     or i in ends and (i + 1 >= len(norms) or toks.clause_start[i + 1] or after in lx.COORDINATORS)):
                 continue  # ("in the HGV park, green liquid running": an adjective of what follows)
             if w == "under" and not (i + 1 >= len(norms) or toks.clause_start[i + 1]) or w == "under" and i not in ends:
@@ -9419,7 +9523,16 @@ def _anchored_at(q: PlaceMention, landmark: str) -> bool:
 
 _MADE_SAFE = frozenset({"negated by 'isolated'", "negated by 'been isolated'", "negated by 'made safe'",
                         "negated by 'been made safe'"})  # (a supply made safe, not the place's danger over)
-_HEAD_ADJECTIVES = frozenset({"open", "deep", "far", "near"})  # (with NAME_ADJECTIVES: "the open water the slip drops into")
+_HEAD_ADJECTIVES = frozenset({"open", "deep", "far", "near", "next", "other"})
+# (with NAME_ADJECTIVES: "the open water the slip drops into", "the next stage the primary tanks send their flow to")
+_SPATIAL_ENDINGS = frozenset({"beneath", "under", "underneath", "below", "above", "behind", "beside", "into",
+                              "onto", "against", "inside", "over", "across", "through"})
+_EMIT_VERBS = frozenset({"blows", "sends", "pours", "spills", "throws", "casts", "sheds", "vents", "drifts"})
+# (what one place puts over another and the other gets off it: "blows its smoke over")
+_SIZE_WORDS = frozenset({"big", "small", "large", "little", "old", "new", "great", "long", "tall", "high", "low"})
+_MATERIALS = frozenset({"stone", "brick", "wooden", "timber", "concrete", "steel", "iron", "glass", "tin"})
+_POSTURE_VERBS = frozenset({"sits", "stands", "lies", "sit", "stand", "lie"})
+_TO_PARTICLES = frozenset({"up", "down", "on", "out", "back", "over", "in", "off", "across", "along"})
 _OWNED = "owned:"  # the ``via`` of "the café's car park" (``_possessive_tail``)
 _REPAIR_WORDS = frozenset({"no", "sorry", "correction", "mean", "rather", "wait", "scratch", "negative"})
 
@@ -9903,6 +10016,12 @@ def _relation_forms(phrase: str) -> list[tuple[str, bool]]:
         for copula in ("is", "are", "was", "were"):
             out.extend(((f"{copula} {rest}", False), (f"that {copula} {rest}", False), (f"which {copula} {rest}", False)))
         out.extend(((f"that {rest}", False), (rest, False)))
+        if words[1].endswith("ed") or words[1] in lx.IRREGULAR_PARTICIPLES:
+            # "is dug beneath" said of whoever did it: "the pit they dug beneath the old pad"; in the making:
+            # "the cell that's being dug out below it"
+            if words[-1] in _SPATIAL_ENDINGS:  # (not "was dug for": "the pit they dug to whiten the horse")
+                out.extend((f"{who} {rest}", False) for who in ("they", "theyve", "we", "weve"))
+            out.extend((f"{pre} being {rest}", False) for pre in ("is", "are", "s", "that is", "that s", "thats", "which is"))
         # ("the houses below the visitor centre" for "is downhill of": a direction word's family said bare too)
         out.extend((f[3:], inv) for f, inv in list(out) if f.startswith("is ") and f[3:].split()[0] in _DIRECTION_BARE)
         if len(words) == 3 and words[1].endswith(("ed", "lt", "wn")) and words[2] in ("against", "onto", "into", "on"):
@@ -9943,7 +10062,8 @@ def _relation_forms(phrase: str) -> list[tuple[str, bool]]:
         for v in (stem, stem + "s", *sorted(ings)):
             out.append((f"{v} {rest}".strip(), False))
             out.append((f"that {v} {rest}".strip(), False))
-        for v in (base + "ed", stem + "ed", *(k for k, val in lx.IRREGULAR_PARTICIPLES.items() if val == stem)):
+        for v in (base + "ed", stem + ("d" if stem.endswith("e") else "ed"),
+                  *(k for k, val in lx.IRREGULAR_PARTICIPLES.items() if val == stem)):
             out.append((f"{v} by", True))  # ("those pipes fed by the tower" for ``feeds water into``)
         if plain_verb and len(words) >= 2:
             # "the stalls huddled under the eaves of the market hall": the participle reads it forwards
@@ -9964,6 +10084,7 @@ def _finished_forms(phrase: str, out: list[tuple[str, bool]]) -> list[tuple[str,
     _with_its_noun(phrase, out)
     _with_their(out)
     _with_dropped_to(phrase, out)
+    _with_way_up_to(phrase, out)
     return list(dict.fromkeys(out))
 
 
@@ -9997,13 +10118,28 @@ def _with_dropped_to(phrase: str, out: list[tuple[str, bool]]) -> None:
     """"wherever the gravel park sends its shuttle buses": "sends its shuttle buses to" with its "to" left
     unsaid, as "wherever" asks where to. Only for a verb, an object noun phrase and "to"."""
     words = phrase.split()
-    if len(words) < 4 or words[-1] not in ("to", "at") or not words[0].endswith("s") or words[0].endswith("ss") \
-            or words[1] not in ("its", "their", "the", "a") or words[-2] in lx.NOT_VERBS | lx.RELATION_ENDINGS:
-        return
-    # (and "at": "the pub where the lads slake their thirst")
+    if len(words) < 3 or words[-1] not in ("to", "at") or not words[0].endswith("s") or words[0].endswith("ss") \
+            or words[-2] in lx.NOT_VERBS | lx.RELATION_ENDINGS or words[1] in _TO_PARTICLES | lx.RELATION_ENDINGS:
+        return  # (a noun after the verb: not "spreads out at")
+    # (and "at": "the pub where the lads slake their thirst"; with the article or "its" said where the name has
+    # none: "where the education centre runs its school sessions" for ``runs_school_sessions_at``)
     last = f" {words[-1]}"
     out.extend((form[:-len(last)], inv) for form, inv in list(out)
-               if form.endswith(last) and not inv and len(form.split()) >= 4)
+               if form.endswith(last) and not inv and len(form.split()) >= 4
+               and form.split()[1 + (form.split()[0] == "that")] in ("its", "their", "the", "a"))
+
+
+def _with_way_up_to(phrase: str, out: list[tuple[str, bool]]) -> None:
+    """A final "to" said with a particle before it: "guards the road to" said "the hut that guards the road up to
+    it" (a way's noun, "road", "path", ..., takes "up" or "down"); "sends flow to" said "the next stage those tanks
+    send their flow on to" (onward: "on")."""
+    words = phrase.split()
+    if len(words) < 2 or words[-1] != "to" or words[-2] in lx.NOT_VERBS | _TO_PARTICLES:
+        return
+    ways = ("up", "down", "on") if words[-2] in lx.WAY_NOUNS else ("on",)
+    for form, inv in list(out):
+        if form.endswith(" to") and form.split()[-2] not in lx.NOT_VERBS | _TO_PARTICLES:
+            out.extend((f"{form[:-3]} {way} to", inv) for way in ways)
 
 
 def _with_verb_synonyms(out: list[tuple[str, bool]]) -> None:
@@ -10040,17 +10176,22 @@ def _with_receiver_forms(phrase: str, out: list[tuple[str, bool]]) -> None:
     words = phrase.split()
     if words[:1] and words[0] in ("the", "a"):
         return
-    if len(words) == 4 and words[1] in lx.ARTICLES:
+    if len(words) == 4 and words[1] in lx.ARTICLES | {"its", "their"}:
         words = [words[0], words[2], words[3]]
-    if len(words) != 3 or words[2] not in ("to", "for", "into") or not words[0].endswith("s") \
+    if len(words) != 3 or words[2] not in ("to", "for", "into") and not (
+            words[2] in ("over", "onto", "across") and words[0] in _EMIT_VERBS) or not words[0].endswith("s") \
             or words[0].endswith("ss") or not words[1].isalpha() or len(words[1]) < 3 \
             or words[1] in lx.NOT_VERBS | lx.ARTICLES | lx.RELATION_ENDINGS | lx.DETERMINERS:
         return
     noun = words[1]
+    stem = words[0][:-1]
+    part = stem + "d" if stem.endswith("e") else stem + "ed"  # ("the tank that gets its water piped in from ...")
     for verb in ("gets", "get", "getting", "got", "takes", "take", "taking", "draws", "draw", "drawing"):
-        for det in ("its", "their", "the", ""):
-            out.append((" ".join(w for w in (verb, det, noun, "from") if w), True))
-            out.append((" ".join(w for w in ("that", verb, det, noun, "from") if w), True))
+        for det in ("its", "their", "the", "", "all the", "all its"):
+            # ("the place that gets all the smoke off the kipper house" for ``blows its smoke over``)
+            for tail in (("from",), (part, "in", "from"), (part, "from"), *((("off",),) if words[2] in ("over", "onto", "across") else ())):
+                out.append((" ".join(w for w in (verb, det, noun, *tail) if w), True))
+                out.append((" ".join(w for w in ("that", verb, det, noun, *tail) if w), True))
 
 
 def _with_group_inverses(phrase: str, out: list[tuple[str, bool]]) -> None:
@@ -10107,6 +10248,11 @@ def _with_other_preposition(phrase: str, out: list[tuple[str, bool]]) -> None:
         # "the passage buried in it" for ``is_buried_inside``: a participle's "inside" said "in"
         out.extend((f"{form[:-len(words[-1])]}in", inv) for form, inv in list(out)
                    if form.endswith(f" {words[-1]}") and len(form.split()) >= 2)
+    elif words[0] in _POSTURE_VERBS and "inside" in words[1:-1] and words[-1] == "of":
+        # "the compound the golf ball sits in" for ``sits inside the fence of``: said short, its noun unsaid
+        short = _relation_forms(" ".join(words[: words.index("inside") + 1]))
+        out.extend(short)
+        out.extend((f"{form[:-6]}in", inv) for form, inv in short if form.endswith(" inside") and len(form.split()) >= 2)
     if len(words) >= 3 and words[-1] in ("across", "over") and words[-2] not in lx.ARTICLES:
         # "the bridge carrying the towpath over the weir" for ``carries the towpath across``
         other = "over" if words[-1] == "across" else "across"

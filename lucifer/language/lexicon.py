@@ -196,7 +196,7 @@ casualty|casualties|victim|victims|survivor|survivors|patient|patients|
 needs help|need help|needs rescue|need rescue|needs rescuing|need rescuing|calling for help|crying for help|
 cries for help|screaming|shouting for help|banging|knocking|someone inside|people inside|person inside|
 kids inside|children inside|family inside|elderly inside|residents inside|
-missing person|missing persons|missing|been bitten|got bitten|was bitten|bitten by|bitten on the|man down|person down|woman down|people down|men down|both burnt|both burned|cut up bad|cut up badly|badly cut up|
+missing person|missing persons|missing|been bitten|nasty bite|a bad bite|a bite on his|a bite on her|bite on the hand|got bitten|was bitten|bitten by|bitten on the|man down|person down|woman down|people down|men down|both burnt|both burned|men burned|men burnt|man burned|man burnt|people burned|people burnt|women burned|woman burned|lads burned|crew burned|crew burnt|cut up bad|cut up badly|badly cut up|
 medical emergency|medical help|needs a medic|needs medic|needs an ambulance|needs evacuation|
 can't get out|cannot get out|can't move|cannot move|burns victim|overcome by smoke|
 stranded|cut off|trapped people|trapped persons|people trapped|someone trapped|somebody trapped|
@@ -204,7 +204,7 @@ hypothermic|going hypo|gone hypo|hypoglycaemic|hypoglycemic|drowning|bleeding ou
 pinned under debris|pinned under rubble|trapped under debris|trapped under rubble|buried under rubble|buried under debris|
 trapped in rubble|under the rubble|needs medics|need medics|needs a doctor|requires evacuation|unaccounted for|
 people still inside|still inside|someone still inside|can't get back|cannot get back|can't get back to shore|water all round him|water all round her|water all round them|water all round us|water all around him|water all around them|on the roof with water|still in the cab|still in his cab|still in her cab|driver still in|people stuck|people stuck inside|with people inside|
-twisted ankle|twisted her ankle|twisted his ankle|sprained ankle|broken ankle|is injure|he injure|she injure|he not move|she not move|not move|cut head|a cut head|bleeding head|needs a paramedic|need a paramedic|needs paramedics|deep cut|bad cut|can't find his mum|can't find her mum|can't find his dad|can't find her dad|can't find their parents|
+twisted ankle|twisted her ankle|twisted his ankle|gone over on her ankle|gone over on his ankle|went over on her ankle|went over on his ankle|turned her ankle|turned his ankle|rolled her ankle|rolled his ankle|sprained ankle|broken ankle|is injure|he injure|she injure|he not move|she not move|not move|cut head|a cut head|bleeding head|needs a paramedic|need a paramedic|needs paramedics|deep cut|bad cut|can't find his mum|can't find her mum|can't find his dad|can't find her dad|can't find their parents|
 people under it|people under there|someone under it|somebody under it|people underneath|breathing problems|breathing difficulties|difficulty breathing|struggling to breathe|can't breathe|cannot breathe|
 man collapsed|woman collapsed|person collapsed|someone collapsed|somebody collapsed|he collapsed|she collapsed|
 needs oxygen|need oxygen|having a heart attack|heart attack|seizure|having a seizure|can't breathe|cannot breathe|
@@ -641,6 +641,8 @@ WATER_WORDS = frozenset({"water", "waters", "floodwater", "flood"})
 MOVING_VERBS = {"moved", "moving", "taken", "taking", "took", "brought", "bringing", "sent", "sending", "walked",
                 "ferried", "evacuated", "shifted", "got"}
 # Which one of a row or group ("the end one", "the first one")
+# ways to a place: "guards the road to" said "the road up to it"
+WAY_NOUNS = {"road", "track", "path", "lane", "drive", "way", "approach", "steps", "stairs", "ramp", "walk", "access"}
 MEMBER_WORDS = {"end", "first", "last", "second", "third", "middle", "corner", "nearest", "far", "top", "bottom"}
 # Words for a room or part of a place said right after its name ("the Chlorine Palace sports hall")
 # Rooms and floors of a building: "the room above the market hall" is in it
@@ -660,6 +662,8 @@ HELD_UP = {("in", "traffic"), ("in", "the", "traffic"), ("in", "a", "queue"), ("
 FLOATING_THINGS = {"log", "logs", "timber", "debris", "car", "cars", "caravan", "caravans", "barrel", "barrels", "bin",
                    "bins", "tree", "trees", "branch", "branche", "pallet", "pallets", "rubbish", "plank", "planks",
                    "drum", "drums"}
+# Things that may end up in the water with no person in it ("the crane's in the water")
+SUNK_THINGS = FLOATING_THINGS | {"crane", "cranes", "container", "containers", "trailer", "trailers", "boom"}
 # Other words for the same kind of place: a KB whose one chapel is "the chapel" is meant by "the church" too,
 # where no landmark is called a church (see ``analyzer._synonym_forms``).
 PLACE_SYNONYMS = [{"church", "chapel", "kirk"}, {"cafe", "café", "tearoom", "caff"},
@@ -1426,7 +1430,15 @@ CAUSED_BY_VERBS = {"buried", "blocked", "hit", "cut", "been", "swept", "struck",
 WHATEVER = frozenset({"whatever", "wherever", "whichever", "whoever"})
 # Verbs of having, each said for the others in a relation's name ("keeps the keys to" / "holds the keys to")
 HOLDING_VERBS = {"keeps": ("holds", "has"), "holds": ("keeps", "has"), "keep": ("hold", "have"), "hold": ("keep", "have"),
-                 "keeping": ("holding", "having"), "holding": ("keeping", "having")}
+                 "keeping": ("holding", "having"), "holding": ("keeping", "having"),
+                 # (getting: "gets its fuel off" said "the houses that take their fuel off it")
+                 "gets": ("takes", "draws"), "takes": ("gets", "draws"), "draws": ("gets", "takes"),
+                 "get": ("take", "draw"), "take": ("get", "draw"), "draw": ("get", "take"),
+                 "getting": ("taking", "drawing"), "taking": ("getting", "drawing"), "drawing": ("getting", "taking"),
+                 # (sending: "feeds clay to" said "the cell they've been taking its clay to")
+                 "feeds": ("sends", "takes", "carries"), "sends": ("feeds", "takes", "carries"),
+                 "feed": ("send", "take", "carry"), "send": ("feed", "take", "carry"),
+                 "feeding": ("sending", "taking", "carrying"), "sending": ("feeding", "taking", "carrying")}
 
 # Vague heads a name's first word can carry instead of the name's own head: "the generator place" (not "building" or
 # "one": "the ambulance building" can be a description of another place, found by the relation passes)
@@ -1477,7 +1489,7 @@ DANGER_KIND_EXTRA: dict[str, list[str]] = {
     "explosion": ["from the bang", "by the bang", "in the bang", "cooking off", "rounds cooking off"],
     "breakage": ["been ripped out", "ripped out", "hole right through it", "hole right through", "punched a hole in", "punched a hole through", "hole punched", "punched right through", "punched through"],  # "a hole punched right through the wall"
     # (the surge's damage to moorings: "the diesel jetty has broken loose", "pontoons torn off their piles")
-    "storm": ["lightning strike", "took a lightning strike", "struck by lightning", "hit by lightning", "lightning struck",
+    "storm": ["come clean off", "came clean off", "lightning strike", "took a lightning strike", "struck by lightning", "hit by lightning", "lightning struck",
               "lightning's struck", "lightning has struck", "lightning hit", "lightning's hit", "lightning has hit",
               "blown over", "been blown over", "has blown over", "torn off their piles", "torn off its piles", "off their piles", "off its piles", "broken loose",
               "broke loose", "torn loose", "has broken free", "come adrift", "broken adrift", "torn from its moorings",
@@ -1491,8 +1503,9 @@ DANGER_KIND_EXTRA: dict[str, list[str]] = {
                  "conductors are on", "conductor down", "conductors down", "feeder is down", "feeder down", "lines down",
                  "line down", "lines are down", "line is down"],
     "gas": ["rotten egg", "rotten eggs", "rotten-egg smell", "rotten egg smell", "eggy smell", "smell like eggs", "smells like eggs", "smell of eggs", "smells of eggs", "smell like rotten eggs", "there's a hiss", "a loud hiss", "hissing out of", "h2s", "so2", "co2", "sulphur dioxide", "hydrogen sulphide", "carbon dioxide", "methane", "methane leak", "natural gas", "co detected", "co reading", "co readings", "co levels", "high co", "carbon monoxide", "carbon monoxide alarm", "co alarm"],
-    "collapse": ["split down a seam", "split a seam", "split its seam", "split at the seam", "split along a seam", "has snapped", "have snapped", "cable snapped", "cables snapped", "hanging sideways", "floor went through", "floor went thru", "floor gone through", "developed a lean", "has a lean", "bricks coming off", "bricks are coming off", "wall has split", "walls have split", "has split from", "split right across", "split from top to bottom", "roof's coming in", "roof is coming in", "ceiling's coming in", "ceiling is coming in", "coming off in chunks", "coming away in chunks", "falling off in chunks", "in chunks", "breaking up", "is breaking up", "coming adrift", "come adrift", "broken adrift", "peeling off", "coming off in slabs", "coming away in slabs", "roof fall on", "roof fall in", "roof has split", "roof split", "is bending", "it's bending", "is fall down", "has fall down", "fallen down"],
-    "water": ["lifting off their stands", "lifted off their stands", "off their stands", "floating off", "floated off",
+    "collapse": ["flattened", "been flattened", "torn to bits", "torn to pieces", "ripped to bits", "ripped to pieces", "blown to bits", "giving way", "is giving way", "gives way", "piles are sheared", "piles have sheared", "pile is sheared", "pile's sheared", "torn open", "been torn open", "gone over into the water", "gone over into the lagoon", "gone over into the sea", "gone over into the river", "split down a seam", "split a seam", "split its seam", "split at the seam", "split along a seam", "has snapped", "have snapped", "cable snapped", "cables snapped", "hanging sideways", "floor went through", "floor went thru", "floor gone through", "developed a lean", "has a lean", "bricks coming off", "bricks are coming off", "wall has split", "walls have split", "has split from", "split right across", "split from top to bottom", "roof's coming in", "roof is coming in", "ceiling's coming in", "ceiling is coming in", "coming off in chunks", "coming away in chunks", "falling off in chunks", "in chunks", "breaking up", "is breaking up", "coming adrift", "come adrift", "broken adrift", "peeling off", "coming off in slabs", "coming away in slabs", "roof fall on", "roof fall in", "roof has split", "roof split", "is bending", "it's bending", "is fall down", "has fall down", "fallen down"],
+    "water": ["taken in loads of water", "taken in water", "taken in a lot of water", "taking in loads of water",
+              "a metre in there", "a foot in there", "that's going over", "that is going over", "over the tops of their walls", "over the top of their walls", "over the top of its walls", "over the tops of its walls", "over the top of the walls", "gone over their walls", "gone over its walls", "over their walls", "lifting off their stands", "lifted off their stands", "off their stands", "floating off", "floated off",
               "getting swamped", "cars are floating", "cars are floating in it", "tents are floating", "standing in water", "stood in water", "standing in floodwater", "water through all the", "water through the front door", "water through the front doors", "water through the doors", "boiling over", "boiled over", "water is running across", "water running across", "water is lapping", "water lapping", "lapping the", "over the towpath", "across the towpath", "gates burst", "gates have burst", "gate burst", "gate has burst", "pouring over", "topped its bank", "topped its banks", "topped the bank", "topped the banks", "gone over the bank", "gone over its bank", "gone over the south bank", "gone over the north bank", "gone over the east bank", "gone over the west bank", "metre deep", "metres deep", "meter deep", "a metre of water", "metre of water", "full to the top", "full to the brim", "water all the way round", "water is all the way round", "water all round", "water is all round", "water right round", "water is right round", "tide's coming straight through", "tide's coming through", "tide coming through", "sea's coming through", "one sheet of water", "a sheet of water", "sheet of water", "washing out", "washing away", "logs floating", "floating away", "floating off the floor", "floating about", "floating around",
               "furniture floating", "chairs floating", "cars floating",
               "water coming through", "water's coming through", "water is coming through", "seeping through the walls",
@@ -1502,7 +1515,7 @@ DANGER_KIND_EXTRA: dict[str, list[str]] = {
               "yard's a lake", "is a lake", "'s a lake", "like a lake", "completely under", "cut off by water", "cut off by the water", "cut off by floodwater", "cut off by the flood", "over its banks", "over the banks", "out of its banks", "broken its banks", "burst their banks", "bursting its banks", "scoured", "scoured out", "water coming through the ceiling", "water through the ceiling", "water pouring through the ceiling",
               "water coming through the roof", "ceiling's leaking", "ceiling is leaking", "water pouring through"],
     "access": ["blocking", "blocking the way", "blocking it", "blocks the way", "rocks across", "rocks across it", "rocks across the road", "debris across", "debris right across", "fallen oak", "fallen beech", "fallen ash", "fallen branch", "fallen branches"],
-    "ground": ["scree moving", "scree is moving", "ground is moving", "ground moving", "slope is moving", "hillside is moving", "rocks are coming off", "rocks are coming down", "rocks are falling", "dropping rocks", "rocks dropping", "dropping stones", "has sunk", "have sunk", "its sunk", "ground dropped", "ground has dropped", "ground dropping", "ground is dropping", "ground gone", "ground has gone", "ground just gone", "floor dropped", "floor has dropped", "hole opened up", "hole has opened up", "hole just opened up", "floor has opened", "floor's opened", "sinkhole", "sink hole", "ash a foot deep", "ash is knee deep", "ash knee deep", "ash's knee deep", "ash is ankle deep", "a foot of ash", "feet of ash", "inches of ash", "deep in ash", "covered in ash", "heaped with ash", "buried in ash", "under the ash", "drifts of ash", "ash drifts", "half buried", "half-buried", "slurry", "full of slurry", "sludge", "silt", "full of silt"],
+    "ground": ["there's a slip on", "there's been a slip on", "there is a slip on", "scree moving", "scree is moving", "ground is moving", "ground moving", "slope is moving", "hillside is moving", "rocks are coming off", "rocks are coming down", "rocks are falling", "dropping rocks", "rocks dropping", "dropping stones", "has sunk", "have sunk", "its sunk", "ground dropped", "ground has dropped", "ground dropping", "ground is dropping", "ground gone", "ground has gone", "ground just gone", "floor dropped", "floor has dropped", "hole opened up", "hole has opened up", "hole just opened up", "floor has opened", "floor's opened", "sinkhole", "sink hole", "ash a foot deep", "ash is knee deep", "ash knee deep", "ash's knee deep", "ash is ankle deep", "a foot of ash", "feet of ash", "inches of ash", "deep in ash", "covered in ash", "heaped with ash", "buried in ash", "under the ash", "drifts of ash", "ash drifts", "half buried", "half-buried", "slurry", "full of slurry", "sludge", "silt", "full of silt"],
     "fallen": ["taken the top off", "took the top off", "knocked the top off", "blown the top off", "blew the top off",
                "stonework through", "masonry through", "through the glass roof", "debris through the roof",
                "rubble through the roof", "branch through the roof", "branch through its roof", "branches through the roof", "limb through the roof",
