@@ -1629,25 +1629,15 @@ class ReportAnalyzer:
                                           for f in self.kb.landmark_by_name[other].surface_forms)
                                   and w in last_words and w not in cue_words and w not in rel_words
                                   and w not in lx.UNNAMING_HEADS | lx.GENERIC_HEADS | lx.DESCRIPTION_HEADS}
-        if not hasattr(self, "_first_words"):
-            firsts: dict[str, set[str]] = {}
-            for lm in self.kb.landmarks:
-                for form in lm.surface_forms:
-                    words = [w for w in name_words(form) if w not in lx.ARTICLES]
-                    if len(words) >= 2 and words[0].isalpha() and len(words[0]) >= 4:
-                        firsts.setdefault(words[0], set()).add(lm.name)
-            self._first_words = {w: next(iter(names)) for w, names in firsts.items() if len(names) == 1
-                                 and w not in self._name_word_owners.keys() - {w} and w not in lx.DESCRIPTIVE_WORDS}
         out = []
         for i in range(0, len(norms)):
             w = norms[i]
             if w in self._first_words and i >= 2 and i not in taken and norms[i - 1] == "the" \
                     and ((i - 1) in rel_ends or norms[i - 2] in lx.RELATION_ENDINGS - {"of", "in", "at", "on", "by"}) \
                     and toks.tokens[i].text.lower().endswith("s") and toks.tokens[i].text.lower() != w \
-                    and (i + 1 >= len(norms) or toks.clause_start[i + 1]) \
-                    and self._name_word_owners.get(w, set()) == {self._first_words[w]}:
-                # "the hut that watches over the elephants": the animals said for the one place named after them,
-                # as a relation's anchor only (after a relation's last word)
+                    and (i + 1 >= len(norms) or toks.clause_start[i + 1]):
+                # "the hut that watches over the elephants": the animals said for the one place named after them
+                # (``_first_words``, as ``_modifier_names`` reads them), as a relation's anchor only
                 out.append(self._mention(toks, i, i + 1, self._first_words[w]))
                 continue
             if w in self._anchor_heads and i >= 2 and i not in taken and norms[i - 1] == "the" and (i - 1) in rel_ends \
@@ -3290,7 +3280,7 @@ class ReportAnalyzer:
             if head is None:
                 continue
             if norms[head] in lx.PART_NOUNS | lx.LOCATIVE_PARTS | {"back", "middle", "edge"} and norms[head + 1:head + 2] == ("of",) \
-                    and not any(p.start_tok >= head + 2 and all(w in lx.DETERMINERS | _SIZE_WORDS | _MATERIALS
+                    and not any(p.start_tok >= head + 2 and all(w in lx.DETERMINERS | _PLAIN_ADJECTIVES
                                                                 for w in norms[head + 2:p.start_tok]) for p in ex.places):
                 continue  # "water pouring out the back of the aquarium into the service yard": a part of something
                 # no landmark, and the place after it is where the water goes
@@ -4244,8 +4234,8 @@ class ReportAnalyzer:
         its = b < len(norms) and norms[b] == "its" and any(q in ex.tokens.tokens[b].text for q in ("'", "’"))
         while j < len(norms) and (norms[j] in lx.DETERMINERS or norms[j] in lx.FILLERS or norms[j] in ("my", "your")
                                   or j > b and _after_same(norms, j + 1)
-                                  or j > b and norms[j - 1] in lx.ARTICLES | _SIZE_WORDS | _MATERIALS
-                                  and norms[j] in _SIZE_WORDS | _MATERIALS)\
+                                  or j > b and norms[j - 1] in lx.ARTICLES | _PLAIN_ADJECTIVES
+                                  and norms[j] in _PLAIN_ADJECTIVES)\
                 and j - b < 4:  # ("moored off the big stone harbour wall")
             if norms[j] in ("that", "this") and (j + 1 >= len(norms) or ex.tokens.clause_start[j + 1]
                                                  or norms[j + 1] in lx.COPULAS
@@ -5159,14 +5149,14 @@ class ReportAnalyzer:
         norms = toks.norms(0, len(toks))
         supposed = self._conditional_tokens(toks, norms)
         for idx, p in enumerate(ex.places):
-            if p.status == "active" and (p.via or "").startswith("description of") and self._from_label(toks, norms, p):
-                ex.places[idx] = replace(p, status="reference", reason="who is calling ('From X:'): no claim")
-                continue
-            if p.status == "active" and (p.via or "").startswith("description of") and p.start_tok == 0 \
-                    and self._calls_by_name(toks, norms, p, ex.places):
-                # ("Harbour office to all boats, the yard is a safe landing": a name said without its article)
-                ex.places[idx] = replace(p, status="reference", reason="who is calling ('X to Y:'), said of no more")
-                continue
+            if p.status == "active" and (p.via or "").startswith("description of"):
+                if self._from_label(toks, norms, p):
+                    ex.places[idx] = replace(p, status="reference", reason="who is calling ('From X:'): no claim")
+                    continue
+                if p.start_tok == 0 and self._calls_by_name(toks, norms, p, ex.places):
+                    # ("Harbour office to all boats, the yard is a safe landing": a name said without its article)
+                    ex.places[idx] = replace(p, status="reference", reason="who is calling ('X to Y:'), said of no more")
+                    continue
             if p.status != "active" or p.via is not None:
                 continue
             if p.start_tok in supposed:
@@ -5181,7 +5171,7 @@ class ReportAnalyzer:
             j = _noun_phrase_start(norms, p)
             k = j - 1 if j >= 1 and norms[j - 1] in ("up", "at", "in", "on", "down", "from", "by") else j
             if k >= 4 and norms[k - 1] in lx.LAY_PERSONS | lx.WORKER_PERSONS and norms[k - 2] in ("a", "an", "the") \
-                    and norms[k - 3] == "from" and norms[k - 4] in ("call", "calls", "message", "report", "phone", "text") \
+                    and norms[k - 3] == "from" and norms[k - 4] in _CALL_NOUNS \
                     and not any(toks.clause_start[m] for m in range(k - 3, p.start_tok + 1)) \
                     and any(q.start_tok > p.end_tok and q.landmark != p.landmark and q.status == "active" for q in ex.places):
                 # (only where the call tells of another place: "a call from a resident on Cinder Row: her neighbour ...
@@ -7233,7 +7223,7 @@ class ReportAnalyzer:
             if w in ("someone", "somebody") and i > 0 and norms[i - 1] in ("get", "send", "put", "need", "needs") \
                     and norms[k] == "on" and norms[k + 1:k + 2] in (("it",), ("that",), ("this",)):
                 continue  # "that's a fire, get someone on it": someone to deal with it, nobody in need
-            if j >= 2 and norms[j - 1] == "from" and norms[j - 2] in ("call", "calls", "message", "report", "phone", "text"):
+            if j >= 2 and norms[j - 1] == "from" and norms[j - 2] in _CALL_NOUNS:
                 continue  # "relaying a 999 call from a lady up the terrace": who called, not someone in need
             if w in ("someone", "somebody") and i > 0 and norms[i - 1] in ("can", "could", "will", "would"):
                 continue  # "can someone at the fire shed pick up": a call to whoever is there, nobody in need
@@ -9528,11 +9518,13 @@ _HEAD_ADJECTIVES = frozenset({"open", "deep", "far", "near", "next", "other"})
 _SPATIAL_ENDINGS = frozenset({"beneath", "under", "underneath", "below", "above", "behind", "beside", "into",
                               "onto", "against", "inside", "over", "across", "through"})
 _EMIT_VERBS = frozenset({"blows", "sends", "pours", "spills", "throws", "casts", "sheds", "vents", "drifts"})
-# (what one place puts over another and the other gets off it: "blows its smoke over")
+_EMIT_ENDINGS = ("over", "onto", "across")  # (what one place puts over another and the other gets off it: "blows its smoke over")
 _SIZE_WORDS = frozenset({"big", "small", "large", "little", "old", "new", "great", "long", "tall", "high", "low"})
 _MATERIALS = frozenset({"stone", "brick", "wooden", "timber", "concrete", "steel", "iron", "glass", "tin"})
+_PLAIN_ADJECTIVES = _SIZE_WORDS | _MATERIALS  # (said before a name without being part of it: "the big stone harbour wall")
 _POSTURE_VERBS = frozenset({"sits", "stands", "lies", "sit", "stand", "lie"})
 _TO_PARTICLES = frozenset({"up", "down", "on", "out", "back", "over", "in", "off", "across", "along"})
+_CALL_NOUNS = frozenset({"call", "calls", "message", "report", "phone", "text"})  # ("a 999 call from a lady up the terrace")
 _OWNED = "owned:"  # the ``via`` of "the café's car park" (``_possessive_tail``)
 _REPAIR_WORDS = frozenset({"no", "sorry", "correction", "mean", "rather", "wait", "scratch", "negative"})
 
@@ -10062,8 +10054,7 @@ def _relation_forms(phrase: str) -> list[tuple[str, bool]]:
         for v in (stem, stem + "s", *sorted(ings)):
             out.append((f"{v} {rest}".strip(), False))
             out.append((f"that {v} {rest}".strip(), False))
-        for v in (base + "ed", stem + ("d" if stem.endswith("e") else "ed"),
-                  *(k for k, val in lx.IRREGULAR_PARTICIPLES.items() if val == stem)):
+        for v in (base + "ed", _participle(stem), *(k for k, val in lx.IRREGULAR_PARTICIPLES.items() if val == stem)):
             out.append((f"{v} by", True))  # ("those pipes fed by the tower" for ``feeds water into``)
         if plain_verb and len(words) >= 2:
             # "the stalls huddled under the eaves of the market hall": the participle reads it forwards
@@ -10143,13 +10134,13 @@ def _with_way_up_to(phrase: str, out: list[tuple[str, bool]]) -> None:
 
 
 def _with_verb_synonyms(out: list[tuple[str, bool]]) -> None:
-    """"keeps the padlock keys to" said "whoever holds the padlock keys for the gas cage": verbs of having that
-    say the same of a relation's noun."""
+    """"keeps the padlock keys to" said "whoever holds the padlock keys for the gas cage": verbs of having (and of
+    getting and sending) that say the same of a relation's noun."""
     for form, inv in list(out):
         ws = form.split()
         at = 1 if ws[:1] == ["that"] else 0
-        if len(ws) - at >= 3 and ws[at] in lx.HOLDING_VERBS and ws[at + 1] in lx.ARTICLES | {"its", "their"}:
-            out.extend((" ".join(ws[:at] + [other] + ws[at + 1:]), inv) for other in lx.HOLDING_VERBS[ws[at]])
+        if len(ws) - at >= 3 and ws[at] in lx.NOUN_VERB_SYNONYMS and ws[at + 1] in lx.ARTICLES | {"its", "their"}:
+            out.extend((" ".join(ws[:at] + [other] + ws[at + 1:]), inv) for other in lx.NOUN_VERB_SYNONYMS[ws[at]])
 
 
 def _shares_a_noun_with(phrase: str) -> bool:
@@ -10170,6 +10161,11 @@ def _with_shared_its(phrase: str, out: list[tuple[str, bool]]) -> None:
         out.append((f"that {verb} its {noun}", False))
 
 
+def _participle(stem: str) -> str:
+    """The regular past participle of a verb's stem: "pipe" -> "piped", "pump" -> "pumped"."""
+    return stem + ("d" if stem.endswith("e") else "ed")
+
+
 def _with_receiver_forms(phrase: str, out: list[tuple[str, bool]]) -> None:
     """"pipes_gas_to" said from the other end: "the hut that gets its gas from the compound", "wherever the
     clubhouse gets its gas from" (what one place sends the other gets from it: the relation read backwards)."""
@@ -10179,17 +10175,16 @@ def _with_receiver_forms(phrase: str, out: list[tuple[str, bool]]) -> None:
     if len(words) == 4 and words[1] in lx.ARTICLES | {"its", "their"}:
         words = [words[0], words[2], words[3]]
     if len(words) != 3 or words[2] not in ("to", "for", "into") and not (
-            words[2] in ("over", "onto", "across") and words[0] in _EMIT_VERBS) or not words[0].endswith("s") \
+            words[2] in _EMIT_ENDINGS and words[0] in _EMIT_VERBS) or not words[0].endswith("s") \
             or words[0].endswith("ss") or not words[1].isalpha() or len(words[1]) < 3 \
             or words[1] in lx.NOT_VERBS | lx.ARTICLES | lx.RELATION_ENDINGS | lx.DETERMINERS:
         return
     noun = words[1]
-    stem = words[0][:-1]
-    part = stem + "d" if stem.endswith("e") else stem + "ed"  # ("the tank that gets its water piped in from ...")
+    part = _participle(words[0][:-1])  # ("the tank that gets its water piped in from ...")
     for verb in ("gets", "get", "getting", "got", "takes", "take", "taking", "draws", "draw", "drawing"):
         for det in ("its", "their", "the", "", "all the", "all its"):
             # ("the place that gets all the smoke off the kipper house" for ``blows its smoke over``)
-            for tail in (("from",), (part, "in", "from"), (part, "from"), *((("off",),) if words[2] in ("over", "onto", "across") else ())):
+            for tail in (("from",), (part, "in", "from"), (part, "from"), *((("off",),) if words[2] in _EMIT_ENDINGS else ())):
                 out.append((" ".join(w for w in (verb, det, noun, *tail) if w), True))
                 out.append((" ".join(w for w in ("that", verb, det, noun, *tail) if w), True))
 

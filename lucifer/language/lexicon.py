@@ -1428,17 +1428,18 @@ EVENT_NOUNS = {"slip", "fall", "slide", "blaze", "spill", "leak", "burst", "coll
 # ... and the verbs that say one did something ("buried by the slip", "hit by the blast")
 CAUSED_BY_VERBS = {"buried", "blocked", "hit", "cut", "been", "swept", "struck", "damaged"}
 WHATEVER = frozenset({"whatever", "wherever", "whichever", "whoever"})
-# Verbs of having, each said for the others in a relation's name ("keeps the keys to" / "holds the keys to")
-HOLDING_VERBS = {"keeps": ("holds", "has"), "holds": ("keeps", "has"), "keep": ("hold", "have"), "hold": ("keep", "have"),
-                 "keeping": ("holding", "having"), "holding": ("keeping", "having"),
-                 # (getting: "gets its fuel off" said "the houses that take their fuel off it")
-                 "gets": ("takes", "draws"), "takes": ("gets", "draws"), "draws": ("gets", "takes"),
-                 "get": ("take", "draw"), "take": ("get", "draw"), "draw": ("get", "take"),
-                 "getting": ("taking", "drawing"), "taking": ("getting", "drawing"), "drawing": ("getting", "taking"),
-                 # (sending: "feeds clay to" said "the cell they've been taking its clay to")
-                 "feeds": ("sends", "takes", "carries"), "sends": ("feeds", "takes", "carries"),
-                 "feed": ("send", "take", "carry"), "send": ("feed", "take", "carry"),
-                 "feeding": ("sending", "taking", "carrying"), "sending": ("feeding", "taking", "carrying")}
+# Verbs said for one another before a relation's noun: of having ("keeps the keys to" / "holds the keys to"), of
+# getting and of sending (below)
+NOUN_VERB_SYNONYMS = {"keeps": ("holds", "has"), "holds": ("keeps", "has"), "keep": ("hold", "have"), "hold": ("keep", "have"),
+                      "keeping": ("holding", "having"), "holding": ("keeping", "having"),
+                      # (getting: "gets its fuel off" said "the houses that take their fuel off it")
+                      "gets": ("takes", "draws"), "takes": ("gets", "draws"), "draws": ("gets", "takes"),
+                      "get": ("take", "draw"), "take": ("get", "draw"), "draw": ("get", "take"),
+                      "getting": ("taking", "drawing"), "taking": ("getting", "drawing"), "drawing": ("getting", "taking"),
+                      # (sending: "feeds clay to" said "the cell they've been taking its clay to")
+                      "feeds": ("sends", "takes", "carries"), "sends": ("feeds", "takes", "carries"),
+                      "feed": ("send", "take", "carry"), "send": ("feed", "take", "carry"),
+                      "feeding": ("sending", "taking", "carrying"), "sending": ("feeding", "taking", "carrying")}
 
 # Vague heads a name's first word can carry instead of the name's own head: "the generator place" (not "building" or
 # "one": "the ambulance building" can be a description of another place, found by the relation passes)
