@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev83) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev85) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -153,6 +153,13 @@ CABLE_CAR_RESORT = ROOT / "knowledge_bases" / "cable_car_resort"
 LANDFILL_SITE = ROOT / "knowledge_bases" / "landfill_site"
 AQUARIUM_CENTRE = ROOT / "knowledge_bases" / "aquarium_centre"
 FERRY_ROPEWAY_GORGE = ROOT / "knowledge_bases" / "ferry_ropeway_gorge"
+OIL_REFINERY = ROOT / "knowledge_bases" / "oil_refinery"
+FISH_HATCHERY = ROOT / "knowledge_bases" / "fish_hatchery"
+SHIP_BREAKING_YARD = ROOT / "knowledge_bases" / "ship_breaking_yard"
+HORSE_STUD = ROOT / "knowledge_bases" / "horse_stud"
+DESALINATION_PLANT = ROOT / "knowledge_bases" / "desalination_plant"
+SEA_FORT = ROOT / "knowledge_bases" / "sea_fort"
+BUS_DEPOT = ROOT / "knowledge_bases" / "bus_depot"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -457,6 +464,13 @@ SETS = {
     "dev83/landfill_site": _set("dev83/landfill_site.jsonl", LANDFILL_SITE, "lf83", TWENTY, sep=""),
     "dev83/aquarium_centre": _set("dev83/aquarium_centre.jsonl", AQUARIUM_CENTRE, "aq83", TWENTY, sep=""),
     "dev83/ferry_ropeway_gorge": _set("dev83/ferry_ropeway_gorge.jsonl", FERRY_ROPEWAY_GORGE, "fg83", TWENTY, sep=""),
+    "dev84/oil_refinery": _set("dev84/oil_refinery.jsonl", OIL_REFINERY, "or84", TWENTY, sep=""),
+    "dev84/fish_hatchery": _set("dev84/fish_hatchery.jsonl", FISH_HATCHERY, "fh84", TWENTY, sep=""),
+    "dev84/ship_breaking_yard": _set("dev84/ship_breaking_yard.jsonl", SHIP_BREAKING_YARD, "sb84", TWENTY, sep=""),
+    "dev84/horse_stud": _set("dev84/horse_stud.jsonl", HORSE_STUD, "hs84", TWENTY, sep=""),
+    "dev85/desalination_plant": _set("dev85/desalination_plant.jsonl", DESALINATION_PLANT, "dp85", TWENTY, sep=""),
+    "dev85/sea_fort": _set("dev85/sea_fort.jsonl", SEA_FORT, "sf85", TWENTY, sep=""),
+    "dev85/bus_depot": _set("dev85/bus_depot.jsonl", BUS_DEPOT, "bd85", TWENTY, sep=""),
 }
 
 
