@@ -4365,3 +4365,95 @@ def test_dev82_phenomena(kb_analyzers, kb, text, expected):
 ])
 def test_dev83_phenomena(kb_analyzers, kb, text, expected):
     assert claims(kb_analyzers[kb], text) == expected
+
+
+@pytest.mark.parametrize("kb, text, expected", [
+    # "that's split" said of a place; "cut quite badly"; "black with oil" and "crude pouring out" are spills
+    ("oil_refinery", "the bund is holding, sorry, it's tank seven that's split, crude pouring out the side of it",
+     [("tank 7", "blast_or_spill_damage")]),
+    ("oil_refinery", "we've had the front windows blown in at the Pilot Boat and there's a lad cut quite badly in the bar",
+     [("pilot boat inn", "blast_or_spill_damage"), ("pilot boat inn", "person_in_need")]),
+    ("oil_refinery", "Etp's had a blast, and the water it drains into is going black with oil.",
+     [("effluent treatment plant", "blast_or_spill_damage"), ("hale estuary", "blast_or_spill_damage")]),
+    # a head noun that is one landmark's name word, related to the anchor, names the place meant
+    ("oil_refinery", "the stack that takes the vent off the unit the CDU sends its residue to is leaning badly",
+     [("flare stack", "blast_or_spill_damage")]),
+    # "the stretch by" / "down by" a place says where along the place claimed
+    ("oil_refinery", "Sea wall's cracked along the stretch by the pump house.", [("sea wall", "blast_or_spill_damage")]),
+    ("fish_hatchery", "the shore track's under water down by the factory", [("shore road", "storm_wrecked")]),
+    # a flood tide is no flood
+    ("oil_refinery", "we came up on the flood tide, so we're coming in past the end of the jetty now", []),
+    # "<place> control" is the radio station called
+    ("fish_hatchery", "Carran control, this is Fire One. We have a genny fire in the power house. Over.",
+     [("generator house", "blaze_and_fumes")]),
+    ("fish_hatchery", "Lifeboat to Carran control. Cold casualty on the outer pens walkway.",
+     [("outer cage group", "crew_in_peril")]),
+    # a known word with an ending is no slip of a name ("heaters" / "header")
+    ("fish_hatchery", "the bothy's our warm room now, we've got the heaters going", [("old bothy", "shelter_point")]),
+    # "in the middle of" after a cue says where, when the KB's "stands in the middle of" leads nowhere from it
+    ("fish_hatchery", "person in the w— in the water, mid-loch, er, right out in the middle of the sea loch",
+     [("loch carran", "crew_in_peril")]),
+    # vocabulary: adrift, broken every mooring, torn up, planks all up, wedged across it, power and heating
+    ("fish_hatchery", "the barge that feeds the outer pens is adrift, she's broken every mooring she had",
+     [("feed barge", "storm_wrecked")]),
+    ("fish_hatchery", "The pier's deck planking has been torn up at the seaward end", [("workboat pier", "storm_wrecked")]),
+    ("fish_hatchery", "the slip's got a boat wedged across it", [("hatchery slipway", "storm_wrecked")]),
+    ("fish_hatchery", "The building at the top of the brae has power and heating, anybody can come in.",
+     [("township hall", "shelter_point")]),
+    # "for anyone who needs to shelter" offers shelter, no plan
+    ("ship_breaking_yard", "the fishing village is safe, we've opened up the net sheds for anyone who needs to shelter.",
+     [("fisher hamlet", "clear_to_gather")]),
+    # "not X it's Y" said without a comma
+    ("ship_breaking_yard", "the fire's not at the kestrel it's at the marisol", [("marisol hulk", "burning_or_leaking")]),
+    # a generic head ("shed") with a description two words of one place's; "oxygen and acetylene bottles" one phrase
+    ("ship_breaking_yard", "the heap piled up against the shed where they keep the oxygen and acetylene bottles has "
+                           "caught", [("mixed scrap heap", "burning_or_leaking")]),
+    # "shares our fence": the speaker's place the anchor
+    ("ship_breaking_yard", "I'm calling from the fishing village — the shed that shares our fence has gone up",
+     [("asbestos shed", "burning_or_leaking")]),
+    # "beached" is no slip of "breached"; "has tipped over"; "whatever was standing underneath it"
+    ("ship_breaking_yard", "fire at the plot the marisol is beached below.", [("cutting plot seven", "burning_or_leaking")]),
+    ("ship_breaking_yard", "the tank the pump house draws its water from has tipped over, and whatever was standing "
+                           "underneath it is on fire.",
+     [("fire water tank", "fallen_or_shifting"), ("gas bottle store", "burning_or_leaking")]),
+    ("ship_breaking_yard", "the steel heaps have slid", [("plate stacks", "fallen_or_shifting")]),
+])
+def test_dev84_phenomena(kb_analyzers, kb, text, expected):
+    assert claims(kb_analyzers[kb], text) == expected
+
+
+@pytest.mark.parametrize("kb, text, expected", [
+    # "is broken", "is snapped" said of a place; a span lost
+    ("desalination_plant", "the brine pipe is broken and the jetty has lost its last two spans",
+     [("brine outfall", "surge_and_wreckage"), ("service jetty", "surge_and_wreckage")]),
+    ("desalination_plant", "the line it discharges through is snapped, the one the brine pit empties into",
+     [("brine outfall", "surge_and_wreckage")]),
+    # a substance before a noun says what a thing holds, no danger ("the diesel day tank"); the roof leaking is water
+    ("desalination_plant", "the diesel day tank's shifted on its mounts in the genset house", []),
+    ("desalination_plant", "the mess roof is leaking too bad", [("staff mess", "surge_and_wreckage")]),
+    ("desalination_plant", "The chem shed's taken the surge, drums floating everywhere",
+     [("chemical store", "surge_and_wreckage")]),
+    # a name that opens its sentence before "itself"
+    ("desalination_plant", "Water's coming into the genset house. Workshop itself is dry and sound.",
+     [("maintenance workshop", "safe_haven"), ("standby generator house", "surge_and_wreckage")]),
+    # "Waves coming straight over" opens the sentence as its subject, no relation ``keeps_the_waves_off``
+    ("desalination_plant", "Waves coming straight over the wall that keeps the sea off the screens.",
+     [("sea wall", "surge_and_wreckage")]),
+    # a head that names the anchor's own place ("the tanks") is no description of it; the relation says which
+    ("desalination_plant", "at the tank the big whites pump up to, the driver's trapped",
+     [("hilltop reservoir", "person_at_risk")]),
+    # a body part after an injury; a storey "of" another place; the head repeated in a fuller name is a restart
+    ("sea_fort", "On the barbette a volunteer is bleeding heavily from the head.", [("barbette platform", "souls_at_risk")]),
+    ("sea_fort", "smoke showing from the top floor windows of the barracks", [("barracks", "smoke_and_sparks")]),
+    ("sea_fort", "i'm over the causeway and uh the hut the toll hut's roof is like half off and there's someone inside",
+     [("causeway hut", "souls_at_risk"), ("causeway hut", "storm_breach")]),
+    # ... but not a person's arm "looks broken"; a substance before a preposition is the danger ("pumping diesel onto")
+    ("knowledge_base", "There's a lad sat on the step of the post office holding his arm, looks broken.",
+     [("post office", "victim")]),
+    ("tidal_isle", "The fuel tank on the fish pier is pumping diesel onto the stones.", [("north pier", "ember_and_arc")]),
+    # "Fire 3 up on the wall walk": a call sign and where it is
+    ("sea_fort", "Fire 3 up on the wall walk. The building that backs onto it, smoke showing from the vestry window.",
+     [("chapel", "smoke_and_sparks")]),
+])
+def test_dev85_phenomena(kb_analyzers, kb, text, expected):
+    assert claims(kb_analyzers[kb], text) == expected

@@ -634,8 +634,11 @@ class ReportAnalyzer:
                 or t > 0 and norms[t - 1] == "and" and t + 1 < len(norms) and norms[t + 1] in ("are", "were")
             # ("The chapel and vestry are under a foot of water": a subject, not ``shares_a_vestry_wall_with``)
             if opening and (word.lower().endswith(("'s", "’s")) or t + 1 < len(norms)
-                            and norms[t + 1] in ("is", "are", "was", "were", "has", "s")):
+                            and (norms[t + 1] in ("is", "are", "was", "were", "has", "s")
+                                 or toks.tokens[t + 1].text.lower().endswith("ing")
+                                 and not word.lower().endswith(("ing", "ed")))):
                 continue  # "Water's pouring through ...", "Water is up over ...": a subject, not "lifts_water_out_of"
+                # ("Waves coming straight over the wall": not ``keeps_the_waves_off``)
             if t > 0 and word[:1].isupper() and not word.isupper() and toks.tokens[t - 1].text[:1].isupper() \
                     and not toks.sentence_start[t]:
                 continue  # "Red Watch to TCC": a word of a name, not a relation's verb
@@ -774,13 +777,19 @@ class ReportAnalyzer:
                 # ("a backed-up goit", "water over the hatches": a glossary term that ends in a place's name names it)
                 continue  # "first aid post" is a cue, "across the square from" a relation
             if b - a == 1 and norms[a] in lx.BODY_PARTS and a >= 2 and norms[a - 1] == "the" \
-                    and norms[a - 2] in ("to", "on") and any(norms[m] in lx.INJURY_WORDS for m in range(max(0, a - 5), a - 2)):
+                    and norms[a - 2] in ("to", "on", "from") and any(norms[m] in lx.INJURY_WORDS | {"bleeding"}
+                                                                    for m in range(max(0, a - 5), a - 2)):
                 continue  # "a casualty with burns to the face": a body part, not "the face" of a quarry
             if b - a == 1 and norms[a] in lx.PHONETIC_LETTERS and (
                     b < len(norms) and is_number(norms[b]) and not toks.clause_start[b]
                     or a > 0 and norms[a - 1] == "to" and not toks.clause_start[a]
                     and any(toks.sentence_start[j] for j in range(max(0, a - 3), a))):
                 continue  # "Control to Alpha one", "Oscar Two here": a call sign, not the spoken letter of a place
+            if norms[b:b + 1] == ("control",) and (b + 1 == len(norms) or toks.clause_start[b + 1]) \
+                    and (a == 0 or toks.sentence_start[a] or norms[a - 1] in ("to", "from")
+                         or norms[max(0, a - 2):a] == ("this", "is")):
+                continue  # "Carran control, this is Fire One", "Lifeboat to Carran control.": the radio station
+                # named after the place is called, nothing is said of the place
             prev = norms[a - 1] if a > 0 else ""
             k = a - 1
             while k > 0 and a - k <= 2 and (norms[k] in lx.NAME_ADJECTIVES or norms[k] in lx.HESITATIONS) \
@@ -803,6 +812,8 @@ class ReportAnalyzer:
                 and (b + 1 == len(norms) or toks.sentence_start[b + 1] or ":" in toks.gaps[b + 1])
             # ("TV compound here. Our generator took a lightning strike": who calls, from where)
             # ("Little railway driver here: my train's stalled": who calls, by the place they work)
+            if norms[a:b] in self._derived_keys and norms[b - 1] in lx.STOREY_WORDS and "of" in norms[b:b + 2]:
+                continue  # "smoke from the top floor windows of the barracks": a storey of that place, no "upper gun floor"
             if norms[a:b] in self._derived_keys and prev in ("a", "an", "another"):
                 continue  # "he fell off the back of a hire boat": any boat, not the hire base's "kingfisher boats"
             if norms[a:b] in self._needs_article and b - a == 1 and norms[b:b + 1] == ("of",) and b + 2 < len(norms) \
@@ -823,6 +834,7 @@ class ReportAnalyzer:
                     and not (b - a >= 2 and (a == 0 or toks.sentence_start[a])
                              and toks.tokens[b - 1].text.lower().replace("’", "'").endswith("'s")) \
                     and not (b - a >= 2 and self._bare_pair(norms, a, b)) \
+                    and not ((a == 0 or toks.sentence_start[a]) and norms[b:b + 1] == ("itself",)) \
                     and not (toks.clause_start[a] and toks.tokens[b - 1].text.lower().replace("’", "'").endswith("'s")
                              and any(norms[i - 1] == "the" and norms[i:i + b - a] == norms[a:b] for i in range(1, a))):
                 # ("we're at the kirk, ..., kirk's our rest centre now": said again, without its article)
@@ -1724,6 +1736,10 @@ class ReportAnalyzer:
                 continue  # "the lodge gate": a longer noun phrase ("the barn's out now" is the barn)
             if i + 1 < len(norms) and toks.gaps[i + 1] == "-":
                 continue  # "the walk-outs": a word of its own, hyphenated
+            if w in lx.BODY_PARTS and i >= 2 and norms[i - 2] in ("to", "on", "from") \
+                    and any(norms[m] in lx.INJURY_WORDS | {"bleeding", "hurt", "hit", "injured"}
+                            for m in range(max(0, i - 6), i - 2)):
+                continue  # "bleeding heavily from the head": the casualty's, no "pier head"
             out.append(self._mention(toks, i, i + 1, self._heads[w]))
         # "the car park" for "valley car park" / "the big car park": a two-word tail only one landmark's names end in
         if not hasattr(self, "_pair_heads"):
@@ -2378,6 +2394,8 @@ class ReportAnalyzer:
             if past is not None:
                 fixed[t.i] = replace(t, norm=past)  # texted: "my dad is trapd", "the stairs hav collapsd"
                 continue
+            if _derived_word(w, known, ("ed",) + _DERIVING_ENDINGS):
+                continue  # "the marisol is beached below": a known word with an ending, no slip of "breached"
             hits = [r for r in self._respellings if r[0] == w[0] and abs(len(r) - len(w)) <= 1 and _one_edit(w, r)
                     and not w.startswith(r) and not r.startswith(w)]  # ("fenced" is no slip of "fence")
             if len(hits) == 1:
@@ -2393,8 +2411,8 @@ class ReportAnalyzer:
         if self.embedder is None or len(word) < self.TYPO_MIN_CHARS or not word.isalpha():
             return None
         known = self.embedder.vocabulary()
-        if all(w in known for w in words):
-            return None
+        if all(w in known or _derived_word(w, known) for w in words):
+            return None  # (nor a known word with an ending: "the heaters going" is no slip of "the header")
         if not hasattr(self, "_typo_spellings"):
             self._typo_spellings = {key: name for key, name in self._name_keys()
                                     if len(key) >= self.TYPO_MIN_CHARS and key.isalpha()}
@@ -3279,6 +3297,9 @@ class ReportAnalyzer:
                     break
             if head is None:
                 continue
+            if norms[head] == norms[anchor.end_tok - 1] and all(norms[i] in lx.DETERMINERS | lx.FILLERS
+                                                                for i in range(head + 1, anchor.start_tok)):
+                continue  # "the hut the toll hut's roof is half off": the speaker starts again on a fuller name
             if norms[head] in lx.PART_NOUNS | lx.LOCATIVE_PARTS | {"back", "middle", "edge"} and norms[head + 1:head + 2] == ("of",) \
                     and not any(p.start_tok >= head + 2 and all(w in lx.DETERMINERS | _PLAIN_ADJECTIVES
                                                                 for w in norms[head + 2:p.start_tok]) for p in ex.places):
@@ -3576,6 +3597,13 @@ class ReportAnalyzer:
         implicit = norms[a:b] in lx.IMPLICIT_ANCHOR or "its" in norms[a:b] and (
             _shares_a_noun_with(phrase) or norms[b - 1] != "of" and _noun_of(phrase) is not None
             and phrase.split()[0] in _STATE_VERBS)
+        if anchor is None and "our" in norms[a:b] and _shares_a_noun_with(phrase) and not inverse_pass:
+            here = [p for p in ex.places if p.end_tok <= a and p.status != "retracted" and p.via is None and (
+                self._speaker_here(norms, p) or norms[max(0, p.start_tok - 3):p.start_tok][:2] in (
+                    ("calling", "from"), ("ringing", "from"), ("phoning", "from")))]
+            if len({p.landmark for p in here}) == 1:
+                # "I'm calling from the fishing village - the shed that shares our fence": the speaker's place
+                anchor, anchor_end, pronoun = here[-1], b, True
         # ("the dock that's dug into its yard": whose yard, the place said before)
         # ("the hall that shares its vestry wall": whose wall, the place said before)
         if anchor is None and implicit and (b >= len(norms) or ex.tokens.clause_start[b]
@@ -3616,6 +3644,9 @@ class ReportAnalyzer:
             head_end = a - 1
         elif a >= 2 and norms[a - 2] in lx.WHATEVER and norms[a - 1] in ("is", "was"):
             head_end = a - 1  # "across from whatever is behind the warehouse": "whatever" heads it
+        elif a >= 3 and norms[a - 3] in lx.WHATEVER and norms[a - 2] in ("is", "was", "s") \
+                and norms[a - 1] in ("standing", "sitting", "lying", "stood", "sat"):
+            head_end = a - 2  # "whatever was standing underneath it": the posture says no more than "is"
         elif a >= 3 and norms[a - 3] in lx.WHATEVER and norms[a - 2] == "it" and norms[a - 1] in ("is", "s", "was"):
             head_end = a - 2  # "the dock or whatever it is that's moored off the harbour wall"
         elif a >= 3 and norms[a - 1] in ("that", "which") and (norms[a - 2] in lx.GENERIC_HEADS or (
@@ -3675,7 +3706,8 @@ class ReportAnalyzer:
                                             in lx.ARTICLES and norms[head_start - 1] in lx.DETERMINERS | lx.NAME_ADJECTIVES)
         # ("the old workings overlooking the holiday park": an adjective between)
         if not generic and words and len(words) <= 3 and after_article \
-                and (norms[a:b] not in lx.AMBIGUOUS_HEADLESS or (words[-1],) in self._shared_tails()):
+                and (norms[a:b] not in lx.AMBIGUOUS_HEADLESS or (words[-1],) in self._shared_tails()
+                     or words[-1] in _SEGMENT_HEADS):  # ("cracked along the stretch by the pump house")
             # ("the platform underneath us": a word several names end in heads a description even before
             # a bare "underneath")
             # "the stretch seaward of the fish market": any plain noun after an article heads a description
@@ -3740,6 +3772,25 @@ class ReportAnalyzer:
                                                                    reason=f"reference point: {via}")
                     ex.places.append(self._mention(toks, hs - 1, b, target, via=via))
                     place_tokens.update(range(hs - 1, b))
+                    ex.relation_tokens.update(range(a, b))
+                    return
+            if head_p is not None and head_p.landmark == anchor_p.landmark and head_p.via is None \
+                    and head_p.end_tok - head_p.start_tok == 1 and anchor_p.via is None \
+                    and not set(norms[head_p.start_tok:head_p.end_tok]) & set(norms[anchor_p.start_tok:anchor_p.end_tok]) \
+                    and all(toks.gaps[k].strip() == "" for k in range(head_p.end_tok, anchor_p.start_tok + 1)):
+                # (not a restart: "the barn, the hay barn the ...", a name said again)
+                # "the tank the big whites pump up to", where "the tanks" is also a name of the big whites: a place is
+                # not described by its own relation to itself; the head word names the other end
+                target, via = self._follow(anchor_p.landmark, phrase, toks.tokens[hs].text, inverse=not flipped)
+                if target is not None and target != anchor_p.landmark \
+                        and norms[head_p.start_tok] in self._description_words().get(target, ()):
+                    # (the head word names the other end too: "the top tank" is the reservoir's)
+                    ex.places.remove(head_p)
+                    ex.places[ex.places.index(anchor_p)] = replace(anchor_p, status="reference",
+                                                                   reason=f"reference point: {via}")
+                    start = hs - 1 if hs > 0 and norms[hs - 1] in lx.DETERMINERS else hs
+                    ex.places.append(self._mention(toks, start, b, target, via=via))
+                    place_tokens.update(range(start, b))
                     ex.relation_tokens.update(range(a, b))
                     return
             if named is True:
@@ -3827,6 +3878,19 @@ class ReportAnalyzer:
             bare = norms[a + 1:b] if b - a >= 2 and norms[a] in lx.RELATION_ADVERBS and not appositive else norms[a:b]
             # ("a runner down right under the finish arch", "it's right under the snake bridge now"; not "flare-up on
             # the black hill, right above the frog pool": a phrase of its own that says where the place before it is)
+            if bare in (("by",), ("near",)) and anchor.status == "active" and anchor.via is None:
+                s1 = max((t for t in range(a + 1) if toks.clause_start[t]), default=0)
+                cue_end = max((h[0] for k in range(s1, a) if (h := self._cues.match_at(norms, k)) is not None
+                               and h[0] <= a), default=None)
+                if cue_end is not None and all(w in ("down", "up", "along", "out", "over", "just", "right", "round")
+                                               for w in norms[cue_end:a]) \
+                        and any(p.status == "active" and p.via is None and s1 <= p.start_tok and p.end_tok < cue_end
+                                for p in ex.places):
+                    # "the shore track's under water down by the factory": where along the place the clause claims
+                    # something of; the place after "by" only says where
+                    ex.places[ex.places.index(anchor)] = replace(anchor, status="reference",
+                                                                 reason="reference point: where along the place claimed")
+                    return
             if bare in lx.AMBIGUOUS_HEADLESS or (words and not self._is_cue_end(norms, head_end) and not participle
                                                        and not set(words) <= lx.HEADLESS_OK
                                                        and words[-1] not in lx.LAY_PERSONS | {"folk", "folks"}):
@@ -3835,6 +3899,8 @@ class ReportAnalyzer:
                 return
             head_start, head_text = a, ""
         target, via = self._follow(anchor.landmark, phrase, head_text, inverse=flipped)
+        if target is not None and generic and words:
+            target, via = self._head_named_neighbour(anchor.landmark, words[-1], target, via)
         if target is None and pronoun and generic and any(
                 w.isalpha() and w not in lx.PREPOSITIONS and w not in lx.RELATION_ADVERBS and w not in lx.SPATIAL_WORDS
                 for w in norms[a:b]):
@@ -3861,6 +3927,11 @@ class ReportAnalyzer:
                     return  # "a vapour cloud sitting over the reactor building": where the danger is, not a description
                 if norms[a:a + 2] == ("at", "the") and b > a + 2 and norms[a + 2] in lx.LOCATIVE_PARTS:
                     return  # "a man lying at the foot of the water tower": where he lies, when nothing lies below it
+                if norms[a:a + 2] == ("in", "the") and norms[a + 2:a + 4] in (("middle", "of"), ("centre", "of")) \
+                        and any((h := self._cues.match_at(norms, k)) is not None and h[1][1] != "neutral"
+                                for k in range(max((t for t in range(a + 1) if toks.sentence_start[t]), default=0), a)):
+                    return  # "person in the water, mid-loch, right out in the middle of the sea loch": where, when the
+                    # KB's "stands in the middle of" leads nowhere from it
                 if norms[a:b] in (("inside",), ("inside", "of"), ("within",)) and generic \
                         or norms[a:b] in (("just", "inside"), ("right", "inside"), ("well", "inside")) \
                         or norms[a:b] == ("inside",) and a > 0 and norms[a - 1] in ("just", "from", "right", "well"):
@@ -3965,6 +4036,21 @@ class ReportAnalyzer:
             return None, None
         return target, f"{rel.subject} {rel.relation} {rel.object} (by meaning {best:.2f})"
 
+    def _head_named_neighbour(self, anchor: str, head: str, target: str, via: str | None) -> tuple[str, str | None]:
+        """"the stack that takes the vent off the cracker", where the words read as ``sulphur recovery unit takes the
+        sour gas off cat cracker``: a head noun that is a word of one landmark's names only ("flare stack"), and not a
+        word of the place the relation reached (its names or description), names the place meant, when that landmark
+        stands in a KB relation with the anchor. Generic heads ("shed", "building") name no one place."""
+        owners = self._name_word_owners.get(head)
+        if head in lx.GENERIC_HEADS or not owners or len(owners) != 1 or target in owners:
+            return target, via
+        other = next(iter(owners))
+        if other == anchor or (anchor, other) not in self._related_pairs \
+                or head in self._description_words().get(target, ()):
+            return target, via
+        rel = next(r for r in self.kb.relations if {r.subject, r.object} == {anchor, other})
+        return other, f"{rel.subject} {rel.relation} {rel.object} (named by its head, '{head}')"
+
     def _description_words(self) -> dict[str, set[str]]:
         """Per landmark, the content words of its description, name and aliases."""
         if getattr(self, "_desc_cache", None) is None:
@@ -3982,9 +4068,12 @@ class ReportAnalyzer:
         norms = toks.norms(0, len(toks))
         place_tokens = {i for p in ex.places for i in range(p.start_tok, p.end_tok)}
         marker_tokens = {i for a, b, _ in ex.markers for i in range(a, b)}
-        relation_starts = {a for a, _, _ in self._relations.find_all(norms, place_tokens)}
+        relation_spans = [(a, b) for a, b, _ in self._relations.find_all(norms, place_tokens)]
+        relation_starts = {a for a, _ in relation_spans}
+        # ("the ship the hydra pad lifts its blocks off": the relation's own noun heads no description)
+        inside_relation = {i for a, b in relation_spans if b - a >= 3 for i in range(a + 1, b)}
         cue_tokens = self._claim_cue_tokens(norms, place_tokens)
-        stop = place_tokens | marker_tokens | cue_tokens
+        stop = place_tokens | marker_tokens | cue_tokens | inside_relation
         desc = self._description_words()
         closed = lx.PREPOSITIONS | lx.COPULAS | lx.FILLERS | lx.PRONOUNS | lx.COORDINATORS | lx.NEGATORS
         i = 0
@@ -4007,7 +4096,10 @@ class ReportAnalyzer:
                 e += 1
                 while e < len(norms) and e - i < 9 and not toks.clause_start[e] and e not in stop \
                         and e not in relation_starts and (norms[e] not in lx.COPULAS - {"s"} or norms[e - 1] == "with") \
-                        and norms[e] not in lx.COORDINATORS and not (  # ("the barn with all the hay in")
+                        and (norms[e] not in lx.COORDINATORS or norms[e] == "and" and e + 1 < len(norms)
+                             and norms[e + 1] not in lx.DETERMINERS | closed and e + 1 not in stop
+                             and not toks.clause_start[e + 1]) \
+                        and not (  # ("the barn with all the hay in"; "where they keep the oxygen and acetylene bottles")
                             e + 1 < len(norms) and norms[e + 1] in lx.PREPOSITIONS and norms[e - 1] not in ("that", "which")
                             and toks.tokens[e].text.lower().endswith("s") and self._keyword_relation(norms[e]) is not None):
                     e += 1  # (not into a relation's verb: "the canal that the building with the big brick chimney pumps
@@ -4015,10 +4107,15 @@ class ReportAnalyzer:
             words = {w for w in norms[s_:e] if w not in lx.DESCRIPTION_STOPWORDS and w not in closed}
             scores = sorted(((len(words & ws), name) for name, ws in desc.items()), reverse=True)
             head_of = {name for name, ws in desc.items() if norms[i] in ws} if norms[i] not in lx.DESCRIPTION_STOPWORDS else set()
-            if scores and head_of and scores[0][1] not in head_of:
+            if scores and head_of and scores[0][1] not in head_of and not (
+                    norms[i] in lx.UNNAMING_HEADS | _SHED_HEADS and scores[0][0] >= 2
+                    and all(n < scores[0][0] for n, name in scores if name in head_of)):
+                # (but a generic head says less than two words another place's description has and no shed's has:
+                # "the shed where they keep the oxygen and acetylene bottles")
                 i += 1  # "the pub that watches over whatever lets the water down": a pub, whatever else it shares
                 continue
-            if scores and norms[i] not in lx.UNNAMING_HEADS | lx.DESCRIPTION_STOPWORDS and norms[i] not in desc[scores[0][1]]:
+            if scores and norms[i] not in lx.UNNAMING_HEADS | _SHED_HEADS | lx.DESCRIPTION_STOPWORDS \
+                    and norms[i] not in desc[scores[0][1]]:
                 i += 1  # "the pub where the drainage board lads ...": the depot's words, but no pub
                 continue
             if scores and scores[0][0] >= 2 and len(scores) > 1 and scores[0][0] == scores[1][0] and e > i + 2:
@@ -6105,6 +6202,12 @@ class ReportAnalyzer:
                 cues.append(CueMention(a, o + 3, start, end, toks.text[start:end], self._person_category, source,
                                        reason="what harmed a person"))
                 continue  # "a woman with smoke in her lungs": the person's harm, no danger there
+            if b - a == 1 and norms[a] in _SUBSTANCE_MODIFIERS and b < len(norms) and not toks.clause_start[b] \
+                    and norms[b].isalpha() and norms[b] not in lx.FUNCTION_WORDS | _SUBSTANCE_EVENTS | lx.RELATION_ENDINGS \
+                    and norms[b] not in ("onto", "into", "out", "off", "up", "down", "away", "across", "along", "round") \
+                    and not norms[b].endswith(("ing", "ed")) and self._cues.match_at(norms, b) is None \
+                    and toks.gaps[b].strip() == "":
+                continue  # "the diesel day tank's shifted on its mounts", "the petrol station": what a thing holds
             if norms[b:b + 1] == ("out",) and any(norms[m] in ("put", "putting", "got", "getting") for m in range(max(0, a - 3), a)) \
                     and self.kb.category_by_name[cat].role == Role.UNDESIRABLE:
                 continue  # "they've put the fire out": over
@@ -6189,8 +6292,9 @@ class ReportAnalyzer:
                          or toks.tokens[b + 1].text.lower().replace("’", "'") in ("we're", "we've", "i'm", "we")
                          or (a == 0 or toks.sentence_start[a]) and norms[b + 1] in (
                              "moving", "heading", "going", "proceeding", "arriving", "attending", "returning", "leaving",
-                             "approaching", "now", "en", "mobile", "mobilising", "mobilizing")):
-                # ("Fire Two moving from the lodge up to the weighbridge")
+                             "approaching", "now", "en", "mobile", "mobilising", "mobilizing",
+                             "up", "down", "at", "on", "in", "out", "over", "inside", "outside", "by")):
+                # ("Fire Two moving from the lodge up to the weighbridge", "Fire 3 up on the wall walk.")
                 continue  # "Control, Hazmat One, we're ...", "uh yeah control er fire two we're ...": a call sign
             if b == a + 1 and a > 0 and norms[a - 1] in lx.ARTICLES and norms[a] in lx.NEGATABLE_STATES \
                     and toks.tokens[a].text.lower() == norms[a] + "s":
@@ -7355,8 +7459,13 @@ class ReportAnalyzer:
             if not (norms[i - 1] in ("is", "s", "are", "was", "now", "still", "as", "looks", "look", "seems", "seem", "be", "completely",
                                      "structurally", "totally", "all", "thats", "its", "theyre", "whos", "both",
                                      "confirmed", "declared", "reported")  # ("the market hall is confirmed sound")
+                    or toks.tokens[i - 1].text.lower().replace("’", "'") in ("that's", "which's")  # ("tank seven that's split")
                     or i in ends and (i + 1 >= len(norms) or toks.clause_start[i + 1] or after in lx.COORDINATORS)):
                 continue  # ("in the HGV park, green liquid running": an adjective of what follows)
+            if w in ("broken", "snapped") and (norms[i - 1] not in ("is", "s", "are", "was", "were")
+                                               or any(norms[k] in lx.BODY_PARTS | _PERSON_WORDS | lx.PRONOUNS
+                                                      for k in range(max(0, i - 5), i))):
+                continue  # "the brine pipe is broken", not "holding his arm, looks broken" (a person's)
             if w == "under" and not (i + 1 >= len(norms) or toks.clause_start[i + 1]) or w == "under" and i not in ends:
                 continue  # "the towpath's under.": flooded; not "the fire is under control"
             cat = self._category_for_role(role, "flooded, under water" if w == "under" else w)
@@ -7900,7 +8009,10 @@ class ReportAnalyzer:
             j = cue.start_tok - 1
             while j >= 0 and norms[j] in lx.FILLERS | {"be", "been", "all"}:
                 j -= 1
-            if j >= 0 and (norms[j] in lx.INTENT_WORDS or norms[j] == "to" and j > 0 and norms[j - 1] in lx.INTENT_TO):
+            offered = j >= 3 and norms[j] == "to" and norms[j - 1] in ("need", "needs") and norms[j - 2] in ("who", "that") \
+                and "for" in norms[max(0, j - 5):j - 2]  # ("opened up the net sheds for anyone who needs to shelter")
+            if j >= 0 and not offered and (norms[j] in lx.INTENT_WORDS
+                                           or norms[j] == "to" and j > 0 and norms[j - 1] in lx.INTENT_TO):
                 # "crews will clear shortly": a plan, not yet a fact (and not "unsafe" either)
                 return replace(cue, polarity="denied", reason=f"a plan ('{norms[j]}'), not a report")
         if negated_by in ("clear of", "free of") and self.kb.category_by_name[cue.category].role == Role.DESIRABLE:
@@ -9513,6 +9625,9 @@ def _anchored_at(q: PlaceMention, landmark: str) -> bool:
 
 _MADE_SAFE = frozenset({"negated by 'isolated'", "negated by 'been isolated'", "negated by 'made safe'",
                         "negated by 'been made safe'"})  # (a supply made safe, not the place's danger over)
+# Nouns for a stretch of something long (a wall, a road, a bank): "the stretch by the pump house" says where along
+# the place already named, so the place after "by" is a reference point, not a claim.
+_SEGMENT_HEADS = frozenset({"stretch", "section", "length", "portion"})
 _HEAD_ADJECTIVES = frozenset({"open", "deep", "far", "near", "next", "other"})
 # (with NAME_ADJECTIVES: "the open water the slip drops into", "the next stage the primary tanks send their flow to")
 _SPATIAL_ENDINGS = frozenset({"beneath", "under", "underneath", "below", "above", "behind", "beside", "into",
@@ -9671,6 +9786,8 @@ def _call_sign_at(toks: Tokens, norms: tuple[str, ...], p: PlaceMention) -> bool
     while s0 > 0 and not toks.sentence_start[s0]:
         s0 -= 1
     before = [i for i in range(s0, p.start_tok) if norms[i] not in lx.FILLERS and norms[i] not in lx.ARTICLES]
+    if len(before) == 4 and norms[before[2]] in ("up", "down", "out", "over", "round", "now"):
+        before.pop(2)  # "Fire 3 up on the wall walk."
     if len(before) != 3 or norms[before[2]] not in ("at", "on", "by", "in") \
             or not toks.tokens[before[0]].text[:1].isupper() \
             or not (is_number(norms[before[1]]) or norms[before[1]] in lx.NUMBER_WORDS or norms[before[1]] == "one"):
@@ -9818,6 +9935,23 @@ _ANIMAL_STATE_KEYS = frozenset(norm_phrase(s) for s in lx.ANIMAL_STATES)
 _COMPASS = frozenset({"north", "south", "east", "west", "northeast", "northwest", "southeast", "southwest"})
 # Closed-class words that never head a description.
 _NOT_HEADS = lx.PREPOSITIONS | lx.COPULAS | lx.FILLERS | lx.PRONOUNS | lx.INVERSE_VERBS | lx.DETERMINERS
+
+
+# Plain outbuilding nouns a description may head whatever the place is called ("the shed where they keep the oxygen
+# and acetylene bottles" for a "mesh-walled store")
+_SHED_HEADS = frozenset({"shed", "hut", "cabin"})
+# Substances that, said before a noun, only say what a thing holds or runs on ("the diesel day tank")
+_SUBSTANCE_MODIFIERS = frozenset({"diesel", "petrol", "fuel", "oil", "chlorine", "ammonia", "kerosene", "avgas"})
+# ... and the nouns after them that are the danger itself ("chlorine release", "diesel slick")
+_SUBSTANCE_EVENTS = frozenset({"release", "leak", "leaks", "spill", "spills", "cloud", "smell", "fume", "fumes", "vapour",
+                               "escape", "slick", "sheen", "everywhere", "gas", "film", "spray", "mist", "plume"})
+_DERIVING_ENDINGS = ("er", "ers", "ing", "ings")
+
+
+def _derived_word(word: str, known: frozenset[str], endings: tuple[str, ...] = _DERIVING_ENDINGS) -> bool:
+    """An English word the vocabulary holds only by its stem and a common ending: "heater" ("heat"), "planking",
+    "beached"."""
+    return any(word.endswith(e) and len(word) - len(e) >= 4 and word[:-len(e)] in known for e in endings)
 
 
 def _names_what_came(norms: tuple[str, ...], p: PlaceMention) -> bool:
@@ -10157,8 +10291,9 @@ def _with_shared_its(phrase: str, out: list[tuple[str, bool]]) -> None:
     words = phrase.replace("_", " ").split()
     noun = " ".join(words[2:-1])
     for verb in ("shares", "share", "sharing"):
-        out.append((f"{verb} its {noun}", False))
-        out.append((f"that {verb} its {noun}", False))
+        for whose in ("its", "our"):  # ("the shed that shares our fence": the speaker's place)
+            out.append((f"{verb} {whose} {noun}", False))
+            out.append((f"that {verb} {whose} {noun}", False))
 
 
 def _participle(stem: str) -> str:

@@ -127,6 +127,20 @@ def _stutter_of(fragment: str, word: str) -> bool:
     return f.isalpha() and len(f) <= 3 and len(f) < len(w) and w.startswith(f)
 
 
+_CONTRAST_NEXT = frozenset({"at", "in", "on", "the", "by", "inside", "behind", "up", "down", "over", "actually",
+                            "definitely", "really"})
+
+
+def _unpunctuated_contrast(toks: list[Token], i: int) -> bool:
+    """"it's" (or "its") that opens the second half of "not X it's Y" with no comma between: a "not" in the four words
+    before, a word of the denied place just before, a place word (an article or a preposition) after."""
+    if i < 3 or i + 1 >= len(toks) or toks[i].text.lower().replace("\u2019", "'") not in ("it's", "its"):
+        return False
+    before = [t.text.lower() for t in toks[max(0, i - 5):i]]
+    return "not" in before and toks[i - 1].norm not in _CONTRAST_NEXT | {"not", "a", "an", "of", "to"} \
+        and toks[i + 1].norm in _CONTRAST_NEXT
+
+
 def tokenize(text: str) -> Tokens:
     toks: list[Token] = []
     gaps: list[str] = []
@@ -154,7 +168,10 @@ def tokenize(text: str) -> Tokens:
         # a hyphen inside a word ("no-go", "x-ray", "cut-off") is no pause; a stutter's ("th-th-the") is none either
         hyphenated = gap == "-" and i > 0 and len(toks[i].text) > 1 \
             and not toks[i].text.lower().startswith(toks[i - 1].text.lower()[:1])
-        clause.append(is_sent or (not hyphenated and (bool(_CLAUSE.search(gap.strip())) or bool(_CLAUSE.search(g)))))
+        starts = is_sent or (not hyphenated and (bool(_CLAUSE.search(gap.strip())) or bool(_CLAUSE.search(g))))
+        if not starts and gap.strip() == "" and _unpunctuated_contrast(toks, i):
+            starts = True  # "the fire's not at the kestrel it's at the marisol": the place meant, said without a pause
+        clause.append(starts)
     sentence_of = tuple(itertools.accumulate(int(x) for x in sent)) if sent else ()
     return Tokens(text, tuple(toks), tuple(gaps), tuple(sent), tuple(clause), tuple(n - 1 for n in sentence_of))
 
