@@ -3599,8 +3599,8 @@ class ReportAnalyzer:
             and phrase.split()[0] in _STATE_VERBS)
         if anchor is None and "our" in norms[a:b] and _shares_a_noun_with(phrase) and not inverse_pass:
             here = [p for p in ex.places if p.end_tok <= a and p.status != "retracted" and p.via is None and (
-                self._speaker_here(norms, p) or norms[max(0, p.start_tok - 3):p.start_tok][:2] in (
-                    ("calling", "from"), ("ringing", "from"), ("phoning", "from")))]
+                self._speaker_here(norms, p) or any(norms[k:k + 2] in _CALLING_FROM
+                                                    for k in range(max(0, p.start_tok - 3), p.start_tok - 1)))]
             if len({p.landmark for p in here}) == 1:
                 # "I'm calling from the fishing village - the shed that shares our fence": the speaker's place
                 anchor, anchor_end, pronoun = here[-1], b, True
@@ -3778,9 +3778,9 @@ class ReportAnalyzer:
                     and head_p.end_tok - head_p.start_tok == 1 and anchor_p.via is None \
                     and not set(norms[head_p.start_tok:head_p.end_tok]) & set(norms[anchor_p.start_tok:anchor_p.end_tok]) \
                     and all(toks.gaps[k].strip() == "" for k in range(head_p.end_tok, anchor_p.start_tok + 1)):
-                # (not a restart: "the barn, the hay barn the ...", a name said again)
                 # "the tank the big whites pump up to", where "the tanks" is also a name of the big whites: a place is
-                # not described by its own relation to itself; the head word names the other end
+                # not described by its own relation to itself; the head word names the other end (one word, said
+                # straight on, no word of the anchor's: not a restart, "the barn, the hay barn the ...")
                 target, via = self._follow(anchor_p.landmark, phrase, toks.tokens[hs].text, inverse=not flipped)
                 if target is not None and target != anchor_p.landmark \
                         and norms[head_p.start_tok] in self._description_words().get(target, ()):
@@ -6253,6 +6253,9 @@ class ReportAnalyzer:
                     and next((w for w in reversed(norms[max(0, a - 3):a]) if w not in lx.ARTICLES | {"some", "big"}), "") \
                     in ("under", "beneath", "underneath"):
                 continue  # "a postman under a collapsed shelving unit": what pins the person, no danger of the place
+            if norms[a:b] in (("have", "slid"), ("has", "slid")) and (
+                    self._person_before(norms, a) or a > 0 and norms[a - 1] in lx.PRONOUNS):
+                continue  # "a lorry driver has slid into the mud ponds": a person, no heap or slope that slid
             if norms[a:b] in (("leaning",), ("leaning", "on")) and self._person_before(norms, a):
                 continue  # "that was Mrs Patel leaning on it": a person leaning, nothing giving way
             if norms[b - 1] == "fall" and norms[b:b + 1] == ("of",):
@@ -9628,6 +9631,8 @@ _MADE_SAFE = frozenset({"negated by 'isolated'", "negated by 'been isolated'", "
 # Nouns for a stretch of something long (a wall, a road, a bank): "the stretch by the pump house" says where along
 # the place already named, so the place after "by" is a reference point, not a claim.
 _SEGMENT_HEADS = frozenset({"stretch", "section", "length", "portion"})
+# Words a caller says before the place they call from ("I'm calling from the fishing village")
+_CALLING_FROM = frozenset({("calling", "from"), ("ringing", "from"), ("phoning", "from")})
 _HEAD_ADJECTIVES = frozenset({"open", "deep", "far", "near", "next", "other"})
 # (with NAME_ADJECTIVES: "the open water the slip drops into", "the next stage the primary tanks send their flow to")
 _SPATIAL_ENDINGS = frozenset({"beneath", "under", "underneath", "below", "above", "behind", "beside", "into",

@@ -132,7 +132,7 @@ _CONTRAST_NEXT = frozenset({"at", "in", "on", "the", "by", "inside", "behind", "
 
 
 def _unpunctuated_contrast(toks: list[Token], i: int) -> bool:
-    """"it's" (or "its") that opens the second half of "not X it's Y" with no comma between: a "not" in the four words
+    """"it's" (or "its") that opens the second half of "not X it's Y" with no comma between: a "not" in the five words
     before, a word of the denied place just before, a place word (an article or a preposition) after."""
     if i < 3 or i + 1 >= len(toks) or toks[i].text.lower().replace("\u2019", "'") not in ("it's", "its"):
         return False
