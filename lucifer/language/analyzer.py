@@ -6204,7 +6204,7 @@ class ReportAnalyzer:
                 continue  # "a woman with smoke in her lungs": the person's harm, no danger there
             if b - a == 1 and norms[a] in _SUBSTANCE_MODIFIERS and b < len(norms) and not toks.clause_start[b] \
                     and norms[b].isalpha() and norms[b] not in lx.FUNCTION_WORDS | _SUBSTANCE_EVENTS | lx.RELATION_ENDINGS \
-                    and norms[b] not in ("onto", "into", "out", "off", "up", "down", "away", "across", "along", "round") \
+                    and norms[b] not in ("away", "round") \
                     and not norms[b].endswith(("ing", "ed")) and self._cues.match_at(norms, b) is None \
                     and toks.gaps[b].strip() == "":
                 continue  # "the diesel day tank's shifted on its mounts", "the petrol station": what a thing holds
