@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev85) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev87) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -160,6 +160,13 @@ HORSE_STUD = ROOT / "knowledge_bases" / "horse_stud"
 DESALINATION_PLANT = ROOT / "knowledge_bases" / "desalination_plant"
 SEA_FORT = ROOT / "knowledge_bases" / "sea_fort"
 BUS_DEPOT = ROOT / "knowledge_bases" / "bus_depot"
+ICE_RINK_ARENA = ROOT / "knowledge_bases" / "ice_rink_arena"
+TEXTILE_MILL_VILLAGE = ROOT / "knowledge_bases" / "textile_mill_village"
+CLIFF_RAILWAY_TOWN = ROOT / "knowledge_bases" / "cliff_railway_town"
+CREAMERY = ROOT / "knowledge_bases" / "creamery"
+DATA_CENTRE_CAMPUS = ROOT / "knowledge_bases" / "data_centre_campus"
+WINTER_MARKET = ROOT / "knowledge_bases" / "winter_market"
+ALLOTMENT_GARDENS = ROOT / "knowledge_bases" / "allotment_gardens"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -471,6 +478,13 @@ SETS = {
     "dev85/desalination_plant": _set("dev85/desalination_plant.jsonl", DESALINATION_PLANT, "dp85", TWENTY, sep=""),
     "dev85/sea_fort": _set("dev85/sea_fort.jsonl", SEA_FORT, "sf85", TWENTY, sep=""),
     "dev85/bus_depot": _set("dev85/bus_depot.jsonl", BUS_DEPOT, "bd85", TWENTY, sep=""),
+    "dev86/ice_rink_arena": _set("dev86/ice_rink_arena.jsonl", ICE_RINK_ARENA, "ir86", TWENTY, sep=""),
+    "dev86/textile_mill_village": _set("dev86/textile_mill_village.jsonl", TEXTILE_MILL_VILLAGE, "tm86", TWENTY, sep=""),
+    "dev86/cliff_railway_town": _set("dev86/cliff_railway_town.jsonl", CLIFF_RAILWAY_TOWN, "cl86", TWENTY, sep=""),
+    "dev86/creamery": _set("dev86/creamery.jsonl", CREAMERY, "cy86", TWENTY, sep=""),
+    "dev87/data_centre_campus": _set("dev87/data_centre_campus.jsonl", DATA_CENTRE_CAMPUS, "dc87", TWENTY, sep=""),
+    "dev87/winter_market": _set("dev87/winter_market.jsonl", WINTER_MARKET, "wm87", TWENTY, sep=""),
+    "dev87/allotment_gardens": _set("dev87/allotment_gardens.jsonl", ALLOTMENT_GARDENS, "ag87", TWENTY, sep=""),
 }
 
 
