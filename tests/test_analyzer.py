@@ -4457,3 +4457,92 @@ def test_dev84_phenomena(kb_analyzers, kb, text, expected):
 ])
 def test_dev85_phenomena(kb_analyzers, kb, text, expected):
     assert claims(kb_analyzers[kb], text) == expected
+
+
+@pytest.mark.parametrize("kb, text, expected", [
+    # a place put against the one said before the cue, without a comma: the cue is the first one's
+    ("fish_hatchery", "the bothy both open as warm rooms not the office", [("old bothy", "shelter_point")]),
+    # a head too generic to name on its own names the one landmark every name of which it heads
+    ("sea_fort", "smoke coming out of the shop now", [("fort shop", "smoke_and_sparks")]),
+    # "X hall": the hall of the place X names, not another place whose description has "hall" and X
+    ("textile_mill_village", "School hall is our dry muster tonight", [("village school", "high_and_dry")]),
+    # a part picked out by the place it is nearest to: that place is only a reference point
+    ("textile_mill_village", "flashover in the north-lights, end bay nearest the river",
+     [("weaving sheds", "burning_or_fuming")]),
+    ("textile_mill_village", "the weir's drowned out and the drying field is two foot under",
+     [("mill weir", "flooded_or_fallen"), ("tenter field", "flooded_or_fallen")]),
+    # a call sign of two numbers; a thing named by no place, broken off, is what "no" repairs
+    ("textile_mill_village", "Persons reported, Water Row, couple upstairs, water's at the top of the stairs. Fire Two-One en route.",
+     [("water street", "flooded_or_fallen"), ("water street", "people_in_need")]),
+    ("textile_mill_village", "school's dry, sixty in there and, um, the caretaker's... no, the chapel, the chapel's dry too",
+     [("village school", "high_and_dry"), ("zion chapel", "high_and_dry")]),
+    # a field described; a noun said in the singular before the roofs it has names no plural-only place
+    ("textile_mill_village", "The field where they stretched the cloth to dry is three feet under.",
+     [("tenter field", "flooded_or_fallen")]),
+    ("textile_mill_village", "the veg plots are under, only the shed roofs showing", [("allotments", "flooded_or_fallen")]),
+    # a log's list drops each subject's article ("big mill ground floor")
+    ("textile_mill_village", "Control: mill yard flooded, backflow in the boiler house, big mill ground floor flooded.",
+     [("engine house", "flooded_or_fallen"), ("mill yard", "flooded_or_fallen"), ("spinning mill", "flooded_or_fallen")]),
+    # the head named the place and the description only agrees: what "whatever" says is its anchor's anchor
+    ("textile_mill_village", "the gate that holds back whatever the goit fills is shifting",
+     [("pond sluice", "flooded_or_fallen")]),
+    ("textile_mill_village", "the row backing onto whatever empties into the river, the whole row's under",
+     [("water street", "flooded_or_fallen")]),
+    ("textile_mill_village", "he's hanging onto the railing in the goit and the weir's right below him",
+     [("mill race", "people_in_need")]),
+    # a word of the KB's own descriptions is no slip of a name ("fryer", not "foyer")
+    ("ice_rink_arena", "kitchen fire at the hot choc hatch, the fryer's gone up", [("rinkside cafe", "gas_or_fire")]),
+    # "the", a word of the landmark's description, then its one-word alias
+    ("ice_rink_arena", "white smoke pouring off the roof condensers", [("condenser deck", "gas_or_fire")]),
+    # the name said is the generic one; the clause says which place whose names end alike
+    ("ice_rink_arena", "The car park the goods-in bay opens onto is clear, fresh air point",
+     [("staff car park", "fresh_air_haven")]),
+    ("ice_rink_arena", "the lot that takes the overspill from the car park out in front of the box office is our holding area",
+     [("overflow car park", "fresh_air_haven")]),
+    # staff collapsed is a person; a wall come in; a caller named by description reporting another place
+    ("cliff_railway_town", "gas escape in the Royal Vic kitchens, one of the kitchen staff has collapsed",
+     [("royal victoria hotel", "souls_in_trouble"), ("royal victoria hotel", "sparks_and_fumes")]),
+    ("cliff_railway_town", "at the railway cottages the back wall's come in on the kitchen",
+     [("station cottages", "slipped_or_buried")]),
+    ("cliff_railway_town", "Coastguard hut reporting smoke from the pump shed down on the front",
+     [("pump house", "sparks_and_fumes")]),
+    # the KB's own relation ("back onto") over a synonym group; "the bottom of" is the relation named "foot"
+    ("cliff_railway_town", "the houses that back onto the winding house are filling with smoke",
+     [("station cottages", "sparks_and_fumes")]),
+    ("cliff_railway_town", "walking wounded at the station at the bottom of the rails",
+     [("bottom station", "souls_in_trouble")]),
+])
+def test_dev86_phenomena(kb_analyzers, kb, text, expected):
+    assert claims(kb_analyzers[kb], text) == expected
+
+
+@pytest.mark.parametrize("kb, text, expected", [
+    # plant that has failed, where a category's description speaks of tripped equipment
+    ("data_centre_campus", "the chillers have tripped out and the cooling towers have shut down",
+     [("chiller plant", "plant_down"), ("cooling towers", "plant_down")]),
+    ("data_centre_campus", "the sub's dead, no power no nothing", [("substation", "plant_down")]),
+    ("data_centre_campus", "in hall two the ceiling grid has started to sag", [("data hall two", "plant_down")]),
+    # "gas" votes for the category whose description says "fumes or gas"
+    ("data_centre_campus", "a smell like rotten eggs in battery room a", [("battery room a", "burn_and_fume")]),
+    # a shed where the anchor is kept is the anchor's own building; a substance before a two-word alias
+    ("data_centre_campus", "The shed where they keep the sprinkler pumps is flooded", [("fire pump house", "plant_down")]),
+    ("data_centre_campus", "diesel leaking from whatever the diesel pump shed draws its supply out of",
+     [("fuel farm", "plant_down")]),
+    # an anchor in the plural after "both": the relation leads from each to the one same place
+    ("data_centre_campus", "Casualty in the room that feeds both battery rooms", [("switch room", "person_at_risk")]),
+    # walking a casualty to a place; where the speakers stand
+    ("winter_market", "Faller on the rink, suspected broken wrist, we'll walk her across to the medical post",
+     [("ice rink", "person_down")]),
+    ("winter_market", "the chiller shed is smoking, we're stood at the grotto but it's the shed",
+     [("rink plant room", "fire_and_fumes")]),
+    # a tree down, come over in the wind
+    ("winter_market", "The big tree's come over in the wind right across old Neptune and smashed the fountain deck",
+     [("christmas tree", "crush_or_collapse"), ("neptune fountain", "crush_or_collapse")]),
+    # one relation found twice ("that funnels" and "people away from") is one phrase; people head no description
+    ("winter_market", "The street that funnels people away from the gift row is a crowd crush now",
+     [("bell street", "crush_or_collapse")]),
+    # the description's anchor is the landmark's own name ("father christmas's hut")
+    ("winter_market", "the hut where Father Christmas sits has a crowd surge", [("santa's grotto", "crush_or_collapse")]),
+])
+def test_dev87_phenomena(kb_analyzers, kb, text, expected):
+    assert claims(kb_analyzers[kb], text) == expected

@@ -362,7 +362,9 @@ class ReportAnalyzer:
         if key not in cache:
             described = [self._affirmed_words(c.description) - lx.KIND_VOTE_STOPWORDS for c in cats]
             words = {w for p in lx.DANGER_KINDS[kind] for w in norm_phrase(p)
-                     if len(w) >= 4 and w not in lx.DANGER_KIND_PARTS and w not in lx.KIND_VOTE_STOPWORDS}
+                     if (len(w) >= 4 or w in lx.SHORT_DANGER_WORDS and w == kind)
+                     and w not in lx.DANGER_KIND_PARTS and w not in lx.KIND_VOTE_STOPWORDS}
+            # (a kind's own short name votes: "gas" where a description says "fumes or gas")
             cache[key] = [sum(any(_same_stem(w, d) for w in words) for d in ds) for ds in described]
         return cache[key]
 
@@ -502,6 +504,11 @@ class ReportAnalyzer:
                 if held is not None and owned.get(held[0], rel.phrase) != rel.phrase and not name <= set(key):
                     continue
                 forms[key] = (rel.phrase, inverse)
+        kb_named = {val[0] for val in forms.values()} & {rel.phrase for rel in self.kb.relations}
+        for key, val in list(forms.items()):
+            if len(key) >= 3 and key[0] in ("that", "which") and val[0] not in kb_named \
+                    and forms.get(key[1:], val)[0] in kb_named:
+                forms[key] = forms[key[1:]]  # "the houses that back onto it": the KB's own ``back onto``, not "behind"
         for key, val in list(forms.items()):
             for adverb in lx.RELATION_ADVERBS:
                 forms.setdefault((adverb, *key), val)
@@ -792,7 +799,8 @@ class ReportAnalyzer:
                 # named after the place is called, nothing is said of the place
             prev = norms[a - 1] if a > 0 else ""
             k = a - 1
-            while k > 0 and a - k <= 2 and (norms[k] in lx.NAME_ADJECTIVES or norms[k] in lx.HESITATIONS) \
+            while k > 0 and a - k <= 2 and (norms[k] in lx.NAME_ADJECTIVES or norms[k] in lx.HESITATIONS
+                                             or norms[k] in _SUBSTANCE_MODIFIERS and k == a - 1 and b - a >= 2) \
                     and not toks.clause_start[k + 1]:
                 k -= 1  # "the big rusty dredger", "the sch school": the article before the adjectives or a word begun
             if k < a - 1 and norms[k] in lx.ARTICLES:
@@ -1017,6 +1025,7 @@ class ReportAnalyzer:
         self._resolve_containers(ex, norms)
         heads = self._definite_heads(toks, norms, ex.places)  # again, after descriptions ("the portal with ...")
         ex.places.extend(heads)
+        self._singular_of_plurals(ex, toks, norms)
         # (once descriptions are resolved: "the bridge over the sixteen foot ... it's collapsed into the drain")
         ex.places[:] = [replace(h, status="reference", reason="where something fell, no claim of its own")
                         if h.status == "active" and h.via is None and self._fallen_into(toks, norms, h, ex.places)
@@ -1442,8 +1451,21 @@ class ReportAnalyzer:
             s0 = max((t for t in range(a) if toks.sentence_start[t]), default=0)
             # ("okay so um top car park's ...": fillers first)
             opens = a - s0 <= 4 and all(norms[t] in lx.FILLERS | {"and", "but", "then"} for t in range(s0, a))
-        if not opens or b >= len(norms) or (norms[a] in lx.DESCRIPTIVE_WORDS and not contracted):
+        listed = False
+        if not opens and a > 0 and toks.clause_start[a] and "," in toks.gaps[a]:
+            # ("Control: mill yard flooded, wool store flooded, big mill ground floor flooded": a log's list, each
+            # item a subject without its article, after one said so)
+            s0 = max((t for t in range(a + 1) if toks.sentence_start[t]), default=0)
+            starts = [t for t in range(s0, a) if toks.clause_start[t]] + [a]
+            listed = opens = any(
+                2 <= e - c <= 4 and norms[c].isalpha() and norms[c] not in lx.DETERMINERS | lx.PRONOUNS
+                and self._places.match_at(norms, c) is not None and self._cues.match_at(norms, e - 1) is not None
+                for c, e in zip(starts, starts[1:]))
+        if not opens or b >= len(norms) or (norms[a] in lx.DESCRIPTIVE_WORDS and not contracted and not listed):
             return False
+        if not contracted and b + 2 < len(norms) and norms[b] in ("ground", "top", "first", "upper", "lower", "second") \
+                and norms[b + 1] in lx.STOREY_WORDS and not toks.clause_start[b + 1]:
+            b += 1  # "big mill ground floor flooded"
         if not contracted and b + 1 < len(norms) and norms[b] in lx.STOREY_WORDS | lx.PART_NOUNS | lx.ROOMS_OF_A_BUILDING \
                 | {"kitchen", "kitchens"} and not toks.clause_start[b] \
                 and not toks.clause_start[b + 1]:
@@ -1632,6 +1654,10 @@ class ReportAnalyzer:
             # heads no other landmark's description uses either: "the chapel is safe" where the castle chapel is
             # the one chapel the KB speaks of
             self._sole_heads = {w for w, name in self._heads.items() if not described.get(w, set()) - {name}}
+            # ("the shop" where every name of the one shop ends in "shop": the gift shop, the souvenir shop) a head too
+            # generic to name on its own names the one landmark all of whose names it heads
+            self._own_heads = {w for w in self._sole_heads if w in lx.OWN_NAMING_HEADS and all(
+                name_words(f)[-1:] == (w,) for f in self.kb.landmark_by_name[self._heads[w]].surface_forms)}
             # heads another landmark's names use only before their own head ("dunes" of "sand dunes", where
             # "dunes halt" is the halt): the head only as a relation's anchor ("the chalets that back onto the dunes")
             last_words = {w for lm in self.kb.landmarks for f in lm.surface_forms if (ws := name_words(f)) for w in ws[-1:]}
@@ -1660,7 +1686,7 @@ class ReportAnalyzer:
                      and w in self._sole_heads) \
                 and w in self._heads and i not in taken \
                 and (w not in lx.UNNAMING_HEADS | lx.GENERIC_HEADS | lx.DESCRIPTION_HEADS
-                     or w in self._sole_heads and w not in lx.UNNAMING_HEADS) and (
+                     or w in self._sole_heads and (w not in lx.UNNAMING_HEADS or w in self._own_heads)) and (
                 toks.tokens[i].text.lower().endswith(("'s", "’s")) or i + 1 < len(norms) and norms[i + 1] in ("is", "has")
                 or ":" in toks.gaps[i] and i + 1 < len(norms) and self._cues.match_at(norms, i + 1) is not None
                 or i + 2 < len(norms) and norms[i + 1] in lx.STOREY_WORDS | {"wall", "walls", "door", "doors", "windows"}
@@ -1669,8 +1695,13 @@ class ReportAnalyzer:
             if opens:
                 out.append(self._mention(toks, i, i + 1, self._heads[w]))
                 continue
+            single = self._one_word_aliases().get(w) if w not in self._heads else None
+            if single is not None and i not in taken and self._described_modifier(toks, norms, i, taken, single):
+                out.append(self._mention(toks, i, i + 1, single))  # "the roof condensers": "the condensers"
+                continue
             if i == 0 or w not in self._heads or i in taken or (i - 1) in taken or not (
                     norms[i - 1] == "the" or norms[i - 1] in ("my", "our") and (i - 1) in rel_ends
+                    or self._described_modifier(toks, norms, i, taken)
                     or _after_same(norms, i)
                     # ("the place over the road from that church")
                     or norms[i - 1] in ("that", "this") and i >= 2 and (norms[i - 2] in lx.PREPOSITIONS or (i - 1) in rel_ends)):
@@ -1711,9 +1742,10 @@ class ReportAnalyzer:
                 and (i + 2 >= len(norms) or toks.clause_start[i + 2]
                      or norms[i + 2] in lx.COPULAS | {"has", "have", "had", "that", "thats", "which"}
                      or self._relations.match_at(norms, i + 1) is not None)  # ("the field the school plays its games on")
-            if w in lx.UNNAMING_HEADS or (w in lx.GENERIC_HEADS or w in lx.DESCRIPTION_HEADS) and (i - 1) not in rel_ends \
+            if w in lx.UNNAMING_HEADS and w not in self._own_heads \
+                    or (w in lx.GENERIC_HEADS or w in lx.DESCRIPTION_HEADS) and (i - 1) not in rel_ends \
                     and not ((said_of or verb_next) and (w in lx.GENERIC_HEADS and (contracted or w not in lx.DESCRIPTION_HEADS)
-                                          or w in self._sole_heads and w not in lx.UNNAMING_HEADS
+                                          or w in self._sole_heads and (w not in lx.UNNAMING_HEADS or w in self._own_heads)
                                           and norms[i - 2:i - 1] != ("from",))):
                 # "the terrace" names the one terrace only as a relation's anchor ("back to back with the terrace"),
                 # or as what a predicate is said of ("the barn's out now")
@@ -2266,6 +2298,33 @@ class ReportAnalyzer:
     MISHEARD_MIN_RATIO = 0.85
     MISHEARD_MIN_CHARS = 8
 
+    def _one_word_aliases(self) -> dict[str, str]:
+        """The word of each alias said "the <word>" ("the condensers"), where one landmark has it."""
+        if not hasattr(self, "_one_word_alias_cache"):
+            seen: dict[str, set[str]] = {}
+            for lm in self.kb.landmarks:
+                for f in lm.surface_forms:
+                    ws = name_words(f)
+                    if len(ws) == 1 and ws[0].isalpha() and len(ws[0]) >= 4:
+                        seen.setdefault(ws[0], set()).add(lm.name)
+            self._one_word_alias_cache = {w: next(iter(ns)) for w, ns in seen.items() if len(ns) == 1
+                                          and len(self._name_word_owners.get(w, set())) == 1
+                                          and w not in lx.GENERIC_HEADS}
+        return self._one_word_alias_cache
+
+    def _described_modifier(self, toks: Tokens, norms: tuple[str, ...], i: int, taken: set[int],
+                            name: str | None = None) -> bool:
+        """"off the roof condensers both": "the", a word of the landmark's own description, then its head word."""
+        m = i - 1
+        if i < 2 or norms[i - 2] != "the" or m in taken or toks.clause_start[m] or toks.clause_start[i] \
+                or not norms[m].isalpha() or norms[m] in lx.FUNCTION_WORDS or norms[m] in self._name_word_owners \
+                or self._cues.match_at(norms, m) is not None:
+            return False
+        name = name or self._heads[norms[i]]
+        own = self._description_words().get(name, set())
+        return norms[m] in own and not any(norms[m] in ws for other, ws in self._description_words().items()
+                                           if other != name and norms[i] in ws)
+
     def _misheard_names(self, toks: Tokens, norms: tuple[str, ...], taken: set[int],
                         cue_tokens: set[int]) -> list[PlaceMention]:
         """Speech-to-text slips: "hanger two", "taxi way alfa", "the lie brary". One to three words whose
@@ -2411,7 +2470,12 @@ class ReportAnalyzer:
         if self.embedder is None or len(word) < self.TYPO_MIN_CHARS or not word.isalpha():
             return None
         known = self.embedder.vocabulary()
-        if all(w in known or _derived_word(w, known) for w in words):
+        if not hasattr(self, "_kb_prose_words"):
+            # (the words the KB itself writes its descriptions in are words, not slips: "the fryer's gone up" where
+            # the cafe has "a deep-fat fryer" is no slip of "the foyer")
+            self._kb_prose_words = {w for lm in self.kb.landmarks for w in norm_phrase(lm.description)} \
+                - {w for lm in self.kb.landmarks for f in lm.surface_forms for w in name_words(f)}
+        if all(w in known or _derived_word(w, known) or w in self._kb_prose_words for w in words):
             return None  # (nor a known word with an ending: "the heaters going" is no slip of "the header")
         if not hasattr(self, "_typo_spellings"):
             self._typo_spellings = {key: name for key, name in self._name_keys()
@@ -2630,6 +2694,17 @@ class ReportAnalyzer:
             extra_tokens = {i for a, b, _ in extra for i in range(a, b)}
             rel_hits = [self._remap_absent_group(norms, h) for h in rel_hits
                         if not extra_tokens.intersection(range(h[0], h[1]))] + extra
+        # ("the street that funnels people away from the gift row": ``funnels the crowd away from`` found twice,
+        # "that funnels" and "people away from", is one phrase)
+        merged: list[tuple[int, int, tuple[str, bool]]] = []
+        for h in sorted(rel_hits, key=lambda h: h[0]):
+            if merged and merged[-1][1] == h[0] and merged[-1][2] == h[2] and not toks.clause_start[h[0]] \
+                    and norms[h[0]] not in norm_phrase(h[2][0].replace("_", " ")):
+                # (not where the second begins with the relation's own words: "that shares its | back lanes with")
+                merged[-1] = (merged[-1][0], h[1], h[2])
+            else:
+                merged.append(h)
+        rel_hits = merged
         ordered = sorted(rel_hits, key=lambda h: -h[0])
         self._rel_tokens = {i for a, b, _ in rel_hits for i in range(a, b)}
         pronouns = ("it", "they", "its")
@@ -2683,8 +2758,10 @@ class ReportAnalyzer:
                 again((False, True))
         if self.kb.relations and rel_hits:
             self._unresolved_own_heads(ex, toks, norms, rel_hits)
+            self._both_anchors(ex, toks, norms, rel_hits)
         self._restated_anchors(ex, toks, norms)
         self._coordinated_anchors(ex, toks, norms)
+        self._nearest_points(ex, toks, norms)
         if self.kb.relations:
             self._contact_clause_subjects(ex, toks, norms)
             self._agreeing_clauses(ex, toks, norms)
@@ -2812,8 +2889,30 @@ class ReportAnalyzer:
                 continue
             verb = norms[second.end_tok]
             rels = [r for r in self.kb.relations if r.subject == second.landmark and r.object == first.landmark]
-            if not rels or toks.clause_start[second.end_tok] or verb in lx.COPULAS | lx.FUNCTION_WORDS | lx.COORDINATORS \
+            if toks.clause_start[second.end_tok] or verb in lx.COPULAS | lx.FUNCTION_WORDS | lx.COORDINATORS \
                     or verb in ("has", "have", "had", "got") or not verb.isalpha():
+                continue
+            if not rels and first.status == "active":
+                # "The car park the goods-in bay opens onto is upwind": the name said is the generic one ("the car
+                # park"), and the place meant the one the KB relates the clause's subject to whose names end alike
+                head = name_words(first.text)[-1:]
+                k = second.end_tok  # (past a word of the name left out: "the goods-in bay" for "goods-in")
+                if k + 1 < len(norms) and not toks.clause_start[k + 1] and norms[k] in self._description_words().get(
+                        second.landmark, ()) and norms[k] not in lx.FUNCTION_WORDS:
+                    k += 1
+                verb = norms[k]
+                meant = [r for r in self.kb.relations if r.subject == second.landmark and r.object != first.landmark
+                         and verb in self._relation_words[r.phrase] and head and any(
+                             name_words(f)[-1:] == head for f in self.kb.landmark_by_name[r.object].surface_forms)]
+                if len(meant) == 1:
+                    r = meant[0]
+                    ex.relation_tokens.add(k)
+                    ex.places[ex.places.index(first)] = replace(
+                        first, landmark=r.object, via=f"{r.subject} {r.relation} {r.object} (named alike)")
+                    ex.places[ex.places.index(second)] = replace(
+                        second, status="reference", reason=f"subject of a clause describing '{first.text}': reference point")
+                continue
+            if not rels:
                 continue
             if self._cues.match_at(norms, second.end_tok) is None or any(
                     verb in self._relation_words[r.phrase] for r in rels):  # ("the channel the old lido spills into")
@@ -2821,6 +2920,50 @@ class ReportAnalyzer:
                 idx = ex.places.index(second)
                 ex.places[idx] = replace(second, status="reference",
                                          reason=f"subject of a clause describing '{first.text}': reference point")
+
+    def _singular_of_plurals(self, ex: Extraction, toks: Tokens, norms: tuple[str, ...]) -> None:
+        """"only the shed roofs showing", where every name of the weaving sheds is plural: a noun said in the
+        singular before the roofs or walls it has is any such thing's, no name of that place."""
+        for idx, p in enumerate(ex.places):
+            e = p.end_tok
+            if p.status != "active" or p.via is not None or e >= len(norms) or p.end_tok - p.start_tok > 2 \
+                    or toks.clause_start[e] or toks.tokens[e].text.lower() not in {
+                        w + "s" for w in lx.STOREY_WORDS | lx.PART_NOUNS} | {"doors", "windows"}:
+                continue
+            raw = toks.tokens[e - 1].text.lower()
+            forms = self.kb.landmark_by_name[p.landmark].surface_forms
+            if not raw.endswith("s") and all(f.lower().rstrip().endswith(raw + "s") for f in forms
+                                             if name_words(f)[-1:] == (norms[e - 1],)) \
+                    and any(name_words(f)[-1:] == (norms[e - 1],) for f in forms):
+                ex.places[idx] = replace(p, status="reference", reason=f"'{raw}' of many things ('{raw} {toks.tokens[e].text}')")
+
+    @staticmethod
+    def _nearest_points(ex: Extraction, toks: Tokens, norms: tuple[str, ...]) -> None:
+        """"flashover in the north-lights, end bay nearest the river": a part of the place said before it, picked
+        out by the place it is nearest to, which is only a reference point."""
+        for idx, p in enumerate(ex.places):
+            if p.status != "active" or p.via is not None:
+                continue
+            e = p.end_tok + (p.end_tok < len(norms) and norms[p.end_tok] in ("is", "s"))
+            e += e < len(norms) and norms[e] in ("right", "just", "directly", "straight")
+            if e + 1 < len(norms) and (e > p.end_tok or toks.tokens[p.end_tok - 1].text.lower().endswith(("'s", "’s"))) \
+                    and norms[e] in ("below", "under", "beneath", "underneath", "above", "behind", "beside") \
+                    and norms[e + 1] in ("him", "her", "them", "us", "me") and not toks.clause_start[e]:
+                # "he's hanging onto the railing and the weir's right below him": where the place is, said of no one
+                ex.places[idx] = replace(p, status="reference", reason="where it is from a person: no claim")
+                continue
+            k = p.start_tok
+            while k > 0 and norms[k - 1] in lx.ARTICLES | {"to"} and k > p.start_tok - 2:
+                k -= 1
+            if k < 2 or norms[k - 1] not in ("nearest", "closest") or not norms[k - 2].isalpha() \
+                    or norms[k - 2] in lx.FUNCTION_WORDS or norms[k - 2] in lx.COPULAS \
+                    or any(toks.clause_start[j] for j in range(k - 1, p.start_tok + 1)):
+                continue
+            sent = toks.sentence_of[p.start_tok]
+            before = [q for q in ex.places if q.status == "active" and q.end_tok <= k - 2 and q.landmark != p.landmark
+                      and toks.sentence_of[q.start_tok] == sent and k - 2 - q.end_tok <= 4]
+            if before:
+                ex.places[idx] = replace(p, status="reference", reason=f"reference point for '{before[-1].text}'")
 
     def _coordinated_anchors(self, ex: Extraction, toks: Tokens, norms: tuple[str, ...]) -> None:
         """"the place that sends the drays out to the market hall and the Mow": a second anchor joined to a
@@ -2912,6 +3055,44 @@ class ReportAnalyzer:
                         # "the cart that tops up the engines on the big lines": the clause's anchor, no claim
                         ex.places[idx] = replace(q, status="reference",
                                                  reason=f"reference point: {rel.subject} {rel.phrase} {rel.object}")
+                    elif q.status == "active" and q.via is None and a < q.start_tok <= a + 6 and any(
+                            norms[m] in lx.WHATEVER for m in range(max(a, q.start_tok - 2), q.start_tok)) \
+                            and not any(toks.clause_start[m] for m in range(a + 1, q.start_tok + 1)):
+                        # "the gate that holds back whatever the goit fills": the anchor's own description's anchor
+                        ex.places[idx] = replace(q, status="reference", reason="reference point of the description's "
+                                                                             f"anchor ({rel.subject} {rel.phrase} {rel.object})")
+
+    def _both_anchors(self, ex: Extraction, toks: Tokens, norms: tuple[str, ...],
+                      rel_hits: list[tuple[int, int, tuple[str, bool]]]) -> None:
+        """"the room that feeds both battery rooms": an anchor said in the plural after "both" (or "all the"), the
+        name several landmarks end in; where the relation leads from each of them to the one same place, that
+        place is meant."""
+        covered = {i for p in ex.places for i in range(p.start_tok, p.end_tok)}
+        for a, b, (phrase, _flipped) in rel_hits:
+            if a < 2 or norms[a] not in ("that", "which") or norms[a - 2] not in lx.ARTICLES or (a - 1) in covered:
+                continue
+            k = b
+            if k < len(norms) and norms[k] in ("both", "all", "the", "two"):
+                k += 1
+            while k < len(norms) and norms[k] in ("the", "two", "of"):
+                k += 1
+            if k == b or not any(norms[m] in ("both", "all", "two") for m in range(b, k)):
+                continue
+            for n in (2, 1):
+                tail = norms[k:k + n]
+                if len(tail) < n or any(m in covered for m in range(k, k + n)) \
+                        or not toks.tokens[k + n - 1].text.lower().endswith("s"):
+                    continue
+                owners = {lm.name for lm in self.kb.landmarks for f in lm.surface_forms
+                          if len(ws := name_words(f)) > n and any(ws[m:m + n] == tail for m in range(len(ws) - n + 1))}
+                if len(owners) < 2:
+                    continue
+                targets = {self._follow(o, phrase, toks.tokens[a - 1].text)[0] for o in owners}
+                if len(targets) == 1 and None not in targets and not targets & owners:
+                    target = next(iter(targets))
+                    ex.places.append(self._mention(toks, a - 2, k + n, target, via=f"{target} {phrase} {' and '.join(sorted(owners))}"))
+                    covered.update(range(a - 2, k + n))
+                break
 
     def _shared_tails(self) -> dict[tuple[str, ...], set[str]]:
         """Last words of names that several landmarks share ("escalator shaft": main and deep escalator
@@ -3335,6 +3516,11 @@ class ReportAnalyzer:
                     continue  # "gritting the hill road past the caravan park": a way that goes by it, no relation
                 if set(between) & {"call", "calls", "called", "name", "names", "named", "know", "knows"}:
                     continue  # "the one they call the cripple shed": the place named, not one related to it
+                if set(between) & {"keep", "keeps", "kept", "store", "stores", "stored", "house", "houses", "housed"} \
+                        and norms[head] in lx.DESCRIPTION_HEADS | _SHED_HEADS and any(
+                            name_words(f)[-1:] and name_words(f)[-1] in lx.DESCRIPTION_HEADS | _SHED_HEADS
+                            for f in self.kb.landmark_by_name[anchor.landmark].surface_forms):
+                    continue  # "the shed where they keep the sprinkler pumps": the building the anchor's name says, itself
                 if len(between) >= 2 and between[0] in lx.PREPOSITIONS and between[1] in ("them", "him", "us", "me"):
                     continue  # "the turnstiles got a tree on them the lodge gate is blocked": the preposition's own object
                     # (not "her", a possessive as often: "the building across the road from her cafe")
@@ -3384,6 +3570,11 @@ class ReportAnalyzer:
             if not related:
                 continue
             hword = norms[head]
+            if anchor.via is None and name_words(anchor.text) and any(
+                    hword in name_words(f) and len(name_words(f)) >= 2
+                    and set(name_words(f)) - {hword} <= set(name_words(anchor.text))
+                    for f in self.kb.landmark_by_name[anchor.landmark].surface_forms):
+                continue  # "the hut where Father Christmas sits": the anchor's own name is "father christmas's hut"
             if hword == "one" and head >= 3 and norms[head - 1] == "the" and toks.clause_start[head - 1] \
                     and norms[head - 3] == "the" and norms[head - 2].isalpha():
                 hword = norms[head - 2]  # "the terrace, the one where the bottling hall's workers lodge"
@@ -3699,6 +3890,9 @@ class ReportAnalyzer:
                 ex.places[idx] = replace(anchor, status="reference", reason=f"reference point for '{head_place.text}'")
             return
         head_start, words = self._head_before(toks, norms, head_end, place_tokens, marker_tokens)
+        if anchor is not None and len(words) == 1 and words[0] in _PEOPLE_WORDS | {"crowd", "crowds"} \
+                and head_start > 0 and norms[head_start - 1] not in lx.ARTICLES:
+            return  # "the street that funnels people away from the gift row": the people moved, no place described
         head_text = " ".join(toks.tokens[j].text for j in range(head_start, head_end))
         generic = bool(words) and any(w in lx.GENERIC_HEADS for w in words[-2:]) \
             and self._cues.match_at(norms, head_end - 1) is None
@@ -4106,6 +4300,16 @@ class ReportAnalyzer:
                     # into")
             words = {w for w in norms[s_:e] if w not in lx.DESCRIPTION_STOPWORDS and w not in closed}
             scores = sorted(((len(words & ws), name) for name, ws in desc.items()), reverse=True)
+            owner = getattr(self, "_heads", {}).get(norms[s_]) if s_ == i - 1 and e == i + 1 else None
+            if owner is not None and scores and scores[0][1] != owner and norms[i] in lx.UNNAMING_HEADS \
+                    and norms[i] not in desc[owner] and not toks.tokens[s_].text.lower().endswith(("'s", "’s", "s'")):
+                # "School hall is our dry muster": the school's own hall, not the institute whose description says
+                # it has a hall "beside the school"
+                a = s_ - 1 if has_det else s_
+                ex.places.append(self._mention(toks, a, e, owner))
+                stop.update(range(a, e))
+                i = e
+                continue
             head_of = {name for name, ws in desc.items() if norms[i] in ws} if norms[i] not in lx.DESCRIPTION_STOPWORDS else set()
             if scores and head_of and scores[0][1] not in head_of and not (
                     norms[i] in lx.UNNAMING_HEADS | _SHED_HEADS and scores[0][0] >= 2
@@ -4664,7 +4868,30 @@ class ReportAnalyzer:
             return None, None
         if len(uniq) == 1:
             return next(iter(uniq.values()))
+        worded = self._by_relation_words(list(uniq.values()), phrase)
+        if worded is not None:
+            return worded
         return self._pick_by_head(list(uniq.values()), head)
+
+    def _by_relation_words(self, cands: list[tuple[str, str]], phrase: str) -> tuple[str, str] | None:
+        """"the station at the bottom of the rails", where the KB has ``sits at the head of`` and ``sits_at_the_foot_of``
+        the rails: of relations matched alike, the one alone whose name has the phrase's own words (or a part's other
+        name: the foot, the bottom, the base)."""
+        said = {w for w in norm_phrase(phrase.replace("_", " ")) if w not in lx.FUNCTION_WORDS}
+        if not said:
+            return None
+        by_desc = {f"{r.subject} {r.relation} {r.object}": r for r in self.kb.relations}
+        scored = []
+        for c in cands:
+            rel = by_desc.get(c[1])
+            if rel is None:
+                return None
+            words = set(norm_phrase(rel.phrase.replace("_", " ")))
+            words |= {x for w in list(words) for x in _PART_SYNONYMS.get(w, ())}
+            scored.append((len(said & words), c))
+        best = max(n for n, _ in scored)
+        top = [c for n, c in scored if n == best]
+        return top[0] if best > 0 and len(top) == 1 else None
 
     def _vertical_follow(self, anchor: str, phrase: str, head: str, inverse: bool) -> tuple[str | None, str | None]:
         """"the room below the library" for ``library is_built_over chapter house``: of the KB's other relations that
@@ -5254,6 +5481,12 @@ class ReportAnalyzer:
                     # ("Harbour office to all boats, the yard is a safe landing": a name said without its article)
                     ex.places[idx] = replace(p, status="reference", reason="who is calling ('X to Y:'), said of no more")
                     continue
+                if toks.sentence_start[p.start_tok] and norms[p.end_tok:p.end_tok + 1] == ("reporting",) and any(
+                        q.landmark != p.landmark and q.status == "active" and q.start_tok > p.end_tok
+                        and toks.sentence_of[q.start_tok] == toks.sentence_of[p.start_tok] for q in ex.places):
+                    # ("Coastguard hut reporting smoke from the pump shed": a caller named by its description)
+                    ex.places[idx] = replace(p, status="reference", reason="who is calling ('X reporting'): no claim")
+                    continue
             if p.status != "active" or p.via is not None:
                 continue
             if p.start_tok in supposed:
@@ -5299,8 +5532,12 @@ class ReportAnalyzer:
                 ex.places[idx] = replace(p, status="reference", reason="who is calling ('control X, we ...'): no claim")
                 continue
             if toks.sentence_start[p.start_tok] and p.end_tok + 1 < len(norms) \
-                    and norms[p.end_tok] in ("reporting", "calling", "speaking") and toks.clause_start[p.end_tok + 1] \
-                    and any(q.landmark != p.landmark and q.status in ("active", "negated", "reference") for q in ex.places):
+                    and norms[p.end_tok] in ("reporting", "calling", "speaking") and (toks.clause_start[p.end_tok + 1] \
+                    and any(q.landmark != p.landmark and q.status in ("active", "negated", "reference") for q in ex.places)
+                    # ("Coastguard hut reporting smoke from the pump shed": what it reports is of the place named after)
+                    or norms[p.end_tok] == "reporting" and any(
+                        q.landmark != p.landmark and q.status == "active" and q.start_tok > p.end_tok
+                        and toks.sentence_of[q.start_tok] == toks.sentence_of[p.start_tok] for q in ex.places)):
                 # (with no other place told of, the news is its own: "Pascoe's yard reporting, two boats blown off
                 # their cradles")
                 ex.places[idx] = replace(p, status="reference", reason="who is calling ('X reporting,'): no claim")
@@ -5750,6 +5987,13 @@ class ReportAnalyzer:
                     and self._cue_between(norms, last.end_tok, a):
                 continue  # "the library has a live wire down and the supermar-- sorry the marketplace": the cut-off
                 # name is what the marker repairs
+            if a - last.end_tok >= 6 and norms[a - 2] in lx.ARTICLES and norms[a - 1].isalpha() \
+                    and norms[a - 1] not in lx.FUNCTION_WORDS and toks.tokens[a - 1].text.lower().endswith(("'s", "’s")) \
+                    and any(d in toks.gaps[a] for d in ("...", "…", "—", "–", "--")) \
+                    and not any(p.start_tok <= a - 1 < p.end_tok for p in ex.places) \
+                    and any(toks.clause_start[t] for t in range(last.end_tok, a - 2)):
+                continue  # "school's dry, we've got sixty-odd in there and, um, the manager's... no, the er, the
+                # chapel": a thing named by no place, broken off, is what the marker repairs
             if min(after, key=lambda p: p.start_tok).status == "negated":
                 # "hold that, not the school": the negation already retracted it; the place said after the
                 # negated one takes over what was said of it ("the gym is where we're putting everyone — sorry,
@@ -6114,7 +6358,16 @@ class ReportAnalyzer:
             return []
         toks = ex.tokens
         out: list[CueMention] = []
+        # ("the row backing onto whatever ..., the whole row's under": the head of a description said again)
+        said_again = []
         for p in ex.places:
+            if p.status == "active" and p.via is not None:
+                head = norms[p.start_tok + 1] if p.end_tok - p.start_tok > 1 and norms[p.start_tok] in lx.ARTICLES else ""
+                said_again.extend(
+                    replace(p, start_tok=k - 1, end_tok=k) for k in range(p.end_tok + 1, len(norms))
+                    if norms[k] == "under" and norms[k - 1] == head and head.isalpha() and head not in lx.FUNCTION_WORDS
+                    and toks.tokens[k - 1].text.lower().endswith(("'s", "’s")) and norms[k - 2] in ("whole", "the"))
+        for p in [*ex.places, *said_again]:
             k = p.end_tok
             if p.status != "active" or k >= len(norms) or k in blocked:
                 continue
@@ -6289,11 +6542,15 @@ class ReportAnalyzer:
                     and toks.tokens[a - 1].text.lower().replace("’", "'") in ("we're", "were", "i'm", "im", "they're",
                                                                                "we", "they", "everyone's"):
                 continue  # "we're clear of the slipway and heading out": the crew has left it
+            nb = b + 1  # ("Fire Two-One en route": a number of two words)
+            if nb < len(norms) and (norms[nb] in lx.NUMBER_WORDS | {"one"} or norms[nb].isdigit()) \
+                    and toks.gaps[nb] in ("-", "–"):
+                nb += 1
             if b == a + 1 and b < len(norms) and (toks.tokens[a].text[:1].isupper() or _after_station(norms, a)) \
                     and (norms[b] in lx.NUMBER_WORDS | {"one"} or norms[b].isdigit()) and toks.gaps[b] == " " \
-                    and (b + 1 == len(norms) or toks.clause_start[b + 1] or norms[b + 1] in lx.COPULAS | {"to", "here"}
-                         or toks.tokens[b + 1].text.lower().replace("’", "'") in ("we're", "we've", "i'm", "we")
-                         or (a == 0 or toks.sentence_start[a]) and norms[b + 1] in (
+                    and (nb == len(norms) or toks.clause_start[nb] or norms[nb] in lx.COPULAS | {"to", "here"}
+                         or toks.tokens[nb].text.lower().replace("’", "'") in ("we're", "we've", "i'm", "we")
+                         or (a == 0 or toks.sentence_start[a]) and norms[nb] in (
                              "moving", "heading", "going", "proceeding", "arriving", "attending", "returning", "leaving",
                              "approaching", "now", "en", "mobile", "mobilising", "mobilizing",
                              "up", "down", "at", "on", "in", "out", "over", "inside", "outside", "by")):
@@ -8303,7 +8560,15 @@ class ReportAnalyzer:
         for c in cues:
             ps = seg_usable.get(seg_index[c.start_tok], [])
             if ps:
-                bound[c.start_tok] = ps[0] if len(ps) == 1 else min(ps, key=lambda p: self._bind_cost(norms, c, p))
+                near = ps[0] if len(ps) == 1 else min(ps, key=lambda p: self._bind_cost(norms, c, p))
+                before = [p for p in ps if p.status == "active" and p.end_tok <= c.start_tok]
+                if near.status == "negated" and before and near.start_tok >= c.end_tok \
+                        and [w for w in norms[c.end_tok:near.start_tok]
+                             if w not in lx.DETERMINERS and w not in lx.FILLERS] == ["not"]:
+                    # "the bothy both open as warm rooms not the office": the place put against the one said
+                    # before the cue, not the cue's own
+                    near = min(before, key=lambda p: self._bind_cost(norms, c, p))
+                bound[c.start_tok] = near
         own: dict[int, list[CueMention]] = {}  # place start -> live cues bound naturally
         for c in cues:
             if c.status == "active" and c.start_tok in bound and c.replaces is None:
@@ -10133,6 +10398,10 @@ def _relation_forms(phrase: str) -> list[tuple[str, bool]]:
         out.append((" ".join(swapped), True))
     if words[0] in ("sits", "stands", "lies") and len(words) >= 4 and words[-1] in ("with", "to", "of"):
         out.append((" ".join(words[1:]), False))  # "the cottage cheek by jowl with the tea room": the posture unsaid
+    if len(words) >= 4 and words[1] in ("out", "up", "down", "back", "along") and words[0].endswith("s") \
+            and words[2] in ("in", "on", "at", "by", "to", "into", "onto", "over", "under", "behind", "beside") \
+            and words[-1] in ("of", "to", "with", "from", "onto", "into"):
+        out.append((" ".join(words[1:]), False))  # ("spreads out in front of": "the car park out in front of")
     verb = words[0]
     rest = " ".join(words[1:])
     # a plural subject's verb ("flower stalls | huddle under the eaves of"; "river stairs | lead down to")

@@ -773,7 +773,11 @@ COORDINATOR_PHRASES = ["as well as", "along with", "together with", "and also", 
 RETRACT_VERBS = {"scratch", "strike", "forget", "cancel", "remove", "minus", "drop", "lose", "scrap", "scrub"}
 
 # Places in these phrases are being passed or travelled to: the report claims nothing about them.
-TRANSIT = ["people in off", "taking people in off", "in off the", "walked up from", "walked down from", "walked over from", "walked from", "drove from", "drove up from",
+TRANSIT = [*(f"{v} {who} {way}to" for v in ("walk", "take", "bring", "carry", "help", "walking", "taking", "bringing",
+                                               "carrying", "helping")
+             for who in ("her", "him") for way in ("", "across ", "over ", "down ", "up ", "back ", "round ")),
+           "we're stood at", "we are stood at", "i'm stood at", "i am stood at", "we're stood by", "i'm stood by",
+           "people in off", "taking people in off", "in off the", "walked up from", "walked down from", "walked over from", "walked from", "drove from", "drove up from",
            "driven from", "ran from", "run from", "cycled from", "anyone coming off", "anyone walked off", "anybody walked off", "everyone walked off", "people walked off", "anyone walking off", "people walking off", "anybody coming off", "everyone coming off", "people coming off", "families coming off",
            "visitors coming off", "crowds coming off", "folk coming off", "riders coming off", "families coming out of", "anyone coming out of", "anybody coming out of", "everyone coming out of", "people coming out of", "evacuated from", "moved out of", "moved from", "relocated from", "decanted from", "brought out of",
            "heading to", "heading for", "heading towards", "heading toward", "headed to", "headed for", "head to",
@@ -811,11 +815,14 @@ TRANSIT = ["people in off", "taking people in off", "in off the", "walked up fro
 DESCRIPTION_HEADS = {"building", "place", "shop", "store", "tower", "block", "house", "hall", "premises", "structure",
                      "unit", "warehouse", "one", "office", "shed", "hut", "works", "centre", "center", "station", "yard",
                      "plant", "cottage", "cottages", "terrace", "row", "church", "chapel", "inn", "pub", "site",
-                     "complex", "facility", "depot", "mill", "factory", "workshop", "barn", "lodge"}
+                     "complex", "facility", "depot", "mill", "factory", "workshop", "barn", "lodge", "field"}
 # Heads too generic ever to name a landmark on their own ("the building", even with one "terminal building").
 UNNAMING_HEADS = {"building", "place", "one", "site", "unit", "premises", "structure", "spot", "area", "thing", "bit",
                   "side", "house", "shop", "store", "block", "office", "hall", "station", "centre", "center", "room",
                   "road", "street", "end", "front", "back", "property", "complex", "facility", "ground", "field", "water"}
+# Of those, the ones that still name the one landmark every name of which they head ("the shop" for "the gift shop",
+# "the souvenir shop"); not "the road", which is any road.
+OWN_NAMING_HEADS = {"shop", "store", "office", "hall", "station"}
 # Words that open the tail of such a description ("with the fuel pump", "on the west road", "that sells tools").
 DESCRIPTION_LINKS = {"with", "on", "at", "in", "along", "that", "which", "selling", "sells", "where", "by", "near",
                      "off", "beside", "having"}
@@ -993,7 +1000,7 @@ WORKER_PERSONS = {"driver", "worker", "workman", "lad", "labourer", "passenger",
                   "engineer", "gardener", "fan", "punter", "marshal", "chemist", "resident", "technician", "keeper",
                   "porter", "nurse", "midwife", "tourist", "walker", "climber", "swimmer", "diver", "angler", "member",
                   "rigger", "roustabout", "roughneck", "driller", "welder", "scaffolder", "miner", "logger", "docker",
-                  "stevedore", "farmhand", "kayaker", "canoeist", "skier"}
+                  "stevedore", "farmhand", "kayaker", "canoeist", "skier", "staff", "skater", "cook", "chef"}
 # Who calls in, said before where they are ("Security guard at the savings bank."): a role, not a claim.
 CALLER_ROLES = {"guard", "warden", "officer", "patrol", "assistant", "attendant", "manager", "caretaker", "courier",
                 "inspector", "first-aider", "firstaider", "aider", "volunteer", "medic", "paramedic", "constable",
@@ -1460,10 +1467,15 @@ GENERIC_VERBS = frozenset({"sits", "stands", "lies", "gets", "takes", "goes", "h
 
 # Dangers a KB counts only where a category's description names them (the triggers, as phrases of the description).
 DESCRIBED_KINDS: dict[str, tuple[frozenset[str], list[str]]] = {
-    "power": (frozenset({"outage", "blackout", "building services", "failed services"}),
+    "power": (frozenset({"outage", "blackout", "building services", "failed services", "lost power"}),
               ["lost power", "lost all power", "no power", "power's out", "power is out", "power's gone",
                "power has gone", "power cut", "power failure", "power outage", "lights are out", "lights have gone",
                "lights went out", "lights have gone out", "in the dark", "blackout"]),
+    # (a KB whose danger is plant that has failed: "chiller plant has tripped out", "the sub's dead too")
+    "plant": (frozenset({"tripped", "failed equipment", "dead bus", "plant failure", "equipment failure"}),
+              ["tripped out", "has tripped", "have tripped", "tripped", "shut down", "has shut down", "have shut down",
+               "won't start", "wont start", "will not start", "is dead", "s dead", "are dead", "gone dead",
+               "no pressure", "have failed", "has failed", "failed", "lost pressure", "no power no nothing"]),
     # (a KB whose danger is a gate or fence left open, so animals get out: "the lion gates are standing wide open")
     "open": (frozenset({"standing open", "left open", "wide open"}),
              ["standing open", "standing wide open", "wide open", "left open", "been left open", "left wide open"]),
@@ -1518,7 +1530,8 @@ DANGER_KIND_EXTRA: dict[str, list[str]] = {
                  "conductors are on", "conductor down", "conductors down", "feeder is down", "feeder down", "lines down",
                  "line down", "lines are down", "line is down"],
     "gas": ["rotten egg", "rotten eggs", "rotten-egg smell", "rotten egg smell", "eggy smell", "smell like eggs", "smells like eggs", "smell of eggs", "smells of eggs", "smell like rotten eggs", "there's a hiss", "a loud hiss", "hissing out of", "h2s", "so2", "co2", "sulphur dioxide", "hydrogen sulphide", "carbon dioxide", "methane", "methane leak", "natural gas", "co detected", "co reading", "co readings", "co levels", "high co", "carbon monoxide", "carbon monoxide alarm", "co alarm"],
-    "collapse": ["tipped over", "has tipped over", "have tipped over", "have slid", "has slid",
+    "collapse": ["started to sag", "starting to sag", "begun to sag", "beginning to sag", "wall's come in", "wall has come in", "walls have come in", "wall's come down on", "roof's come in",
+                 "roof has come in", "ceiling's come in", "ceiling has come in", "tipped over", "has tipped over", "have tipped over", "have slid", "has slid",
                  "flattened", "been flattened", "torn to bits", "torn to pieces", "ripped to bits", "ripped to pieces", "blown to bits", "giving way", "is giving way", "gives way", "piles are sheared", "piles have sheared", "pile is sheared", "pile's sheared", "torn open", "been torn open", "gone over into the water", "gone over into the lagoon", "gone over into the sea", "gone over into the river", "split down a seam", "split a seam", "split its seam", "split at the seam", "split along a seam", "has snapped", "have snapped", "cable snapped", "cables snapped", "hanging sideways", "floor went through", "floor went thru", "floor gone through", "developed a lean", "has a lean", "bricks coming off", "bricks are coming off", "wall has split", "walls have split", "has split from", "split right across", "split from top to bottom", "roof's coming in", "roof is coming in", "ceiling's coming in", "ceiling is coming in", "coming off in chunks", "coming away in chunks", "falling off in chunks", "in chunks", "breaking up", "is breaking up", "coming adrift", "come adrift", "broken adrift", "peeling off", "coming off in slabs", "coming away in slabs", "roof fall on", "roof fall in", "roof has split", "roof split", "is bending", "it's bending", "is fall down", "has fall down", "fallen down"],
     "water": ["waves coming straight over", "waves coming right over", "roof is leaking", "roof's leaking",
               "roof leaking", "roof leaks", "taken the surge", "took the surge", "drums floating", "floating everywhere",
@@ -1531,10 +1544,14 @@ DANGER_KIND_EXTRA: dict[str, list[str]] = {
               "water at the windows", "water's at the windows", "water is at the windows", "water's right round",
               "water right round", "water all round", "water's all round", "water all around", "water's all around",
               "yard's a lake", "is a lake", "'s a lake", "like a lake", "completely under", "cut off by water", "cut off by the water", "cut off by floodwater", "cut off by the flood", "over its banks", "over the banks", "out of its banks", "broken its banks", "burst their banks", "bursting its banks", "scoured", "scoured out", "water coming through the ceiling", "water through the ceiling", "water pouring through the ceiling",
-              "water coming through the roof", "ceiling's leaking", "ceiling is leaking", "water pouring through"],
+              "water coming through the roof", "ceiling's leaking", "ceiling is leaking", "water pouring through",
+              "drowned out", "foot under", "feet under", "metre under", "metres under", "inches under",
+              "water's at the top of", "water is at the top of",
+              "water at the top of", "water's up to the top of", "water is up to the top of"],
     "access": ["blocking", "blocking the way", "blocking it", "blocks the way", "rocks across", "rocks across it", "rocks across the road", "debris across", "debris right across", "fallen oak", "fallen beech", "fallen ash", "fallen branch", "fallen branches"],
     "ground": ["there's a slip on", "there's been a slip on", "there is a slip on", "scree moving", "scree is moving", "ground is moving", "ground moving", "slope is moving", "hillside is moving", "rocks are coming off", "rocks are coming down", "rocks are falling", "dropping rocks", "rocks dropping", "dropping stones", "has sunk", "have sunk", "its sunk", "ground dropped", "ground has dropped", "ground dropping", "ground is dropping", "ground gone", "ground has gone", "ground just gone", "floor dropped", "floor has dropped", "hole opened up", "hole has opened up", "hole just opened up", "floor has opened", "floor's opened", "sinkhole", "sink hole", "ash a foot deep", "ash is knee deep", "ash knee deep", "ash's knee deep", "ash is ankle deep", "a foot of ash", "feet of ash", "inches of ash", "deep in ash", "covered in ash", "heaped with ash", "buried in ash", "under the ash", "drifts of ash", "ash drifts", "half buried", "half-buried", "slurry", "full of slurry", "sludge", "silt", "full of silt"],
-    "fallen": ["taken the top off", "took the top off", "knocked the top off", "blown the top off", "blew the top off",
+    "fallen": ["tree's down", "tree is down", "tree down", "trees are down", "trees down", "tree's come over",
+               "tree has come over", "come over in the wind", "came over in the wind", "taken the top off", "took the top off", "knocked the top off", "blown the top off", "blew the top off",
                "stonework through", "masonry through", "through the glass roof", "debris through the roof",
                "rubble through the roof", "branch through the roof", "branch through its roof", "branches through the roof", "limb through the roof",
                "tree through its roof", "trees through the roof", "hole in the roof", "holes in the roof", "hole in its roof", "hole in the wall", "lost a parapet", "lost its parapet", "lost the parapet", "lost a wall", "lost its wall", "lost a gable", "lost its gable",
