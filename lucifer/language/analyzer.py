@@ -1460,7 +1460,7 @@ class ReportAnalyzer:
             listed = opens = any(
                 2 <= e - c <= 4 and norms[c].isalpha() and norms[c] not in lx.DETERMINERS | lx.PRONOUNS
                 and self._places.match_at(norms, c) is not None and self._cues.match_at(norms, e - 1) is not None
-                for c, e in zip(starts, starts[1:]))
+                for c, e in zip(starts, starts[1:], strict=False))
         if not opens or b >= len(norms) or (norms[a] in lx.DESCRIPTIVE_WORDS and not contracted and not listed):
             return False
         if not contracted and b + 2 < len(norms) and norms[b] in ("ground", "top", "first", "upper", "lower", "second") \
