@@ -3517,10 +3517,13 @@ class ReportAnalyzer:
                 if set(between) & {"call", "calls", "called", "name", "names", "named", "know", "knows"}:
                     continue  # "the one they call the cripple shed": the place named, not one related to it
                 if set(between) & {"keep", "keeps", "kept", "store", "stores", "stored", "house", "houses", "housed"} \
-                        and norms[head] in lx.DESCRIPTION_HEADS | _SHED_HEADS and any(
+                        and norms[head] in lx.DESCRIPTION_HEADS | _SHED_HEADS and not any(
+                            name_words(f) == name_words(anchor.text)
+                            for f in self.kb.landmark_by_name[anchor.landmark].surface_forms) and any(
                             name_words(f)[-1:] and name_words(f)[-1] in lx.DESCRIPTION_HEADS | _SHED_HEADS
                             for f in self.kb.landmark_by_name[anchor.landmark].surface_forms):
                     continue  # "the shed where they keep the sprinkler pumps": the building the anchor's name says, itself
+                    # (said by no whole name of it: a place named in full and kept in a shed is another place)
                 if len(between) >= 2 and between[0] in lx.PREPOSITIONS and between[1] in ("them", "him", "us", "me"):
                     continue  # "the turnstiles got a tree on them the lodge gate is blocked": the preposition's own object
                     # (not "her", a possessive as often: "the building across the road from her cafe")
@@ -3570,10 +3573,13 @@ class ReportAnalyzer:
             if not related:
                 continue
             hword = norms[head]
-            if anchor.via is None and name_words(anchor.text) and any(
-                    hword in name_words(f) and len(name_words(f)) >= 2
-                    and set(name_words(f)) - {hword} <= set(name_words(anchor.text))
-                    for f in self.kb.landmark_by_name[anchor.landmark].surface_forms):
+            forms = self.kb.landmark_by_name[anchor.landmark].surface_forms
+            if anchor.via is None and name_words(anchor.text) \
+                    and not any(name_words(f) == name_words(anchor.text) for f in forms) and any(
+                    hword in name_words(f) and len(name_words(f)) >= 3
+                    and set(name_words(f)) - {hword} <= set(name_words(anchor.text)) for f in forms):
+                # (not where the anchor is said by a whole name of its own: "the pylon that feeds the cable up to
+                # tower five" is another pylon, though "pylon five" is one of its names)
                 continue  # "the hut where Father Christmas sits": the anchor's own name is "father christmas's hut"
             if hword == "one" and head >= 3 and norms[head - 1] == "the" and toks.clause_start[head - 1] \
                     and norms[head - 3] == "the" and norms[head - 2].isalpha():
@@ -3890,9 +3896,6 @@ class ReportAnalyzer:
                 ex.places[idx] = replace(anchor, status="reference", reason=f"reference point for '{head_place.text}'")
             return
         head_start, words = self._head_before(toks, norms, head_end, place_tokens, marker_tokens)
-        if anchor is not None and len(words) == 1 and words[0] in _PEOPLE_WORDS | {"crowd", "crowds"} \
-                and head_start > 0 and norms[head_start - 1] not in lx.ARTICLES:
-            return  # "the street that funnels people away from the gift row": the people moved, no place described
         head_text = " ".join(toks.tokens[j].text for j in range(head_start, head_end))
         generic = bool(words) and any(w in lx.GENERIC_HEADS for w in words[-2:]) \
             and self._cues.match_at(norms, head_end - 1) is None
@@ -4302,7 +4305,8 @@ class ReportAnalyzer:
             scores = sorted(((len(words & ws), name) for name, ws in desc.items()), reverse=True)
             owner = getattr(self, "_heads", {}).get(norms[s_]) if s_ == i - 1 and e == i + 1 else None
             if owner is not None and scores and scores[0][1] != owner and norms[i] in lx.UNNAMING_HEADS \
-                    and norms[i] not in desc[owner] and not toks.tokens[s_].text.lower().endswith(("'s", "’s", "s'")):
+                    and norms[i] not in desc[owner] and not toks.tokens[s_].text.lower().endswith(("'s", "’s", "s'")) \
+                    and scores[0][0] == 2 and norms[s_] in desc[scores[0][1]]:
                 # "School hall is our dry muster": the school's own hall, not the institute whose description says
                 # it has a hall "beside the school"
                 a = s_ - 1 if has_det else s_
