@@ -2927,8 +2927,7 @@ class ReportAnalyzer:
         for idx, p in enumerate(ex.places):
             e = p.end_tok
             if p.status != "active" or p.via is not None or e >= len(norms) or p.end_tok - p.start_tok > 2 \
-                    or toks.clause_start[e] or toks.tokens[e].text.lower() not in {
-                        w + "s" for w in lx.STOREY_WORDS | lx.PART_NOUNS} | {"doors", "windows"}:
+                    or toks.clause_start[e] or toks.tokens[e].text.lower() not in _PART_PLURALS:
                 continue
             raw = toks.tokens[e - 1].text.lower()
             forms = self.kb.landmark_by_name[p.landmark].surface_forms
@@ -2939,8 +2938,9 @@ class ReportAnalyzer:
 
     @staticmethod
     def _nearest_points(ex: Extraction, toks: Tokens, norms: tuple[str, ...]) -> None:
-        """"flashover in the north-lights, end bay nearest the river": a part of the place said before it, picked
-        out by the place it is nearest to, which is only a reference point."""
+        """Places said only to say where: "flashover in the north-lights, end bay nearest the river" (a part of the
+        place said before it, picked out by the place it is nearest to) and "the weir's right below him" (where the
+        place is from a person)."""
         for idx, p in enumerate(ex.places):
             if p.status != "active" or p.via is not None:
                 continue
@@ -3061,6 +3061,12 @@ class ReportAnalyzer:
                         # "the gate that holds back whatever the goit fills": the anchor's own description's anchor
                         ex.places[idx] = replace(q, status="reference", reason="reference point of the description's "
                                                                              f"anchor ({rel.subject} {rel.phrase} {rel.object})")
+
+    def _said_whole(self, p: PlaceMention) -> bool:
+        """Is the place said by a whole name of its landmark ("tower five" for ``pylon five``), not a part or a slip of
+        one ("Father Christmas sits" for "father christmas's hut")?"""
+        said = name_words(p.text)
+        return any(name_words(f) == said for f in self.kb.landmark_by_name[p.landmark].surface_forms)
 
     def _both_anchors(self, ex: Extraction, toks: Tokens, norms: tuple[str, ...],
                       rel_hits: list[tuple[int, int, tuple[str, bool]]]) -> None:
@@ -3517,9 +3523,7 @@ class ReportAnalyzer:
                 if set(between) & {"call", "calls", "called", "name", "names", "named", "know", "knows"}:
                     continue  # "the one they call the cripple shed": the place named, not one related to it
                 if set(between) & {"keep", "keeps", "kept", "store", "stores", "stored", "house", "houses", "housed"} \
-                        and norms[head] in lx.DESCRIPTION_HEADS | _SHED_HEADS and not any(
-                            name_words(f) == name_words(anchor.text)
-                            for f in self.kb.landmark_by_name[anchor.landmark].surface_forms) and any(
+                        and norms[head] in lx.DESCRIPTION_HEADS | _SHED_HEADS and not self._said_whole(anchor) and any(
                             name_words(f)[-1:] and name_words(f)[-1] in lx.DESCRIPTION_HEADS | _SHED_HEADS
                             for f in self.kb.landmark_by_name[anchor.landmark].surface_forms):
                     continue  # "the shed where they keep the sprinkler pumps": the building the anchor's name says, itself
@@ -3573,11 +3577,10 @@ class ReportAnalyzer:
             if not related:
                 continue
             hword = norms[head]
-            forms = self.kb.landmark_by_name[anchor.landmark].surface_forms
-            if anchor.via is None and name_words(anchor.text) \
-                    and not any(name_words(f) == name_words(anchor.text) for f in forms) and any(
+            if anchor.via is None and name_words(anchor.text) and not self._said_whole(anchor) and any(
                     hword in name_words(f) and len(name_words(f)) >= 3
-                    and set(name_words(f)) - {hword} <= set(name_words(anchor.text)) for f in forms):
+                    and set(name_words(f)) - {hword} <= set(name_words(anchor.text))
+                    for f in self.kb.landmark_by_name[anchor.landmark].surface_forms):
                 # (not where the anchor is said by a whole name of its own: "the pylon that feeds the cable up to
                 # tower five" is another pylon, though "pylon five" is one of its names)
                 continue  # "the hut where Father Christmas sits": the anchor's own name is "father christmas's hut"
@@ -10214,6 +10217,8 @@ _NOT_HEADS = lx.PREPOSITIONS | lx.COPULAS | lx.FILLERS | lx.PRONOUNS | lx.INVERS
 # Plain outbuilding nouns a description may head whatever the place is called ("the shed where they keep the oxygen
 # and acetylene bottles" for a "mesh-walled store")
 _SHED_HEADS = frozenset({"shed", "hut", "cabin"})
+# The parts of a building said in the plural ("the shed roofs", "the cottage doors")
+_PART_PLURALS = frozenset({w + "s" for w in lx.STOREY_WORDS | lx.PART_NOUNS} | {"doors", "windows"})
 # Substances that, said before a noun, only say what a thing holds or runs on ("the diesel day tank")
 _SUBSTANCE_MODIFIERS = frozenset({"diesel", "petrol", "fuel", "oil", "chlorine", "ammonia", "kerosene", "avgas"})
 # ... and the nouns after them that are the danger itself ("chlorine release", "diesel slick")
