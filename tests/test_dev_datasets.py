@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev87) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev89) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -167,6 +167,13 @@ CREAMERY = ROOT / "knowledge_bases" / "creamery"
 DATA_CENTRE_CAMPUS = ROOT / "knowledge_bases" / "data_centre_campus"
 WINTER_MARKET = ROOT / "knowledge_bases" / "winter_market"
 ALLOTMENT_GARDENS = ROOT / "knowledge_bases" / "allotment_gardens"
+BOARDING_SCHOOL = ROOT / "knowledge_bases" / "boarding_school"
+TIMBER_DOCKS = ROOT / "knowledge_bases" / "timber_docks"
+HOT_SPRING_RESORT = ROOT / "knowledge_bases" / "hot_spring_resort"
+CAR_FACTORY = ROOT / "knowledge_bases" / "car_factory"
+MOUNTAIN_HUT_TRAIL = ROOT / "knowledge_bases" / "mountain_hut_trail"
+NIGHT_MARKET_BRIDGE = ROOT / "knowledge_bases" / "night_market_bridge"
+MUSHROOM_FARM = ROOT / "knowledge_bases" / "mushroom_farm"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -485,6 +492,13 @@ SETS = {
     "dev87/data_centre_campus": _set("dev87/data_centre_campus.jsonl", DATA_CENTRE_CAMPUS, "dc87", TWENTY, sep=""),
     "dev87/winter_market": _set("dev87/winter_market.jsonl", WINTER_MARKET, "wm87", TWENTY, sep=""),
     "dev87/allotment_gardens": _set("dev87/allotment_gardens.jsonl", ALLOTMENT_GARDENS, "ag87", TWENTY, sep=""),
+    "dev88/boarding_school": _set("dev88/boarding_school.jsonl", BOARDING_SCHOOL, "bs88", TWENTY, sep=""),
+    "dev88/timber_docks": _set("dev88/timber_docks.jsonl", TIMBER_DOCKS, "td88", TWENTY, sep=""),
+    "dev88/hot_spring_resort": _set("dev88/hot_spring_resort.jsonl", HOT_SPRING_RESORT, "hr88", TWENTY, sep=""),
+    "dev88/car_factory": _set("dev88/car_factory.jsonl", CAR_FACTORY, "cf88", TWENTY, sep=""),
+    "dev89/mountain_hut_trail": _set("dev89/mountain_hut_trail.jsonl", MOUNTAIN_HUT_TRAIL, "mh89", TWENTY, sep=""),
+    "dev89/night_market_bridge": _set("dev89/night_market_bridge.jsonl", NIGHT_MARKET_BRIDGE, "nm89", TWENTY, sep=""),
+    "dev89/mushroom_farm": _set("dev89/mushroom_farm.jsonl", MUSHROOM_FARM, "mf89", TWENTY, sep=""),
 }
 
 
