@@ -4546,3 +4546,89 @@ def test_dev86_phenomena(kb_analyzers, kb, text, expected):
 ])
 def test_dev87_phenomena(kb_analyzers, kb, text, expected):
     assert claims(kb_analyzers[kb], text) == expected
+
+
+@pytest.mark.parametrize("kb, text, expected", [
+    # a posture said or not: "lies upstream of" read backwards as "downstream of"; "lies downhill of" as "uphill of"
+    ("boarding_school", "Footbridge is gone, swept away, and the building just downstream of it is flooded to the roof.",
+     [("boathouse", "flood_or_collapse"), ("footbridge", "flood_or_collapse")]),
+    ("hot_spring_resort", "Guests are sheltering up at the place uphill of the garden you walk through to get to the "
+                          "villas, it's green tagged", [("shrine", "safe_refuge")]),
+    # "sits beside" said bare; stones over a landing area
+    ("hot_spring_resort", "Rockfall at the shrine, and the landing area beside it is covered in stones too",
+     [("helipad", "quake_damage"), ("shrine", "quake_damage")]),
+    # a water supply where the safe-place category counts one: crews fill up there; a pool full to the brim
+    ("boarding_school", "The pool's full to the brim and the pump house is working, appliances can draw their water "
+                        "from the lido.", [("swimming pool", "safe_haven")]),
+    ("timber_docks", "The sprinkler tank is full and the hydrant on it is working, crews can fill up from the green tank.",
+     [("fire water tank", "safe_refuge")]),
+    # "both kilns" is "both the kilns"; fuel spilled where a category's description counts spills
+    ("timber_docks", "Both kilns are on fire, flames coming out of the roof vents", [("drying kilns", "burning_or_fuming")]),
+    ("timber_docks", "the fuel bay's got diesel pouring out all over the ground", [("fuel bay", "keep_out_hazard")]),
+    # where the wind may carry a fire is no claim
+    ("timber_docks", "Running fire through the plank rows and the wind's carrying it down towards the quay.",
+     [("board stacks", "burning_or_fuming")]),
+    # a person in hi-vis who collapsed
+    ("timber_docks", "Bloke in hi-vis collapsed at the debarker.", [("debarker", "person_down")]),
+    # a smell of eggs; a roof that has dropped; flood words
+    ("hot_spring_resort", "a knockdown at the massage rooms, woman collapsed on the treatment table, and it stinks of "
+                          "eggs in there",
+     [("treatment wing", "bad_air"), ("treatment wing", "person_in_trouble")]),
+    ("hot_spring_resort", "it's the grotto itself, part of the roof has dropped", [("steam cave", "quake_damage")]),
+    ("boarding_school", "The watersplash is under a metre of brown water and running fast", [("ford", "flood_or_collapse")]),
+    ("boarding_school", "kids stranded on the iron bridge, the water's going right over the deck",
+     [("footbridge", "casualty_or_missing"), ("footbridge", "flood_or_collapse")]),
+    # a view is no flood; water that drained out through a split wall cancels nothing
+    ("boarding_school", "Team at the pavilion, standing by on the veranda looking out over the fields, nothing to report",
+     []),
+    ("hot_spring_resort", "the cold pool, the wall's split open and all the water's drained out into the rocks",
+     [("cold plunge", "quake_damage")]),
+    # "um, we're up at": a clause of its own, the speaker's place
+    ("hot_spring_resort", "the devil's kitchen is pouring out gas, um, we're up at the viewing platform watching it",
+     [("fumarole field", "bad_air")]),
+    # a place's own part anchors a relation ("the boiler room's pool"); the top of what carries guests up to a place
+    ("hot_spring_resort", "Gas pocket hanging low over the stream that the boiler room's pool overflows into",
+     [("hot creek", "bad_air")]),
+    ("hot_spring_resort", "the field that the platform at the top of the gondola looks out over is pumping out gas",
+     [("fumarole field", "bad_air")]),
+    # a passive said with "get"
+    ("timber_docks", "Trapped worker at the water the log deck gets restocked from", [("log pond", "person_down")]),
+])
+def test_dev88_phenomena(kb_analyzers, kb, text, expected):
+    assert claims(kb_analyzers[kb], text) == expected
+
+
+@pytest.mark.parametrize("kb, text, expected", [
+    # a name cut off after "no", then repaired in its turn: the first place is repaired too
+    ("mountain_hut_trail", "smoke coming off the mast — no the gen— no wait, the log store, it's the log store",
+     [("woodshed", "blaze_and_smoke")]),
+    # a named head, then where it stands ("out west by")
+    ("mountain_hut_trail", "lightning has just hit the big pine out west by the quarry and it's burning",
+     [("lone pine", "blaze_and_smoke"), ("lone pine", "slide_or_cutoff")]),
+    # a danger said of a place, found by a word of a relation's name ("rocks")
+    ("mountain_hut_trail", "we've got rocks peeling off the quarry face, keep out of there",
+     [("old quarry", "slide_or_cutoff")]),
+    # a fire out and cold to the touch is no one out cold
+    ("mountain_hut_trail", "Update: the fire in the woodshed is out, cold to the touch", []),
+    # "the pipe the beck drains through" is no verb of ``pipes_water_down_to``
+    ("mountain_hut_trail", "rocks have come down on the pipe the beck drains through", [("road culvert", "slide_or_cutoff")]),
+    # people words
+    ("mountain_hut_trail", "somebody's twisted their knee at the plank bridge", [("footbridge", "person_in_trouble")]),
+    ("night_market_bridge", "I'm at the fountain, the big dragon one, and I can't find my mummy",
+     [("fountain plaza", "person_in_need")]),
+    # a tent down
+    ("night_market_bridge", "the medical tent is, er, safe -- correction, the centre pole's snapped and the whole canvas "
+                            "is down, keep people out of it", [("first aid tent", "keep_clear")]),
+    # a particle before the preposition of a relation's verb ("tied up at" for ``is moored to``)
+    ("night_market_bridge", "The boat tied up at the jetty is listing badly", [("floating restaurant", "keep_clear")]),
+    # where a way leads up (or down) to is at its top (or bottom); trees in the plural are not the one tree
+    ("mountain_hut_trail", "The building at the top of the path that climbs up from the car park has been struck, "
+                           "the roof's on fire.", [("mountain hut", "blaze_and_smoke")]),
+    ("mountain_hut_trail", "Holdover in the trees at the bottom of the slope that the lightning tree stands over",
+     [("larch plantation", "blaze_and_smoke")]),
+    # a list of dangers said of the place after it
+    ("night_market_bridge", "Smoke and sparks from the substation.",
+     [("substation", "fire_or_gas"), ("substation", "keep_clear")]),
+])
+def test_dev89_phenomena(kb_analyzers, kb, text, expected):
+    assert claims(kb_analyzers[kb], text) == expected

@@ -454,11 +454,14 @@ class ReportAnalyzer:
         # generator power": "the generator's running" there)
         desirable = self.kb.categories_with_role(Role.DESIRABLE)
         if len(desirable) == 1:
-            said = set(norm_phrase(desirable[0].description))
-            for triggers, phrases in lx.DESCRIBED_COMFORTS.values():
-                if said & {w for t in triggers for w in norm_phrase(t)}:
+            said = " ".join(norm_phrase(desirable[0].description))
+            for comfort, (triggers, phrases) in lx.DESCRIBED_COMFORTS.items():
+                if any(re.search(rf"\b{re.escape(' '.join(norm_phrase(t)))}\b", said) for t in triggers):
                     for phrase in phrases:
                         entries.setdefault(norm_phrase(phrase), (desirable[0].name, "category"))
+                    if comfort == "water":  # a tank or pool "full to the brim" is a water supply there, no flood
+                        for phrase in lx.WATER_SUPPLY_FULL:
+                            entries[norm_phrase(phrase)] = (desirable[0].name, "category")
         # 3. category names themselves ("hazard", "safe zone")
         for cat in self.kb.categories:
             entries[norm_phrase(cat.name.replace("_", " "))] = (cat.name, "category")
@@ -504,6 +507,13 @@ class ReportAnalyzer:
                 if held is not None and owned.get(held[0], rel.phrase) != rel.phrase and not name <= set(key):
                     continue
                 forms[key] = (rel.phrase, inverse)
+        for rel in self.kb.relations:
+            # "the building at the top of the path" for ``zigzag path leads_up_to mountain hut``: where a way leads up
+            # (or down) to is at its top (or its bottom); only where no relation of the KB is named so
+            words = rel.phrase.replace("_", " ").split()
+            if len(words) >= 3 and words[0] in _WAY_VERBS and words[-2] in ("up", "down") and words[-1] in ("to", "into", "onto"):
+                for end in (("top", "top end", "head") if words[-2] == "up" else ("bottom", "bottom end", "foot")):
+                    forms.setdefault(norm_phrase(f"at the {end} of"), (rel.phrase, True))
         kb_named = {val[0] for val in forms.values()} & {rel.phrase for rel in self.kb.relations}
         for key, val in list(forms.items()):
             if len(key) >= 3 and key[0] in ("that", "which") and val[0] not in kb_named \
@@ -654,6 +664,10 @@ class ReportAnalyzer:
                 continue
             if t > 0 and (is_number(norms[t - 1]) or norms[t - 1] in lx.NUMBER_WORDS) and not word.lower().endswith(("ed", "ing")):
                 continue  # "two wagons on their sides": things counted, not ``loads_wagons_at``
+            verb = hit[0].replace("_", " ").split()[0]
+            if t > 0 and norms[t - 1] == "the" and verb.endswith("s") and not verb.endswith("ss") \
+                    and toks.tokens[t].text.lower() == verb[:-1] and t + 1 < len(norms) and norms[t + 1] in lx.ARTICLES:
+                continue  # "the tarmac over the pipe the beck drains through": a noun heading a clause, not ``pipes ...``
             if t > 0 and ("a" in norms[max(0, t - 2):t] or "an" in norms[max(0, t - 2):t]) \
                     and not _same_stem(norms[t], hit[0].split()[0]) and not word.lower().endswith(("ed", "ing")):
                 continue  # "there's a derailed wagon on it": a thing, not the noun inside ``loads_wagons_at``
@@ -719,6 +733,14 @@ class ReportAnalyzer:
             for j in range(t + 1, min(t + 4, len(norms))):
                 if j in taken or toks.clause_start[j] or norms[j] in lx.COPULAS:
                     break  # ("the river it crosses is way over its banks": the verb ends there, a clause goes on)
+                if j == t + 1 and norms[j] in ("up", "down", "off", "back") and j + 1 < len(norms) \
+                        and norms[j + 1] in lx.RELATION_ENDINGS | {"at", "into", "by"} and j + 1 not in taken \
+                        and not toks.clause_start[j + 1] and not set(phrase.replace("_", " ").split()[1:-1]) & _OWN_PARTICLES \
+                        and not (back and back[-1] in ("im", "were", "am", "m", "we", "i")):
+                    # (not where the relation has a particle of its own, "looking up at" for ``looks out over``, nor
+                    # where the speaker is: "we're parked up at")
+                    b = j + 2  # "the boat tied up at the jetty": a particle, then the preposition
+                    break
                 if norms[j] in lx.RELATION_ENDINGS | {"into", "by"}:
                     b = j + 1
                     if b < len(norms) and norms[j] in ("on", "up", "down", "out", "off", "over") \
@@ -835,7 +857,7 @@ class ReportAnalyzer:
             if norms[a:b] in self._needs_article and prev in ("that", "which") and b - a == 1 and b < len(norms) \
                     and norms[b] in lx.ARTICLES and norms[a] in self._relation_verbs:
                 continue  # "the pontoon that pumps the diesel for the fish quay": the verb of `pumps_diesel_for`
-            if norms[a:b] in self._needs_article and prev not in lx.DETERMINERS | {"our", "your", "my", "his", "her"} \
+            if norms[a:b] in self._needs_article and prev not in lx.DETERMINERS | {"our", "your", "my", "his", "her", "both"} \
                     and b not in glossary_ends and not acronym and not heading and not self._telegraphic_subject(toks, norms, a, b) \
                     and not (log and (b - a >= 2 or prev in lx.PREPOSITIONS and len(norms[a]) >= 5)) \
                     and not (b - a >= 2 and prev in ("in", "at", "from") and a >= 2 and norms[a - 2] in ("live", "living", "lives", "stay", "staying")) \
@@ -846,7 +868,8 @@ class ReportAnalyzer:
                     and not (toks.clause_start[a] and toks.tokens[b - 1].text.lower().replace("’", "'").endswith("'s")
                              and any(norms[i - 1] == "the" and norms[i:i + b - a] == norms[a:b] for i in range(1, a))):
                 # ("we're at the kirk, ..., kirk's our rest centre now": said again, without its article)
-                # ("Jam tent's gone up": a name that opens its sentence as the subject, "the" left off)
+                # ("Jam tent's gone up": a name that opens its sentence as the subject, "the" left off; "both kilns" is
+                # "both the kilns")
                 # ("I live in toast rack, number 14": the article a learner of the language leaves out)
                 # the KB wrote "the tower": "bell tower" is not it (a log drops articles: "fire LPG plant",
                 # "leak at bldg at mouth of galleria")
@@ -3333,8 +3356,9 @@ class ReportAnalyzer:
     def _resolve_open_inverse(self, ex: Extraction, toks: Tokens, norms: tuple[str, ...], place_tokens: set[int],
                               marker_tokens: set[int], cue_tokens: set[int]) -> None:
         """"the shop the pharmacy is fixed to": a generic head, the anchor, then an unknown linking
-        phrase ending the clause, matched to the KB's relation forms with MiniLM and read backwards."""
-        for anchor in [p for p in ex.places if p.status == "active" and p.via is None]:
+        phrase ending the clause, matched to the KB's relation forms with MiniLM and read backwards (the anchor may be a
+        place's own part: "the stream that the boiler room's pool overflows into")."""
+        for anchor in [p for p in ex.places if p.status == "active" and (p.via is None or p.via.startswith("owned: "))]:
             k = anchor.start_tok
             while k > 0 and norms[k - 1] in lx.DETERMINERS | {"that", "which"} and anchor.start_tok - k < 2:
                 k -= 1
@@ -3855,6 +3879,11 @@ class ReportAnalyzer:
         elif a >= 3 and norms[a - 1] in ("they", "we", "you") and pronoun and not toks.clause_start[a - 1] \
                 and any(p.end_tok == a - 1 and p.status == "active" and p.via is None for p in ex.places):
             head_end = a - 1  # "the cages they tend from it": a named head, then a clause with its own subject
+        elif (k := next((k for k in (1, 2) if a > k and all(w in _WHERE_ADVERBS for w in norms[a - k:a])
+                         and not any(toks.clause_start[j] for j in range(a - k, a + 1))
+                         and any(p.end_tok == a - k and p.status == "active" and p.via is None for p in ex.places)),
+                        None)) is not None:
+            head_end = a - k  # "the big pine out west by the quarry": a named head, then where it stands
         head_place = next((p for p in ex.places if p.end_tok == head_end and p.status == "active"), None)
         if head_place is not None and (toks.sentence_start[head_end] or toks.clause_start[head_end] and pronoun):
             head_place = None  # "I'm at the warehouse. Behind it there's flooding": the place ends another clause
@@ -4100,7 +4129,9 @@ class ReportAnalyzer:
             head_start, head_text = a, ""
         target, via = self._follow(anchor.landmark, phrase, head_text, inverse=flipped)
         if target is not None and generic and words:
-            target, via = self._head_named_neighbour(anchor.landmark, words[-1], target, via)
+            said = toks.tokens[head_end - 1].text.lower()
+            target, via = self._head_named_neighbour(anchor.landmark, words[-1], target, via,
+                                                     plural=said.endswith("s") and not words[-1].endswith("s"))
         if target is None and pronoun and generic and any(
                 w.isalpha() and w not in lx.PREPOSITIONS and w not in lx.RELATION_ADVERBS and w not in lx.SPATIAL_WORDS
                 for w in norms[a:b]):
@@ -4166,6 +4197,13 @@ class ReportAnalyzer:
                         and norms[a] in ("under", "underneath", "beneath", "below"):
                     return  # "road under the scales is gone": the ground it stands on, when nothing lies below it
                     # ("I live on the lane below the bund. There's a long crack along the top of it")
+                named_words = set(norm_phrase(phrase.replace("_", " ")))
+                danger = [m for i in range(a, b) if (m := self._cues.match_at(norms, i)) is not None and m[1][0]
+                          and self.kb.category_by_name[m[1][0]].role == Role.UNDESIRABLE
+                          and not set(norms[i:m[0]]) & named_words]
+                if b - a >= 3 and danger:
+                    return  # "we've got rocks peeling off the quarry face": a danger said of the place, found by a
+                    # word of ``spills its rocks onto``, no description of another
                 ex.places[idx] = replace(anchor, status="reference",
                                          reason=f"reference point of an unresolved '{phrase}' description")
                 return
@@ -4236,7 +4274,8 @@ class ReportAnalyzer:
             return None, None
         return target, f"{rel.subject} {rel.relation} {rel.object} (by meaning {best:.2f})"
 
-    def _head_named_neighbour(self, anchor: str, head: str, target: str, via: str | None) -> tuple[str, str | None]:
+    def _head_named_neighbour(self, anchor: str, head: str, target: str, via: str | None,
+                              plural: bool = False) -> tuple[str, str | None]:
         """"the stack that takes the vent off the cracker", where the words read as ``sulphur recovery unit takes the
         sour gas off cat cracker``: a head noun that is a word of one landmark's names only ("flare stack"), and not a
         word of the place the relation reached (its names or description), names the place meant, when that landmark
@@ -4245,6 +4284,9 @@ class ReportAnalyzer:
         if head in lx.GENERIC_HEADS or not owners or len(owners) != 1 or target in owners:
             return target, via
         other = next(iter(owners))
+        if plural and not any(w.endswith("s") and norm_phrase(w) == (head,)
+                              for f in self.kb.landmark_by_name[other].surface_forms for w in f.lower().split()):
+            return target, via  # "the trees at the bottom of the slope": many, not the one "lightning tree"
         if other == anchor or (anchor, other) not in self._related_pairs \
                 or head in self._description_words().get(target, ()):
             return target, via
@@ -4734,8 +4776,8 @@ class ReportAnalyzer:
                         and p.reason.startswith("reference point for '")), None)
             owner = max((p for p in ex.places if ref is not None and p.status == "active" and p.via is None
                          and p.end_tok <= ref.start_tok), key=lambda p: p.end_tok, default=None)
-            if ref is not None and owner is not None and ref.start_tok - owner.end_tok <= 4:
-                anchor = owner
+            if ref is not None and owner is not None and ref.start_tok - owner.end_tok <= 6:
+                anchor = owner  # ("the field that the platform at the top of the gondola looks out over")
         we_are = j > 1 and norms[j - 1] == "were" and "'" in ex.tokens.tokens[j - 1].text.replace("’", "'")
         if anchor is None and j > 1 and (norms[j - 1] in ("it", "its", "they", "theyre", "we", "i") or we_are) \
                 and (norms[j - 2] in lx.GENERIC_HEADS | {"that", "which"} or self._plain_head(norms, j - 2)):
@@ -5938,6 +5980,22 @@ class ReportAnalyzer:
                 # "no mum, that's the lanterns on the water behind it, look, it's the wonky house that's burning":
                 # what the repair says was meant, said as "it's the X that ..." later in the sentence
                 after = [cleft]
+            if not after and k + 1 < len(ex.markers):
+                # "the mast — no the gen— no wait, the log store": a name cut off after the marker, repaired in its
+                # turn; the place said after the next marker is what this one repairs to
+                cut = next((p for p in ex.places if p.reason.startswith("false start") and b <= p.start_tok <= b + 2
+                            and p.end_tok <= ex.markers[k + 1][0] <= p.end_tok + 1), None)
+                if cut is not None:
+                    b2, end2 = self._after_clause(ex, k + 1)
+                    after = [p for p in ex.places if b2 <= p.start_tok < end2 and p.status == "active"]
+                    successor = {q.replaces: q for q in ex.places if q.replaces is not None}
+                    for r in ex.places if not after else []:
+                        q = successor.get(r.start_tok) if b2 <= r.start_tok < end2 and r.reason.startswith("restarted") \
+                            else None
+                        while q is not None and q.status != "active":
+                            q = successor.get(q.start_tok)
+                        if q is not None:
+                            after.append(q)  # ("... the log store, it's the log store": said again, the repeat stands)
             if not after:
                 # "belay that, in the mill — the mill": the new place was restarted; its repeat stands in
                 restarted = [p for p in ex.places if b <= p.start_tok < end and p.reason.startswith("restarted")]
@@ -7067,6 +7125,10 @@ class ReportAnalyzer:
             j -= 1
         if j >= 1 and norms[j] in ("there", "here") and norms[j - 1] in ("up", "down", "in", "over", "out", "back"):
             j -= 2  # "one of the riggers up there has collapsed": where they are, between
+        k = next((k for k in range(j - 1, max(-1, j - 4), -1) if norms[k] in ("in", "wearing")), None)
+        if k is not None and k >= 1 and (norms[k - 1] in lx.LAY_PERSONS or norms[k - 1] in lx.WORKER_PERSONS) \
+                and all(norms[m].isalpha() or "-" in norms[m] for m in range(k + 1, j + 1)):
+            return True  # "Bloke in hi-vis collapsed": what the person wears, between
         if j < 0:
             return False
         w = norms[j]
@@ -8153,6 +8215,9 @@ class ReportAnalyzer:
             h = self._cancel.match_at(norms, k)
             if h is not None and h[1].endswith("out") and h[0] < len(norms) and norms[h[0]] in lx.ROUTE_PREPOSITIONS:
                 h = None  # "evacuation route is out through the park": the way out, nothing put out
+            if h is not None and h[1] == "drained" and norms[h[0]:h[0] + 2] in (("out", "into"), ("out", "onto"),
+                                                                               ("away", "into"), ("into", "the")):
+                h = None  # "the wall's split open and all the water's drained out into the rocks": where it went
             if h is not None and steps + articles >= 7 and not h[1].endswith("out"):
                 break  # ("the boathouse is smashed to bits the big doors are just gone": only "is out" reaches so far)
             if h is not None:
@@ -8520,8 +8585,9 @@ class ReportAnalyzer:
             ("the viaduct has, um, lost a parapet", "the viaduct, um, has lost a parapet")."""
             h = i if norms[i] in lx.HESITATIONS else i - 1 if norms[i - 1] in lx.HESITATIONS else None
             return h is not None and 0 < h < len(norms) - 1 and not toks.sentence_start[i] \
-                and (norms[h - 1] in aux or norms[h + 1] in aux) and h - 1 not in marker_tokens \
-                and h + 1 not in marker_tokens
+                and (norms[h - 1] in aux or norms[h + 1] in aux and not any(
+                    q in toks.tokens[h + 1].text for q in ("'", "’"))) and h - 1 not in marker_tokens \
+                and h + 1 not in marker_tokens  # ("gas, um, we're up at the platform": "we're" opens a clause)
         for i in range(1, len(toks)):
             if toks.clause_start[i] and not (held(i) and norms[i] not in lx.COORDINATORS and i not in coord) \
                     or norms[i] in lx.COORDINATORS or i in coord or i in marker_tokens and (i - 1) not in marker_tokens:
@@ -9707,7 +9773,8 @@ class ReportAnalyzer:
         j = k + 1
         while j < len(segs) and j - k <= 3 and sentence_of[segs[j][0]] == sentence_of[segs[k][0]]:
             if seg_places.get(j):
-                return j if not seg_cues.get(j) else None
+                # ("Smoke and sparks from the box the food stalls back onto": a list of dangers said of its place)
+                return j if not seg_cues.get(j) or j == k + 1 and _cue_list_into(k, j, segs, seg_cues, norms) else None
             if seg_cues.get(j):
                 return None
             j += 1
@@ -9909,6 +9976,15 @@ _HEAD_ADJECTIVES = frozenset({"open", "deep", "far", "near", "next", "other"})
 # (with NAME_ADJECTIVES: "the open water the slip drops into", "the next stage the primary tanks send their flow to")
 _SPATIAL_ENDINGS = frozenset({"beneath", "under", "underneath", "below", "above", "behind", "beside", "into",
                               "onto", "against", "inside", "over", "across", "through"})
+_OWN_PARTICLES = frozenset({"up", "down", "off", "back", "out", "over"})  # (a verb's own: "looks out over")
+_WAY_VERBS = frozenset({"leads", "lead", "climbs", "climb", "runs", "run", "goes", "go", "winds", "wind", "slopes", "slope",
+                        "rises", "rise", "heads", "head", "drops", "drop", "descends", "descend", "steps", "step",
+                        "carries", "carry", "takes", "take", "lifts", "lift"})  # (a lift or a gondola too)
+_WHERE_ADVERBS = frozenset({"out", "west", "east", "north", "south", "over", "up", "down", "back", "there", "right", "just",
+                            "way"})  # (between a place and where it stands: "the big pine out west by the quarry")
+# Where a place sits, said without its posture ("the landing area beside it" for ``sits beside``): not "over" or "by"
+_POSTURE_PLACES = frozenset({"beside", "behind", "alongside", "against", "beneath", "underneath", "below", "above", "next"})
+_POSTURES = frozenset({"sits", "stands", "lies", "sit", "stand", "lie"})  # verbs of where a place is, not what it does
 _EMIT_VERBS = frozenset({"blows", "sends", "pours", "spills", "throws", "casts", "sheds", "vents", "drifts"})
 _EMIT_ENDINGS = ("over", "onto", "across")  # (what one place puts over another and the other gets off it: "blows its smoke over")
 _SIZE_WORDS = frozenset({"big", "small", "large", "little", "old", "new", "great", "long", "tall", "high", "low"})
@@ -10392,10 +10468,12 @@ def _relation_forms(phrase: str) -> list[tuple[str, bool]]:
             continue
         tail = words[i + 1 :]
         tails = [tail] if not tail or tail[0] not in ("of", "from") else [["of"], ["from"]]
+        # a posture said or not: "lies upstream of" is "the building downstream of it" read backwards
+        heads = [words[:i]] + ([[]] if i == 1 and words[0] in _POSTURES else [])
         for family, inverse in ((w, False), (lx.OPPOSITE_DIRECTION[w], True)):
             for member in lx.DIRECTION_FAMILIES[family]:
                 for t in ([[]] if member in lx.BARE_DIRECTIONS else tails):
-                    out.append((" ".join(words[:i] + [member] + t), inverse))
+                    out.extend((" ".join(head + [member] + t), inverse) for head in heads)
     # "faces across the burn to": the place "across the burn from" the other, read forwards
     for i, w in enumerate(words):
         if w == "across" and i + 3 < len(words) and words[i + 1] == "the" and words[i + 3] in ("to", "from", "at"):
@@ -10407,6 +10485,9 @@ def _relation_forms(phrase: str) -> list[tuple[str, bool]]:
         out.append((" ".join(swapped), True))
     if words[0] in ("sits", "stands", "lies") and len(words) >= 4 and words[-1] in ("with", "to", "of"):
         out.append((" ".join(words[1:]), False))  # "the cottage cheek by jowl with the tea room": the posture unsaid
+    elif words[0] in _POSTURES and 2 <= len(words) <= 3 and words[1] in _POSTURE_PLACES \
+            and words[-1] in lx.RELATION_ENDINGS | _SPATIAL_ENDINGS:
+        out.append((" ".join(words[1:]), False))  # "the landing area beside it" for ``sits beside``
     if len(words) >= 4 and words[1] in ("out", "up", "down", "back", "along") and words[0].endswith("s") \
             and words[2] in ("in", "on", "at", "by", "to", "into", "onto", "over", "under", "behind", "beside") \
             and words[-1] in ("of", "to", "with", "from", "onto", "into"):
@@ -10426,6 +10507,8 @@ def _relation_forms(phrase: str) -> list[tuple[str, bool]]:
             out.extend(((f"{copula} {rest}", False), (f"that {copula} {rest}", False), (f"which {copula} {rest}", False)))
         out.extend(((f"that {rest}", False), (rest, False)))
         if words[1].endswith("ed") or words[1] in lx.IRREGULAR_PARTICIPLES:
+            # a passive said with "get": "the water the log deck gets restocked from"
+            out.extend((f"{get} {rest}", False) for get in ("gets", "get", "got", "getting"))
             # "is dug beneath" said of whoever did it: "the pit they dug beneath the old pad"; in the making:
             # "the cell that's being dug out below it"
             if words[-1] in _SPATIAL_ENDINGS:  # (not "was dug for": "the pit they dug to whiten the horse")
