@@ -4197,11 +4197,11 @@ class ReportAnalyzer:
                         and norms[a] in ("under", "underneath", "beneath", "below"):
                     return  # "road under the scales is gone": the ground it stands on, when nothing lies below it
                     # ("I live on the lane below the bund. There's a long crack along the top of it")
-                named_words = set(norm_phrase(phrase.replace("_", " ")))
-                danger = [m for i in range(a, b) if (m := self._cues.match_at(norms, i)) is not None and m[1][0]
-                          and self.kb.category_by_name[m[1][0]].role == Role.UNDESIRABLE
-                          and not set(norms[i:m[0]]) & named_words]
-                if b - a >= 3 and danger:
+                named_words = set(norm_phrase(phrase))
+                if b - a >= 3 and any(
+                        (m := self._cues.match_at(norms, i)) is not None and m[1][0]
+                        and self.kb.category_by_name[m[1][0]].role == Role.UNDESIRABLE
+                        and not set(norms[i:m[0]]) & named_words for i in range(a, b)):
                     return  # "we've got rocks peeling off the quarry face": a danger said of the place, found by a
                     # word of ``spills its rocks onto``, no description of another
                 ex.places[idx] = replace(anchor, status="reference",
@@ -5987,29 +5987,15 @@ class ReportAnalyzer:
                             and p.end_tok <= ex.markers[k + 1][0] <= p.end_tok + 1), None)
                 if cut is not None:
                     b2, end2 = self._after_clause(ex, k + 1)
-                    after = [p for p in ex.places if b2 <= p.start_tok < end2 and p.status == "active"]
-                    successor = {q.replaces: q for q in ex.places if q.replaces is not None}
-                    for r in ex.places if not after else []:
-                        q = successor.get(r.start_tok) if b2 <= r.start_tok < end2 and r.reason.startswith("restarted") \
-                            else None
-                        while q is not None and q.status != "active":
-                            q = successor.get(q.start_tok)
-                        if q is not None:
-                            after.append(q)  # ("... the log store, it's the log store": said again, the repeat stands)
+                    after = [p for p in ex.places if b2 <= p.start_tok < end2 and p.status == "active"] \
+                        or _active_repeats(ex, b2, end2)  # ("... the log store, it's the log store": the repeat stands)
             if not after:
                 # "belay that, in the mill — the mill": the new place was restarted; its repeat stands in
                 restarted = [p for p in ex.places if b <= p.start_tok < end and p.reason.startswith("restarted")]
                 if not restarted:
                     continue
                 link_to = min(restarted, key=lambda p: p.start_tok)
-                by_replaced = {q.replaces: q for q in ex.places if q.replaces is not None}
-                after = []
-                for r in restarted:
-                    q = by_replaced.get(r.start_tok)
-                    while q is not None and q.status != "active":
-                        q = by_replaced.get(q.start_tok)
-                    if q is not None:
-                        after.append(q)
+                after = _active_repeats(ex, b, end)
                 if not after:
                     continue
             else:
@@ -9779,6 +9765,22 @@ class ReportAnalyzer:
                 return None
             j += 1
         return None
+
+
+def _active_repeats(ex: Extraction, lo: int, hi: int) -> list[PlaceMention]:
+    """For each place restarted between tokens ``lo`` and ``hi`` ("in the mill — the mill"), the active place that in
+    the end repeats it (following each place's ``replaces`` link)."""
+    by_replaced = {q.replaces: q for q in ex.places if q.replaces is not None}
+    out = []
+    for r in ex.places:
+        if not (lo <= r.start_tok < hi and r.reason.startswith("restarted")):
+            continue
+        q = by_replaced.get(r.start_tok)
+        while q is not None and q.status != "active":
+            q = by_replaced.get(q.start_tok)
+        if q is not None:
+            out.append(q)
+    return out
 
 
 _FRAGMENT_WORDS = frozenset(lx.STOREY_WORDS | lx.PART_NOUNS | lx.LOCATIVE_PARTS) | {

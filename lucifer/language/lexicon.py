@@ -1478,12 +1478,12 @@ DESCRIBED_KINDS: dict[str, tuple[frozenset[str], list[str]]] = {
               ["tripped out", "has tripped", "have tripped", "tripped", "shut down", "has shut down", "have shut down",
                "won't start", "wont start", "will not start", "is dead", "s dead", "are dead", "gone dead",
                "no pressure", "have failed", "has failed", "failed", "lost pressure", "no power no nothing"]),
-    # (a KB whose danger is a gate or fence left open, so animals get out: "the lion gates are standing wide open")
     # (a KB whose danger is spilled fuel, not only burning fuel: "the fuel bay's got diesel pouring out")
     "spill": (frozenset({"spilled", "spill", "spills", "spillage", "spilt"}),
               ["diesel pouring out", "fuel pouring out", "petrol pouring out", "diesel all over the ground",
                "fuel all over the ground", "petrol all over the ground", "diesel everywhere", "fuel everywhere",
                "pouring out all over the ground", "chemical's all over the floor", "chemicals all over the floor"]),
+    # (a KB whose danger is a gate or fence left open, so animals get out: "the lion gates are standing wide open")
     "open": (frozenset({"standing open", "left open", "wide open"}),
              ["standing open", "standing wide open", "wide open", "left open", "been left open", "left wide open"]),
 }
