@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev89) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev90) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -174,6 +174,10 @@ CAR_FACTORY = ROOT / "knowledge_bases" / "car_factory"
 MOUNTAIN_HUT_TRAIL = ROOT / "knowledge_bases" / "mountain_hut_trail"
 NIGHT_MARKET_BRIDGE = ROOT / "knowledge_bases" / "night_market_bridge"
 MUSHROOM_FARM = ROOT / "knowledge_bases" / "mushroom_farm"
+LOCK_KEEPERS_COTTAGES = ROOT / "knowledge_bases" / "lock_keepers_cottages"
+HOSPICE_GROUNDS = ROOT / "knowledge_bases" / "hospice_grounds"
+FAIRGROUND_PIER = ROOT / "knowledge_bases" / "fairground_pier"
+MONASTERY_VINEYARD = ROOT / "knowledge_bases" / "monastery_vineyard"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -499,6 +503,10 @@ SETS = {
     "dev89/mountain_hut_trail": _set("dev89/mountain_hut_trail.jsonl", MOUNTAIN_HUT_TRAIL, "mh89", TWENTY, sep=""),
     "dev89/night_market_bridge": _set("dev89/night_market_bridge.jsonl", NIGHT_MARKET_BRIDGE, "nm89", TWENTY, sep=""),
     "dev89/mushroom_farm": _set("dev89/mushroom_farm.jsonl", MUSHROOM_FARM, "mf89", TWENTY, sep=""),
+    "dev90/lock_keepers_cottages": _set("dev90/lock_keepers_cottages.jsonl", LOCK_KEEPERS_COTTAGES, "lk90", TWENTY, sep=""),
+    "dev90/hospice_grounds": _set("dev90/hospice_grounds.jsonl", HOSPICE_GROUNDS, "hg90", TWENTY, sep=""),
+    "dev90/fairground_pier": _set("dev90/fairground_pier.jsonl", FAIRGROUND_PIER, "fp90", TWENTY, sep=""),
+    "dev90/monastery_vineyard": _set("dev90/monastery_vineyard.jsonl", MONASTERY_VINEYARD, "mv90", TWENTY, sep=""),
 }
 
 
