@@ -4632,3 +4632,82 @@ def test_dev88_phenomena(kb_analyzers, kb, text, expected):
 ])
 def test_dev89_phenomena(kb_analyzers, kb, text, expected):
     assert claims(kb_analyzers[kb], text) == expected
+
+
+@pytest.mark.parametrize("kb, text, expected", [
+    # a linking phrase no relation form is close to, read among the anchor's own relations by meaning
+    ("mountain_hut_trail", "Separately, the high ground the mast is anchored to is getting hammered, grass burning "
+                           "all along it.", [("summit ridge", "blaze_and_smoke")]),
+    ("mountain_hut_trail", "rockslide's come down into the concrete box the hut gets its water from, big splash",
+     [("water intake", "slide_or_cutoff")]),
+    ("water_park", "Casualty in the water the rapids bridge goes over, she's been swept along underneath it.",
+     [("lazy river", "people_in_peril")]),
+    # a relative clause found by its shape alone, the anchor inside it
+    ("water_park", "The tower they send people down the kamikaze from is swaying badly, bolts have sheared at the base.",
+     [("flume tower", "storm_wreckage")]),
+    ("hydro_dam", "the shed that backs up the control room's power - the diesel one - oil fire, fuel line's gone and "
+                  "it's caught.", [("standby generator house", "burn_and_arc")]),
+    # no relative clause: a clause of its own, a contracted "is", no verb in the link, a claim, a place said again
+    ("moorland_village", "Bank slump on Hagg Beck, and the mill race wall has collapsed into the bobbin mill.",
+     [("bobbin mill", "washout_and_slip"), ("hagg beck", "washout_and_slip")]),
+    ("riverbend", "Sluice gate's jammed open and the river's ripping through at the weir.", [("weir", "threat")]),
+    ("aquarium_centre", "I've sent the diners up to the roof terrace, it's sheltered and dry, good holding point.",
+     [("rooftop terrace", "holding_ground")]),
+    ("knowledge_base", "there's a fella come in here off the street saying his missus is trapped in the flats",
+     [("apartment block", "victim")]),
+    ("cliff_railway_town", "the row of bathing huts, no, not them, it's the stretch they sit below, the walk itself, "
+                           "it's split open right down the middle", [("promenade", "slipped_or_buried")]),
+])
+def test_partners_by_meaning(kb_analyzers, kb, text, expected):
+    assert claims(kb_analyzers[kb], text) == expected
+
+
+@pytest.mark.parametrize("kb, text, expected", [
+    # a head word that names a place only in part ("trees" of "the olive trees") gives way to the relation said
+    ("monastery_vineyard", "uh the trees hanging over the wellhouse are crowning, huge flames right up in the tops of "
+                           "them", [("pine wood", "burning_or_smouldering")]),
+    # "where" opening the clause, a particle inside the relation's verb
+    ("monastery_vineyard", "er, where the bottom gate opens out onto, that's the safe refuge now",
+     [("water meadow", "refuge_or_water_supply")]),
+    # a relation that leads nowhere from its anchor, and a head word naming a place related to it
+    ("monastery_vineyard", "wall slip on the terraces below the barn that the fuel store stands behind, the whole "
+                           "retaining wall's gone", [("lower terraces", "flooded_or_unstable")]),
+    # a word cut off and said again whole
+    ("monastery_vineyard", "smoke inhal-- inhalation, two brothers, at the pump ho-- no no, at the fire pond, they were "
+                           "filling buckets there", [("fire pond", "person_in_trouble")]),
+    ("monastery_vineyard", "Smoke casualty at the holy well, a young lad, one of the volunteers, coughing and dizzy.",
+     [("spring house", "person_in_trouble")]),
+    # where a crew is moving to, to help, is no claim to guess at
+    ("monastery_vineyard", "the fire at the pomace heap is out now, the crew's moving across to the winery to help with "
+                           "the pumps", []),
+    # whom a safe place is for is no one in trouble
+    ("hospice_grounds", "Control, confirmed safe for the walking patients: the little chapel.", [("chapel", "safe_haven")]),
+    ("hospice_grounds", "Smoke drifting into Ashworth House, and the block that's joined onto it has lost its ceiling.",
+     [("kitchen block", "slip_or_collapse"), ("main house", "fire_and_fumes")]),
+    # where a person climbed is no description of a place
+    ("hospice_grounds", "a nurse climbed up onto the big wall to look and she's slipped and done her back in, she's "
+                        "stuck up there on top of it", [("retaining wall", "person_at_risk")]),
+    ("hospice_grounds", "I've got one firefighter with a twisted knee at the top car park.",
+     [("visitors' car park", "person_at_risk")]),
+    # the first half of a compound ("walk-in") heads no description
+    ("hospice_grounds", "a kitchen assistant is shut in the walk-in freezer in the kitchens and she can't get out.",
+     [("kitchen block", "person_at_risk")]),
+    # a relative clause whose verb is a danger word ("spills over") still describes its head
+    ("hospice_grounds", "uh the pond that spills over onto the hillside is our water point, we've got two pumps "
+                        "drawing from it.", [("top pond", "safe_haven")]),
+    # "nobody has brought him out" cancels nothing
+    ("hospice_grounds", "Patient unaccounted, Bracken Ward: Mr Hale, he's not on the evacuation list and nobody has "
+                        "brought him out yet.", [("Bracken Ward", "person_at_risk")]),
+])
+def test_dev90_phenomena(kb_analyzers, kb, text, expected):
+    assert claims(kb_analyzers[kb], text) == expected
+
+
+def test_partner_reading_needs_a_verb_and_a_lead(kb_analyzers):
+    """``_partner_by_meaning`` reads no link without a word that may be its verb, and no partner that does not lead
+    the next one by the margin."""
+    an = kb_analyzers["mountain_hut_trail"]
+    assert an._partner_by_meaning("weather mast", "anchored to", "high ground") == (
+        "summit ridge", "weather mast is_guyed_to summit ridge")
+    assert an._partner_by_meaning("weather mast", "up on", "high ground") == (None, None)
+    assert an._partner_by_meaning("weather mast", "anchored to", "high ground", margin=1.0) == (None, None)

@@ -2768,6 +2768,7 @@ class ReportAnalyzer:
             self._resolve_open(ex, toks, norms, place_tokens, marker_tokens, cue_tokens)
             self._resolve_open_inverse(ex, toks, norms, place_tokens, marker_tokens, cue_tokens)
             self._resolve_open_ours(ex, toks, norms, place_tokens, marker_tokens, cue_tokens)
+            self._resolve_by_partners(ex, toks, norms, place_tokens, marker_tokens, cue_tokens)
             if sum(p.via is not None for p in ex.places) > described:
                 # "the building the new maltings malts its barley for ..., and the pub it casts its shadow over": a
                 # place so described may be the "it" of a description after it
@@ -3214,12 +3215,13 @@ class ReportAnalyzer:
     OPEN_RELATION_MARGIN = 0.1
 
     def _follow_link(self, anchor: str, link: str, head: str, inverse: bool,
-                     sims: np.ndarray | None = None) -> tuple[str | None, str | None]:
+                     sims: np.ndarray | None = None, partners: bool = True) -> tuple[str | None, str | None]:
         """Follow an unlisted linking phrase from ``anchor``: of the KB relation forms close to it
         (within ``OPEN_RELATION_MARGIN`` of the best), the closest one the anchor takes part in,
         in the direction the phrase reads, wins ("whatever taxiway alpha comes out onto":
         ``leads_onto``, which taxiway alpha is the subject of, not ``opens_onto``); if none does,
-        the best form is followed as before. ``sims``: the phrase's ``_link_similarities``, if known."""
+        the best form is followed as before; if that leads nowhere either, the anchor's own relations are read by
+        ``_partner_by_meaning`` (unless ``partners`` is False). ``sims``: the phrase's ``_link_similarities``, if known."""
         _, meta = self._relation_texts()
         if sims is None:
             sims = self._link_similarities(link)
@@ -3227,8 +3229,10 @@ class ReportAnalyzer:
         best = float(sims[order[0]])
         if best < self.OPEN_RELATION_MIN_SIM:
             if best >= self.OPEN_RELATION_HINT_SIM:
-                return self._related_by_head(anchor, head)
-            return None, None
+                found = self._related_by_head(anchor, head)
+                if found[0] is not None or not partners:
+                    return found
+            return self._partner_by_meaning(anchor, link, head) if partners else (None, None)
         for i in order:
             if sims[i] < max(self.OPEN_RELATION_MIN_SIM, best - self.OPEN_RELATION_MARGIN):
                 break
@@ -3239,7 +3243,150 @@ class ReportAnalyzer:
                 return target, via
         phrase, inv = meta[int(order[0])]
         # (a link MiniLM only guesses at is read no further by height: "the gardens the Imperial looks out on")
-        return self._follow(anchor, phrase, head, inverse=_reads_backwards(link, phrase, inv) != inverse, _vertical=False)
+        found = self._follow(anchor, phrase, head, inverse=_reads_backwards(link, phrase, inv) != inverse, _vertical=False)
+        return found if found[0] is not None or not partners else self._partner_by_meaning(anchor, link, head)
+
+    PARTNER_MIN_SCORE = 0.55
+    PARTNER_MARGIN = 0.08
+
+    def _partner_by_meaning(self, anchor: str, link: str, head: str, min_score: float | None = None,
+                            margin: float | None = None) -> tuple[str | None, str | None]:
+        """A linking phrase no relation form is close to, read among the anchor's own relations only, where the link
+        has a word that may be its verb: each place the KB relates to the anchor scores the MiniLM similarity of the
+        link to that relation's name plus that of the head noun to the place's best name or description ("the high
+        ground the mast is anchored to": ``is_guyed_to`` the summit ridge, not ``relays the radio for`` the ranger
+        station; "the concrete box the hut gets its water from": the water intake that ``pipes_water_down_to`` it).
+        The best wins if it scores ``PARTNER_MIN_SCORE`` (or ``min_score``) and leads the next by ``PARTNER_MARGIN``
+        (or ``margin``)."""
+        assert self.embedder is not None
+        words = link.split()
+        if not any(_verb_like(w) or w in _SUBJECT_PRONOUNS and k + 1 < len(words) for k, w in enumerate(words)):
+            return None, None  # ("the hill road past the caravan park", "full of": no verb, no relation said)
+        scored: dict[str, tuple[float, str]] = {}
+        v_link = self.embedder.embed_one(link)
+        v_head = self.embedder.embed_one(head)
+        for rel in self.kb.relations:
+            if anchor not in (rel.subject, rel.object) or rel.subject == rel.object:
+                continue
+            other = rel.object if rel.subject == anchor else rel.subject
+            score = float(self._partner_texts([rel.phrase.replace("_", " ")])[0] @ v_link) \
+                + float(np.max(self._partner_texts(self._partner_names(other)) @ v_head))
+            if score > scored.get(other, (-1.0, ""))[0]:
+                scored[other] = (score, f"{rel.subject} {rel.relation} {rel.object}")
+        if not scored:
+            return None, None
+        ranked = sorted(scored.items(), key=lambda kv: -kv[1][0])
+        best_score = ranked[0][1][0]
+        min_score = self.PARTNER_MIN_SCORE if min_score is None else min_score
+        margin = self.PARTNER_MARGIN if margin is None else margin
+        if best_score < min_score or len(ranked) > 1 and best_score - ranked[1][1][0] < margin:
+            return None, None
+        return ranked[0][0], ranked[0][1][1]
+
+    PARTNER_CLAUSE_MIN_SCORE = 0.65
+    PARTNER_CLAUSE_MARGIN = 0.1
+
+    def _partner_heads(self) -> frozenset[str]:
+        """Nouns that may head a description of a place read by ``_resolve_by_partners``."""
+        return self._place_nouns() | lx.DESCRIPTION_HEADS | _WATER_HEADS | lx.GROUND_HEADS | lx.AREA_HEADS
+
+    def _resolve_by_partners(self, ex: Extraction, toks: Tokens, norms: tuple[str, ...], place_tokens: set[int],
+                             marker_tokens: set[int], cue_tokens: set[int]) -> None:
+        """A relative clause no relation form reads, around a place said in it: "the tower they send people down
+        the kamikaze from", "the water the rapids bridge goes over", "the shed that backs up the control room's
+        power". A head noun after an article, then within one clause the anchor and other words (a clause that ends
+        on a preposition after the anchor, or on the anchor itself), is read among the places the KB relates to the
+        anchor by ``_partner_by_meaning``, with a higher bar (``PARTNER_CLAUSE_MIN_SCORE``, ``PARTNER_CLAUSE_MARGIN``)
+        since no relation word was found."""
+        heads = self._partner_heads()
+        n = len(norms)
+        for anchor in sorted([p for p in ex.places if p.status == "active" and p.via is None], key=lambda p: -p.start_tok):
+            if anchor not in ex.places or norms[anchor.start_tok] in lx.PRONOUNS:
+                continue
+            a0, a1 = anchor.start_tok, anchor.end_tok
+            # the clause's end: the anchor's own end, or a preposition ending the clause up to six words on
+            ends = [a1] if a1 == n or toks.clause_start[a1] or norms[a1] in lx.COPULAS else []
+            closing = bool(ends)  # (the anchor closes the clause, or its own thing does)
+            # ("the shed that backs up the control room's power -": the anchor's own thing ends the clause)
+            own = a1 + 1 if a1 < n and norms[a1] == "s" else a1 if toks.tokens[a1 - 1].text.lower().endswith(("'s", "’s")) else None
+            for e in range(own + 1, min(own + 2, n) + 1) if own is not None else ():
+                if not ends and (e == n or toks.clause_start[e]) \
+                        and all(norms[i].isalpha() and norms[i] not in lx.FUNCTION_WORDS for i in range(own, e)):
+                    ends = [e]
+                    closing = True
+            # (a place said as where the anchor is, no claim of its own, stands in the clause: "the building the
+            # pipes from the pepperpot run down into")
+            inner = {i for p in ex.places if p.status != "active" and p.start_tok >= a1 for i in range(p.start_tok, p.end_tok)}
+            # (a danger word may stand in the clause: "the ponds the pump house pushes the water back up to")
+            for e in range(a1 + 1, min(a1 + 7, n) + 1):
+                if ends:
+                    break
+                if any(i in place_tokens and i not in inner or toks.clause_start[i] for i in range(e - 1, e)):
+                    break
+                if norms[e - 1] in lx.RELATION_ENDINGS | {"into", "for", "up", "down", "out"} and (
+                        e == n or toks.clause_start[e] or norms[e] in lx.COPULAS):
+                    ends = [e]
+                    break
+            # ("the whole hall that battery B keeps alive,": "that", the anchor, and a verb ending the clause)
+            verb_end = False
+            for e in range(a1 + 1, min(a1 + 4, n) + 1):
+                if ends or any(i in place_tokens or i in marker_tokens or i in cue_tokens or toks.clause_start[i]
+                               for i in range(a1, e)):
+                    break
+                if (e == n or toks.clause_start[e]) and any(_verb_like(toks.tokens[i].text) for i in range(a1, e)):
+                    ends, verb_end = [e], True
+            if not ends:
+                continue
+            end = ends[0]
+            # the head: an article, at most one word, a head noun, up to eight words before the anchor
+            h = None
+            for k in range(a0 - 1, max(0, a0 - 9), -1):
+                if k in place_tokens or toks.clause_start[k + 1] and k + 1 < a0 or norms[k] in lx.COORDINATORS:
+                    break  # (not across "and": "a holding area and er the zigzag's blocked by a mudflow halfway down")
+                if norms[k] in heads and (norms[k - 1] in lx.ARTICLES or k >= 2 and norms[k - 2] in lx.ARTICLES
+                                          and norms[k - 1].isalpha() and norms[k - 1] not in _NOT_HEADS) \
+                        and not (k + 1 < n and norms[k + 1] in lx.PREPOSITIONS and k + 2 == a0) \
+                        and not (k + 2 < n and norms[k + 1] in lx.PREPOSITIONS and norms[k + 2] in lx.DETERMINERS
+                                 and k + 3 == a0):
+                    h = k
+                    break
+            if h is None or toks.clause_start[h + 1] or any(toks.clause_start[i] for i in range(h + 1, a0)):
+                continue
+            if verb_end and not (norms[h + 1] in ("that", "which") and all(norms[i] in lx.DETERMINERS for i in range(h + 2, a0))):
+                continue  # ("the shed that battery B keeps alive", not "the shed battery B keeps", a claim of its own)
+            if closing and not (norms[h + 1] in ("that", "which", "who", "whose") or _reduced_relative_opener(toks.tokens[h + 1].text)):
+                continue  # ("the mill race wall has collapsed into the bobbin mill": a clause of its own, no relative one)
+            link_idx = [i for i in range(h + 1, end) if not (a0 <= i < a1)
+                        and not (i < a0 and all(norms[j] in lx.DETERMINERS for j in range(i, a0)))
+                        and norms[i] not in ("that", "which", "who", "where") and norms[i] not in lx.HESITATIONS]
+            content = [i for i in link_idx if norms[i] not in lx.FUNCTION_WORDS and norms[i].isalpha()]
+            if not content or len(link_idx) > 9 or toks.tokens[h].text.lower().endswith(("'s", "’s")):
+                continue  # ("the river's ripping through at the weir": "is", no relative clause)
+            if closing and norms[h + 1] not in ("that", "which") and any(i in cue_tokens for i in link_idx):
+                continue  # ("the street saying his missus is trapped in the flats": a claim, no description; but "the
+                # pond that spills over onto the hillside", a relative clause whose verb is a danger word, describes)
+            if norms[h] in lx.ROUTE_HEADS and all(norms[i] in lx.ROUTE_LINKS for i in link_idx):
+                continue
+            link = " ".join(toks.tokens[i].text.lower() for i in link_idx)
+            head_start = h - 1 if norms[h - 1] in lx.ARTICLES else h - 2
+            head = " ".join(toks.tokens[i].text.lower() for i in range(head_start + 1, h + 1))
+            target, via = self._partner_by_meaning(anchor.landmark, link, head, self.PARTNER_CLAUSE_MIN_SCORE,
+                                                   self.PARTNER_CLAUSE_MARGIN)
+            if target is None or target == anchor.landmark:
+                continue
+            idx = ex.places.index(anchor)
+            ex.places[idx] = replace(anchor, status="reference", reason=f"reference point: {via} (read '{link}')")
+            ex.places.append(self._mention(toks, head_start, end, target, via=f"{via} ~ '{link}' (by meaning)"))
+            place_tokens.update(range(head_start, end))
+
+    def _partner_names(self, name: str) -> list[str]:
+        """A landmark's names and its description, as ``_partner_by_meaning`` compares a head noun to them."""
+        lm = self.kb.landmark_by_name[name]
+        return list(lm.surface_forms) + ([lm.description] if lm.description else [])
+
+    def _partner_texts(self, texts: list[str]) -> np.ndarray:
+        assert self.embedder is not None
+        return self.embedder.embed_fixed(texts)
 
     def _related_by_head(self, anchor: str, head: str) -> tuple[str | None, str | None]:
         """"the quay that the ice plant makes the ice for": a linking phrase MiniLM only half knows, and a head word
@@ -3332,7 +3479,10 @@ class ReportAnalyzer:
                     ex.places[idx] = replace(anchor, status="reference",
                                              reason=f"reference point of an unresolved description ('{link}')")
                 continue
-            target, via = self._follow_link(anchor.landmark, link, toks.tokens[k - 1].text, inverse=False, sims=sims)
+            # (not across a comma or a dash: "the stretch they sit below, the walk itself" says the place again)
+            apart = any(c in toks.gaps[i] for i in range(j, anchor.start_tok + 1) for c in ",;—–-")
+            target, via = self._follow_link(anchor.landmark, link, toks.tokens[k - 1].text, inverse=False, sims=sims,
+                                            partners=not apart)
             if target is None:
                 if not plain and anchor.via is None:  # (a description read already stays what it was read as)
                     ex.places[idx] = replace(anchor, status="reference", reason=f"reference point of an unresolved '{link}'")
@@ -3367,9 +3517,11 @@ class ReportAnalyzer:
                 h -= 1
             if h > 0 and h < k and norms[h - 1] in lx.WHATEVER and any(norms[i] in lx.FILLERS for i in range(h, k)):
                 k = h  # "whatever the, er, the grain store is built against": past the hesitation
-            if k == 0 or (k == anchor.start_tok and norms[k - 1] not in lx.WHATEVER and not (k >= 2 and norms[k - 2] in lx.ARTICLES)) \
+            # ("where the bottom gate opens out onto, that's the safe refuge": "where" opening the clause, as "wherever")
+            whatever = lx.WHATEVER | ({"where"} if k > 0 and norms[k - 1] == "where" and toks.clause_start[k - 1] else set())
+            if k == 0 or (k == anchor.start_tok and norms[k - 1] not in whatever and not (k >= 2 and norms[k - 2] in lx.ARTICLES)) \
                     or (k - 1) in place_tokens \
-                    or toks.clause_start[k] or not (norms[k - 1] in lx.GENERIC_HEADS or self._plain_head(norms, k - 1)):
+                    or toks.clause_start[k] or not (norms[k - 1] in lx.GENERIC_HEADS | whatever or self._plain_head(norms, k - 1)):
                 continue
             hs = k - 1
             if hs >= 2 and norms[hs - 2] in lx.ARTICLES and norms[hs - 1].isalpha() and norms[hs - 1] not in _NOT_HEADS \
@@ -3377,7 +3529,7 @@ class ReportAnalyzer:
                 hs -= 1  # ("the car park the lorry park spills into": a head of two words)
             while hs > 0 and norms[hs - 1] in lx.DETERMINERS and (hs - 1) not in marker_tokens:
                 hs -= 1
-            if hs >= k - 2 and norms[hs] not in lx.WHATEVER and norms[hs] not in lx.DETERMINERS:
+            if hs >= k - 2 and norms[hs] not in whatever and norms[hs] not in lx.DETERMINERS:
                 continue  # "the shop the pharmacy ...", not "shop the pharmacy"
             e = anchor.end_tok
             m = None
@@ -3495,6 +3647,8 @@ class ReportAnalyzer:
                     break  # (a hyphen inside a word, "cross-passage", ends no clause; "whose old stables": no cue)
                 if norms[h] == "one" and norms[h - 1] in ("second", "third", "fourth", "another", "next"):
                     break  # "big hot spot in the dutch barn, and a second one in the roof of the machinery shed"
+                if toks.gaps[h + 1] == "-" and norms[h + 1] in lx.FUNCTION_WORDS:
+                    continue  # "the walk-in freezer in the kitchens": the first half of a compound heads nothing
                 if norms[h] in nouns and h > 0 and (norms[h - 1] in lx.ARTICLES | lx.WHATEVER or h > 1
                                                     and norms[h - 2] in lx.ARTICLES and norms[h - 1].isalpha()
                                                     and (h - 1) not in blocked) or norms[h] in lx.WHATEVER:
@@ -3903,11 +4057,15 @@ class ReportAnalyzer:
                 place_tokens.difference_update(range(head_place.start_tok, head_place.end_tok))
                 head_place = None
         if head_place is not None and anchor is not None and head_place.end_tok - head_place.start_tok == 1 \
-                and norms[head_place.start_tok] in lx.GENERIC_HEADS \
                 and toks.tokens[head_place.start_tok].text.lower() not in {
                     f.lower() for f in self.kb.landmark_by_name[head_place.landmark].surface_forms} \
-                and self._follow(anchor.landmark, phrase, toks.tokens[head_place.start_tok].text,
-                                 inverse=flipped)[0] is not None:
+                and (reached := self._follow(anchor.landmark, phrase, toks.tokens[head_place.start_tok].text,
+                                             inverse=flipped)[0]) is not None \
+                and (norms[head_place.start_tok] in lx.GENERIC_HEADS
+                     or reached != head_place.landmark and head_place.landmark not in self._related_to(anchor.landmark)
+                     and anchor.start_tok - b <= 2 and anchor.landmark != head_place.landmark):
+            # ("the trees hanging over the wellhouse": "trees", the head word of "the olive trees" only, and the
+            # relation reaches the pine wood: the relation says which trees)
             # (kept when the relation leads nowhere from its anchor: "the bridge below it's been hit")
             # "the hall that faces onto it" is no mention of "halls of residence": only the plural's key
             # matched, and a generic noun heading a relation describes the place the relation reaches
@@ -4151,6 +4309,10 @@ class ReportAnalyzer:
                 target, via = None, None
         if target is None and (generic or pronoun):
             target, via = self._follow_by_meaning(anchor.landmark, toks, a, b, inverse=flipped)
+        if target is None and not pronoun and words and head_text:
+            # "the terraces below the barn ...": a relation that leads nowhere from its anchor, and a head word that
+            # names one of the places the KB relates to it (``tractor barn sits_at_the_head_of lower terraces``)
+            target, via = self._related_by_head(anchor.landmark, words[-1])
         if not pronoun:
             idx = ex.places.index(anchor)
             if target is None:
@@ -4188,6 +4350,8 @@ class ReportAnalyzer:
                     h -= 1
                 if h >= 0 and norms[h] in lx.FLOATING_THINGS | lx.VEHICLE_WORDS:
                     return  # "a car swept against the Mitre Arch": where a thing is, no description of a place
+                if h >= 0 and norms[h] in lx.LAY_PERSONS | lx.WORKER_PERSONS | {"she", "he", "they", "someone", "somebody"}:
+                    return  # "a nurse climbed up onto the big wall": where a person went, no description of a place
                 if anchor.via is not None and b < len(norms) and norms[b] in ("that", "which"):
                     return  # "the rock face that looks down over the holiday park": the place resolved already; the
                     # word before its "that" ("face", as in "facing") is its head, no relation of its own
@@ -6447,6 +6611,19 @@ class ReportAnalyzer:
         subject = next((p for p in ex.places if p.end_tok == j + 1), None)
         return subject is not None and norm(subject.text.split()[-1]) in lx.WATER_BODIES | _STILL_WATERS
 
+    def _safe_for(self, norms: tuple[str, ...], a: int) -> bool:
+        """Is the word at ``a`` whom a safe place is said to be for ("safe for the walking patients", "open for
+        residents")? "for", at most two words before it (an article, a modifier), ends a desirable cue."""
+        f = next((j for j in range(a - 1, max(-1, a - 4), -1) if norms[j] == "for"), None)
+        if f is None or any(norms[j] in lx.FUNCTION_WORDS and norms[j] not in lx.ARTICLES for j in range(f + 1, a)):
+            return False
+        for m in range(max(0, f - 3), f):
+            hit = self._cues.match_at(norms, m)
+            if hit is not None and hit[0] == f and hit[1][0] is not None \
+                    and self.kb.category_by_name[hit[1][0]].role == Role.DESIRABLE:
+                return True
+        return False
+
     def _classify(self, ex: Extraction) -> Classification:
         toks = ex.tokens
         norms = toks.norms(0, len(toks))
@@ -6481,6 +6658,8 @@ class ReportAnalyzer:
                 continue
             if norms[b - 1] == "swamped" and norms[b:b + 1] == ("with",):
                 continue  # "swamped with injured guests": overwhelmed, no water
+            if cat == self._person_category and self._safe_for(norms, a):
+                continue  # "confirmed safe for the walking patients and visitors": whom a safe place is for
             if norms[a:b] == ("clear",) and toks.sentence_start[a] and b < len(norms) \
                     and norms[b] in ("everyone", "everybody", "people", "all", "out", "the", "them"):
                 continue  # "Clear everyone out of the building": an order, not a place said to be clear
@@ -7432,6 +7611,10 @@ class ReportAnalyzer:
                 continue  # "I'm scared the cladding might come off onto the playground": feared, no claim to guess at
             if self._says_who_and_where(toks, norms, p):
                 continue  # "Scaffolder on the roof of the hotel, over.": who is calling and from where
+            if any(norms[i] in lx.CREW_NOUNS | {"crews", "teams", "we"} and any(
+                    norms[m] in _CREW_MOVES for m in range(i + 1, min(i + 4, p.start_tok)))
+                   for i in sent if i < p.start_tok):
+                continue  # "the crew's moving across to the winery to help with the pumps": where responders go
             if any((h := self._transit.match_at(norms, k)) is not None and h[0] == _noun_phrase_start(norms, p)
                    for k in range(max(0, p.start_tok - 8), p.start_tok)):
                 continue  # "keep the public back from the crossing below the old bridge": passed or kept from
@@ -8219,8 +8402,10 @@ class ReportAnalyzer:
                 if h[1] in lx.CANCEL_MISSING_ONLY and not missing:
                     break  # "casualty at the bank, we found him under the desk": found, not safe
                 if k > 0 and (norms[k - 1] in ("not", "nt", "isnt", "hasnt", "wasnt", "never")
-                              or norms[k - 1] == "been" and k > 1 and norms[k - 2] in ("not", "hasnt", "havent")):
-                    break  # "fire at the bakery is NOT knocked down": the cancellation denied
+                              or norms[k - 1] == "been" and k > 1 and norms[k - 2] in ("not", "hasnt", "havent")
+                              or any(norms[j] in ("nobody", "noone") or norms[j:j + 2] == ("no", "one")
+                                     for j in range(max(0, k - 3), k))):
+                    break  # "fire at the bakery is NOT knocked down", "nobody has brought him out yet": denied
                 if k > 1 and norms[k - 1] == "to" and norms[k - 2] in ("trying", "try", "tried", "tries", "attempting"):
                     break  # "a lad's burnt his hands trying to put it out": tried, not done
                 if h[1].startswith("out") and k > 0 and norms[k - 1] in ("carried", "stretchered", "brought", "helped") \
@@ -9417,6 +9602,8 @@ class ReportAnalyzer:
                 continue
             if i > 0 and norms[i - 1] in lx.NEGATORS | {"be", "being", "to", "will", "need", "needs"}:
                 continue  # "not rescued yet", "to be lifted off": not done
+            if any(norms[j] in ("nobody", "noone") or norms[j:j + 2] == ("no", "one") for j in range(max(0, i - 3), i)):
+                continue  # "nobody has brought him out yet": not done
             before = [p for p in ex.places if p.status == "active" and p.end_tok <= i
                       and toks.sentence_of[p.start_tok] == toks.sentence_of[i]]
             after = [p for p in ex.places if p.status == "active" and h[0] <= p.start_tok <= h[0] + 2
@@ -10380,6 +10567,35 @@ def _relation_core(phrase: str) -> str:
         words = words[:-3]  # "built onto the side of" is an "attached to" relation
     core = " ".join(words)
     return "across from" if _ACROSS_THE.match(core) else core
+
+
+def _reduced_relative_opener(word: str) -> bool:
+    """A participle that may open a reduced relative clause ("the tower feeding the boiler", "the house hidden behind").
+
+    >>> [_reduced_relative_opener(w) for w in ("feeding", "hidden", "stacked", "floor", "shed")]
+    [True, True, True, False, False]
+    """
+    w = word.lower()
+    return w.isalpha() and len(w) >= 5 and (w.endswith(("ing", "ed")) and w not in ("thing", "nothing", "something",
+                                                                                     "building", "ceiling", "landing")
+                                            or w in _IRREGULAR_PARTICIPLES)
+
+
+def _verb_like(word: str) -> bool:
+    """A word that may be a clause's verb by its form alone ("powers", "drains", "hidden", "feeding", "built").
+
+    >>> [_verb_like(w) for w in ("drains", "backed", "feeding", "stuck", "road", "past", "its")]
+    [True, True, True, True, False, False, False]
+    """
+    w = word.lower()
+    return _reduced_relative_opener(w) or w.isalpha() and len(w) >= 4 and w.endswith("s") and not w.endswith("ss") \
+        and w not in lx.FUNCTION_WORDS or w in _IRREGULAR_PARTICIPLES
+
+
+_CREW_MOVES = frozenset({"moving", "heading", "going", "headed", "moved", "redeploying", "relocating", "transferring"})
+_SUBJECT_PRONOUNS = frozenset({"they", "we", "you", "i", "he", "she", "people", "everyone"})
+_IRREGULAR_PARTICIPLES = frozenset({"hidden", "built", "stuck", "tucked", "set", "dug", "cut", "bolted", "sunk", "hung",
+                                    "wedged", "perched", "known", "run", "kept", "held", "fed", "lit", "laid", "left"})
 
 
 def _reads_backwards(link: str, phrase: str, inverse: bool) -> bool:

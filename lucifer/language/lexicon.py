@@ -206,7 +206,7 @@ hypothermic|going hypo|gone hypo|hypoglycaemic|hypoglycemic|drowning|bleeding ou
 pinned under debris|pinned under rubble|trapped under debris|trapped under rubble|buried under rubble|buried under debris|
 trapped in rubble|under the rubble|needs medics|need medics|needs a doctor|requires evacuation|unaccounted for|
 people still inside|still inside|someone still inside|can't get back|cannot get back|can't get back to shore|water all round him|water all round her|water all round them|water all round us|water all around him|water all around them|on the roof with water|still in the cab|still in his cab|still in her cab|driver still in|people stuck|people stuck inside|with people inside|
-twisted ankle|twisted her ankle|twisted his ankle|twisted their ankle|twisted their knee|twisted her knee|twisted his knee|twisted my knee|twisted my ankle|hurt their knee|hurt her knee|hurt his knee|can't find my mummy|can't find my mum|can't find my mommy|can't find my mom|can't find my dad|can't find my daddy|can't find my parents|lost my mummy|lost my mum|lost my mommy|lost my mom|lost my dad|lost my parents|gone over on her ankle|gone over on his ankle|went over on her ankle|went over on his ankle|turned her ankle|turned his ankle|rolled her ankle|rolled his ankle|sprained ankle|broken ankle|is injure|he injure|she injure|he not move|she not move|not move|cut head|a cut head|bleeding head|needs a paramedic|need a paramedic|needs paramedics|deep cut|bad cut|can't find his mum|can't find her mum|can't find his dad|can't find her dad|can't find their parents|
+twisted ankle|a twisted ankle|a twisted knee|twisted knee|twisted her ankle|twisted his ankle|twisted their ankle|twisted their knee|twisted her knee|twisted his knee|twisted my knee|twisted my ankle|hurt their knee|hurt her knee|hurt his knee|can't find my mummy|can't find my mum|can't find my mommy|can't find my mom|can't find my dad|can't find my daddy|can't find my parents|lost my mummy|lost my mum|lost my mommy|lost my mom|lost my dad|lost my parents|gone over on her ankle|gone over on his ankle|went over on her ankle|went over on his ankle|turned her ankle|turned his ankle|rolled her ankle|rolled his ankle|sprained ankle|broken ankle|is injure|he injure|she injure|he not move|she not move|not move|cut head|a cut head|bleeding head|needs a paramedic|need a paramedic|needs paramedics|deep cut|bad cut|can't find his mum|can't find her mum|can't find his dad|can't find her dad|can't find their parents|
 people under it|people under there|someone under it|somebody under it|people underneath|breathing problems|breathing difficulties|difficulty breathing|struggling to breathe|can't breathe|cannot breathe|
 man collapsed|woman collapsed|person collapsed|someone collapsed|somebody collapsed|he collapsed|she collapsed|
 needs oxygen|need oxygen|having a heart attack|heart attack|seizure|having a seizure|can't breathe|cannot breathe|
@@ -218,7 +218,7 @@ broke her arm|broke his hip|broke her hip|broken ankle|broke his ankle|broke her
 burns to her|burnt his|burnt her|burned his|burned her|cracked his head|cracked her head|cracked their head|cracked his skull|cracked her skull|banged his head|
 banged her head|hit his head|hit her head|split his head|split her head|cut his hand|cut her hand|cut his head|
 cut her head|cut his leg|cut her leg|head wound|head injury|hurt bad|badly hurt|walking wounded|screaming inside|kids screaming|someone in the water|people have gone into the water|have gone into the water|has gone into the water|gone in the water|went into the water|
-smoke inhalation|persons reported|person reported|p1|p2|p3|p1s|p2s|p1 patient|p2 patient|priority one|cpr|
+smoke inhalation|smoke casualty|smoke casualties|persons reported|person reported|p1|p2|p3|p1s|p2s|p1 patient|p2 patient|priority one|cpr|
 cpr in progress|a body|body|bodies|non ambulatory|non-ambulatory|overcome|officer down|firefighter down|
 occupants unaccounted for|entrapment|trapped occupant|casualty pinned|
 person in the water|in the water|unaccounted for|still inside|not responding|no pulse|crush injury|burns|
@@ -1169,7 +1169,7 @@ DANGER_KINDS: dict[str, list[str]] = {
                "roof's in", "roof is in", "roof's gone", "roof has gone", "roof's off", "shedding bricks",
                "shedding slates", "masonry falling", "falling masonry", "fallen masonry", "wall's fallen",
                "wall has fallen", "walls have fallen", "roof's fallen", "roof has fallen", "ceiling's fallen",
-               "ceiling has fallen", "chimney's fallen", "chimney has fallen", "lost their roofs", "lost their roof", "lost half its roof", "lost its roof", "lost the roof",
+               "ceiling has fallen", "chimney's fallen", "chimney has fallen", "lost their roofs", "lost their roof", "lost half its roof", "lost its roof", "lost the roof", "lost its ceiling", "lost the ceiling", "lost their ceiling",
                "lost its whole roof", "lost the whole roof", "lost their whole roof",
                "lost half the roof", "lost part of its roof", "lost part of the roof", "roof down", "roof is down", "roof's down", "ceiling's down",
                "ceiling down", "tree through the roof", "tree on it", "the tree on it", "tree on the roof",

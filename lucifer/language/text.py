@@ -121,6 +121,19 @@ def _spans_break(norms: tuple[str, ...], i: int, end: int) -> bool:
     return bool(breaks) and any(i < k < end for k in breaks)
 
 
+_CUT_OFF_GAP = re.compile(r"\s*(?:--|—|–|-)\s+")
+
+
+def _cut_off_of(fragment: str, word: str) -> bool:
+    """Is ``fragment`` a cut-off start of ``word``, three letters or more ("inhal" of "inhalation")?
+
+    >>> _cut_off_of("inhal", "inhalation"), _cut_off_of("ban", "bakery"), _cut_off_of("gen", "gen")
+    (True, False, False)
+    """
+    f, w = fragment.lower(), word.lower()
+    return f.isalpha() and len(f) >= 3 and len(f) < len(w) and w.startswith(f)
+
+
 def _stutter_of(fragment: str, word: str) -> bool:
     """Is ``fragment`` a stuttered start of ``word`` ("st" of "station", "c" of "control")?"""
     f, w = fragment.lower(), word.lower()
@@ -150,6 +163,10 @@ def tokenize(text: str) -> Tokens:
         m_start = m.start()
         while gap == "-" and toks and _stutter_of(toks[-1].text, word):
             # "st-station", "c-c-control": a stuttered start of the word after it is no word of its own
+            m_start = toks.pop().start
+            gap = gaps.pop()
+        if toks and _CUT_OFF_GAP.fullmatch(gap) and _cut_off_of(toks[-1].text, word):
+            # "smoke inhal-- inhalation": a word cut off and said again whole is said once
             m_start = toks.pop().start
             gap = gaps.pop()
         toks.append(Token(len(toks), word, norm(word), m_start, m.end()))
