@@ -3269,8 +3269,8 @@ class ReportAnalyzer:
             if anchor not in (rel.subject, rel.object) or rel.subject == rel.object:
                 continue
             other = rel.object if rel.subject == anchor else rel.subject
-            score = float(self._partner_texts([rel.phrase.replace("_", " ")])[0] @ v_link) \
-                + float(np.max(self._partner_texts(self._partner_names(other)) @ v_head))
+            score = float(self._partner_relation_vectors[rel.phrase] @ v_link) \
+                + float(np.max(self._partner_name_vectors[other] @ v_head))
             if score > scored.get(other, (-1.0, ""))[0]:
                 scored[other] = (score, f"{rel.subject} {rel.relation} {rel.object}")
         if not scored:
@@ -3305,39 +3305,36 @@ class ReportAnalyzer:
                 continue
             a0, a1 = anchor.start_tok, anchor.end_tok
             # the clause's end: the anchor's own end, or a preposition ending the clause up to six words on
-            ends = [a1] if a1 == n or toks.clause_start[a1] or norms[a1] in lx.COPULAS else []
-            closing = bool(ends)  # (the anchor closes the clause, or its own thing does)
+            end = a1 if a1 == n or toks.clause_start[a1] or norms[a1] in lx.COPULAS else None
             # ("the shed that backs up the control room's power -": the anchor's own thing ends the clause)
             own = a1 + 1 if a1 < n and norms[a1] == "s" else a1 if toks.tokens[a1 - 1].text.lower().endswith(("'s", "’s")) else None
-            for e in range(own + 1, min(own + 2, n) + 1) if own is not None else ():
-                if not ends and (e == n or toks.clause_start[e]) \
+            for e in range(own + 1, min(own + 2, n) + 1) if own is not None and end is None else ():
+                if end is None and (e == n or toks.clause_start[e]) \
                         and all(norms[i].isalpha() and norms[i] not in lx.FUNCTION_WORDS for i in range(own, e)):
-                    ends = [e]
-                    closing = True
+                    end = e
+            closing = end is not None  # (the anchor closes the clause, or its own thing does)
             # (a place said as where the anchor is, no claim of its own, stands in the clause: "the building the
-            # pipes from the pepperpot run down into")
+            # pipes from the pepperpot run down into"; a danger word may stand in it: "the ponds the pump house
+            # pushes the water back up to")
             inner = {i for p in ex.places if p.status != "active" and p.start_tok >= a1 for i in range(p.start_tok, p.end_tok)}
-            # (a danger word may stand in the clause: "the ponds the pump house pushes the water back up to")
-            for e in range(a1 + 1, min(a1 + 7, n) + 1):
-                if ends:
-                    break
-                if any(i in place_tokens and i not in inner or toks.clause_start[i] for i in range(e - 1, e)):
+            for e in range(a1 + 1, min(a1 + 7, n) + 1) if end is None else ():
+                if e - 1 in place_tokens and e - 1 not in inner or toks.clause_start[e - 1]:
                     break
                 if norms[e - 1] in lx.RELATION_ENDINGS | {"into", "for", "up", "down", "out"} and (
                         e == n or toks.clause_start[e] or norms[e] in lx.COPULAS):
-                    ends = [e]
+                    end = e
                     break
             # ("the whole hall that battery B keeps alive,": "that", the anchor, and a verb ending the clause)
             verb_end = False
-            for e in range(a1 + 1, min(a1 + 4, n) + 1):
-                if ends or any(i in place_tokens or i in marker_tokens or i in cue_tokens or toks.clause_start[i]
-                               for i in range(a1, e)):
+            for e in range(a1 + 1, min(a1 + 4, n) + 1) if end is None else ():
+                if any(i in place_tokens or i in marker_tokens or i in cue_tokens or toks.clause_start[i]
+                       for i in range(a1, e)):
                     break
                 if (e == n or toks.clause_start[e]) and any(_verb_like(toks.tokens[i].text) for i in range(a1, e)):
-                    ends, verb_end = [e], True
-            if not ends:
+                    end, verb_end = e, True
+                    break
+            if end is None:
                 continue
-            end = ends[0]
             # the head: an article, at most one word, a head noun, up to eight words before the anchor
             h = None
             for k in range(a0 - 1, max(0, a0 - 9), -1):
@@ -3379,14 +3376,26 @@ class ReportAnalyzer:
             ex.places.append(self._mention(toks, head_start, end, target, via=f"{via} ~ '{link}' (by meaning)"))
             place_tokens.update(range(head_start, end))
 
-    def _partner_names(self, name: str) -> list[str]:
-        """A landmark's names and its description, as ``_partner_by_meaning`` compares a head noun to them."""
-        lm = self.kb.landmark_by_name[name]
-        return list(lm.surface_forms) + ([lm.description] if lm.description else [])
-
-    def _partner_texts(self, texts: list[str]) -> np.ndarray:
+    @functools.cached_property
+    def _partner_relation_vectors(self) -> dict[str, np.ndarray]:
+        """MiniLM vectors of the KB's relation names as words, for ``_partner_by_meaning`` (embedded once)."""
         assert self.embedder is not None
-        return self.embedder.embed_fixed(texts)
+        phrases = sorted({rel.phrase for rel in self.kb.relations})
+        return dict(zip(phrases, self.embedder.embed_fixed([p.replace("_", " ") for p in phrases]), strict=True))
+
+    @functools.cached_property
+    def _partner_name_vectors(self) -> dict[str, np.ndarray]:
+        """Per landmark, MiniLM vectors of its names and its description, as ``_partner_by_meaning`` compares a head
+        noun to them (embedded once)."""
+        assert self.embedder is not None
+        texts = {lm.name: list(lm.surface_forms) + ([lm.description] if lm.description else []) for lm in self.kb.landmarks}
+        flat = [t for ts in texts.values() for t in ts]
+        mat = self.embedder.embed_fixed(flat)
+        out, k = {}, 0
+        for name, ts in texts.items():
+            out[name] = mat[k:k + len(ts)]
+            k += len(ts)
+        return out
 
     def _related_by_head(self, anchor: str, head: str) -> tuple[str | None, str | None]:
         """"the quay that the ice plant makes the ice for": a linking phrase MiniLM only half knows, and a head word
@@ -7611,7 +7620,7 @@ class ReportAnalyzer:
                 continue  # "I'm scared the cladding might come off onto the playground": feared, no claim to guess at
             if self._says_who_and_where(toks, norms, p):
                 continue  # "Scaffolder on the roof of the hotel, over.": who is calling and from where
-            if any(norms[i] in lx.CREW_NOUNS | {"crews", "teams", "we"} and any(
+            if any(norms[i] in _MOVING_CREWS and any(
                     norms[m] in _CREW_MOVES for m in range(i + 1, min(i + 4, p.start_tok)))
                    for i in sent if i < p.start_tok):
                 continue  # "the crew's moving across to the winery to help with the pumps": where responders go
@@ -8403,8 +8412,7 @@ class ReportAnalyzer:
                     break  # "casualty at the bank, we found him under the desk": found, not safe
                 if k > 0 and (norms[k - 1] in ("not", "nt", "isnt", "hasnt", "wasnt", "never")
                               or norms[k - 1] == "been" and k > 1 and norms[k - 2] in ("not", "hasnt", "havent")
-                              or any(norms[j] in ("nobody", "noone") or norms[j:j + 2] == ("no", "one")
-                                     for j in range(max(0, k - 3), k))):
+                              or _nobody_said(norms, k - 3, k)):
                     break  # "fire at the bakery is NOT knocked down", "nobody has brought him out yet": denied
                 if k > 1 and norms[k - 1] == "to" and norms[k - 2] in ("trying", "try", "tried", "tries", "attempting"):
                     break  # "a lad's burnt his hands trying to put it out": tried, not done
@@ -9228,8 +9236,7 @@ class ReportAnalyzer:
                 continue
             if self._origin(norms, p):
                 continue
-            if any(norms[i] in ("nobody", "noone") or norms[i:i + 2] == ("no", "one")
-                   for i in range(max(0, p.start_tok - 4), p.start_tok)):
+            if _nobody_said(norms, p.start_tok - 4, p.start_tok):
                 continue  # "there's nobody in the queue line": said of its people, and none there
             if self._speaker_at(norms, p) and any(q.landmark == p.landmark and q.start_tok > p.start_tok
                                                   and q.status == "active" for q in ex.places):
@@ -9602,7 +9609,7 @@ class ReportAnalyzer:
                 continue
             if i > 0 and norms[i - 1] in lx.NEGATORS | {"be", "being", "to", "will", "need", "needs"}:
                 continue  # "not rescued yet", "to be lifted off": not done
-            if any(norms[j] in ("nobody", "noone") or norms[j:j + 2] == ("no", "one") for j in range(max(0, i - 3), i)):
+            if _nobody_said(norms, i - 3, i):
                 continue  # "nobody has brought him out yet": not done
             before = [p for p in ex.places if p.status == "active" and p.end_tok <= i
                       and toks.sentence_of[p.start_tok] == toks.sentence_of[i]]
@@ -10569,6 +10576,15 @@ def _relation_core(phrase: str) -> str:
     return "across from" if _ACROSS_THE.match(core) else core
 
 
+def _nobody_said(norms: tuple[str, ...], start: int, end: int) -> bool:
+    """Does "nobody" ("noone", "no one") begin between ``start`` and ``end`` (``start`` clipped at 0)?
+
+    >>> _nobody_said(("nobody", "has", "brought", "him"), -1, 2), _nobody_said(("no", "one", "out"), 0, 1)
+    (True, True)
+    """
+    return any(norms[j] in ("nobody", "noone") or norms[j:j + 2] == ("no", "one") for j in range(max(0, start), end))
+
+
 def _reduced_relative_opener(word: str) -> bool:
     """A participle that may open a reduced relative clause ("the tower feeding the boiler", "the house hidden behind").
 
@@ -10592,6 +10608,7 @@ def _verb_like(word: str) -> bool:
         and w not in lx.FUNCTION_WORDS or w in _IRREGULAR_PARTICIPLES
 
 
+_MOVING_CREWS = frozenset(lx.CREW_NOUNS | {"crews", "teams", "we"})
 _CREW_MOVES = frozenset({"moving", "heading", "going", "headed", "moved", "redeploying", "relocating", "transferring"})
 _SUBJECT_PRONOUNS = frozenset({"they", "we", "you", "i", "he", "she", "people", "everyone"})
 _IRREGULAR_PARTICIPLES = frozenset({"hidden", "built", "stuck", "tucked", "set", "dug", "cut", "bolted", "sunk", "hung",
