@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev90) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev91) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -178,6 +178,10 @@ LOCK_KEEPERS_COTTAGES = ROOT / "knowledge_bases" / "lock_keepers_cottages"
 HOSPICE_GROUNDS = ROOT / "knowledge_bases" / "hospice_grounds"
 FAIRGROUND_PIER = ROOT / "knowledge_bases" / "fairground_pier"
 MONASTERY_VINEYARD = ROOT / "knowledge_bases" / "monastery_vineyard"
+SKI_JUMP_CENTRE = ROOT / "knowledge_bases" / "ski_jump_centre"
+SAILING_CENTRE = ROOT / "knowledge_bases" / "sailing_centre"
+AVIATION_MUSEUM = ROOT / "knowledge_bases" / "aviation_museum"
+OYSTER_FISHERY = ROOT / "knowledge_bases" / "oyster_fishery"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -507,6 +511,10 @@ SETS = {
     "dev90/hospice_grounds": _set("dev90/hospice_grounds.jsonl", HOSPICE_GROUNDS, "hg90", TWENTY, sep=""),
     "dev90/fairground_pier": _set("dev90/fairground_pier.jsonl", FAIRGROUND_PIER, "fp90", TWENTY, sep=""),
     "dev90/monastery_vineyard": _set("dev90/monastery_vineyard.jsonl", MONASTERY_VINEYARD, "mv90", TWENTY, sep=""),
+    "dev91/ski_jump_centre": _set("dev91/ski_jump_centre.jsonl", SKI_JUMP_CENTRE, "sj91", TWENTY, sep=""),
+    "dev91/sailing_centre": _set("dev91/sailing_centre.jsonl", SAILING_CENTRE, "sc91", TWENTY, sep=""),
+    "dev91/aviation_museum": _set("dev91/aviation_museum.jsonl", AVIATION_MUSEUM, "am91", TWENTY, sep=""),
+    "dev91/oyster_fishery": _set("dev91/oyster_fishery.jsonl", OYSTER_FISHERY, "of91", TWENTY, sep=""),
 }
 
 
