@@ -4711,3 +4711,71 @@ def test_partner_reading_needs_a_verb_and_a_lead(kb_analyzers):
         "summit ridge", "weather mast is_guyed_to summit ridge")
     assert an._partner_by_meaning("weather mast", "up on", "high ground") == (None, None)
     assert an._partner_by_meaning("weather mast", "anchored to", "high ground", margin=1.0) == (None, None)
+
+
+@pytest.mark.parametrize(("kb", "text", "expected"), [
+    # a category's own name says which one a word goes with ("fire" -> fire_and_fumes), and what a description
+    # says comes "other than" it is another category's
+    ("aviation_museum", "the apron is on fire", [("apron", "fire_and_fumes")]),
+    ("ski_jump_centre", "the button lift has jammed", [("button lift", "fire_fumes_or_failure")]),
+    # snow and ice are a kind of danger; a verb of motion says the kind of the danger named with it
+    ("ski_jump_centre", "Avalanche has come down onto the 4k loop, one full burial, transceiver shows about a metre "
+                        "down, we're probing. The first aid post is the holding area for the walking wounded.",
+     [("first aid post", "warm_refuge"), ("forest loop", "person_in_trouble"), ("forest loop", "snowslide_and_ice")]),
+    # "stopped short of", "gone up", "gone into": nothing cancelled
+    ("ski_jump_centre", "Ski patrol to control, the gully up above the 4k loop has let go, big slab, the debris stopped "
+                        "short of the track itself.", [("Schwarzrinne gully", "snowslide_and_ice")]),
+    ("aviation_museum", "the NAAFI's safe — correction — the NAAFI's got smoke pouring out the back, the, um, the gas "
+                        "ring's gone up in the kitchen", [("NAAFI hut", "fire_and_fumes")]),
+    ("aviation_museum", "Grass fire along the glider strip, sparks off the wreck have gone into the dry grass and it's "
+                        "running west quickly.", [("grass strip", "fire_and_fumes")]),
+    # a safe place "out at" a place is where it is, not put out
+    ("aviation_museum", "Stewards, the assembly point is out at the gate the car park sits just inside.",
+     [("main gate", "safe_haven")]),
+    # a number in a name said as radio says it
+    ("aviation_museum", "Pool fire on runway two six, about halfway along.", [("main runway", "fire_and_fumes")]),
+    # the one landmark related to both ends of "between"
+    ("ski_jump_centre", "Lift ops to control, the gondola drive has failed, all cabins stopped on the line, we've got "
+                        "about forty stranded riders hanging between the valley station and the Gratalm.",
+     [("Kaltental gondola", "fire_fumes_or_failure"), ("Kaltental gondola", "person_in_trouble")]),
+    # a description after a comma names the part the place before it only locates
+    ("ski_jump_centre", "Smoke coming out from under the stadium, the room down there where the teams lock their rifles "
+                        "away.", [("rifle store", "fire_fumes_or_failure")]),
+    # "across the road from" for a relation "stands_opposite"; then the basement of that
+    ("ski_jump_centre", "Fire in the basement of the building across the road from the valley station, the sauna's gone "
+                        "up.", [("hotel spa", "fire_fumes_or_failure")]),
+    # a glossary term that opens with a place's name ("range is hot"): the rest said after the place
+    ("ski_jump_centre", "uh control um this is the range this is the r-- range officer, the mats are, er, the range is "
+                        "hot, there's still a guy zeroing, keep everyone off it", [("shooting range", "fire_fumes_or_failure")]),
+    # "the stretch of trail": the trail's, without its article
+    ("ski_jump_centre", "Snow slide across the stretch of trail right under the Rinne.", [("forest loop", "snowslide_and_ice")]),
+    # words for a lift broken down and for a person in trouble
+    ("ski_jump_centre", "yeah hi um the double chair has broke down and my husbands stuck on it hes been up there like "
+                        "forty minutes", [("jumpers' chairlift", "fire_fumes_or_failure"), ("jumpers' chairlift", "person_in_trouble")]),
+    ("ski_jump_centre", "Hello, I am coach of Norwegian team. My athlete, he is very cold, shaking, he cannot speak "
+                        "properly, he is in the start house.", [("start tower", "person_in_trouble")]),
+    ("ski_jump_centre", "the little lift at the back of the hotel — a kid's scarf got caught on the button and he's been "
+                        "dragged", [("button lift", "person_in_trouble")]),
+    # "stands_opposite" read as "opposite" after a repair out of the hotel, with a pronoun anchor
+    ("ski_jump_centre", "Need medics at the hotel — no, not the hotel itself, the building opposite it, the station — a "
+                        "liftie's crushed his foot in the bullwheel.", [("gondola valley station", "person_in_trouble")]),
+    # a clause that ends on "along" after its anchor is a relative one, read by meaning
+    ("ski_jump_centre", "Get everyone into the arena the firing line runs along, that's the holding area now, the heated "
+                        "tents are up.", [("biathlon stadium", "warm_refuge")]),
+    # "no it isn't," answers; the place after the comma is not negated
+    ("ski_jump_centre", "the stadium's a safe spot for the — correction — no it isn't, the stadium's one sheet of black "
+                        "ice, it's like a skating rink, um, the hotel lobby is warm and open, send them there",
+     [("Hotel Alpenblick", "warm_refuge"), ("biathlon stadium", "snowslide_and_ice")]),
+    # "on the front of" for a relation "is built onto the front of": the hangar only says where the shop is
+    ("aviation_museum", "theres a lady fainted in the little shop on the front of the big hangar she hit her head on the "
+                        "counter", [("gift shop", "person_in_trouble")]),
+    # "nobody's seen them come out" says they are still in there
+    ("aviation_museum", "Two air cadets unaccounted for. Their mate says they climbed into the pillbox to explore about "
+                        "twenty minutes ago and nobody's seen them come out.", [("pillbox", "person_in_trouble")]),
+    # "somewhere on it" is on the place just said, not somewhere unnamed
+    ("ski_jump_centre", "Snow slide across the stretch of trail right under the Rinne, and there's a skier buried "
+                        "somewhere on it, his mate saw him go under.",
+     [("forest loop", "person_in_trouble"), ("forest loop", "snowslide_and_ice")]),
+])
+def test_dev91_phenomena(kb_analyzers, kb, text, expected):
+    assert claims(kb_analyzers[kb], text) == expected

@@ -203,6 +203,9 @@ class ReportAnalyzer:
             derived.add(key)
         for key, name in _phonetic_forms(kb, keys, labelled):
             self._places.add(key, name)
+        for key, name in _spoken_number_forms(kb, keys):
+            self._places.add(key, name)  # ("runway two six" for "runway 26")
+            derived.add(key)
         for key, name in _synonym_forms(kb):
             self._places.add(key, name)
             self._needs_article.add(key)  # ("the little stone church" for the one chapel; "church services" no name)
@@ -311,6 +314,13 @@ class ReportAnalyzer:
         words = [w for w in norm_phrase(phrase) if _weighty(w) and w not in lx.DANGER_KIND_PARTS
                  and w not in ("come", "came", "comes", "filling", "filled", "fill", "full")]
         # (nor "filling": filled with smoke or with water, it is what fills that says the kind)
+        # a phrase that says only what a category's name says first decides ("fire", "on fire" -> "fire_and_fumes",
+        # though the other's description speaks of "a police or fire cordon"; not "water" for "fouled_water", a word
+        # the name only qualifies, nor "fire showing", which says more)
+        named = [c for c in cats if words and (name := norm_phrase(c.name.replace("_", " "))) and name[0] in words
+                 and set(words) <= set(name) and name[0] not in lx.GENERIC_DANGER_WORDS]
+        if len(named) == 1 and len(cats) > 1:
+            return named[0].name
         described = [self._affirmed_words(c.description) for c in cats]
         overlap = [sum(any(_same_stem(w, d) for d in ds) for w in words) for ds in described]
         if overlap and max(overlap) == 1 and role == lx.UNDESIRABLE:
@@ -466,8 +476,15 @@ class ReportAnalyzer:
         for cat in self.kb.categories:
             entries[norm_phrase(cat.name.replace("_", " "))] = (cat.name, "category")
         # 4. the glossary (strongest: the KB says so explicitly)
+        place_keys = {k[1:] if k[:1] == ("the",) else k for lm in self.kb.landmarks
+                      for k in (norm_phrase(f) for f in lm.surface_forms)}
         for term in self.kb.glossary:
-            entries[norm_phrase(term.term)] = (term.category, "glossary")
+            key = norm_phrase(term.term)
+            entries[key] = (term.category, "glossary")
+            # "range is hot" where "the range" is a place: what the term says of it, said after the place
+            rest = next((key[n:] for n in range(len(key) - 1, 0, -1) if key[:n] in place_keys), ())
+            if len(rest) >= 2:
+                entries.setdefault(rest, (term.category, "glossary"))
         for term in self.kb.glossary:
             for form in _verb_forms(term.term) + _determined_forms(term.term) + _event_forms(term.term):
                 # "undercut": "the spate is undercutting its back wall"; "dropped plug": "she's dropped her plug"
@@ -865,9 +882,11 @@ class ReportAnalyzer:
                              and toks.tokens[b - 1].text.lower().replace("’", "'").endswith("'s")) \
                     and not (b - a >= 2 and self._bare_pair(norms, a, b)) \
                     and not ((a == 0 or toks.sentence_start[a]) and norms[b:b + 1] == ("itself",)) \
+                    and not (prev == "of" and a >= 2 and norms[a - 2] in ("stretch", "section", "length", "part")) \
                     and not (toks.clause_start[a] and toks.tokens[b - 1].text.lower().replace("’", "'").endswith("'s")
                              and any(norms[i - 1] == "the" and norms[i:i + b - a] == norms[a:b] for i in range(1, a))):
-                # ("we're at the kirk, ..., kirk's our rest centre now": said again, without its article)
+                # ("we're at the kirk, ..., kirk's our rest centre now": said again, without its article; "the
+                # stretch of trail" is the trail's)
                 # ("Jam tent's gone up": a name that opens its sentence as the subject, "the" left off; "both kilns" is
                 # "both the kilns")
                 # ("I live in toast rack, number 14": the article a learner of the language leaves out)
@@ -1032,6 +1051,8 @@ class ReportAnalyzer:
         if again:  # ("the old church looking down on that grass": a description anchored on the one said again)
             self._resolve_relations(ex)
         self._resolve_itself(ex)
+        self._resolve_between(ex, norms)
+        self._apposed_part(ex, norms)
         self._relative_clause_anchors(ex, norms)
         for idx, p in enumerate(ex.places):
             if p.status == "active" and p.via is None and norms[p.end_tok:p.end_tok + 2] in (
@@ -3320,7 +3341,7 @@ class ReportAnalyzer:
             for e in range(a1 + 1, min(a1 + 7, n) + 1) if end is None else ():
                 if e - 1 in place_tokens and e - 1 not in inner or toks.clause_start[e - 1]:
                     break
-                if norms[e - 1] in lx.RELATION_ENDINGS | {"into", "for", "up", "down", "out"} and (
+                if norms[e - 1] in lx.RELATION_ENDINGS | {"into", "for", "up", "down", "out", "along", "across", "around"} and (
                         e == n or toks.clause_start[e] or norms[e] in lx.COPULAS):
                     end = e
                     break
@@ -4493,7 +4514,9 @@ class ReportAnalyzer:
         closed = lx.PREPOSITIONS | lx.COPULAS | lx.FILLERS | lx.PRONOUNS | lx.COORDINATORS | lx.NEGATORS
         i = 0
         while i < len(norms):
-            if norms[i] not in lx.DESCRIPTION_HEADS or i in stop \
+            if norms[i] not in lx.DESCRIPTION_HEADS or i in stop or norms[i] == "room" and not (
+                    norms[i + 1:i + 2] in (("where",), ("that",), ("which",))
+                    or norms[i + 1:i + 3] in _THERE_ADVERBS and norms[i + 3:i + 4] == ("where",)) \
                     or norms[i] == "one" and toks.tokens[i].text[:1] == "O" and i > 0 and toks.tokens[i - 1].text[:1].isupper():
                 i += 1  # ("Control, Cave Rescue One at the bear pit": a call sign, no description)
                 continue
@@ -4506,6 +4529,8 @@ class ReportAnalyzer:
                 i += 1  # ("one of the anchor blocks on the east bank": one of many things, no landmark)
                 continue
             e = i + 1
+            if norms[e:e + 2] in _THERE_ADVERBS and norms[e + 2:e + 3] == ("where",) and not toks.clause_start[e]:
+                e += 2  # "the room down there where the teams lock their rifles away"
             if e < len(norms) and e not in relation_starts and norms[e] in lx.DESCRIPTION_LINKS \
                     and not toks.clause_start[e]:
                 e += 1
@@ -4586,6 +4611,54 @@ class ReportAnalyzer:
                 continue
             anchor = max(anchors, key=lambda p: p.end_tok)
             ex.places.append(self._mention(toks, i - 2, i + 1, anchor.landmark))
+
+    def _apposed_part(self, ex: Extraction, norms: tuple[str, ...]) -> None:
+        """"Smoke coming out from under the stadium, the room down there where the teams lock their rifles away":
+        a place said after "under" (or "behind", "beneath" ...) and then, after a comma, a description of a place
+        the KB relates to it: the description says which place is meant, the first only where it is."""
+        toks = ex.tokens
+        for idx, p in enumerate(ex.places):
+            k = p.start_tok - 1
+            while k >= 0 and norms[k] in lx.DETERMINERS:
+                k -= 1
+            if p.status != "active" or p.via is not None or k < 0 or norms[k] not in _UNDER_WORDS \
+                    or p.end_tok >= len(norms) or not toks.clause_start[p.end_tok]:
+                continue
+            q = next((q for q in ex.places if q.start_tok == p.end_tok and q.status == "active"
+                      and (q.via or "").startswith("description of") and q.landmark != p.landmark
+                      and (q.landmark, p.landmark) in self._related_pairs), None)
+            if q is not None:
+                ex.places[idx] = replace(p, status="reference", reason=f"where '{q.text}' is")
+
+    def _resolve_between(self, ex: Extraction, norms: tuple[str, ...]) -> None:
+        """"stranded riders hanging between the valley station and the Gratalm": the one landmark the KB relates
+        to both ends (the gondola that runs up from the one and tops out at the other) is the place meant, and the
+        ends are only where it is. Not where a place is named just before ("the footbridge between ...")."""
+        toks = ex.tokens
+
+        def place_at(i: int) -> PlaceMention | None:
+            while i < len(norms) and norms[i] in lx.DETERMINERS:
+                i += 1
+            return next((p for p in ex.places if p.start_tok == i and p.status == "active" and p.via is None), None)
+
+        for k in range(1, len(norms) - 3):
+            if norms[k] != "between" or any(p.end_tok == k or p.start_tok <= k < p.end_tok for p in ex.places):
+                continue
+            a = place_at(k + 1)
+            if a is None or norms[a.end_tok:a.end_tok + 1] not in (("and",), ("&",)):
+                continue
+            b = place_at(a.end_tok + 1)
+            if b is None or b.landmark == a.landmark or toks.clause_start[a.end_tok]:
+                continue
+            linked = {lm.name for lm in self.kb.landmarks if lm.name not in (a.landmark, b.landmark)
+                      and (lm.name, a.landmark) in self._related_pairs and (lm.name, b.landmark) in self._related_pairs}
+            if len(linked) != 1:
+                continue
+            name = next(iter(linked))
+            for idx, p in enumerate(ex.places):
+                if p is a or p is b:
+                    ex.places[idx] = replace(p, status="reference", reason=f"an end of {name}, said to lie between")
+            ex.places.append(self._mention(toks, k, b.end_tok, name, via=f"{name} links {a.landmark} and {b.landmark}"))
 
     def _resolve_possessives(self, ex: Extraction) -> None:
         """"the church's opposite number", "the health centre's neighbour", "its twin"."""
@@ -5280,9 +5353,11 @@ class ReportAnalyzer:
             after = norms[p.end_tok : p.end_tok + 2]
             if norms[j] in ("take", "taking", "took") and after[:1] and after[0] in ("off", "out", "back", "away"):
                 neg = True  # "take the garage off that list"
-            if neg and norms[j] in ("isnt", "wasnt", "arent", "werent") and any(
-                    d in toks.gaps[i] for i in range(j + 1, p.start_tok + 1) for d in ("—", "–", "--", " - ")):
-                neg = False  # "says the bridge is the safe way but it isn't - the crossing below the mill is cracking"
+            if neg and norms[j] in ("isnt", "wasnt", "arent", "werent") and (any(
+                    d in toks.gaps[i] for i in range(j + 1, p.start_tok + 1) for d in ("—", "–", "--", " - "))
+                    or toks.clause_start[j + 1] and j > 0 and norms[j - 1] in ("it", "that", "this", "they")):
+                neg = False  # "says the bridge is the safe way but it isn't - the crossing below the mill is cracking";
+                # "no it isn't, the stadium's one sheet of black ice": "it isn't" answers, and a clause of its own follows
             if neg and norms[j] == "not" and toks.clause_start[j + 1] and j > 0 \
                     and norms[j - 1] in ("absolutely", "definitely", "certainly", "course", "really", "no", "surely"):
                 neg = False  # "no, no, absolutely not, the lodge is brimming over": an answer, then a clause of its own
@@ -6980,7 +7055,30 @@ class ReportAnalyzer:
             claims.extend(extra)
             cues.extend(c.cue for c in extra)
         claims = self._the_actual_one(ex, norms, claims)
+        claims = self._motion_of_named_danger(ex, cues, claims)
         return Classification(cues, self._not_from_us(ex, norms, self._drop_unspecific_dangers(claims)), denied)
+
+    def _motion_of_named_danger(self, ex: Extraction, cues: list[CueMention], claims: list[Claim]) -> list[Claim]:
+        """"Avalanche has come down onto the 4k loop", "avalanche, it came down the black gully": a verb of
+        motion says the kind of the danger named just before it (three words at most, no place between), not a
+        collapse of its own."""
+        undesirable = {c.name for c in self.kb.categories_with_role(Role.UNDESIRABLE)}
+        sentence = ex.tokens.sentence_of
+        named = [c for c in cues if c.category in undesirable and c.polarity == "affirmed" and c.status == "active"
+                 and norm_phrase(c.text) not in lx.MOTION_DANGERS]
+        out: list[Claim] = []
+        for c in claims:
+            if norm_phrase(c.cue.text) in lx.MOTION_DANGERS and c.cue.category in undesirable:
+                before = [d for d in named if d.end_tok <= c.cue.start_tok <= d.end_tok + 3
+                          and sentence[d.start_tok] == sentence[c.cue.start_tok]
+                          and not any(d.end_tok <= p.start_tok < c.cue.start_tok for p in ex.places)]
+                last = max(before, key=lambda d: d.end_tok, default=None)
+                if last is not None and last.category != c.cue.category:
+                    c = Claim(c.place, replace(c.cue, category=last.category, reason=f"the motion of '{last.text}'"))
+                    if any(o.place.landmark == c.place.landmark and o.cue.category == c.cue.category for o in out):
+                        continue
+            out.append(c)
+        return out
 
     @staticmethod
     def _cleft_claims(ex: Extraction, norms: tuple[str, ...], cues: list[CueMention], claims: list[Claim]) -> list[Claim]:
@@ -8096,7 +8194,8 @@ class ReportAnalyzer:
                 # "I've heard on the radio there's flooding somewhere in the village": nowhere it names
                 else replace(c, status="retracted", reason="said of somewhere unnamed")
                 if c.end_tok < len(norms) and norms[c.end_tok] == "somewhere" and c.source != "embedding"
-                else c for c in cues]
+                and norms[c.end_tok + 2:c.end_tok + 3] not in (("it",), ("there",), ("them",))
+                else c for c in cues]  # (but "buried somewhere on it": on the place just said)
         if not dropped:
             return cues
         sent_of = {}
@@ -8393,6 +8492,9 @@ class ReportAnalyzer:
             h = self._cancel.match_at(norms, k)
             if h is not None and h[1].endswith("out") and h[0] < len(norms) and norms[h[0]] in lx.ROUTE_PREPOSITIONS:
                 h = None  # "evacuation route is out through the park": the way out, nothing put out
+            if h is not None and h[1].endswith("out") and norms[h[0]:h[0] + 1] in (("at",), ("by",), ("on",), ("near",)) \
+                    and self.kb.category_by_name[cue.category].role == Role.DESIRABLE:
+                h = None  # "the assembly point is out at the gate": where it is, no safe place put out
             if h is not None and h[1] == "drained" and norms[h[0]:h[0] + 2] in (("out", "into"), ("out", "onto"),
                                                                                ("away", "into"), ("into", "the")):
                 h = None  # "the wall's split open and all the water's drained out into the rocks": where it went
@@ -10005,6 +10107,39 @@ def _first_was_right_at(norms: tuple[str, ...], i: int) -> bool:
     return norms[i] in _FIRST_WAS_RIGHT_STARTS and any(norms[i:i + len(key)] == key for key in _FIRST_WAS_RIGHT)
 
 
+def _spoken_number_forms(kb: KnowledgeBase, taken: Collection[tuple[str, ...]]) -> list[tuple[tuple[str, ...], str]]:
+    """A name with a number in digits said as radio says it: "runway 26" -> "runway two six", "runway twenty
+    six"; "hut 7" -> "hut seven". Not where the form is another landmark's already."""
+    ones = ["zero", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten", "eleven", "twelve",
+            "thirteen", "fourteen", "fifteen", "sixteen", "seventeen", "eighteen", "nineteen"]
+    tens = ["", "", "twenty", "thirty", "forty", "fifty", "sixty", "seventy", "eighty", "ninety"]
+
+    def said(n: str) -> list[tuple[str, ...]]:
+        out = [tuple(ones[int(d)] for d in n)] if len(n) > 1 else []
+        v = int(n)
+        if v < 20:
+            out.append((ones[v],))
+        elif v < 100:
+            out.append((tens[v // 10],) if v % 10 == 0 else (tens[v // 10], ones[v % 10]))
+        return out
+
+    out: list[tuple[tuple[str, ...], str]] = []
+    seen = set(taken)
+    for lm in kb.landmarks:
+        for f in lm.surface_forms:
+            words = name_words(f)
+            at = [i for i, w in enumerate(words) if w.isdigit() and len(w) <= 2 and not w.startswith("0")]
+            if len(at) != 1 or len(words) < 2:
+                continue
+            i = at[0]
+            for spoken in said(words[i]):
+                key = tuple(words[:i]) + spoken + tuple(words[i + 1:])
+                if key not in seen:
+                    seen.add(key)
+                    out.append((key, lm.name))
+    return out
+
+
 def _synonym_forms(kb: KnowledgeBase) -> list[tuple[tuple[str, ...], str]]:
     """Another word for a one-word form of a landmark ("church" for the chapel, "tavern" for the inn), from
     ``lexicon.PLACE_SYNONYMS``: only where exactly one landmark has a one-word form in the group and no
@@ -10462,13 +10597,19 @@ def _withdraws(marker: tuple[str, ...]) -> bool:
 
 class _CancelMatcher(PhraseMatcher[str]):
     """Phrases that cancel a claim before them; "he's out" (got out) is none in "he's out of it" / "he's out cold"
-    (dazed, unconscious)."""
+    (dazed, unconscious), "gone" none in "gone up" (caught fire) or "gone into" (moved), "stopped" none in
+    "stopped short of"."""
 
     def match_at(self, norms: tuple[str, ...], i: int, blocked: Iterable[int] = ()) -> tuple[int, str] | None:
         hit = super().match_at(norms, i, blocked)
         if hit is not None and hit[1].endswith(" out") and (
                 norms[hit[0]:hit[0] + 2] == ("of", "it") or norms[hit[0]:hit[0] + 1] == ("cold",)):
             return None
+        if hit is not None and hit[1].endswith("gone") and norms[hit[0]:hit[0] + 1] in (
+                ("up",), ("into",), ("onto",), ("through",), ("across",), ("over",)):
+            return None  # "the gas ring's gone up", "sparks have gone into the dry grass": caught fire, moved; not gone
+        if hit is not None and hit[1].endswith("stopped") and "short" in norms[hit[0]:hit[0] + 2]:
+            return None  # "the debris stopped short of the track": the danger is there, only not as far as that
         return hit
 
 
@@ -10481,6 +10622,10 @@ def _stove_in(toks: Tokens, norms: tuple[str, ...], a: int) -> bool:
 
 
 _ANIMAL_STATE_KEYS = frozenset(norm_phrase(s) for s in lx.ANIMAL_STATES)
+# "down there", "up there": said between a description's head and its "where"
+_THERE_ADVERBS = frozenset({(w, "there") for w in ("down", "up", "over", "in", "under", "out", "back")})
+# Where a part of a place is, said before the place ("from under the stadium, the room down there where ...")
+_UNDER_WORDS = frozenset({"under", "beneath", "underneath", "below", "behind", "above"})
 _COMPASS = frozenset({"north", "south", "east", "west", "northeast", "northwest", "southeast", "southwest"})
 # Closed-class words that never head a description.
 _NOT_HEADS = lx.PREPOSITIONS | lx.COPULAS | lx.FILLERS | lx.PRONOUNS | lx.INVERSE_VERBS | lx.DETERMINERS
@@ -10562,14 +10707,16 @@ def _relation_core(phrase: str) -> str:
     thing it crosses ("across the channel from" -> "across from").
 
     >>> [_relation_core(p) for p in ("directly above", "on the levee above", "across the tracks from", "feeds",
-    ...                              "built onto the side of", "is built against")]
-    ['above', 'above', 'across from', 'feeds', 'built onto', 'built against']
+    ...                              "built onto the side of", "is built against", "stands opposite")]
+    ['above', 'above', 'across from', 'feeds', 'built onto', 'built against', 'opposite']
     """
     words = phrase.split()
     while len(words) > 1 and (words[0] in lx.RELATION_ADVERBS or words[0] in ("is", "are")):
         words = words[1:]  # ("is built against" is a "built against" relation)
     if len(words) > 1 and words[-1] in _TRAILING_DIRECTIONS:
         return words[-1]
+    if len(words) == 2 and words[0] in _POSTURES and words[1] in ("opposite", "beside", "alongside", "facing"):
+        words = words[1:]  # ("stands opposite" is an "opposite" relation: "the building across the road from")
     if len(words) > 3 and words[-3] == "the" and words[-2] in lx.PART_NOUNS and words[-1] == "of":
         words = words[:-3]  # "built onto the side of" is an "attached to" relation
     core = " ".join(words)
@@ -10689,9 +10836,15 @@ def _relation_forms(phrase: str) -> list[tuple[str, bool]]:
     True
     >>> ("downstream of", True) in _relation_forms("upstream of")
     True
+    >>> ("on the front of", False) in _relation_forms("is built onto the front of")
+    True
     """
     words = phrase.split()
     out: list[tuple[str, bool]] = [(phrase, False)]
+    if len(words) >= 5 and words[-4] in ("onto", "against", "on", "to") and words[-3] == "the" \
+            and words[-2] in ("front", "back", "side", "end", "rear") and words[-1] == "of":
+        # "is built onto the front of": the shop "on the front of" the hangar, "at the back of" it
+        out.extend((f"{prep} the {words[-2]} of", False) for prep in ("on", "at") if prep != words[-4])
     # "guards the approach to" said short: "the yard the gatehouse guards", "the cross it overlooks"
     cut = next((i for i, w in enumerate(words) if i >= 1 and w in lx.ARTICLES), None)
     if cut is not None and words[0].endswith("s") and not words[0].endswith("ss") and words[0] not in lx.GENERIC_VERBS \

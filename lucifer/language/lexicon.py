@@ -169,7 +169,7 @@ can't feel their legs|come off the ladder|came off the ladder|fallen off the lad
 got it in his eyes|got it in her eyes|in his eyes|in her eyes|very muddled|she's muddled|he's muddled|dehydrated|hasn't had a drink|hasnt had a drink|not had a drink|drowsy and confused|clammy|
 without his insulin|without her insulin|without their insulin|without his medication|without her medication|
 without their medication|without his tablets|without her tablets|shaking and sweating|stuck between floors|
-stuck between two floors|last seen going into|last seen heading into|last seen at|last seen in|last seen near|soaked to the skin|shivering that hard|can barely talk|wants an ambulance|needs an ambulance|people are still in|people still in|are still trapped|waving a torch|waving a light|up on its roof|up on the car roof|on top of the car|on the roof of the car|
+stuck between two floors|last seen going into|last seen heading into|last seen at|last seen in|last seen near|soaked to the skin|shivering that hard|can barely talk|been dragged|being dragged|got dragged|dragged along by|cannot speak|can't speak|cant speak|can not speak|can't talk|cannot talk|he is very cold|she is very cold|he's very cold|she's very cold|is freezing cold|wants an ambulance|needs an ambulance|people are still in|people still in|are still trapped|waving a torch|waving a light|up on its roof|up on the car roof|on top of the car|on the roof of the car|
 burnt both his|burnt both her|burned both his|burned both her|burnt his arms|burnt her arms|burned his arms|
 burned her arms|burnt his hands|burnt her hands|burned his hands|burned her hands|cannot be reached|can't be reached|
 cant be reached|request lift|requesting a lift|need lifting off|needs lifting off|uses a frame|uses a walking frame|
@@ -237,7 +237,7 @@ he fall|she fall|frostbite|frostbitten|frostbite case|is lost|he's lost|she's lo
 cut by flying glass|cut by glass|cut by falling glass|hit by flying glass|hit by debris|hit by falling debris|
 broken his hip|broken her hip|broken his leg|broken her leg|broken his arm|broken her arm|broke his leg|broke her leg|
 waving out the window|waving out of the window|waving out of windows|waving from the window|
-not come out|hasn't come out|has not come out|didn't come out|never came out|not come back out|hasn't come back out|
+not come out|hasn't come out|has not come out|didn't come out|never came out|nobody's seen them come out|nobody has seen them come out|no one's seen them come out|no one has seen them come out|nobody's seen him come out|nobody's seen her come out|nobody saw them come out|not come back out|hasn't come back out|
 been knocked down|got knocked down|knocked off her bike|knocked off his bike|was knocked down|knocked over by|been hit by|was hit by|got hit by|hit by a|
 struck by a|been run over|was run over|got run over|not conscious|isn't conscious|is not conscious|
 send a boat|please send a boat|need a boat|send help|please send help|come and get us|come get us|get us out|
@@ -817,7 +817,7 @@ TRANSIT = [*(f"{v} {who} {way}to" for v in ("walk", "take", "bring", "carry", "h
 DESCRIPTION_HEADS = {"building", "place", "shop", "store", "tower", "block", "house", "hall", "premises", "structure",
                      "unit", "warehouse", "one", "office", "shed", "hut", "works", "centre", "center", "station", "yard",
                      "plant", "cottage", "cottages", "terrace", "row", "church", "chapel", "inn", "pub", "site",
-                     "complex", "facility", "depot", "mill", "factory", "workshop", "barn", "lodge", "field"}
+                     "complex", "facility", "depot", "mill", "factory", "workshop", "barn", "lodge", "field", "room"}
 # Heads too generic ever to name a landmark on their own ("the building", even with one "terminal building").
 UNNAMING_HEADS = {"building", "place", "one", "site", "unit", "premises", "structure", "spot", "area", "thing", "bit",
                   "side", "house", "shop", "store", "block", "office", "hall", "station", "centre", "center", "room",
@@ -832,7 +832,7 @@ DESCRIPTION_LINKS = {"with", "on", "at", "in", "along", "that", "which", "sellin
 DESCRIPTION_STOPWORDS = {"building", "place", "one", "with", "and", "the", "a", "an", "of", "on", "at", "in", "to",
                          "that", "which", "its", "it", "is", "are", "has", "have", "from", "by", "for", "where", "there",
                          "this", "small", "big", "large", "little", "town", "side", "road", "street", "corner",
-                         "edge", "end", "middle", "near", "next", "our", "their", "some", "up", "down", "s"}
+                         "edge", "end", "middle", "near", "next", "our", "their", "some", "up", "down", "s", "away"}
 
 # Who a report's position phrase is about ("team two is at", "engine 4's outside").
 CREW_NOUNS = {"team", "crew", "unit", "engine", "ladder", "squad", "truck", "ambulance", "medic", "medics", "rescue",
@@ -1108,6 +1108,13 @@ KIND_VOTE_STOPWORDS = frozenset({"have", "with", "from", "that", "this", "been",
                                  "completely", "totally", "showing", "really"})
 KIND_FALLBACK = {"breakage": "collapse", "smoke": "fire", "storm": "collapse", "fire": "explosion", "vehicle": "access", "disorder": "fire"}
 DANGER_KINDS: dict[str, list[str]] = {
+    "snow": ["avalanche", "avalanches", "avalanched", "snow slide", "snowslide", "snow slip", "slab avalanche",
+             "slab came down", "slab has come down", "slab's come down", "powder cloud", "snow came down",
+             "snow has come down", "snow's come down", "snow is come down", "buried by snow", "buried in snow",
+             "cornice", "cornice collapsed", "cornice has collapsed", "black ice", "sheet ice", "sheet of ice",
+             "thin ice", "ice is thin", "ice's thin", "ice is cracking", "ice cracking", "ice's cracking",
+             "ice is breaking", "iced over",
+             "iced up", "snowdrift", "snowdrifts", "drifted shut", "drifted in"],
     "crowd": ["crowd crush", "crowd surge", "surge at", "surge in", "surging", "crammed", "packed solid", "pressed flat",
               "pressed against", "pushed up against", "crushing", "pile-up", "pile up", "overcrowded", "stampede",
               "people pushing", "everyone pushing", "crushed against", "being crushed against", "crush in there",
@@ -1289,6 +1296,12 @@ DANGER_KIND_PARTS = _keyed({"roof", "roofs", "wall", "walls", "ceiling", "floor"
 for _phrases in DANGER_KINDS.values():
     for _p in _phrases:
         ROLE_CUES.setdefault(_p, UNDESIRABLE)
+
+# Verbs of a danger's motion that say no kind of their own where a danger is named with them ("avalanche has
+# come down onto the loop": snow, not a collapse; "smoke coming down the stairs").
+MOTION_DANGERS = {("come", "down"), ("came", "down"), ("coming", "down"), ("ha", "come", "down"),
+                  ("has", "come", "down"), ("s", "come", "down"), ("is", "come", "down"), ("cracking",),
+                  ("cracking", "up"), ("let", "go"), ("has", "let", "go"), ("s", "let", "go")}
 
 # Verbs that give a claim as someone else's word, which the speaker may then contradict.
 HEARSAY_VERBS = {"say", "says", "said", "reckon", "reckons", "reckoned", "think", "thinks", "thought", "report", "reported",
@@ -1516,7 +1529,7 @@ DESCRIBED_COMFORTS: dict[str, tuple[frozenset[str], list[str]]] = {
 }
 # Said of a tank or a pool where the safe-place category counts a water supply: that supply is there.
 WATER_SUPPLY_FULL = ["full to the brim", "full to the top", "tank is full", "tank's full", "tanks are full",
-                     "pool's full", "pool is full", "brim full"]
+                     "pool's full", "pool is full", "brim full", "plenty of water in it", "plenty of water in"]
 
 # More phrases of the kinds above that read as their kind but do not vote on which category a kind is (so the
 # kinds map onto a KB's categories as they did before these were added).
@@ -1525,7 +1538,9 @@ DANGER_KIND_EXTRA: dict[str, list[str]] = {
     # (stop 37's words, kept out of the kinds' votes: a word added to DANGER_KINDS moves a whole kind in some KB)
     "chemical": ["black with oil", "thick with oil", "oil pouring out", "crude pouring out", "crude everywhere",
                  "crude all over", "crude on the ground", "crude spilling"],
-    "breakage": ["pipe is broken", "pipe's broken", "pipes are broken", "pipe has broken", "pipe is snapped",
+    "breakage": ["broken down", "broke down", "has broken down", "has broke down", "s broken down", "s broke down",
+                 "has jammed", "s jammed", "seized up", "has seized",
+                 "pipe is broken", "pipe's broken", "pipes are broken", "pipe has broken", "pipe is snapped",
                  "pipe's snapped", "is snapped", "s snapped", "lost its last two spans", "lost two spans", "lost a span",
                  "lost its spans", "lost two of its spans", "been ripped out", "ripped out", "hole right through it", "hole right through", "punched a hole in", "punched a hole through", "hole punched", "punched right through", "punched through"],  # "a hole punched right through the wall"
     # (the surge's damage to moorings: "the diesel jetty has broken loose", "pontoons torn off their piles")
