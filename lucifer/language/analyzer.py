@@ -38,6 +38,7 @@ from lucifer.language.numbers import (
     is_number,
     is_ordinal,
     number_at,
+    spoken_forms,
     text_ranges,
 )
 from lucifer.language.text import PhraseMatcher, Tokens, name_words, norm, norm_phrase, tokenize
@@ -10110,19 +10111,6 @@ def _first_was_right_at(norms: tuple[str, ...], i: int) -> bool:
 def _spoken_number_forms(kb: KnowledgeBase, taken: Collection[tuple[str, ...]]) -> list[tuple[tuple[str, ...], str]]:
     """A name with a number in digits said as radio says it: "runway 26" -> "runway two six", "runway twenty
     six"; "hut 7" -> "hut seven". Not where the form is another landmark's already."""
-    ones = ["zero", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten", "eleven", "twelve",
-            "thirteen", "fourteen", "fifteen", "sixteen", "seventeen", "eighteen", "nineteen"]
-    tens = ["", "", "twenty", "thirty", "forty", "fifty", "sixty", "seventy", "eighty", "ninety"]
-
-    def said(n: str) -> list[tuple[str, ...]]:
-        out = [tuple(ones[int(d)] for d in n)] if len(n) > 1 else []
-        v = int(n)
-        if v < 20:
-            out.append((ones[v],))
-        elif v < 100:
-            out.append((tens[v // 10],) if v % 10 == 0 else (tens[v // 10], ones[v % 10]))
-        return out
-
     out: list[tuple[tuple[str, ...], str]] = []
     seen = set(taken)
     for lm in kb.landmarks:
@@ -10132,7 +10120,7 @@ def _spoken_number_forms(kb: KnowledgeBase, taken: Collection[tuple[str, ...]]) 
             if len(at) != 1 or len(words) < 2:
                 continue
             i = at[0]
-            for spoken in said(words[i]):
+            for spoken in spoken_forms(words[i]):
                 key = tuple(words[:i]) + spoken + tuple(words[i + 1:])
                 if key not in seen:
                     seen.add(key)

@@ -1113,8 +1113,7 @@ DANGER_KINDS: dict[str, list[str]] = {
              "snow has come down", "snow's come down", "snow is come down", "buried by snow", "buried in snow",
              "cornice", "cornice collapsed", "cornice has collapsed", "black ice", "sheet ice", "sheet of ice",
              "thin ice", "ice is thin", "ice's thin", "ice is cracking", "ice cracking", "ice's cracking",
-             "ice is breaking", "iced over",
-             "iced up", "snowdrift", "snowdrifts", "drifted shut", "drifted in"],
+             "ice is breaking", "iced over", "iced up", "snowdrift", "snowdrifts", "drifted shut", "drifted in"],
     "crowd": ["crowd crush", "crowd surge", "surge at", "surge in", "surging", "crammed", "packed solid", "pressed flat",
               "pressed against", "pushed up against", "crushing", "pile-up", "pile up", "overcrowded", "stampede",
               "people pushing", "everyone pushing", "crushed against", "being crushed against", "crush in there",
@@ -1299,8 +1298,7 @@ for _phrases in DANGER_KINDS.values():
 
 # Verbs of a danger's motion that say no kind of their own where a danger is named with them ("avalanche has
 # come down onto the loop": snow, not a collapse; "smoke coming down the stairs").
-MOTION_DANGERS = {("come", "down"), ("came", "down"), ("coming", "down"), ("ha", "come", "down"),
-                  ("has", "come", "down"), ("s", "come", "down"), ("is", "come", "down"), ("cracking",),
+MOTION_DANGERS = {("come", "down"), ("came", "down"), ("coming", "down"), ("has", "come", "down"), ("s", "come", "down"), ("is", "come", "down"), ("cracking",),
                   ("cracking", "up"), ("let", "go"), ("has", "let", "go"), ("s", "let", "go")}
 
 # Verbs that give a claim as someone else's word, which the speaker may then contradict.

@@ -61,6 +61,22 @@ def text_ranges(text: str, at_end: bool = False) -> list[tuple[str, int, int]]:
     return out
 
 
+def spoken_forms(digits: str) -> list[tuple[str, ...]]:
+    """How a number written in one or two digits is said on the radio: digit by digit, and as a number.
+
+    >>> spoken_forms("26"), spoken_forms("7"), spoken_forms("40")
+    ([('two', 'six'), ('twenty', 'six')], [('seven',)], [('four', 'zero'), ('forty',)])
+    """
+    tens = {v: w for w, v in _TENS.items()}
+    v = int(digits)
+    out = [tuple(_ONES[int(d)] for d in digits)] if len(digits) > 1 else []
+    if v < 20:
+        out.append((_ONES[v],))
+    elif v < 100:
+        out.append((tens[v - v % 10],) if v % 10 == 0 else (tens[v - v % 10], _ONES[v % 10]))
+    return out
+
+
 def number_at(norms: tuple[str, ...], i: int) -> tuple[int, int] | None:
     """(value, end) of a number said at token ``i``: "14", "ten", "twenty one", "twenty-first", "7th",
     "seventh"; None where there is none."""
