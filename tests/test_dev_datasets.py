@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev91) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev92) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -182,6 +182,10 @@ SKI_JUMP_CENTRE = ROOT / "knowledge_bases" / "ski_jump_centre"
 SAILING_CENTRE = ROOT / "knowledge_bases" / "sailing_centre"
 AVIATION_MUSEUM = ROOT / "knowledge_bases" / "aviation_museum"
 OYSTER_FISHERY = ROOT / "knowledge_bases" / "oyster_fishery"
+OPAL_MINING_OUTPOST = ROOT / "knowledge_bases" / "opal_mining_outpost"
+FIREWORKS_FACTORY = ROOT / "knowledge_bases" / "fireworks_factory"
+RICE_TERRACE_VILLAGE = ROOT / "knowledge_bases" / "rice_terrace_village"
+VERTICAL_FARM = ROOT / "knowledge_bases" / "vertical_farm"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -515,6 +519,10 @@ SETS = {
     "dev91/sailing_centre": _set("dev91/sailing_centre.jsonl", SAILING_CENTRE, "sc91", TWENTY, sep=""),
     "dev91/aviation_museum": _set("dev91/aviation_museum.jsonl", AVIATION_MUSEUM, "am91", TWENTY, sep=""),
     "dev91/oyster_fishery": _set("dev91/oyster_fishery.jsonl", OYSTER_FISHERY, "of91", TWENTY, sep=""),
+    "dev92/opal_mining_outpost": _set("dev92/opal_mining_outpost.jsonl", OPAL_MINING_OUTPOST, "om92", TWENTY, sep=""),
+    "dev92/rice_terrace_village": _set("dev92/rice_terrace_village.jsonl", RICE_TERRACE_VILLAGE, "rt92", TWENTY, sep=""),
+    "dev92/fireworks_factory": _set("dev92/fireworks_factory.jsonl", FIREWORKS_FACTORY, "ff92", TWENTY, sep=""),
+    "dev92/vertical_farm": _set("dev92/vertical_farm.jsonl", VERTICAL_FARM, "vf92", TWENTY, sep=""),
 }
 
 
