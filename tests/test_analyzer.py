@@ -4779,3 +4779,70 @@ def test_partner_reading_needs_a_verb_and_a_lead(kb_analyzers):
 ])
 def test_dev91_phenomena(kb_analyzers, kb, text, expected):
     assert claims(kb_analyzers[kb], text) == expected
+
+
+@pytest.mark.parametrize(("kb", "text", "expected"), [
+    # a description read by meaning anchors the one around it (two hops)
+    ("aviation_museum", "Water point for pump two: the tank supplying the shed that answers to the control tower, "
+                        "plenty of water in it.", [("static water tank", "safe_haven")]),
+    ("aviation_museum", "Diesel leak in the shed that fills from the tank they dug to protect the T2 hangar, it's all "
+                        "over the floor.", [("fire section", "fire_and_fumes")]),
+    # a relative clause ending on "it"/"there", read by meaning around the place named last before it
+    ("ski_jump_centre", "Fire alarm at the Alpenblick was false, someone burnt toast. But the plant that heats it is "
+                        "actually on fire, there's smoke pouring out of the chip silo.",
+     [("boiler house", "fire_fumes_or_failure")]),
+    ("ski_jump_centre", "Team three at the valley station, it's warm and open, we're using it as the assembly point. "
+                        "The lift that goes up from there has jammed, haul rope's come off a sheave.",
+     [("Kaltental gondola", "fire_fumes_or_failure"), ("gondola valley station", "warm_refuge")]),
+    ("fireworks_factory", "Range officer: the grass is burning on the field the mortar racks sit at the end of, and "
+                          "my crew are safe in the bunker that looks out over it.",
+     [("firing bunker", "safe_refuge"), ("test range", "fire_or_blast")]),
+    # a link MiniLM's relation forms left unresolved is still read among the anchor's own relations
+    ("ski_jump_centre", "The lift that goes up from the valley station has jammed.",
+     [("Kaltental gondola", "fire_fumes_or_failure")]),
+    # but a description's own relation is not read again around it
+    ("hospital_campus", "caller says she's trapped in the ward linked by the bridge to the south wing",
+     [("children's ward", "people_in_danger")]),
+    # "the X the Y is there to protect"
+    ("fireworks_factory", "The blast door's been blown in on the magazine the blast bank is there to protect, there's "
+                          "loose shells all over the floor, keep out.", [("magazine a", "danger_no_entry")]),
+    # "the factory car park"; "the houses whose back gardens go right up to" it
+    ("fireworks_factory", "Hello, um, my nan got cut by the window, it smashed when the bang went and she's bleeding "
+                          "a lot. We live in the houses whose back gardens go right up to the factory car park.",
+     [("ashby close", "person_needs_help")]),
+    ("fireworks_factory", "Fire in the factory car park.", [("staff car park", "fire_or_blast")]),
+    # a place named, then another the KB relates to it and a verb ending on a preposition: only which one
+    ("fireworks_factory", "People trapped in the traverse the old bunker is cut into.",
+     [("earth traverse", "person_needs_help")]),
+    # wires down, a transformer blown, "keep off it"
+    ("fireworks_factory", "sub-- the substation's on fire, well, no, not on fire, it's - the transformer's blown and "
+                          "there's wires down all over the ground, keep off it", [("substation", "danger_no_entry")]),
+    # "not safe" takes the kind of danger said right after it
+    ("fireworks_factory", "the offices are sa-- no, they're not safe, the ceiling's coming down in the offices, the "
+                          "front office, yeah, get out of there", [("office block", "danger_no_entry")]),
+    # "nobody come down here" warns, nothing comes down
+    ("fireworks_factory", "control alpha two um we passed the office block on the way down, nothing to report there, "
+                          "er, we're now at mag B and there's a misfire- not a misfire, sorry, there's shells blown "
+                          "out the door all over the apron, nobody come down here",
+     [("magazine b", "danger_no_entry")]),
+    # "the bad air's cleared": gone, and no safe place said
+    ("opal_mining_outpost", "Update on the shaft the blower yard works: the bad air's cleared, fans are running, no "
+                            "further concerns.", []),
+    ("opal_mining_outpost", "uh update on the bowser um the diesel's been cleaned up, the leak's, uh, capped, no more "
+                            "fumes, no fire, over", []),
+    # "hasn't come back to" a place: not there
+    ("opal_mining_outpost", "Overdue noodler, Japanese bloke, went out to the white dumps at dawn with one bottle of "
+                            "water and hasn't come back to the van park.", [("mullock dumps", "person_in_strife")]),
+    # a passive link says which end the anchor is; "can't climb back up" is no "back up, start again"
+    ("opal_mining_outpost", "Woman's slipped into the tank that's fed by the bore the powerhouse runs, she can't "
+                            "climb back up the plastic liner, she's getting tired.",
+     [("turkey's nest", "person_in_strife")]),
+    # a person doing something, then "has collapsed"; a clause with no head of its own says which the anchor is
+    ("opal_mining_outpost", "Heat stroke up on the hill that overlooks the heaps they truck in from the dead horse, a "
+                            "woman visiting a grave has collapsed.", [("boot hill", "person_in_strife")]),
+    # "that's got the tunnel through to"
+    ("opal_mining_outpost", "Control, thick smoke coming up the air shaft of the dugout that's got the tunnel through "
+                            "to the pub.", [("backpackers dugout", "fire_or_foul_air")]),
+])
+def test_dev92_phenomena(kb_analyzers, kb, text, expected):
+    assert claims(kb_analyzers[kb], text) == expected

@@ -840,9 +840,12 @@ class ReportAnalyzer:
             prev = norms[a - 1] if a > 0 else ""
             k = a - 1
             while k > 0 and a - k <= 2 and (norms[k] in lx.NAME_ADJECTIVES or norms[k] in lx.HESITATIONS
-                                             or norms[k] in _SUBSTANCE_MODIFIERS and k == a - 1 and b - a >= 2) \
+                                             or norms[k] in _SUBSTANCE_MODIFIERS and k == a - 1 and b - a >= 2
+                                             or norms[k] in _SITE_MODIFIERS and k == a - 1 and b - a >= 2
+                                             and self._places.match_at(norms, k) is None) \
                     and not toks.clause_start[k + 1]:
                 k -= 1  # "the big rusty dredger", "the sch school": the article before the adjectives or a word begun
+                # ("the factory car park": the site the KB covers, said before a name of two words)
             if k < a - 1 and norms[k] in lx.ARTICLES:
                 prev = norms[k]
             acronym = b == a + 1 and a > 0 and len(toks.tokens[a].text) >= 2 and toks.tokens[a].text.isupper()
@@ -1164,6 +1167,13 @@ class ReportAnalyzer:
                     norms[m] in ("hasnt", "havent", "hadnt", "not", "nt", "never") for m in range(max(0, j - 4), j - 1)):
                 # "fire on the embankment, it hasn't reached the allotments yet": nothing there yet
                 ex.places[idx] = replace(p, status="reference", reason="not reached yet: no claim")
+                continue
+            if p.status == "active" and j >= 4 and norms[j - 3:j] in (("come", "back", "to"), ("got", "back", "to"),
+                                                                      ("it", "back", "to")) \
+                    and any(norms[m] in ("hasnt", "havent", "hadnt", "not", "nt", "never", "didnt")
+                            for m in range(max(0, j - 5), j - 3)):
+                # "went out to the white dumps and hasn't come back to the van park": not there, where they are awaited
+                ex.places[idx] = replace(p, status="reference", reason="not come back to it: no claim")
                 continue
             if p.status != "active" or j < 2 or p.via is not None:
                 continue
@@ -2622,6 +2632,8 @@ class ReportAnalyzer:
             pause_after = b >= len(norms) or toks.clause_start[b]
             if words[-1:] == ("wrong",) and nxt in ("word", "words"):
                 continue  # "gas leak, sorry, gas leak, wrong word": said of the word already repaired
+            if words == ("back", "up") and a > 0 and not toks.clause_start[a] and norms[a - 1] not in lx.FILLERS:
+                continue  # "she can't climb back up", "the power's back up": no "back up, start again"
             if words == ("wrong",) and nxt in ("side", "end", "bank") and norms[b + 1:b + 2] == ("of",) and a > 0 \
                     and norms[a - 1] == "the":
                 continue  # "I'm looking at it from the wrong side of the green": where from, no repair
@@ -2802,10 +2814,14 @@ class ReportAnalyzer:
                 # "the path that winds down to the row after the A cabins": a description so resolved may anchor
                 # a listed one, or an inverse one ("the station that the line ending at lakeside halt sets out from")
                 again((False, True))
+                # (or one read by meaning around it: "the tank supplying the shed that answers to the control tower")
+                self._resolve_by_partners(ex, toks, norms, place_tokens, marker_tokens, cue_tokens)
         if self.kb.relations and rel_hits:
             self._unresolved_own_heads(ex, toks, norms, rel_hits)
             self._both_anchors(ex, toks, norms, rel_hits)
         self._restated_anchors(ex, toks, norms)
+        if self.kb.relations:
+            self._named_contact_clauses(ex, toks, norms)
         self._coordinated_anchors(ex, toks, norms)
         self._nearest_points(ex, toks, norms)
         if self.kb.relations:
@@ -2818,6 +2834,13 @@ class ReportAnalyzer:
                 if p.via is None and p.status == "active" and d.start_tok <= p.start_tok and p.end_tok <= d.end_tok:
                     # "the landing it faces": the head word named the place the description reaches
                     ex.places[idx] = replace(p, status="reference", reason=f"part of the description '{d.text}'")
+        for idx, p in enumerate(ex.places):
+            if p.status == "active" and p.via is not None and norms[p.start_tok] not in lx.DETERMINERS and any(
+                    r.status == "reference" and r.landmark == p.landmark and r.end_tok <= p.start_tok <= r.end_tok + 1
+                    and r.reason.startswith("reference point") for r in ex.places):
+                # "the hill that overlooks the heaps they truck in from the dead horse": a clause with no head of its
+                # own says which the anchor just said is, no claim of its own
+                ex.places[idx] = replace(p, status="reference", reason="says which the place before it is")
         # "the pub that's back to back with the wharf Thornlow's ships its salt from": the outer description took the
         # name as its anchor before the inner one was read; the inner one, the same place, is still only its anchor
         for idx, p in enumerate(ex.places):
@@ -3282,14 +3305,22 @@ class ReportAnalyzer:
         (or ``margin``)."""
         assert self.embedder is not None
         words = link.split()
-        if not any(_verb_like(w) or w in _SUBJECT_PRONOUNS and k + 1 < len(words) for k, w in enumerate(words)):
-            return None, None  # ("the hill road past the caravan park", "full of": no verb, no relation said)
+        if not any(_verb_like(w) or w in _SUBJECT_PRONOUNS and k + 1 < len(words)
+                   or w in ("looks", "look", "got") and k + 1 < len(words) and words[k + 1] != "like"
+                   for k, w in enumerate(words)):
+            return None, None  # ("the hill road past the caravan park", "full of": no verb, no relation said; but "looks
+            # out over", "that's got the tunnel through to": verbs, though function words in "looks like")
         scored: dict[str, tuple[float, str]] = {}
         v_link = self.embedder.embed_one(link)
         v_head = self.embedder.embed_one(head)
+        # ("the tank that's fed by the bore": a passive link says which end the anchor is, the relation's doer)
+        passive = len(words) >= 2 and words[-1] == "by" and any(
+            w.endswith("ed") or w in _IRREGULAR_PARTICIPLES for w in words[:-1])
         for rel in self.kb.relations:
             if anchor not in (rel.subject, rel.object) or rel.subject == rel.object:
                 continue
+            if passive and (rel.subject == anchor) == rel.phrase.replace("_", " ").endswith(" by"):
+                continue  # (a relation named in the passive itself, "is fed by", has its doer as object)
             other = rel.object if rel.subject == anchor else rel.subject
             score = float(self._partner_relation_vectors[rel.phrase] @ v_link) \
                 + float(np.max(self._partner_name_vectors[other] @ v_head))
@@ -3300,6 +3331,8 @@ class ReportAnalyzer:
         ranked = sorted(scored.items(), key=lambda kv: -kv[1][0])
         best_score = ranked[0][1][0]
         min_score = self.PARTNER_MIN_SCORE if min_score is None else min_score
+        if passive and len(ranked) == 1:
+            min_score = min(min_score, self.PARTNER_MIN_SCORE)  # (one relation the right way round: the lower bar)
         margin = self.PARTNER_MARGIN if margin is None else margin
         if best_score < min_score or len(ranked) > 1 and best_score - ranked[1][1][0] < margin:
             return None, None
@@ -3322,7 +3355,14 @@ class ReportAnalyzer:
         since no relation word was found."""
         heads = self._partner_heads()
         n = len(norms)
-        for anchor in sorted([p for p in ex.places if p.status == "active" and p.via is None], key=lambda p: -p.start_tok):
+        # (a place read already from its own description anchors one around it: "the tank supplying the shed that
+        # answers to the control tower")
+        # (and one the MiniLM link reading left unresolved: "the lift that goes up from the valley station")
+        anchors = sorted([p for p in ex.places if p.status == "active" and (
+            p.via is None or norms[p.start_tok] in lx.ARTICLES and p.end_tok - p.start_tok >= 4)
+            or p.status == "reference" and p.via is None and p.reason.startswith("reference point of an unresolved")],
+            key=lambda p: -p.start_tok)
+        for anchor in anchors:  # (grows: a description read here anchors the one around it, read after it)
             if anchor not in ex.places or norms[anchor.start_tok] in lx.PRONOUNS:
                 continue
             a0, a1 = anchor.start_tok, anchor.end_tok
@@ -3391,12 +3431,76 @@ class ReportAnalyzer:
             head = " ".join(toks.tokens[i].text.lower() for i in range(head_start + 1, h + 1))
             target, via = self._partner_by_meaning(anchor.landmark, link, head, self.PARTNER_CLAUSE_MIN_SCORE,
                                                    self.PARTNER_CLAUSE_MARGIN)
-            if target is None or target == anchor.landmark:
-                continue
+            if target is None or target == anchor.landmark or anchor.via is not None and via in anchor.via:
+                continue  # (a description's own relation read again: "the ward linked by the bridge to the south wing")
             idx = ex.places.index(anchor)
             ex.places[idx] = replace(anchor, status="reference", reason=f"reference point: {via} (read '{link}')")
             ex.places.append(self._mention(toks, head_start, end, target, via=f"{via} ~ '{link}' (by meaning)"))
             place_tokens.update(range(head_start, end))
+            if norms[head_start] in lx.ARTICLES and end - head_start >= 4:
+                anchors.append(ex.places[-1])
+        self._partners_of_pronoun(ex, toks, norms, place_tokens, marker_tokens, cue_tokens, heads)
+
+    def _named_contact_clauses(self, ex: Extraction, toks: Tokens, norms: tuple[str, ...]) -> None:
+        """"trapped on the bank the old bunker is cut into": a place named, then straight on in its clause another
+        the KB relates to it and a verb ending on a preposition. The second only says which the first is: a reference
+        point, whatever words the relation is said in."""
+        n = len(norms)
+        for idx, q in enumerate(ex.places):
+            s0 = q.start_tok - 1
+            if q.status != "active" or q.via is not None or s0 < 1 or norms[s0] not in lx.ARTICLES:
+                continue
+            p = next((p for p in ex.places if p.status == "active" and p.end_tok == s0 and p is not q), None)
+            if p is None or (p.landmark, q.landmark) not in self._related_pairs or toks.clause_start[s0] \
+                    or toks.clause_start[q.start_tok]:
+                continue
+            e = q.end_tok
+            while e < n and not toks.clause_start[e] and e - q.end_tok < 5:
+                e += 1
+            after = norms[q.end_tok:e]
+            if not after or not (e == n or toks.clause_start[e]) \
+                    or after[-1] not in lx.RELATION_ENDINGS | {"into", "onto", "in", "up", "down"} \
+                    or not any(_verb_like(toks.tokens[i].text) for i in range(q.end_tok, e - 1)) \
+                    or any(r.start_tok < e and r.end_tok > q.end_tok for r in ex.places if r is not q):
+                continue
+            ex.places[idx] = replace(q, status="reference", reason=f"reference point of a named place ('{p.text}')")
+            ex.relation_tokens.update(range(q.end_tok, e))
+
+    def _partners_of_pronoun(self, ex: Extraction, toks: Tokens, norms: tuple[str, ...], place_tokens: set[int],
+                             marker_tokens: set[int], cue_tokens: set[int], heads: frozenset[str]) -> None:
+        """"Fire alarm at the Alpenblick was false. But the plant that heats it is on fire": a relative clause on
+        "that"/"which" that ends on "it"/"there"/"them" (the clause's end, or a verb after it) is read as
+        ``_resolve_by_partners`` reads one around a name, the pronoun standing for the one place named last, in an
+        earlier clause, with no other place said since. The antecedent keeps its own claims."""
+        n = len(norms)
+        for k in range(4, n):
+            if norms[k] not in ("it", "there", "them") or k in place_tokens or k in marker_tokens:
+                continue
+            if not (k + 1 == n or toks.clause_start[k + 1] or norms[k + 1] in lx.COPULAS or (k + 1) in cue_tokens):
+                continue
+            h = next((j for j in range(k - 2, max(0, k - 9), -1) if norms[j + 1] in ("that", "which")
+                      and norms[j] in heads and norms[j - 1] in lx.ARTICLES), None)
+            if h is None or any(toks.clause_start[i] for i in range(h + 1, k + 1)) \
+                    or any(i in place_tokens or i in marker_tokens or i in cue_tokens for i in range(h - 1, k)):
+                continue
+            before = [p for p in ex.places if p.status == "active" and p.end_tok < h
+                      and any(toks.clause_start[i] for i in range(p.end_tok, h))]
+            if not before:
+                continue
+            ante = max(before, key=lambda p: p.end_tok)
+            if any(q is not ante and q.end_tok > ante.end_tok and q.start_tok < k for q in ex.places):
+                continue  # (another place said since: which one the pronoun means is not sure)
+            link_idx = [i for i in range(h + 2, k) if norms[i] not in lx.HESITATIONS]
+            if not any(norms[i] not in lx.FUNCTION_WORDS and norms[i].isalpha() for i in link_idx):
+                continue
+            link = " ".join(toks.tokens[i].text.lower() for i in link_idx)
+            target, via = self._partner_by_meaning(ante.landmark, link, toks.tokens[h].text.lower(),
+                                                   self.PARTNER_CLAUSE_MIN_SCORE, self.PARTNER_CLAUSE_MARGIN)
+            if target is None or target == ante.landmark:
+                continue
+            ex.places.append(self._mention(toks, h - 1, k + 1, target,
+                                           via=f"{via} ~ '{link}' (by meaning, '{norms[k]}' = {ante.landmark})"))
+            place_tokens.update(range(h - 1, k + 1))
 
     @functools.cached_property
     def _partner_relation_vectors(self) -> dict[str, np.ndarray]:
@@ -3639,9 +3743,9 @@ class ReportAnalyzer:
             heads = (_name_head(f) or "".join(name_words(f)[-1:]) for lm in self.kb.landmarks for f in lm.surface_forms)
             words = {head for head in heads if head.isalpha() and len(head) >= 3 and head not in lx.FUNCTION_WORDS}
             words |= {w for lm in self.kb.landmarks if (w := _description_head(lm.description or ""))}
-            self._place_noun_cache = frozenset(words | lx.GENERIC_HEADS | {"track", "tracks"})
+            self._place_noun_cache = frozenset(words | lx.GENERIC_HEADS | {"track", "tracks", "houses", "homes"})
             # ("the pool the header tank feeds": a body of water heads one too)
-            # ("the tracks the brick yard sends its loads down": a tramway's)
+            # ("the tracks the brick yard sends its loads down": a tramway's; "the houses whose back gardens ...")
         return self._place_noun_cache
 
     def _resolve_related(self, ex: Extraction, toks: Tokens, norms: tuple[str, ...], place_tokens: set[int],
@@ -3671,6 +3775,8 @@ class ReportAnalyzer:
             a = anchor.start_tok
             while a > 0 and norms[a - 1] in lx.DETERMINERS and anchor.start_tok - a < 2:
                 a -= 1
+            if a == anchor.start_tok and a >= 2 and norms[a - 1] in _SITE_MODIFIERS and norms[a - 2] in lx.ARTICLES:
+                a -= 2  # ("the houses whose back gardens go right up to the factory car park")
             head = None
             for h in range(a - 1, max(-1, a - 9), -1):
                 if h in blocked and not (h in cue_tokens and h not in place_tokens and "whose" in norms[max(0, h - 2):h]) \
@@ -3764,8 +3870,12 @@ class ReportAnalyzer:
                            and norms[i] not in lx.FUNCTION_WORDS | lx.CLAUSE_SUBJECTS | {"there", "here"})
                 verb = verb or bool(after) and after[-1] in lx.IRREGULAR_PARTICIPLES and end - 1 > anchor.end_tok \
                     and (end >= len(norms) or toks.clause_start[end])  # "the chapel that the mill owners built."
-                if not after or after[0] in lx.COPULAS | lx.PREPOSITIONS \
-                        or not (verb or any(w.endswith("s") or w.endswith("ed") or w in lx.RELATION_ENDINGS for w in after)):
+                purpose = len(after) == 4 and after[0] in lx.COPULAS and after[2] == "to" \
+                    and after[1] in ("there", "meant", "supposed", "built", "designed", "put", "dug", "made") \
+                    and after[3].isalpha() and after[3] not in lx.FUNCTION_WORDS \
+                    and (end >= len(norms) or toks.clause_start[end])  # "the magazine the blast bank is there to protect"
+                if not purpose and (not after or after[0] in lx.COPULAS | lx.PREPOSITIONS or not (
+                        verb or any(w.endswith("s") or w.endswith("ed") or w in lx.RELATION_ENDINGS for w in after))):
                     continue  # ("a tank wagon on the loading siding is leaking": the anchor's own predicate)
             if between and end < len(norms) and norms[end] in ("its", "their") and not toks.clause_start[end]:
                 # "the place that feeds the auction hall its ice": what it gives the anchor is part of the description
@@ -7404,6 +7514,9 @@ class ReportAnalyzer:
             return True  # "Bloke in hi-vis collapsed": what the person wears, between
         if j < 0:
             return False
+        if any(norms[m].endswith("ing") and norms[m - 1] in _DOERS for m in range(max(1, j - 3), j)) \
+                and norms[j] not in lx.STRUCTURE_WORDS:
+            return True  # "a woman visiting a grave has collapsed": what the person was doing, between
         w = norms[j]
         if j >= 3 and norms[j - 2:j] == ("of", "the") and (norms[j - 3] in lx.NUMBER_WORDS or norms[j - 3] in (
                 "one", "some", "both", "all", "two")) and w in ("men", "women"):
@@ -8491,6 +8604,10 @@ class ReportAnalyzer:
                 cancelled_by = "but it isn't"  # "keeps saying the water tower's on fire but it isn't, it's the ..."
                 break
             h = self._cancel.match_at(norms, k)
+            if h is None and k == cue.end_tok and norms[k] == "cleared" \
+                    and self.kb.category_by_name[cue.category].role == Role.UNDESIRABLE \
+                    and toks.tokens[k - 1].text.lower().endswith(("'s", "’s")):
+                h = (k + 1, "s cleared")  # "the bad air's cleared": the cue took the "'s"
             if h is not None and h[1].endswith("out") and h[0] < len(norms) and norms[h[0]] in lx.ROUTE_PREPOSITIONS:
                 h = None  # "evacuation route is out through the park": the way out, nothing put out
             if h is not None and h[1].endswith("out") and norms[h[0]:h[0] + 1] in (("at",), ("by",), ("on",), ("near",)) \
@@ -8554,7 +8671,9 @@ class ReportAnalyzer:
             k += 1
             steps += 1
         # ("the fire at the bakery is, er, out now": the predicate goes on past the pause)
-        predicate_cut = 0 < k < len(norms) and norms[k - 1] in ("is", "are", "was", "s", "its")
+        predicate_cut = 0 < k < len(norms) and (norms[k - 1] in ("is", "are", "was", "s", "its")
+                                                or k == cue.end_tok and toks.tokens[k - 1].text.lower().endswith(("'s", "’s")))
+        # ("the leak's, uh, capped": the cue's own "'s")
         if cancelled_by is None and k < len(norms) and toks.clause_start[k] and k >= cue.end_tok \
                 and self.kb.category_by_name[cue.category].role != Role.DESIRABLE:
             # "the flooding at the cafe, it's, it's drained now": the next clause says it of the same thing
@@ -8611,8 +8730,13 @@ class ReportAnalyzer:
             if j >= 1 and norms[j] == "on" and norms[j - 1] == "negative":
                 negated_by = "negative on"  # "negative on the fire at the ice house"
         if negated_by is None and cancelled_by is None and self.kb.category_by_name[cue.category].role == Role.DESIRABLE \
-                and norms[cue.start_tok:cue.end_tok] == ("cleared",) and norms[cue.start_tok - 1:cue.start_tok] == ("been",):
-            # "the rockfall at the elbow has been cleared": the danger is gone, the place is not said to be safe
+                and norms[cue.start_tok:cue.end_tok] == ("cleared",) and cue.start_tok > 0 and (
+                    norms[cue.start_tok - 1] == "been"
+                    or toks.tokens[cue.start_tok - 1].text.lower().endswith(("'s", "’s")) and any(
+                        b == cue.start_tok and self.kb.category_by_name[c].role == Role.UNDESIRABLE
+                        for _, b, (c, src) in self._cues.find_all(norms) if c in self.kb.category_by_name)):
+            # "the rockfall at the elbow has been cleared", "the bad air's cleared" (the danger's own "'s"): the danger
+            # is gone, the place is not said to be safe
             for i in range(cue.start_tok - 1, -1, -1):
                 if toks.clause_start[i + 1]:
                     break
@@ -8645,11 +8769,17 @@ class ReportAnalyzer:
                 # (where the KB splits the undesirable role, the danger said before it in the sentence: "the ceiling's
                 # come down in the back and it's not safe to go in")
                 sent = toks.sentence_of[cue.start_tok]
-                before = [c for a, _, (c, src) in self._cues.find_all(norms) if a < cue.start_tok
-                          and toks.sentence_of[a] == sent and src != "neutral" and c in self.kb.category_by_name
-                          and self.kb.category_by_name[c].role == Role.UNDESIRABLE]
+                dangers = [(a, c) for a, _, (c, src) in self._cues.find_all(norms)
+                           if toks.sentence_of[a] == sent and src != "neutral" and c in self.kb.category_by_name
+                           and self.kb.category_by_name[c].role == Role.UNDESIRABLE]
+                before = [c for a, c in dangers if a < cue.start_tok]
+                # (or, none before, the one said right after it to say why: "they're not safe, the ceiling's coming
+                # down in the offices")
+                after = [c for a, c in dangers if a >= cue.end_tok]
                 if before:
                     und = before[-1]
+                elif after:
+                    und = after[0]
             if und is not None:
                 return replace(cue, category=und, source=cue.source, reason=f"'{negated_by}' + {self.NOT_DESIRABLE}")
         return replace(cue, polarity="denied", reason=f"negated by '{why}'")
@@ -10308,6 +10438,8 @@ _EMIT_VERBS = frozenset({"blows", "sends", "pours", "spills", "throws", "casts",
 _EMIT_ENDINGS = ("over", "onto", "across")  # (what one place puts over another and the other gets off it: "blows its smoke over")
 _SIZE_WORDS = frozenset({"big", "small", "large", "little", "old", "new", "great", "long", "tall", "high", "low"})
 _MATERIALS = frozenset({"stone", "brick", "wooden", "timber", "concrete", "steel", "iron", "glass", "tin"})
+# Words for the whole site a KB covers, said before one of its places' names ("the works canteen")
+_SITE_MODIFIERS = frozenset({"works", "factory", "site", "plant", "company", "complex", "compound"})
 _PLAIN_ADJECTIVES = _SIZE_WORDS | _MATERIALS  # (said before a name without being part of it: "the big stone harbour wall")
 _POSTURE_VERBS = frozenset({"sits", "stands", "lies", "sit", "stand", "lie"})
 _TO_PARTICLES = frozenset({"up", "down", "on", "out", "back", "over", "in", "off", "across", "along"})
@@ -10746,6 +10878,7 @@ def _verb_like(word: str) -> bool:
 _MOVING_CREWS = frozenset(lx.CREW_NOUNS | {"crews", "teams", "we"})
 _CREW_MOVES = frozenset({"moving", "heading", "going", "headed", "moved", "redeploying", "relocating", "transferring"})
 _SUBJECT_PRONOUNS = frozenset({"they", "we", "you", "i", "he", "she", "people", "everyone"})
+_DOERS = frozenset(lx.LAY_PERSONS) | frozenset(lx.WORKER_PERSONS) | frozenset(lx.PERSON_NOUNS)  # ("a woman visiting ...")
 _IRREGULAR_PARTICIPLES = frozenset({"hidden", "built", "stuck", "tucked", "set", "dug", "cut", "bolted", "sunk", "hung",
                                     "wedged", "perched", "known", "run", "kept", "held", "fed", "lit", "laid", "left"})
 

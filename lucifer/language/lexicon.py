@@ -66,7 +66,7 @@ gunfire|shooter|armed|looters|riot|on fire again|reignited|spreading|spread|unso
 compromised|unstable structure|partially collapsed|caving|smouldering|smoldering|charred|gutted|
 alight|well alight|fully involved|going up in flames|gone up in flames|bowing|buckling|wall's bowing|could go any second|
 about to collapse|coming down|falling in|roof has come in|roof's come in|roof came in|ceiling's down|ceiling down|
-ceiling has come in|ceiling's come in|ceiling collapsed|keep clear|stay clear|red for entry|sparks everywhere|
+ceiling has come in|ceiling's come in|ceiling collapsed|keep clear|stay clear|keep off it|keep off there|red for entry|sparks everywhere|
 stinks of gas|reeks of gas|reeking of gas|reeking of|fuel leak|oil spill|overtopping|burst its banks|breached|
 landslip|slipping|given way|gave way|has given way|come away|came away|taking on water|taking water|
 flashover|flashover risk|backdraft|backdraft risk|spongy|floor's spongy|leaning|buckled|buckling|ruptured|
@@ -213,6 +213,8 @@ needs oxygen|need oxygen|having a heart attack|heart attack|seizure|having a sei
 asthma attack|asthma attacks|an asthma attack|having an asthma attack|shut in|locked in|
 stuck on the roof|stranded on the roof|on the roof waiting|waving from|trapped upstairs|trapped on|
 can't get up|cannot get up|can't get out|can't free|cannot free|waving for help|yelling for help|for help|
+can't climb out|cannot climb out|can't climb back up|cannot climb back up|can't climb back out|can't get back out|
+can't get back up|
 still on board|riders still on board|stuck at the top|stranded at the top|leg is broken|arm is broken|broken leg|broken arm|broken hip|broke his leg|broke her leg|broke his arm|
 broke her arm|broke his hip|broke her hip|broken ankle|broke his ankle|broke her ankle|burnt arm|burnt hand|burned arm|burned hand|burnt leg|burnt face|burned face|with burns|burns to his|
 burns to her|burnt his|burnt her|burned his|burned her|cracked his head|cracked her head|cracked their head|cracked his skull|cracked her skull|banged his head|
@@ -374,7 +376,10 @@ BACK_REFERENCE_WORDS = {"it", "its", "s", "is", "has", "been", "thats", "that", 
                         "ive"}
 
 # Phrases that contain cue words but claim nothing ("the smoke alarm went off", "fire crew on site").
-NEUTRAL_PHRASES = ["a bonfire", "out cold to the touch", "out and cold to the touch", "looking out over", "looks out over", "look out over", "looked out over", "been cleared out", "cleared out", "drill smoke", "exercise smoke", "smoke grenade", "smoke grenades", "burning hedge trimmings", "burning garden waste", "burning rubbish", "controlled burn", "fire drill", "evacuation drill", "fire practice", "half in the water", "i'm shattered", "im shattered", "i am shattered", "we're shattered", "we are shattered",
+NEUTRAL_PHRASES = ["a bonfire", "nobody come down here", "no one come down here", "don't come down here",
+                   "do not come down here", "nobody come down there", "don't come down there", "go right up to the", "goes right up to the",
+                   "went right up to the", "run right up to the", "runs right up to the", "stretch right up to the",
+                   "stretches right up to the", "reach right up to the", "reaches right up to the", "out cold to the touch", "out and cold to the touch", "looking out over", "looks out over", "look out over", "looked out over", "been cleared out", "cleared out", "drill smoke", "exercise smoke", "smoke grenade", "smoke grenades", "burning hedge trimmings", "burning garden waste", "burning rubbish", "controlled burn", "fire drill", "evacuation drill", "fire practice", "half in the water", "i'm shattered", "im shattered", "i am shattered", "we're shattered", "we are shattered",
                    "keeping the children inside", "keeping the kids inside", "keeping everyone inside",
                    "keeping them inside", "kept the children inside", "kept the kids inside", "went under in the crash", "went bust", "gone bust", "above the flood line", "above the waterline", "above the water line", "above the flood level",
                    "above the high water mark", "roof is still on", "roof's still on", "been found safe", "found safe and well", "found safe at", "stable staff", "stable lads", "stable lad", "stable hands", "stable hand", "stable girls",
@@ -1560,7 +1565,9 @@ DANGER_KIND_EXTRA: dict[str, list[str]] = {
              "thatch going up", "embers are landing", "embers landing", "embers are falling", "embers falling", "embers coming down"],
     "electric": ["wire is hot", "wires are hot", "line is hot", "lines are hot", "wire as hot", "wires as hot",
                  "conductors are on", "conductor down", "conductors down", "feeder is down", "feeder down", "lines down",
-                 "line down", "lines are down", "line is down"],
+                 "line down", "lines are down", "line is down", "wires down", "wire down", "wires are down",
+                 "cables down", "cable down", "cables are down", "transformer's blown", "transformer has blown",
+                 "transformer blew", "transformer's gone bang"],
     "gas": ["rotten egg", "rotten eggs", "rotten-egg smell", "rotten egg smell", "eggy smell", "smell like eggs", "smells like eggs", "smell of eggs", "smells of eggs", "smell like rotten eggs", "stinks of eggs", "stinks of rotten eggs", "stink of eggs", "reeks of eggs", "reeks of rotten eggs", "smell of rotten eggs", "smells of rotten eggs", "like egg", "like eggs", "like rotten egg", "there's a hiss", "a loud hiss", "hissing out of", "h2s", "so2", "co2", "sulphur dioxide", "hydrogen sulphide", "carbon dioxide", "methane", "methane leak", "natural gas", "co detected", "co reading", "co readings", "co levels", "high co", "carbon monoxide", "carbon monoxide alarm", "co alarm"],
     "collapse": ["started to sag", "starting to sag", "begun to sag", "beginning to sag", "wall's come in", "wall has come in", "walls have come in", "wall's come down on", "roof's come in",
                  "roof has come in", "ceiling's come in", "ceiling has come in", "tipped over", "has tipped over", "have tipped over", "have slid", "has slid",
