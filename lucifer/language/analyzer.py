@@ -3483,13 +3483,9 @@ class ReportAnalyzer:
             if h is None or any(toks.clause_start[i] for i in range(h + 1, k + 1)) \
                     or any(i in place_tokens or i in marker_tokens or i in cue_tokens for i in range(h - 1, k)):
                 continue
-            before = [p for p in ex.places if p.status == "active" and p.end_tok < h
-                      and any(toks.clause_start[i] for i in range(p.end_tok, h))]
-            if not before:
-                continue
-            ante = max(before, key=lambda p: p.end_tok)
-            if any(q is not ante and q.end_tok > ante.end_tok and q.start_tok < k for q in ex.places):
-                continue  # (another place said since: which one the pronoun means is not sure)
+            ante = _sole_antecedent(ex, toks, h, k)
+            if ante is None:
+                continue  # (none, or another place said since: which one the pronoun means is not sure)
             link_idx = [i for i in range(h + 2, k) if norms[i] not in lx.HESITATIONS]
             if not any(norms[i] not in lx.FUNCTION_WORDS and norms[i].isalpha() for i in link_idx):
                 continue
@@ -4037,13 +4033,9 @@ class ReportAnalyzer:
             if not contact and (raw not in ("its", "their") or norms[k - 1] not in ("where", "that", "which")) \
                     or k in blocked or toks.clause_start[k] or toks.clause_start[k - 1]:
                 continue
-            before = [p for p in ex.places if p.status == "active" and p.end_tok <= k - 3
-                      and any(toks.clause_start[i] for i in range(p.end_tok, k - 2))]
-            if not before:
-                continue
-            last = max(before, key=lambda p: p.end_tok)
-            if any(q.end_tok > last.end_tok and q.start_tok < k for q in ex.places if q is not last):
-                continue  # (another place said between: which one "its" means is not sure)
+            last = _sole_antecedent(ex, toks, k - 2, k)
+            if last is None:
+                continue  # (none, or another place said between: which one "its" means is not sure)
             out.append(self._mention(toks, k, k + 1, last.landmark, status="reference", reason=f"modifier of '{raw}'"))
         # "the building the laundry's built onto ... And the playground that building looks out over": "that" and
         # the head of a description said before take it up again
@@ -8586,6 +8578,8 @@ class ReportAnalyzer:
             # it's not"
             cancelled_by = "said, and it isn't"
             k = len(norms)
+        undesirable = self.kb.category_by_name[cue.category].role == Role.UNDESIRABLE
+        contracted = toks.tokens[cue.end_tok - 1].text.lower().endswith(("'s", "’s"))  # (the cue's own "'s")
         articles = 0
         while k < len(norms) and steps < 7 and not toks.clause_start[k]:  # "the fire on the roof at the bakery is out"
             if norms[k] in lx.UNTIL_WORDS:
@@ -8604,9 +8598,7 @@ class ReportAnalyzer:
                 cancelled_by = "but it isn't"  # "keeps saying the water tower's on fire but it isn't, it's the ..."
                 break
             h = self._cancel.match_at(norms, k)
-            if h is None and k == cue.end_tok and norms[k] == "cleared" \
-                    and self.kb.category_by_name[cue.category].role == Role.UNDESIRABLE \
-                    and toks.tokens[k - 1].text.lower().endswith(("'s", "’s")):
+            if h is None and k == cue.end_tok and norms[k] == "cleared" and undesirable and contracted:
                 h = (k + 1, "s cleared")  # "the bad air's cleared": the cue took the "'s"
             if h is not None and h[1].endswith("out") and h[0] < len(norms) and norms[h[0]] in lx.ROUTE_PREPOSITIONS:
                 h = None  # "evacuation route is out through the park": the way out, nothing put out
@@ -8655,8 +8647,6 @@ class ReportAnalyzer:
                     break  # "fire's contained to the bakery": still burning, there
                 cancelled_by = h[1]
                 break
-            undesirable = self.kb.category_by_name[cue.category].role == Role.UNDESIRABLE
-            contracted = toks.tokens[cue.end_tok - 1].text.lower().endswith(("'s", "’s"))
             right_after = k == cue.end_tok and undesirable and (contracted or k + 1 < len(norms)) \
                 and not toks.tokens[cue.end_tok - 1].text.lower().endswith("ing")  # "wall bowing out" goes on
             copula = norms[k - 1] in ("is", "s", "are", "was", "been", "now", "all") \
@@ -8672,8 +8662,7 @@ class ReportAnalyzer:
             steps += 1
         # ("the fire at the bakery is, er, out now": the predicate goes on past the pause)
         predicate_cut = 0 < k < len(norms) and (norms[k - 1] in ("is", "are", "was", "s", "its")
-                                                or k == cue.end_tok and toks.tokens[k - 1].text.lower().endswith(("'s", "’s")))
-        # ("the leak's, uh, capped": the cue's own "'s")
+                                                or k == cue.end_tok and contracted)  # ("the leak's, uh, capped")
         if cancelled_by is None and k < len(norms) and toks.clause_start[k] and k >= cue.end_tok \
                 and self.kb.category_by_name[cue.category].role != Role.DESIRABLE:
             # "the flooding at the cafe, it's, it's drained now": the next clause says it of the same thing
@@ -10236,6 +10225,19 @@ _FIRST_WAS_RIGHT_STARTS = frozenset(key[0] for key in _FIRST_WAS_RIGHT)
 def _first_was_right_at(norms: tuple[str, ...], i: int) -> bool:
     """Does one of ``_FIRST_WAS_RIGHT`` begin at token ``i``?"""
     return norms[i] in _FIRST_WAS_RIGHT_STARTS and any(norms[i:i + len(key)] == key for key in _FIRST_WAS_RIGHT)
+
+
+def _sole_antecedent(ex: Extraction, toks: Tokens, limit: int, k: int) -> PlaceMention | None:
+    """The place a pronoun at ``k`` takes up: the active one named last before ``limit``, in an earlier clause, where
+    no other place is said between it and the pronoun; else None."""
+    before = [p for p in ex.places if p.status == "active" and p.end_tok < limit
+              and any(toks.clause_start[i] for i in range(p.end_tok, limit))]
+    if not before:
+        return None
+    last = max(before, key=lambda p: p.end_tok)
+    if any(q.end_tok > last.end_tok and q.start_tok < k for q in ex.places if q is not last):
+        return None
+    return last
 
 
 def _spoken_number_forms(kb: KnowledgeBase, taken: Collection[tuple[str, ...]]) -> list[tuple[tuple[str, ...], str]]:

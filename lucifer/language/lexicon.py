@@ -376,10 +376,15 @@ BACK_REFERENCE_WORDS = {"it", "its", "s", "is", "has", "been", "thats", "that", 
                         "ive"}
 
 # Phrases that contain cue words but claim nothing ("the smoke alarm went off", "fire crew on site").
-NEUTRAL_PHRASES = ["a bonfire", "nobody come down here", "no one come down here", "don't come down here",
-                   "do not come down here", "nobody come down there", "don't come down there", "go right up to the", "goes right up to the",
-                   "went right up to the", "run right up to the", "runs right up to the", "stretch right up to the",
-                   "stretches right up to the", "reach right up to the", "reaches right up to the", "out cold to the touch", "out and cold to the touch", "looking out over", "looks out over", "look out over", "looked out over", "been cleared out", "cleared out", "drill smoke", "exercise smoke", "smoke grenade", "smoke grenades", "burning hedge trimmings", "burning garden waste", "burning rubbish", "controlled burn", "fire drill", "evacuation drill", "fire practice", "half in the water", "i'm shattered", "im shattered", "i am shattered", "we're shattered", "we are shattered",
+NEUTRAL_PHRASES = ["a bonfire",
+                   # (a warning, nothing comes down: "nobody come down here")
+                   "nobody come down here", "no one come down here", "don't come down here", "do not come down here",
+                   "nobody come down there", "don't come down there",
+                   # (how far a place reaches, no flood: "the houses whose back gardens go right up to the car park")
+                   "go right up to the", "goes right up to the", "went right up to the", "run right up to the",
+                   "runs right up to the", "stretch right up to the", "stretches right up to the", "reach right up to the",
+                   "reaches right up to the",
+                   "out cold to the touch", "out and cold to the touch", "looking out over", "looks out over", "look out over", "looked out over", "been cleared out", "cleared out", "drill smoke", "exercise smoke", "smoke grenade", "smoke grenades", "burning hedge trimmings", "burning garden waste", "burning rubbish", "controlled burn", "fire drill", "evacuation drill", "fire practice", "half in the water", "i'm shattered", "im shattered", "i am shattered", "we're shattered", "we are shattered",
                    "keeping the children inside", "keeping the kids inside", "keeping everyone inside",
                    "keeping them inside", "kept the children inside", "kept the kids inside", "went under in the crash", "went bust", "gone bust", "above the flood line", "above the waterline", "above the water line", "above the flood level",
                    "above the high water mark", "roof is still on", "roof's still on", "been found safe", "found safe and well", "found safe at", "stable staff", "stable lads", "stable lad", "stable hands", "stable hand", "stable girls",
