@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev92) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev93) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -186,6 +186,10 @@ OPAL_MINING_OUTPOST = ROOT / "knowledge_bases" / "opal_mining_outpost"
 FIREWORKS_FACTORY = ROOT / "knowledge_bases" / "fireworks_factory"
 RICE_TERRACE_VILLAGE = ROOT / "knowledge_bases" / "rice_terrace_village"
 VERTICAL_FARM = ROOT / "knowledge_bases" / "vertical_farm"
+SALMON_CANNERY = ROOT / "knowledge_bases" / "salmon_cannery"
+RADIO_TELESCOPE_ARRAY = ROOT / "knowledge_bases" / "radio_telescope_array"
+CRANBERRY_BOG = ROOT / "knowledge_bases" / "cranberry_bog"
+DESERT_RESEARCH_STATION = ROOT / "knowledge_bases" / "desert_research_station"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -523,6 +527,12 @@ SETS = {
     "dev92/rice_terrace_village": _set("dev92/rice_terrace_village.jsonl", RICE_TERRACE_VILLAGE, "rt92", TWENTY, sep=""),
     "dev92/fireworks_factory": _set("dev92/fireworks_factory.jsonl", FIREWORKS_FACTORY, "ff92", TWENTY, sep=""),
     "dev92/vertical_farm": _set("dev92/vertical_farm.jsonl", VERTICAL_FARM, "vf92", TWENTY, sep=""),
+    "dev93/salmon_cannery": _set("dev93/salmon_cannery.jsonl", SALMON_CANNERY, "sa93", TWENTY, sep=""),
+    "dev93/cranberry_bog": _set("dev93/cranberry_bog.jsonl", CRANBERRY_BOG, "cb93", TWENTY, sep=""),
+    "dev93/radio_telescope_array": _set("dev93/radio_telescope_array.jsonl", RADIO_TELESCOPE_ARRAY, "rt93", TWENTY,
+                                        sep=""),
+    "dev93/desert_research_station": _set("dev93/desert_research_station.jsonl", DESERT_RESEARCH_STATION, "dr93",
+                                          TWENTY, sep=""),
 }
 
 
