@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev93) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev94) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -190,6 +190,10 @@ SALMON_CANNERY = ROOT / "knowledge_bases" / "salmon_cannery"
 RADIO_TELESCOPE_ARRAY = ROOT / "knowledge_bases" / "radio_telescope_array"
 CRANBERRY_BOG = ROOT / "knowledge_bases" / "cranberry_bog"
 DESERT_RESEARCH_STATION = ROOT / "knowledge_bases" / "desert_research_station"
+LAVENDER_DISTILLERY = ROOT / "knowledge_bases" / "lavender_distillery"
+TIDAL_BARRAGE = ROOT / "knowledge_bases" / "tidal_barrage"
+ICE_HOTEL = ROOT / "knowledge_bases" / "ice_hotel"
+GLASSWORKS_TOWN = ROOT / "knowledge_bases" / "glassworks_town"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -533,6 +537,10 @@ SETS = {
                                         sep=""),
     "dev93/desert_research_station": _set("dev93/desert_research_station.jsonl", DESERT_RESEARCH_STATION, "dr93",
                                           TWENTY, sep=""),
+    "dev94/lavender_distillery": _set("dev94/lavender_distillery.jsonl", LAVENDER_DISTILLERY, "lv94", TWENTY, sep=""),
+    "dev94/ice_hotel": _set("dev94/ice_hotel.jsonl", ICE_HOTEL, "ih94", TWENTY, sep=""),
+    "dev94/tidal_barrage": _set("dev94/tidal_barrage.jsonl", TIDAL_BARRAGE, "tb94", TWENTY, sep=""),
+    "dev94/glassworks_town": _set("dev94/glassworks_town.jsonl", GLASSWORKS_TOWN, "gw94", TWENTY, sep=""),
 }
 
 
