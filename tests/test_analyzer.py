@@ -4846,3 +4846,124 @@ def test_dev91_phenomena(kb_analyzers, kb, text, expected):
 ])
 def test_dev92_phenomena(kb_analyzers, kb, text, expected):
     assert claims(kb_analyzers[kb], text) == expected
+
+
+@pytest.mark.parametrize(("kb", "text", "expected"), [
+    # a danger word as what a place keeps is a word of its description
+    ("quarrytown", "The hut where they keep the explosives is on fire.", [("powder magazine", "danger")]),
+    # people counted as still inside, whatever their trade; "Roof of the X has come in"
+    ("quarrytown", "The dressing mill has collapsed and there are still three slate splitters inside.",
+     [("dressing sheds", "person_at_risk"), ("dressing sheds", "unstable_ground")]),
+    ("quarrytown", "Roof of the dressing mill has come in.", [("dressing sheds", "unstable_ground")]),
+    # where a way leads ("to get down to"), and where it leads to, say nothing of the place
+    ("salmon_cannery", "Shore boss to all crews: muster station is the knoll behind the super's house, it's high, dry "
+                       "and upwind of everything. Second thing, there's washover on the walkway already, do not use "
+                       "it to get down to the meal plant.",
+     [("boardwalk", "awash_or_giving_way"), ("lookout bluff", "high_and_dry")]),
+    ("salmon_cannery", "d-dispatch, the walkway, the catwalk down to the stinker, it's it's it's gone, a whole "
+                       "section dropped into the river, um, nobody was on it, we counted heads",
+     [("boardwalk", "awash_or_giving_way")]),
+    # "didn't come back", "can't see them anywhere"
+    ("salmon_cannery", "Um, hi, my big brother and his friend went out on the mudflats to dig clams and now I can't "
+                       "see them anywhere, they didn't come back and it's getting dark.",
+     [("tide flats", "crew_in_distress")]),
+    # a glossary term ending in a word the KB names a place by only with its article is the danger; "buried to the axles"
+    ("salmon_cannery", "Dispatch, update: soft mud has swallowed the slipway, the cradle's buried to the axles; the "
+                       "net shed is burning, the tarred web went up like a torch; and the company office is our "
+                       "muster station for now.",
+     [("company store", "high_and_dry"), ("marine ways", "awash_or_giving_way"), ("net loft", "fire_or_fumes")]),
+    # "going down by the bow"; a crew "standing by on" a place is only where it waits
+    ("salmon_cannery", "The boat the bucket lift unloads from is going down by the bow, get the tender crews off her.",
+     [("fish scow", "awash_or_giving_way")]),
+    ("salmon_cannery", "ok so the sc— the scow, the fish barge, she's she's taking water, going down by the stern, "
+                       "um, the skiff crew is standing by on the fuel float", [("fish scow", "awash_or_giving_way")]),
+    # the words of one of the anchor's own relations, said whole, pick it
+    ("salmon_cannery", "someone's trapped in the house sitting right under the bluff— no, sorry, in the place that "
+                       "house looks down on, he's pinned under a fallen wardrobe on the top floor",
+     [("bunkhouse", "crew_in_distress")]),
+    # "at the far end of it": the pronoun anchors a description; a building is no float
+    ("salmon_cannery", "Wharf's solid, crews can stand on it, and the building at the shore end of it is the muster "
+                       "station.", [("cannery wharf", "high_and_dry"), ("company store", "high_and_dry")]),
+    ("salmon_cannery", "The boardwalk's gone under at high water, and the plant at the far end of it is flooding too, "
+                       "water coming in under the doors.",
+     [("boardwalk", "awash_or_giving_way"), ("reduction plant", "awash_or_giving_way")]),
+    # a description after a comma that repeats a noun the clause before used only says which one
+    ("salmon_cannery", "There's a woman down, cut bad, on the line the lift drops its fish onto, the lift that "
+                       "unloads the scow.", [("slime line", "crew_in_distress")]),
+    # "out where the tide gate drains to": the anchor's one relation, the right way round
+    ("salmon_cannery", "two kids stuck out where the tide gate drains to, they can't get back in, send the skiff",
+     [("tide flats", "crew_in_distress")]),
+    # a verb of supply says which end the anchor is: what supplies the tank, not what the tank supplies
+    ("salmon_cannery", "The wooden tank up the hill is leaning hard, staves bursting, and whatever supplies it from "
+                       "the creek is washed out too.",
+     [("creek intake", "awash_or_giving_way"), ("water tank", "awash_or_giving_way")]),
+    ("salmon_cannery", "The tank is leaning, and the building that feeds the tank is washed out too.",
+     [("creek intake", "awash_or_giving_way"), ("water tank", "awash_or_giving_way")]),
+    ("salmon_cannery", "The tank is leaning, and the building the tank feeds is flooding.",
+     [("boiler house", "awash_or_giving_way"), ("water tank", "awash_or_giving_way")]),
+    # "starting to burn" is fire
+    ("salmon_cannery", "The float moored up the river from the fuel float is starting to burn as well.",
+     [("floatplane dock", "fire_or_fumes")]),
+    # a call on 999 from a place is no count of people from it; "haven't radioed in"
+    ("radio_telescope_array", "Two astronomers went out to the west dishes to stow them before the storm and haven't "
+                              "radioed in for forty minutes. Separately, a walker has rung 999 from the trig, she's "
+                              "soaked, shivering and can't feel her hands - cold casualty.",
+     [("summit trig point", "casualty"), ("west arm", "casualty")]),
+    # "the visitor place with the café": the place whose own café it is
+    ("radio_telescope_array", "h-hello? my dad he um he fell down at the... the big... the visitor place with the "
+                              "café and he hit his head and he won't wake up properly",
+     [("visitor centre", "casualty")]),
+    # "it's not," takes a word back, the place after it is not negated
+    ("radio_telescope_array", "the, uh, the res is... it's fine, no wait, it's not, the dam's cracked, there's water "
+                              "pouring through the wall", [("reservoir", "collapse_slip_or_flood")]),
+    # a subject pronoun in a contact clause anchors a description read by meaning
+    ("salmon_cannery", "The compressor room is fine now. The place it keeps cold is still thick with fumes.",
+     [("cold storage", "fire_or_fumes")]),
+    # a relation's own part noun after "onto the" is no headless description; "anything that sparks" warns
+    ("lavender_distillery", "the little room they built onto the back of the distillery, the drums in there have "
+                            "split, oil all over the floor, nobody goes in with anything that sparks",
+     [("oil store", "no_entry_hazard")]),
+    # "come and fill up there": a water point
+    ("lavender_distillery", "Tankers, the condenser pond is full and the pump is still running, come and fill up "
+                            "there.", [("cooling pond", "safe_haven")]),
+    # a fire "running uphill towards" a place has not reached it
+    ("lavender_distillery", "Sitrep from Captain Roux: the pickers' cottages, the lookout and the road gate are all "
+                            "safe, bare ground round them, we're sending people there. The fire is now in the top "
+                            "terraces, running uphill towards the fire road.",
+     [("lower gate", "safe_haven"), ("upper lavender fields", "blaze_or_fumes"), ("viewpoint terrace", "safe_haven"), ("workers' cottages", "safe_haven")]),
+    # a relative clause ending on "along"
+    ("lavender_distillery", "The fields the hives are lined up along are burning now, fast, the wind's driving it "
+                            "straight across the terraces.", [("upper lavender fields", "blaze_or_fumes")]),
+    # "well above the tide line"
+    ("tidal_barrage", "Kayak instructor calling. I've landed six kids on Heron Rock, it's well above the tide line "
+                      "and out of the wind, nobody's hurt. We'll wait there until the wind drops.",
+     [("heron island", "dry_refuge")]),
+    # "has eased off" takes the danger back
+    ("tidal_barrage", "the overtopping at the sluices has eased off, that's done now, er, but the crest— the barrage "
+                      "road, it's cracked right across, there's a big gap in the tarmac",
+     [("crest road", "damaged_plant")]),
+    # "the machine that ..." heads a description; "come off one of its rails"
+    ("tidal_barrage", "the machine that travels along the top of the powerhouse has come off one of its rails, it's "
+                      "hanging at an angle", [("gantry crane", "damaged_plant")]),
+    # a contact clause with its own subject ("the moorings you reach through the lock")
+    ("tidal_barrage", "Crew two, fire on a motor cruiser at the moorings you reach through the lock, it's spreading "
+                      "along the walkway.", [("marina pontoons", "damaged_plant")]),
+    # a clause that only says which place counts as one word before "is out"
+    ("tidal_barrage", "The fuel fire in the yard that the barrage road runs down to is out now, crews standing down.",
+     []),
+    # "whatever drags the logs back out of it": "whatever" heads it, the pronoun is the pond
+    ("sawmill_camp", "Log jam in the pond the log yard rolls its logs into, and a guy's hurt up on whatever drags the "
+                     "logs back out of it.", [("jack ladder", "injured_crew"), ("log pond", "blowdown_and_washout")]),
+    # "still out on it"; "the assembly spot"
+    ("moorland_village", "the valve tower's, um, it's leaning, like, the water's undermined it and the walkway's half "
+                         "gone, and there's, uh, there's one of the engineers still out on it",
+     [("valve tower", "soul_at_risk"), ("valve tower", "washout_and_slip")]),
+    ("northgate", "so like the green's where everyone's gathering you know, it's all open, nothing to fall on anyone, "
+                  "we're using it as the assembly spot", [("campus green", "rally_point")]),
+    # a possessive opening a contact clause after a place noun ("the bit of land their causeway runs out to")
+    ("tidal_barrage", "The old ferry steps are under water, and the bit of land their causeway runs out to is the "
+                      "only dry spot left, we've got fifteen people up there safe.",
+     [("ferry steps", "surge_and_flooding"), ("heron island", "dry_refuge")]),
+])
+def test_dev93_phenomena(kb_analyzers, kb, text, expected):
+    assert claims(kb_analyzers[kb], text) == expected

@@ -820,7 +820,8 @@ class ReportAnalyzer:
                     and all(norms[i] in lx.PREPOSITIONS or norms[i] in lx.ARTICLES for i in range(ca, a)))
                    for ca, cb in cue_hits) and not (
                     b in glossary_ends and not any(ca <= a and b <= cb and cb - ca > b - a and cb not in glossary_ends
-                                                   for ca, cb in cue_hits)):
+                                                   for ca, cb in cue_hits)
+                    and not self._bare_in_glossary(norms, a, b, all_cues)):
                 # ("a backed-up goit", "water over the hatches": a glossary term that ends in a place's name names it)
                 continue  # "first aid post" is a cue, "across the square from" a relation
             if b - a == 1 and norms[a] in lx.BODY_PARTS and a >= 2 and norms[a - 1] == "the" \
@@ -1014,7 +1015,9 @@ class ReportAnalyzer:
                 places[idx] = replace(p, status="reference", reason=f"modifier of '{toks.tokens[p.end_tok].text}'")
             elif p.start_tok >= 3 and norms[p.start_tok - 1] in lx.ARTICLES and norms[p.start_tok - 2] == "from" \
                     and (norms[p.start_tok - 3] in lx.NUMBER_WORDS | {"hundred", "dozen"} or norms[p.start_tok - 3].isdigit()) \
+                    and norms[p.start_tok - 3] not in ("999", "911", "112", "000", "111") \
                     and not toks.clause_start[p.start_tok - 2]:
+                # (not a call: "a walker has rung 999 from the trig")
                 # "about two hundred from the bottling line mustered there": whom, by where they came from
                 places[idx] = replace(p, status="reference", reason="where the people counted came from")
             elif self._fallen_into(toks, norms, p, places):
@@ -1058,6 +1061,8 @@ class ReportAnalyzer:
         self._resolve_between(ex, norms)
         self._apposed_part(ex, norms)
         self._relative_clause_anchors(ex, norms)
+        self._way_ends(ex, norms)
+        self._apposed_anchor(ex, norms)
         for idx, p in enumerate(ex.places):
             if p.status == "active" and p.via is None and norms[p.end_tok:p.end_tok + 2] in (
                     ("same", "thing"), ("same", "place"), ("same", "difference")) \
@@ -1380,6 +1385,55 @@ class ReportAnalyzer:
                     and not any(self._cues.match_at(norms, k) is not None for k in range(end, last)):
                 # "the arches Del's gym is on the end of --": where the gym is, said only to say which arches
                 only_describes(p1, p2)
+
+    def _never_a_building(self, name: str) -> bool:
+        """A landmark every name of which ends in a word for a boat, an open ground, a way or water ("the fuel
+        float", "the fish barge", "the wharf"): no "building" describes it."""
+        return all(name_words(f)[-1:] and name_words(f)[-1] in _OPEN_OR_AFLOAT
+                   for f in self.kb.landmark_by_name[name].surface_forms)
+
+    def _bare_in_glossary(self, norms: tuple[str, ...], a: int, b: int, all_cues: list) -> bool:
+        """"soft mud has swallowed the slipway": a glossary term ending in a word the KB names a place by only with
+        its article ("the mud"), said with no article before the term or the word, is the danger, not the place."""
+        if norms[a:b] not in self._needs_article or a == 0 or norms[a - 1] in lx.DETERMINERS:
+            return False
+        return any(src == "glossary" and cb == b and ca < a and (ca == 0 or norms[ca - 1] not in lx.DETERMINERS)
+                   for ca, cb, (_, src) in all_cues)
+
+    def _apposed_anchor(self, ex: Extraction, norms: tuple[str, ...]) -> None:
+        """"a woman down on the line the lift drops its fish onto, the lift that unloads the scow": a description
+        after a comma whose head noun repeats a noun the clause before used as no place, only says which that noun
+        was; it claims nothing of its own."""
+        toks = ex.tokens
+        taken = {i for p in ex.places for i in range(p.start_tok, p.end_tok)}
+        for idx, p in enumerate(ex.places):
+            s0 = p.start_tok
+            if p.status != "active" or p.via is None or s0 < 4 or norms[s0] != "the" or p.end_tok - s0 < 4 \
+                    or not toks.clause_start[s0] or toks.sentence_start[s0] or norms[s0 + 2] not in ("that", "which"):
+                continue
+            head = norms[s0 + 1]
+            earlier = [i for i in range(max(1, s0 - 10), s0 - 1) if norms[i] == head and norms[i - 1] == "the"
+                       and i not in taken and toks.sentence_of[i] == toks.sentence_of[s0]
+                       and any(q.start_tok < i and q.end_tok <= s0 for q in ex.places if q.status == "active")]
+            if earlier:
+                ex.places[idx] = replace(p, status="reference", reason=f"says which '{head}' the clause before meant")
+
+    def _way_ends(self, ex: Extraction, norms: tuple[str, ...]) -> None:
+        """"the walkway, the catwalk down to the stinker, it's gone": a way named, then where it leads, with no verb
+        between; the place it leads to only says which way is meant."""
+        toks = ex.tokens
+        active = sorted((p for p in ex.places if p.status == "active" and p.via is None), key=lambda p: p.start_tok)
+        for p1, p2 in zip(active, active[1:], strict=False):
+            last = norms[p1.end_tok - 1]
+            gap = norms[p1.end_tok:p2.start_tok]
+            if last not in lx.ROUTE_HEADS | _WAY_NOUNS or p1.landmark == p2.landmark or not 2 <= len(gap) <= 4 \
+                    or gap[0] not in lx.ROUTE_LINKS or "to" not in gap[:2] or not set(gap) <= lx.ROUTE_LINKS | lx.ARTICLES \
+                    or any(toks.clause_start[i] for i in range(p1.end_tok, p2.end_tok)) \
+                    or p1.start_tok >= 1 and norms[p1.start_tok - 1] in ("from", "between") \
+                    or p1.start_tok >= 2 and norms[p1.start_tok - 2] in ("from", "between"):
+                continue  # (not "from the mill down to the weir": the stretch between the two)
+            i = ex.places.index(p2)
+            ex.places[i] = replace(p2, status="reference", reason=f"where '{p1.text}' leads")
 
     def _ordinal_anaphora(self, toks: Tokens, norms: tuple[str, ...], ex: Extraction) -> None:
         """"the chemist's and the coffee shop. The first one -- a woman on the floor": an ordinal, "the
@@ -3258,6 +3312,7 @@ class ReportAnalyzer:
         return mat @ self.embedder.embed_one(link)  # type: ignore[union-attr]
 
     OPEN_RELATION_MARGIN = 0.1
+    OPEN_RELATION_SOLE_MIN_SIM = 0.1
 
     def _follow_link(self, anchor: str, link: str, head: str, inverse: bool,
                      sims: np.ndarray | None = None, partners: bool = True) -> tuple[str | None, str | None]:
@@ -3295,14 +3350,16 @@ class ReportAnalyzer:
     PARTNER_MARGIN = 0.08
 
     def _partner_by_meaning(self, anchor: str, link: str, head: str, min_score: float | None = None,
-                            margin: float | None = None) -> tuple[str | None, str | None]:
+                            margin: float | None = None,
+                            anchor_is_object: bool | None = None) -> tuple[str | None, str | None]:
         """A linking phrase no relation form is close to, read among the anchor's own relations only, where the link
         has a word that may be its verb: each place the KB relates to the anchor scores the MiniLM similarity of the
         link to that relation's name plus that of the head noun to the place's best name or description ("the high
         ground the mast is anchored to": ``is_guyed_to`` the summit ridge, not ``relays the radio for`` the ranger
         station; "the concrete box the hut gets its water from": the water intake that ``pipes_water_down_to`` it).
         The best wins if it scores ``PARTNER_MIN_SCORE`` (or ``min_score``) and leads the next by ``PARTNER_MARGIN``
-        (or ``margin``)."""
+        (or ``margin``). ``anchor_is_object`` says where the anchor stands to an active verb of supply in the link
+        ("the building that feeds the tank": its object); only relations that way round are read then."""
         assert self.embedder is not None
         words = link.split()
         if not any(_verb_like(w) or w in _SUBJECT_PRONOUNS and k + 1 < len(words)
@@ -3316,11 +3373,17 @@ class ReportAnalyzer:
         # ("the tank that's fed by the bore": a passive link says which end the anchor is, the relation's doer)
         passive = len(words) >= 2 and words[-1] == "by" and any(
             w.endswith("ed") or w in _IRREGULAR_PARTICIPLES for w in words[:-1])
+        # ("the building that feeds the tank": a verb of supply said actively, the anchor its object, is read only
+        # among the relations that supply the anchor, not those it supplies)
+        flowing = anchor_is_object is not None and not passive and any(
+            w.lower() in _SUPPLY_VERBS for w in words[:2])
         for rel in self.kb.relations:
             if anchor not in (rel.subject, rel.object) or rel.subject == rel.object:
                 continue
             if passive and (rel.subject == anchor) == rel.phrase.replace("_", " ").endswith(" by"):
                 continue  # (a relation named in the passive itself, "is fed by", has its doer as object)
+            if flowing and ((rel.object == anchor) != rel.phrase.replace("_", " ").endswith(" by")) != anchor_is_object:
+                continue  # (a relation named in the passive, "is fed by", has the anchor the other way round)
             other = rel.object if rel.subject == anchor else rel.subject
             score = float(self._partner_relation_vectors[rel.phrase] @ v_link) \
                 + float(np.max(self._partner_name_vectors[other] @ v_head))
@@ -3343,7 +3406,10 @@ class ReportAnalyzer:
 
     def _partner_heads(self) -> frozenset[str]:
         """Nouns that may head a description of a place read by ``_resolve_by_partners``."""
-        return self._place_nouns() | lx.DESCRIPTION_HEADS | _WATER_HEADS | lx.GROUND_HEADS | lx.AREA_HEADS
+        # (and a few nouns for things and berths: "the machine that travels along the top of the powerhouse", "the
+        # moorings you reach through the lock")
+        return self._place_nouns() | lx.DESCRIPTION_HEADS | _WATER_HEADS | lx.GROUND_HEADS | lx.AREA_HEADS \
+            | {"machine", "contraption", "rig", "mooring", "moorings", "berth", "berths", "pontoon", "pontoons"}
 
     def _resolve_by_partners(self, ex: Extraction, toks: Tokens, norms: tuple[str, ...], place_tokens: set[int],
                              marker_tokens: set[int], cue_tokens: set[int]) -> None:
@@ -3413,7 +3479,11 @@ class ReportAnalyzer:
                 continue
             if verb_end and not (norms[h + 1] in ("that", "which") and all(norms[i] in lx.DETERMINERS for i in range(h + 2, a0))):
                 continue  # ("the shed that battery B keeps alive", not "the shed battery B keeps", a claim of its own)
-            if closing and not (norms[h + 1] in ("that", "which", "who", "whose") or _reduced_relative_opener(toks.tokens[h + 1].text)):
+            if closing and not (norms[h + 1] in ("that", "which", "who", "whose") or _reduced_relative_opener(toks.tokens[h + 1].text)
+                                or norms[h + 1] in ("you", "they", "we") and h + 2 < a0 and norms[h + 2].isalpha()
+                                and len(norms[h + 2]) >= 3 and norms[h + 2] not in lx.FUNCTION_WORDS | lx.HEARSAY_VERBS
+                                | lx.COPULAS | {"can", "could", "will", "would", "should", "must", "might"}):
+                # ("the moorings you reach through the lock": a contact clause with a subject of its own)
                 continue  # ("the mill race wall has collapsed into the bobbin mill": a clause of its own, no relative one)
             link_idx = [i for i in range(h + 1, end) if not (a0 <= i < a1)
                         and not (i < a0 and all(norms[j] in lx.DETERMINERS for j in range(i, a0)))
@@ -3429,8 +3499,10 @@ class ReportAnalyzer:
             link = " ".join(toks.tokens[i].text.lower() for i in link_idx)
             head_start = h - 1 if norms[h - 1] in lx.ARTICLES else h - 2
             head = " ".join(toks.tokens[i].text.lower() for i in range(head_start + 1, h + 1))
+            verbs = [i for i in link_idx if norms[i] in _SUPPLY_VERBS]
             target, via = self._partner_by_meaning(anchor.landmark, link, head, self.PARTNER_CLAUSE_MIN_SCORE,
-                                                   self.PARTNER_CLAUSE_MARGIN)
+                                                   self.PARTNER_CLAUSE_MARGIN,
+                                                   anchor_is_object=(verbs[0] < a0) if verbs else None)
             if target is None or target == anchor.landmark or anchor.via is not None and via in anchor.via:
                 continue  # (a description's own relation read again: "the ward linked by the bridge to the south wing")
             idx = ex.places.index(anchor)
@@ -3497,6 +3569,33 @@ class ReportAnalyzer:
             ex.places.append(self._mention(toks, h - 1, k + 1, target,
                                            via=f"{via} ~ '{link}' (by meaning, '{norms[k]}' = {ante.landmark})"))
             place_tokens.update(range(h - 1, k + 1))
+        for k in range(3, n - 1):
+            # "the compressor room ... but the place it keeps cold, that's still thick with fumes": the pronoun is the
+            # clause's subject, the words after it up to the clause's end its link
+            if norms[k] != "it" or k in place_tokens or k in marker_tokens or toks.clause_start[k]:
+                continue
+            h = k - 2 if norms[k - 1] in ("that", "which") else k - 1
+            if h < 1 or norms[h] not in heads or norms[h - 1] not in lx.ARTICLES or toks.clause_start[h + 1]:
+                continue
+            e = next((i for i in range(k + 1, min(n, k + 7)) if toks.clause_start[i] or norms[i] in lx.COPULAS), None)
+            if e is None and n - k <= 6:
+                e = n
+            if e is None or e - k < 2 or any(i in place_tokens or i in marker_tokens or i in cue_tokens
+                                              for i in range(h - 1, e)):
+                continue
+            ante = _sole_antecedent(ex, toks, h, k)
+            if ante is None:
+                continue
+            link = " ".join(toks.tokens[i].text.lower() for i in range(k + 1, e) if norms[i] not in lx.HESITATIONS)
+            if not _verb_like(link.split()[0]):
+                continue
+            target, via = self._partner_by_meaning(ante.landmark, link, toks.tokens[h].text.lower(),
+                                                   self.PARTNER_CLAUSE_MIN_SCORE, self.PARTNER_CLAUSE_MARGIN)
+            if target is None or target == ante.landmark:
+                continue
+            ex.places.append(self._mention(toks, h - 1, e, target,
+                                           via=f"{via} ~ '{link}' (by meaning, 'it' = {ante.landmark})"))
+            place_tokens.update(range(h - 1, e))
 
     @functools.cached_property
     def _partner_relation_vectors(self) -> dict[str, np.ndarray]:
@@ -3649,7 +3748,10 @@ class ReportAnalyzer:
             if h > 0 and h < k and norms[h - 1] in lx.WHATEVER and any(norms[i] in lx.FILLERS for i in range(h, k)):
                 k = h  # "whatever the, er, the grain store is built against": past the hesitation
             # ("where the bottom gate opens out onto, that's the safe refuge": "where" opening the clause, as "wherever")
-            whatever = lx.WHATEVER | ({"where"} if k > 0 and norms[k - 1] == "where" and toks.clause_start[k - 1] else set())
+            # ("two kids stuck out where the tide gate drains to": after a word of where, too)
+            whatever = lx.WHATEVER | ({"where"} if k > 0 and norms[k - 1] == "where" and (
+                toks.clause_start[k - 1] or k >= 2 and norms[k - 2] in ("out", "down", "up", "over", "back", "round",
+                                                                        "to", "from", "near")) else set())
             if k == 0 or (k == anchor.start_tok and norms[k - 1] not in whatever and not (k >= 2 and norms[k - 2] in lx.ARTICLES)) \
                     or (k - 1) in place_tokens \
                     or toks.clause_start[k] or not (norms[k - 1] in lx.GENERIC_HEADS | whatever or self._plain_head(norms, k - 1)):
@@ -3673,7 +3775,7 @@ class ReportAnalyzer:
                     break
                 # ("the quay that the ice plant makes the ice for -", "the car park the lorry park spills into when
                 # it's full": a preposition that ends the clause)
-                if norms[end - 1] in lx.RELATION_ENDINGS | {"into", "for"} and (
+                if norms[end - 1] in lx.RELATION_ENDINGS | {"into", "for", "along", "alongside", "beneath", "underneath"} and (
                         end == len(norms) or toks.clause_start[end] or norms[end] in lx.COPULAS | {"as", "now", "theres", "when"}
                         or norms[end:end + 2] in (("there", "s"), ("there", "is"), ("there", "are"))
                         or end in cue_tokens):
@@ -3687,6 +3789,9 @@ class ReportAnalyzer:
                 continue  # a known phrase: the table-driven passes own it
             head = toks.tokens[k - 1].text
             target, via = self._follow_link(anchor.landmark, link, head, inverse=True)
+            if target is None:
+                # (read among the anchor's own relations, the anchor their doer: "whatever the tide gate drains to")
+                target, via = self._follow_by_meaning(anchor.landmark, toks, e, m, inverse=True, sole=True)
             if target is None:
                 continue
             idx = ex.places.index(anchor)
@@ -3791,7 +3896,10 @@ class ReportAnalyzer:
                             and norms[h - 4] in lx.ARTICLES and not {h - 3, h - 2, h - 1} & blocked \
                             and not toks.clause_start[h - 2]:
                         h -= 3  # "the oast in the yard of the farm ...": the relation's own noun, the head before it
-                    head = h
+                    w = next((w for w in range(h - 2, max(-1, h - 5), -1) if norms[w] in lx.WHATEVER
+                              and _verb_like(toks.tokens[w + 1].text) and w + 1 < h
+                              and not any(toks.clause_start[i] or i in blocked for i in range(w + 1, h))), None)
+                    head = h if w is None else w  # ("whatever drags the logs back out of it": the noun is its object)
                     break
             if head is None:
                 continue
@@ -3816,6 +3924,13 @@ class ReportAnalyzer:
             if between and between[0] == "whose":
                 pass  # "the chapel whose old vicarage is now Dinsdale's", "the farm whose old stables the team hut was"
             elif between:
+                if between[0] == "with" and len(between) == 1 and anchor.via is None \
+                        and anchor.end_tok - anchor.start_tok == 1 and norms[head] in lx.UNNAMING_HEADS \
+                        and norms[anchor.start_tok] in norm_phrase(self.kb.landmark_by_name[anchor.landmark].description) \
+                        and norms[anchor.start_tok] not in name_words(anchor.landmark) \
+                        and (anchor.end_tok == len(norms) or toks.clause_start[anchor.end_tok]
+                             or norms[anchor.end_tok] in ("and", "is", "s")):
+                    continue  # "the visitor place with the café": a place by what it has, the one whose own café it is
                 if any(w in lx.COPULAS - {"s"} for w in between) or any(
                         between[m] == "its" and between[m + 1] in ("like", "a", "an", "all", "not", "just")
                         for m in range(len(between) - 1)):
@@ -3826,6 +3941,11 @@ class ReportAnalyzer:
                     locative = True
                 if not (between[0] in lx.PREPOSITIONS | lx.RELATION_ENDINGS | lx.DESCRIPTION_OPENERS
                         or between[0].endswith(("s", "ed", "ing"))
+                        or _verb_like(toks.tokens[linked[0]].text) and toks.tokens[linked[0]].text.lower().endswith("s")
+                        and between[0] not in lx.HEARSAY_VERBS | {"say", "tell", "reckon", "think", "claim"}
+                        and linked[0] + 1 < len(norms) and norms[linked[0] + 1] in lx.DETERMINERS | {"it", "them"}
+                        # (a verb and its object, not a plural noun: "the top floor windows of the barracks")
+                        # ("whatever drags the logs back out of it": a verb's "s" the key drops; not "a neighbour says")
                         or between[0] in ("they", "we", "you") and len(between) >= 2 and not toks.clause_start[head + 1]):
                     continue  # "a tank wagon on the siding": the noun goes on, it heads nothing (but "the tower they send
                     # people down the kamikaze from": a clause with a subject of its own describes it)
@@ -3955,6 +4075,20 @@ class ReportAnalyzer:
                               and any(_same_stem(k, d) for k in kinds for d in self._description_words()[n])}
             # ("the pub that's the local for caulkers' terrace": the one its description calls a pub)
             pool = named or head_described or related
+            if len(pool) > 1 and any(w in _SUPPLY_VERBS for w in between[:3]) and "by" not in between:
+                # "the building that feeds the tank": a verb of supply before the anchor, the anchor its object; only
+                # a place that supplies the anchor (not one the anchor supplies)
+                supplying = {n: v for n, v in pool.items() if any(
+                    (r.subject, r.object) == (n, anchor.landmark) and not r.phrase.replace("_", " ").endswith(" by")
+                    or (r.subject, r.object) == (anchor.landmark, n) and r.phrase.replace("_", " ").endswith(" by")
+                    for r in self.kb.relations)}
+                if supplying:
+                    pool = supplying
+            if not named and not head_described and norms[head] in _BUILDING_HEADS and len(pool) > 1:
+                # "the building at the shore end of it": a building, not the float or the barge moored there
+                built = {n: v for n, v in pool.items() if not self._never_a_building(n)}
+                if built:
+                    pool = built
             target = None
             linking = [norms[i] for i in range(head + 1, end) if not anchor.start_tok <= i < anchor.end_tok
                        and _weighty(norms[i]) and norms[i].isalpha() and norms[i] not in lx.FUNCTION_WORDS
@@ -3962,8 +4096,15 @@ class ReportAnalyzer:
             described = {n: sum(any(_same_stem(w, d) for d in self._description_words()[n]) for w in linking)
                          for n in pool} if len(pool) > 1 else {}
             best = max(described.values(), default=0)
+            outside = " " + " ".join(norms[i] for i in range(head + 1, end) if not anchor.start_tok <= i < anchor.end_tok) + " "
+            worded = [n for n in pool if len(pool) > 1 and len(key := norm_phrase(phrases[n].replace("_", " "))) >= 2
+                      and f" {' '.join(key)} " in outside]
             if len(pool) == 1:
                 target = next(iter(pool))
+            elif len(worded) == 1:
+                # "the place that house looks down on": the words of one of the anchor's own relations, said whole
+                # (not a description word: the "lookout" of the bluff's names for "looks")
+                target = worded[0]
             elif best > 0 and list(described.values()).count(best) == 1:
                 # "the building that heats the Thermae": the boiler house's description says it heats them
                 target = next(n for n, v in described.items() if v == best)
@@ -4030,6 +4171,24 @@ class ReportAnalyzer:
                 and norms[k - 1] in self._place_nouns() and toks.tokens[k + 1].text.lower().endswith(("s", "ed")) \
                 and norms[k + 1] not in lx.COPULAS | lx.FUNCTION_WORDS and not toks.clause_start[k + 1]
             # ("the ride it powers": the place the one said before powers)
+            # ("the boardwalk's gone under, and the plant at the far end of it is flooding": a place noun, then where
+            # it stands, ending on "of it")
+            ends = raw == "it" and norms[k - 1] == "of" and (k + 1 == len(norms) or toks.clause_start[k + 1]
+                                                               or norms[k + 1] in lx.COPULAS) \
+                and any((norms[h] in self._place_nouns() and norms[h - 1] in lx.ARTICLES
+                         and norms[h + 1] in lx.PREPOSITIONS and norms[h + 1] != "of"
+                         or norms[h] in lx.WHATEVER and _verb_like(toks.tokens[h + 1].text))
+                        and not any(toks.clause_start[i] or i in blocked for i in range(h - 1, k))
+                        for h in range(max(1, k - 7), k - 3))
+            # ("a guy's hurt up on whatever drags the logs back out of it")
+            # ("the wooden tank is leaning, and whatever supplies it from the creek is washed out": "whatever", a verb)
+            whatever_of = raw == "it" and norms[k - 2] in lx.WHATEVER and _verb_like(toks.tokens[k - 1].text)
+            # ("the bit of land their causeway runs out to is the only dry spot left": a possessive opening a contact
+            # clause right after a place noun)
+            owned = raw in ("its", "their") and norms[k - 1] in self._place_nouns() | lx.GROUND_HEADS | {"land"} \
+                and (norms[k - 2] in lx.ARTICLES or norms[k - 2] == "of" and norms[k - 4:k - 2] in (("the", "bit"),)) \
+                and k + 2 < len(norms) and _verb_like(toks.tokens[k + 2].text) and not toks.clause_start[k + 1]
+            contact = contact or ends or whatever_of or owned
             if not contact and (raw not in ("its", "their") or norms[k - 1] not in ("where", "that", "which")) \
                     or k in blocked or toks.clause_start[k] or toks.clause_start[k - 1]:
                 continue
@@ -4219,6 +4378,10 @@ class ReportAnalyzer:
                 ex.places[idx] = replace(anchor, status="reference", reason=f"reference point for '{head_place.text}'")
             return
         head_start, words = self._head_before(toks, norms, head_end, place_tokens, marker_tokens)
+        if not words and a >= 3 and norms[a] in ("back", "front", "side", "end", "top") and norms[a - 1] == "the" \
+                and norms[a - 2] in ("onto", "into", "to", "on") and _verb_like(toks.tokens[a - 3].text) \
+                and not toks.clause_start[a - 2]:
+            return  # "the little shed they built onto the back of the distillery": a verb's own words, read whole
         head_text = " ".join(toks.tokens[j].text for j in range(head_start, head_end))
         generic = bool(words) and any(w in lx.GENERIC_HEADS for w in words[-2:]) \
             and self._cues.match_at(norms, head_end - 1) is None
@@ -4542,12 +4705,14 @@ class ReportAnalyzer:
                                                              reason=f"reference point: {via}")
 
     def _follow_by_meaning(self, anchor: str, toks: Tokens, a: int, b: int,
-                           inverse: bool) -> tuple[str | None, str | None]:
+                           inverse: bool, sole: bool = False) -> tuple[str | None, str | None]:
         """The words said for a relation found none of the KB's from ``anchor``: of the relations ``anchor``
         takes part in, on the side the description reads, the one MiniLM puts closest to the words said
         ("the row of cabins that carries on from the A row" for ``cabin row B runs_on_from cabin row A``),
         if close enough and clearly closer than the next, by the bounds ``_follow_link`` reads unlisted links by.
-        (``_follow_link`` ranks every relation form of the KB and would take "carries overflow from" here.)"""
+        (``_follow_link`` ranks every relation form of the KB and would take "carries overflow from" here.)
+        With ``sole``, where the anchor has only one relation at all, on the side read, and the words have a verb,
+        that relation needs only ``OPEN_RELATION_SOLE_MIN_SIM`` ("where the tide gate drains to")."""
         if self.embedder is None:
             return None, None
         words = [t.text for t in toks.tokens[a:b]]
@@ -4567,7 +4732,12 @@ class ReportAnalyzer:
         target, rel = cands[top]
         # the closest relation that leads somewhere else
         runner = max((float(v) for (t, _), v in zip(cands, sims, strict=True) if t != target), default=0.0)
-        if best < self.OPEN_RELATION_MIN_SIM or best - runner < self.OPEN_RELATION_MARGIN:
+        # ("two kids stuck out where the tide gate drains to": the one relation the anchor has at all, the right way
+        # round, is the one a description reading it so can mean)
+        sole = sole and any(_verb_like(w) and w.lower() not in lx.COPULAS for w in words[rel_start:])
+        floor = self.OPEN_RELATION_SOLE_MIN_SIM if sole and len(cands) == 1 and sum(
+            anchor in (r.subject, r.object) for r in self.kb.relations) == 1 else self.OPEN_RELATION_MIN_SIM
+        if best < floor or best - runner < self.OPEN_RELATION_MARGIN:
             return None, None
         return target, f"{rel.subject} {rel.relation} {rel.object} (by meaning {best:.2f})"
 
@@ -4647,6 +4817,13 @@ class ReportAnalyzer:
                             and toks.tokens[e].text.lower().endswith("s") and self._keyword_relation(norms[e]) is not None):
                     e += 1  # (not into a relation's verb: "the canal that the building with the big brick chimney pumps
                     # into")
+                # "the hut where they keep the explosives is on fire": a danger word as what the place keeps, the
+                # object of the description's own verb, is a word of the description too (the cue stays a cue)
+                if e < len(norms) and e in cue_tokens and e not in place_tokens | marker_tokens | inside_relation \
+                        and norms[i + 1] == "where" and norms[e - 1] in lx.DETERMINERS \
+                        and e - 1 > i + 2 and any(norms[e] in ws for ws in desc.values()) \
+                        and (e + 1 >= len(norms) or toks.clause_start[e + 1] or norms[e + 1] in lx.COPULAS):
+                    e += 1
             words = {w for w in norms[s_:e] if w not in lx.DESCRIPTION_STOPWORDS and w not in closed}
             scores = sorted(((len(words & ws), name) for name, ws in desc.items()), reverse=True)
             owner = getattr(self, "_heads", {}).get(norms[s_]) if s_ == i - 1 and e == i + 1 else None
@@ -5464,6 +5641,9 @@ class ReportAnalyzer:
             if neg and norms[j] == "not" and toks.clause_start[j + 1] and j > 0 \
                     and norms[j - 1] in ("absolutely", "definitely", "certainly", "course", "really", "no", "surely"):
                 neg = False  # "no, no, absolutely not, the lodge is brimming over": an answer, then a clause of its own
+            if neg and norms[j] == "not" and toks.clause_start[j + 1] and j > 0 and (
+                    norms[j - 1] == "its" or j > 1 and norms[j - 2:j] in (("it", "s"), ("it", "is"), ("that", "s"))):
+                neg = False  # "the res is... it's fine, no wait, it's not, the dam's cracked": a word taken back
             if not_the_one:
                 neg = True  # "the school isn't the one"
             if neg and any(ma <= j < mb for ma, mb, _ in ex.markers) and norms[j + 1 : j + 2] == ("that",):
@@ -6691,6 +6871,10 @@ class ReportAnalyzer:
             elif (norms[k] == "gone" or part_of and norms[k] == "down") \
                     and toks.tokens[k - 1].text.lower().endswith(("'s", "’s")):
                 end = k + 1
+            elif part_of and norms[k:k + 3] in (("has", "come", "in"), ("s", "come", "in"), ("have", "come", "in")):
+                end = k + 3  # "Roof of the dressing mill has come in"
+            elif part_of and norms[k:k + 2] == ("come", "in") and toks.tokens[k - 1].text.lower().endswith(("'s", "’s")):
+                end = k + 2
             elif part_of and norms[k - 1] in _HOLDING_PARTS and norms[k:k + 2] in (("are", "going"), ("is", "going")):
                 end = k + 2  # a wall or bank "going" gives way as it is said
             elif part_of and norms[k - 1] in _HOLDING_PARTS and norms[k] == "going" and norms[k - 1].endswith("s"):
@@ -7983,6 +8167,25 @@ class ReportAnalyzer:
                 continue
             start, end = toks.tokens[i].start, toks.tokens[i].end
             out.append(CueMention(i, i + 1, start, end, toks.text[start:end], cat, "lexicon", reason="a person down"))
+        for i in range(2, len(norms) - 3):
+            # "the roof has come in and there are still three slate splitters inside": people counted as still inside
+            # (whatever their trade), in a report that says a danger
+            if norms[i] != "still" or norms[i - 2:i] not in (("there", "are"), ("there", "re"), ("there", "s"),
+                                                              ("there", "is")) or i in blocked:
+                continue
+            n = i + 1
+            if not (norms[n].isdigit() or norms[n] in lx.NUMBER_WORDS | {"some", "people", "folk"}):
+                continue
+            inside = next((m for m in range(n + 1, min(len(norms), n + 4)) if norms[m] in ("inside", "in")), None)
+            if inside is None or any(toks.clause_start[m] for m in range(i, inside + 1)) \
+                    or any(norms[m] in lx.ANIMAL_WORDS for m in range(n, inside)) \
+                    or norms[inside] == "in" and norms[inside + 1:inside + 2] not in (("there",), ("it",), ("the",)) \
+                    or any(norms[m] in lx.FINE_WORDS | {"working", "sheltering", "safe"} for m in range(len(norms))
+                           if toks.sentence_of[m] == toks.sentence_of[i]):
+                continue
+            start, end = toks.tokens[i].start, toks.tokens[inside].end
+            out.append(CueMention(i, inside + 1, start, end, toks.text[start:end], cat, "lexicon",
+                                  reason="people still inside"))
         return out
 
     def _person_cues(self, ex: Extraction, norms: tuple[str, ...], blocked: set[int]) -> list[CueMention]:
@@ -8592,6 +8795,15 @@ class ReportAnalyzer:
                 k += 1  # ("the flue fire on the boat moored at the far mouth is out": an article is no word of its own)
                 articles += 1
                 continue
+            if norms[k] in ("that", "which") and (k - 1) in self._place_tokens and any(
+                    p.status == "reference" and p.reason.startswith("reference point") and k < p.start_tok <= k + 2
+                    for p in self._places_now):
+                cop = next((m for m in range(k + 2, min(len(norms), k + 9)) if norms[m] in ("is", "s", "was", "has")
+                            and not any(toks.clause_start[t] for t in range(k, m + 1))), None)
+                if cop is not None:
+                    k = cop  # "the fuel fire in the yard that the barrage road runs down to is out now": the clause
+                    steps += 1  # that only says which yard counts as one word
+                    continue
             if norms[k:k + 3] in (("but", "it", "isnt"), ("but", "its", "not"), ("but", "it", "wasnt"),
                                   ("but", "thats", "not"), ("but", "they", "arent")) \
                     and (k + 3 >= len(norms) or toks.clause_start[k + 3]):
@@ -10235,7 +10447,11 @@ def _sole_antecedent(ex: Extraction, toks: Tokens, limit: int, k: int) -> PlaceM
     if not before:
         return None
     last = max(before, key=lambda p: p.end_tok)
-    if any(q.end_tok > last.end_tok and q.start_tok < k for q in ex.places if q is not last):
+    # (a place said in the antecedent's own clause only to say which it is counts as no other: "the pond the log yard
+    # rolls its logs into, and ... whatever drags the logs back out of it")
+    if any(q.end_tok > last.end_tok and q.start_tok < k for q in ex.places if q is not last
+           and not (q.status == "reference" and q.reason.startswith("reference point")
+                    and not any(toks.clause_start[i] for i in range(last.end_tok, q.start_tok + 1)))):
         return None
     return last
 
@@ -10880,6 +11096,25 @@ def _verb_like(word: str) -> bool:
 _MOVING_CREWS = frozenset(lx.CREW_NOUNS | {"crews", "teams", "we"})
 _CREW_MOVES = frozenset({"moving", "heading", "going", "headed", "moved", "redeploying", "relocating", "transferring"})
 _SUBJECT_PRONOUNS = frozenset({"they", "we", "you", "i", "he", "she", "people", "everyone"})
+# Verbs of supplying one place from another, whose active voice says which end the doer is ("feeds the tank").
+_SUPPLY_VERBS = frozenset({"feeds", "feed", "fed", "supplies", "supply", "supplied", "fills", "fill", "filled",
+                           "powers", "power", "powered", "pumps", "pump", "pumped", "drains", "drain", "drained",
+                           "serves", "serve", "served", "heats", "heat", "heated", "waters", "water", "watered",
+                           "cools", "cool", "cooled", "chills", "chill", "chilled", "lights", "light", "lit",
+                           "runs", "drives", "drive", "driven", "empties", "empty", "emptied", "tops", "top",
+                           "supplie", "emptie"})  # (the keys of "supplies", "empties")
+# Heads that say a building ("the building at the shore end of it"), and the name words of landmarks that are none.
+_BUILDING_HEADS = frozenset({"building", "house", "hut", "shed", "block", "office"})
+_OPEN_OR_AFLOAT = frozenset({"float", "floats", "barge", "scow", "boat", "boats", "pontoon", "pontoons", "raft", "hulk",
+                             "ship", "vessel", "tender", "wharf", "quay", "jetty", "pier", "dock", "berth", "mooring",
+                             "moorings", "slipway", "ways", "flats",
+                             "mudflats", "beach", "field", "meadow", "paddock", "yard", "lot", "park", "green",
+                             "river", "creek", "stream", "beck", "pond", "lake", "lagoon", "canal", "ditch", "road",
+                             "track", "lane", "path", "walkway", "boardwalk", "bridge", "dam", "dike", "bank",
+                             "bluff", "knoll", "hill", "ridge", "dunes", "bog", "marsh", "swamp", "bed", "beds"})
+# Nouns for a way along which people go, besides the road words ("the catwalk down to the stinker").
+_WAY_NOUNS = frozenset({"walkway", "catwalk", "boardwalk", "footpath", "causeway", "gangway", "towpath", "steps",
+                        "stairs", "ladder", "ramp", "slipway", "trail", "alley", "passage", "tunnel"})
 _DOERS = frozenset(lx.LAY_PERSONS) | frozenset(lx.WORKER_PERSONS) | frozenset(lx.PERSON_NOUNS)  # ("a woman visiting ...")
 _IRREGULAR_PARTICIPLES = frozenset({"hidden", "built", "stuck", "tucked", "set", "dug", "cut", "bolted", "sunk", "hung",
                                     "wedged", "perched", "known", "run", "kept", "held", "fed", "lit", "laid", "left"})

@@ -147,6 +147,13 @@ _add(DESIRABLE, "can stay in|they can stay|as long as they need|warm n dry|we're
                "with a brew|having a brew|upstairs is dry|is dry though|folk off the shore|let us all in|let us in|")
 _add(DESIRABLE, "open, dry|open dry|crew room open|got the crew room open|dry and sound|welcome to stay|are welcome to stay|settled in the pews|warm spot|a warm spot|"
                "having soup|opened it up as|opened up as a|")
+_add(DESIRABLE, "welcome to wait|are welcome to wait|came through without a scratch|come through without a scratch|"
+               "well above the tide line|above the tide line|we'll wait there|"
+               "come and fill up there|fill up there|can fill up there|can fill up from|fill up from it|"
+               "assembly spot|where everyone's gathering|where everybody's gathering|nothing to fall on anyone|"
+               "dry and cool|can stand on it|can all stand on it|safe to stand on|fine to stand on|")
+# ("the staff say people are welcome to wait inside", "the bottle cellar is dry and cool", "Wharf's solid, crews can
+# stand on it", "I've landed six kids on Heron Rock, it's well above the tide line")
 _add(DESIRABLE, "for everybody to go to|for everyone to go to|for people to go to|for folk to go to")
 _add(DESIRABLE, "has power and heating|got power and heating|power and heating on|can come in here|"
                "anybody can come in|anyone can come in|everyone can come in|can all come in")
@@ -158,6 +165,16 @@ _add(DESIRABLE, "|".join(f"{verb} {who} {where}"
                                      "the families", "the evacuees", "the residents", "the kids", "the children")
                          for where in ("there", "in there", "up there", "over there")))
 
+_add(CRITICAL, "|".join(f"{aux} {verb} in" for aux in ("haven't", "havent", "hasn't", "hasnt", "have not", "has not",
+                                                           "not", "never")
+                         for verb in ("radioed", "checked", "reported")))  # "haven't radioed in for forty minutes"
+_add(CRITICAL, "|".join(f"pulled {who} out of" for who in ("a man", "a woman", "someone", "somebody", "a child", "a kid",
+                                                             "him", "her", "a lad", "a girl", "a boy")))
+# ("We've pulled a man out of the coffee shop, he's breathing"; "one of the engineers still out on it")
+_add(CRITICAL, "still out on it|still out on the|stuck out on it|still stuck out on")
+_add(CRITICAL, "didn't come back|didnt come back|did not come back|haven't come back|havent come back|"
+               "can't see them anywhere|cant see them anywhere|can't find them anywhere|cant find them anywhere|"
+               "can't see him anywhere|can't see her anywhere|can't find him anywhere|can't find her anywhere")
 _add(CRITICAL, """
 folk up on the roofs|people up on the roofs|got folk up on the roofs|got people up on the roofs|up on their roofs|
 can't pull himself out|can't pull herself out|cant pull himself out|cant pull herself out|up to his chest|up to her chest|
@@ -307,6 +324,7 @@ CANCEL_AFTER = ["fully out", "is fully out", "damping down", "damping down is fi
                 "water's receded", "water has receded", "flood's gone down", "flooding's gone down",
                 "extinguished", "under control", "contained", "is over", "has stopped", "stopped",
                 "died down", "cleared up", "gone", "is gone", "has gone", "fixed", "repaired",
+                "has eased off", "s eased off", "eased off",
                 "turned off", "shut off", "capped", "receded", "drained", "false alarm",
                 "all rescued", "rescued", "evacuated", "got out", "out safely", "accounted for",
                 "no longer", "taken to hospital", "been taken to hospital", "been extracted",
@@ -378,6 +396,10 @@ BACK_REFERENCE_WORDS = {"it", "its", "s", "is", "has", "been", "thats", "that", 
 # Phrases that contain cue words but claim nothing ("the smoke alarm went off", "fire crew on site").
 NEUTRAL_PHRASES = ["a bonfire",
                    # (a warning, nothing comes down: "nobody come down here")
+                   # (a warning of what could set it off: "nobody goes in with anything that sparks")
+                   # (a verb of a relation: "the wall that shelters the yard")
+                   "that shelters the", "which shelters the", "that shields the", "which shields the",
+                   "anything that sparks", "anything that could spark", "anything that might spark",
                    "nobody come down here", "no one come down here", "don't come down here", "do not come down here",
                    "nobody come down there", "don't come down there",
                    # (how far a place reaches, no flood: "the houses whose back gardens go right up to the car park")
@@ -792,7 +814,9 @@ TRANSIT = [*(f"{v} {who} {way}to" for v in ("walk", "take", "bring", "carry", "h
            "visitors coming off", "crowds coming off", "folk coming off", "riders coming off", "families coming out of", "anyone coming out of", "anybody coming out of", "everyone coming out of", "people coming out of", "evacuated from", "moved out of", "moved from", "relocated from", "decanted from", "brought out of",
            "heading to", "heading for", "heading towards", "heading toward", "headed to", "headed for", "head to",
            "heading up towards", "heading down towards", "creeping towards", "drifting towards", "current towards", "swinging towards", "floating towards",
-           "spreading towards", "moving up towards", "carrying it towards", "carrying it down towards",
+           "spreading towards", "moving up towards", "running uphill towards", "running downhill towards",
+           "running up towards", "running towards", "racing towards", "racing up towards", "burning towards",
+           "burning up towards", "carrying it towards", "carrying it down towards",
            "carrying it up towards", "carrying it over towards", "pushing it towards", "pushing it down towards",
            "blowing it towards", "blowing it down towards", "carried towards", "follow the", "following the", "followed the",
            "passing", "passed", "moving past", "going past", "driving past", "walking past", "past",
@@ -804,7 +828,7 @@ TRANSIT = [*(f"{v} {who} {way}to" for v in ("walk", "take", "bring", "carry", "h
            "returning from", "parked at", "parked by", "parked near", "parked the truck at", "parked the truck by",
            "staged at", "regrouping at", "relocating to", "diverting to", "rerouting to", "going round",
            "we're at", "we are at", "currently at", "we're set up by", "we're set up at", "we are set up by", "we are set up at", "we're setting up at", "we're setting up by", "we're setting up on", "we're set up on", "and i'm in", "and i'm at", "and we're in", "and i am in",
-           "and i am at", "positioned at", "standing by at", "checking", "will check",
+           "and i am at", "positioned at", "standing by at", "standing by on", "standing by in", "standing by near", "checking", "will check",
            "we're outside", "we are outside", "we're by", "we are by", "we're in front of", "we're opposite",
            "we're standing at", "we're standing outside", "we are standing outside", "standing outside",
            "nobody's been in", "no one's been in", "nobody has been in", "no one has been in",
@@ -821,7 +845,11 @@ TRANSIT = [*(f"{v} {who} {way}to" for v in ("walk", "take", "bring", "carry", "h
            "got everyone out of", "everybody out of", "got them all out of",
            "well away from", "far from", "a long way from", "miles from", "floating off towards", "drifting towards", "floating towards", "washed towards", "coming out through", "came out through",
            "come out through", "coming in through", "came in through", "come in through", "drove in through",
-           "driving in through", "drove out through"]
+           "driving in through", "drove out through",
+           # ("do not use it to get down to the meal plant": where a way leads, the report says nothing of it)
+           "to get down to", "to get up to", "to get over to", "to get across to", "to get out to", "to get to",
+           # ("my son walked up the fire road to the old stone building": the way he took)
+           "walked up the", "walked down the", "walked along the", "drove up the", "drove down the", "drove along the"]
 
 # Head nouns of a description of a landmark ("the building with the two engine bays").
 DESCRIPTION_HEADS = {"building", "place", "shop", "store", "tower", "block", "house", "hall", "premises", "structure",
@@ -1175,7 +1203,7 @@ DANGER_KINDS: dict[str, list[str]] = {
                  "span is down", "could go at any minute", "could go any minute", "broken up", "has broken up", "broken away", "broke away", "come through the roof", "came through the roof", "twisted", "leaning badly", "leaning over", "listing", "sagged", "sagged down",
                  "has sagged", "roof's sagged", "stones falling", "stone falling",
                  "falling stones", "falling stone", "bits falling", "bits coming down", "chunks falling", "lumps falling",
-                 "stonework falling", "frayed", "fraying", "cable's frayed", "derailed", "come off its rails",
+                 "stonework falling", "frayed", "fraying", "cable's frayed", "derailed", "come off its rails", "come off one of its rails", "off one of its rails",
                  "came off its rails", "come off the rails", "came off the rails", "off its rails", "sheared off", "keystone's come out", "arch has dropped", "arch's dropped",
                  "off its supports", "swept clean off", "a lean on it", "got a lean on", "damaged", "badly damaged",
                  "heavily damaged", "storm damaged", "storm-damaged", "gone completely", "completely gone", "basically gone", "wiped out", "got wiped out", "totally wiped out",
@@ -1566,7 +1594,7 @@ DANGER_KIND_EXTRA: dict[str, list[str]] = {
               "lost the roof", "lost its leads", "lost the leads", "roof lifted", "blown clean off", "blown off",
               "off its hinges", "pulled up by the roots", "open to the sky", "rain's coming in", "rain is coming in",
               "rain coming straight in", "rain's coming straight in", "rain pouring in", "rain is pouring"],
-    "fire": ["taken hold of", "has taken hold", "taken hold in", "took hold of", "taking hold of", "flare-up", "flare up", "flared up", "flaring up", "burning debris", "roof is going up", "houses have caught", "have caught", "is going up", "s going up", "going up properly", "roof's going up", "roofs going up", "thatch is going up", "thatch's going up",
+    "fire": ["starting to burn", "started to burn", "begun to burn", "beginning to burn", "taken hold of", "has taken hold", "taken hold in", "took hold of", "taking hold of", "flare-up", "flare up", "flared up", "flaring up", "burning debris", "roof is going up", "houses have caught", "have caught", "is going up", "s going up", "going up properly", "roof's going up", "roofs going up", "thatch is going up", "thatch's going up",
              "thatch going up", "embers are landing", "embers landing", "embers are falling", "embers falling", "embers coming down"],
     "electric": ["wire is hot", "wires are hot", "line is hot", "lines are hot", "wire as hot", "wires as hot",
                  "conductors are on", "conductor down", "conductors down", "feeder is down", "feeder down", "lines down",
@@ -1577,11 +1605,12 @@ DANGER_KIND_EXTRA: dict[str, list[str]] = {
     "collapse": ["started to sag", "starting to sag", "begun to sag", "beginning to sag", "wall's come in", "wall has come in", "walls have come in", "wall's come down on", "roof's come in",
                  "roof has come in", "ceiling's come in", "ceiling has come in", "tipped over", "has tipped over", "have tipped over", "have slid", "has slid",
                  "flattened", "been flattened", "torn to bits", "torn to pieces", "ripped to bits", "ripped to pieces", "blown to bits", "giving way", "is giving way", "gives way", "piles are sheared", "piles have sheared", "pile is sheared", "pile's sheared", "torn open", "been torn open", "gone over into the water", "gone over into the lagoon", "gone over into the sea", "gone over into the river", "split down a seam", "split a seam", "split its seam", "split at the seam", "split along a seam", "has snapped", "have snapped", "cable snapped", "cables snapped", "hanging sideways", "floor went through", "floor went thru", "floor gone through", "developed a lean", "has a lean", "bricks coming off", "bricks are coming off", "wall has split", "walls have split", "has split from", "split right across", "split from top to bottom", "roof's coming in", "roof is coming in", "ceiling's coming in", "ceiling is coming in", "coming off in chunks", "coming away in chunks", "falling off in chunks", "in chunks", "breaking up", "is breaking up", "coming adrift", "come adrift", "broken adrift", "peeling off", "coming off in slabs", "coming away in slabs", "roof fall on", "roof fall in", "roof has dropped", "pole's snapped", "pole has snapped", "poles have snapped", "poles snapped", "canvas is down", "canvas's down", "canvas has come down", "canvas came down", "tent's down", "tent is down", "poles down", "poles are down", "roof's dropped", "roof dropped", "ceiling has dropped", "ceiling's dropped", "roof has split", "roof split", "is bending", "it's bending", "is fall down", "has fall down", "fallen down"],
-    "water": ["waves coming straight over", "waves coming right over", "roof is leaking", "roof's leaking",
+    "water": ["going down by the bow", "going down by the stern", "down by the bow", "down by the stern",
+              "down by the head", "waves coming straight over", "waves coming right over", "roof is leaking", "roof's leaking",
               "roof leaking", "roof leaks", "taken the surge", "took the surge", "drums floating", "floating everywhere",
               "taken in loads of water", "taken in water", "taken in a lot of water", "taking in loads of water",
               "a metre in there", "a foot in there", "that's going over", "that is going over", "over the tops of their walls", "over the top of their walls", "over the top of its walls", "over the tops of its walls", "over the top of the walls", "gone over their walls", "gone over its walls", "over their walls", "lifting off their stands", "lifted off their stands", "off their stands", "floating off", "floated off",
-              "getting swamped", "cars are floating", "cars are floating in it", "tents are floating", "standing in water", "stood in water", "standing in floodwater", "water through all the", "water through the front door", "water through the front doors", "water through the doors", "boiling over", "boiled over", "water is running across", "water running across", "water is lapping", "water lapping", "lapping the", "over the towpath", "across the towpath", "gates burst", "gates have burst", "gate burst", "gate has burst", "pouring over", "topped its bank", "topped its banks", "topped the bank", "topped the banks", "gone over the bank", "gone over its bank", "gone over the south bank", "gone over the north bank", "gone over the east bank", "gone over the west bank", "metre deep", "metres deep", "meter deep", "a metre of water", "under a metre of", "under half a metre of", "under a foot of", "under two foot of", "under three foot of", "under two feet of", "under three feet of", "water's going right over", "water is going right over", "water's going over the deck", "going right over the deck", "over the deck", "up to the doors", "up to the front doors", "up to the stable doors", "metre of water", "full to the top", "full to the brim", "water all the way round", "water is all the way round", "water all round", "water is all round", "water right round", "water is right round", "tide's coming straight through", "tide's coming through", "tide coming through", "sea's coming through", "one sheet of water", "a sheet of water", "sheet of water", "washing out", "washing away", "logs floating", "floating away", "floating off the floor", "floating about", "floating around",
+              "getting swamped", "cars are floating", "cars are floating in it", "tents are floating", "standing in water", "stood in water", "standing in floodwater", "water through all the", "water through the front door", "water through the front doors", "water through the doors", "boiling over", "boiled over", "water is running across", "water running across", "water is lapping", "water lapping", "lapping the", "over the towpath", "across the towpath", "gates burst", "gates have burst", "gate burst", "gate has burst", "pouring over", "topped its bank", "topped its banks", "topped the bank", "topped the banks", "gone over the bank", "gone over its bank", "gone over the south bank", "gone over the north bank", "gone over the east bank", "gone over the west bank", "metre deep", "metres deep", "meter deep", "a metre of water", "under a metre of", "under half a metre of", "under half a metre", "under half a meter", "under a foot of", "under two foot of", "under three foot of", "under two feet of", "under three feet of", "water's going right over", "water is going right over", "water's going over the deck", "going right over the deck", "over the deck", "up to the doors", "up to the front doors", "up to the stable doors", "metre of water", "full to the top", "full to the brim", "water all the way round", "water is all the way round", "water all round", "water is all round", "water right round", "water is right round", "tide's coming straight through", "tide's coming through", "tide coming through", "sea's coming through", "one sheet of water", "a sheet of water", "sheet of water", "washing out", "washing away", "logs floating", "floating away", "floating off the floor", "floating about", "floating around",
               "furniture floating", "chairs floating", "cars floating",
               "water coming through", "water's coming through", "water is coming through", "seeping through the walls",
               "water at the front door", "water at the door", "water's at the door", "water's at the front door",
@@ -1593,7 +1622,8 @@ DANGER_KIND_EXTRA: dict[str, list[str]] = {
               "water's at the top of", "water is at the top of",
               "water at the top of", "water's up to the top of", "water is up to the top of"],
     "access": ["blocking", "blocking the way", "blocking it", "blocks the way", "rocks across", "rocks across it", "rocks across the road", "debris across", "debris right across", "fallen oak", "fallen beech", "fallen ash", "fallen branch", "fallen branches"],
-    "ground": ["there's a slip on", "there's been a slip on", "there is a slip on", "scree moving", "scree is moving", "ground is moving", "ground moving", "slope is moving", "hillside is moving", "rocks are coming off", "rocks are coming down", "rocks are falling", "dropping rocks", "rocks dropping", "dropping stones", "has sunk", "have sunk", "its sunk", "ground dropped", "ground has dropped", "ground dropping", "ground is dropping", "ground gone", "ground has gone", "ground just gone", "floor dropped", "floor has dropped", "hole opened up", "hole has opened up", "hole just opened up", "floor has opened", "floor's opened", "sinkhole", "sink hole", "ash a foot deep", "ash is knee deep", "ash knee deep", "ash's knee deep", "ash is ankle deep", "a foot of ash", "feet of ash", "inches of ash", "deep in ash", "covered in ash", "covered in stones", "covered in rocks", "covered in boulders", "covered with stones", "covered with rocks", "stones all over it", "rocks all over it", "heaped with ash", "buried in ash", "under the ash", "drifts of ash", "ash drifts", "half buried", "half-buried", "slurry", "full of slurry", "sludge", "silt", "full of silt"],
+    "ground": ["buried to the axles", "buried to its axles", "buried up to the axles", "buried up to its axles",
+               "sunk to the axles", "sunk to its axles", "bogged down", "there's a slip on", "there's been a slip on", "there is a slip on", "scree moving", "scree is moving", "ground is moving", "ground moving", "slope is moving", "hillside is moving", "rocks are coming off", "rocks are coming down", "rocks are falling", "dropping rocks", "rocks dropping", "dropping stones", "has sunk", "have sunk", "its sunk", "ground dropped", "ground has dropped", "ground dropping", "ground is dropping", "ground gone", "ground has gone", "ground just gone", "floor dropped", "floor has dropped", "hole opened up", "hole has opened up", "hole just opened up", "floor has opened", "floor's opened", "sinkhole", "sink hole", "ash a foot deep", "ash is knee deep", "ash knee deep", "ash's knee deep", "ash is ankle deep", "a foot of ash", "feet of ash", "inches of ash", "deep in ash", "covered in ash", "covered in stones", "covered in rocks", "covered in boulders", "covered with stones", "covered with rocks", "stones all over it", "rocks all over it", "heaped with ash", "buried in ash", "under the ash", "drifts of ash", "ash drifts", "half buried", "half-buried", "slurry", "full of slurry", "sludge", "silt", "full of silt"],
     "fallen": ["tree's down", "tree is down", "tree down", "trees are down", "trees down", "tree's come over",
                "tree has come over", "come over in the wind", "came over in the wind", "taken the top off", "took the top off", "knocked the top off", "blown the top off", "blew the top off",
                "stonework through", "masonry through", "through the glass roof", "debris through the roof",
