@@ -1017,8 +1017,8 @@ class ReportAnalyzer:
                     and (norms[p.start_tok - 3] in lx.NUMBER_WORDS | {"hundred", "dozen"} or norms[p.start_tok - 3].isdigit()) \
                     and norms[p.start_tok - 3] not in ("999", "911", "112", "000", "111") \
                     and not toks.clause_start[p.start_tok - 2]:
-                # (not a call: "a walker has rung 999 from the trig")
-                # "about two hundred from the bottling line mustered there": whom, by where they came from
+                # "about two hundred from the bottling line mustered there": whom, by where they came from (not a
+                # call: "a walker has rung 999 from the trig")
                 places[idx] = replace(p, status="reference", reason="where the people counted came from")
             elif self._fallen_into(toks, norms, p, places):
                 # "the bridge ... it's collapsed into the drain", "bricks falling into the river": where it fell
@@ -3543,7 +3543,9 @@ class ReportAnalyzer:
         """"Fire alarm at the Alpenblick was false. But the plant that heats it is on fire": a relative clause on
         "that"/"which" that ends on "it"/"there"/"them" (the clause's end, or a verb after it) is read as
         ``_resolve_by_partners`` reads one around a name, the pronoun standing for the one place named last, in an
-        earlier clause, with no other place said since. The antecedent keeps its own claims."""
+        earlier clause, with no other place said since. The antecedent keeps its own claims. So is a clause whose
+        subject is "it", right after its head ("but the place it keeps cold, that's still thick with fumes"), the words
+        after the pronoun up to the clause's end its link."""
         n = len(norms)
         for k in range(4, n):
             if norms[k] not in ("it", "there", "them") or k in place_tokens or k in marker_tokens:
@@ -4172,7 +4174,7 @@ class ReportAnalyzer:
                 and norms[k + 1] not in lx.COPULAS | lx.FUNCTION_WORDS and not toks.clause_start[k + 1]
             # ("the ride it powers": the place the one said before powers)
             # ("the boardwalk's gone under, and the plant at the far end of it is flooding": a place noun, then where
-            # it stands, ending on "of it")
+            # it stands, ending on "of it"; "a guy's hurt up on whatever drags the logs back out of it")
             ends = raw == "it" and norms[k - 1] == "of" and (k + 1 == len(norms) or toks.clause_start[k + 1]
                                                                or norms[k + 1] in lx.COPULAS) \
                 and any((norms[h] in self._place_nouns() and norms[h - 1] in lx.ARTICLES
@@ -4180,7 +4182,6 @@ class ReportAnalyzer:
                          or norms[h] in lx.WHATEVER and _verb_like(toks.tokens[h + 1].text))
                         and not any(toks.clause_start[i] or i in blocked for i in range(h - 1, k))
                         for h in range(max(1, k - 7), k - 3))
-            # ("a guy's hurt up on whatever drags the logs back out of it")
             # ("the wooden tank is leaning, and whatever supplies it from the creek is washed out": "whatever", a verb)
             whatever_of = raw == "it" and norms[k - 2] in lx.WHATEVER and _verb_like(toks.tokens[k - 1].text)
             # ("the bit of land their causeway runs out to is the only dry spot left": a possessive opening a contact
