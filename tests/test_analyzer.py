@@ -4964,6 +4964,23 @@ def test_dev92_phenomena(kb_analyzers, kb, text, expected):
     ("tidal_barrage", "The old ferry steps are under water, and the bit of land their causeway runs out to is the "
                       "only dry spot left, we've got fifteen people up there safe.",
      [("ferry steps", "surge_and_flooding"), ("heron island", "dry_refuge")]),
+    # a sentence that opens on "Whatever feeds it the electric": what it gives the place the pronoun takes up
+    ("ice_rink_arena", "Flashover in the plant. Whatever feeds it the electric — that's alight too. Pull everyone "
+                       "back from the yard.", [("plant room", "gas_or_fire"), ("substation", "gas_or_fire")]),
+    # an adjective before the head of a contact clause; a passive one ("the old building it was built out from")
+    ("monastery_vineyard", "The guest wing's on fire, and the old building it was built out from has got people "
+                           "trapped inside, three or four of them.",
+     [("guesthouse", "burning_or_smouldering"), ("refectory", "person_in_trouble")]),
+    ("lavender_distillery", "we're at the lookout, it's a safe spot, bare rock all round, and the old building it "
+                            "looks across to — there's smoke pouring out of its door, I think the roof's caught",
+     [("chapel", "blaze_or_fumes"), ("viewpoint terrace", "safe_haven")]),
+    # "power's on in there"; "still above the line"
+    ("hospice_grounds", "th-the gen-- the genny shed's w-working, power's on in there, er, you can plug the, the "
+                        "suction units in there", [("generator shed", "safe_haven")]),
+    ("textile_mill_village", "Drone One to Control: the tenter field is completely under water, the veg plots have "
+                             "gone too, only the shed roofs showing. The cricket field's still above the line, you "
+                             "could set the helicopter down there.",
+     [("allotments", "flooded_or_fallen"), ("recreation ground", "high_and_dry"), ("tenter field", "flooded_or_fallen")]),
 ])
 def test_dev93_phenomena(kb_analyzers, kb, text, expected):
     assert claims(kb_analyzers[kb], text) == expected

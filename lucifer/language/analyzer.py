@@ -3975,8 +3975,10 @@ class ReportAnalyzer:
                     continue  # "a warm place for the old folk from Tanrallt": the people are from it, not the place
             else:
                 # "the tube the shaft draws from": the linking verb comes after the anchor
-                if norms[head] in lx.WHATEVER or head == 0 or norms[head - 1] not in lx.ARTICLES:
-                    continue
+                if norms[head] in lx.WHATEVER or head == 0 or norms[head - 1] not in lx.ARTICLES and not (
+                        head >= 2 and norms[head - 2] in lx.ARTICLES and norms[head - 1].isalpha()
+                        and (head - 1) not in blocked and norms[anchor.start_tok] == "it"):
+                    continue  # (an adjective may stand between: "the old building it was built out from")
                 while end < len(norms) and end - anchor.end_tok < 6 and end not in blocked \
                         and not toks.clause_start[end] and norms[end] not in lx.COORDINATORS:
                     end += 1
@@ -3992,10 +3994,18 @@ class ReportAnalyzer:
                     and after[1] in ("there", "meant", "supposed", "built", "designed", "put", "dug", "made") \
                     and after[3].isalpha() and after[3] not in lx.FUNCTION_WORDS \
                     and (end >= len(norms) or toks.clause_start[end])  # "the magazine the blast bank is there to protect"
-                if not purpose and (not after or after[0] in lx.COPULAS | lx.PREPOSITIONS or not (
+                stop = next((j for j in range(2, len(after)) if after[j] in lx.RELATION_ENDINGS
+                             and (j + 1 == len(after) or after[j + 1] in lx.COPULAS | {"has", "have", "had"})), None)
+                passive = stop is not None and after[0] in ("was", "is", "been") and norms[anchor.start_tok] == "it" \
+                    and (toks.tokens[anchor.end_tok + 1].text.lower().endswith("ed") or after[1] in _IRREGULAR_PARTICIPLES)
+                if passive:  # ("the old building it was built out from has got people trapped inside")
+                    end = anchor.end_tok + stop + 1
+                if not purpose and not passive and (not after or after[0] in lx.COPULAS | lx.PREPOSITIONS or not (
                         verb or any(w.endswith("s") or w.endswith("ed") or w in lx.RELATION_ENDINGS for w in after))):
                     continue  # ("a tank wagon on the loading siding is leaking": the anchor's own predicate)
-            if between and end < len(norms) and norms[end] in ("its", "their") and not toks.clause_start[end]:
+            if between and end < len(norms) and not toks.clause_start[end] and (
+                    norms[end] in ("its", "their") or norms[end] == "the" and norms[anchor.start_tok] in ("it", "them")):
+                # ("Whatever feeds it the electric": what it gives the place the pronoun takes up, too)
                 # "the place that feeds the auction hall its ice": what it gives the anchor is part of the description
                 e2 = end + 1
                 while e2 < len(norms) and e2 - end <= 3 and not toks.clause_start[e2] and norms[e2].isalpha() \
@@ -4169,10 +4179,16 @@ class ReportAnalyzer:
         out = []
         for k in range(3, len(norms)):
             raw = toks.tokens[k].text.lower()
-            contact = raw == "it" and k + 1 < len(norms) and norms[k - 2] in lx.ARTICLES \
-                and norms[k - 1] in self._place_nouns() and toks.tokens[k + 1].text.lower().endswith(("s", "ed")) \
-                and norms[k + 1] not in lx.COPULAS | lx.FUNCTION_WORDS and not toks.clause_start[k + 1]
-            # ("the ride it powers": the place the one said before powers)
+            adjective = k >= 4 and norms[k - 3] in lx.ARTICLES and norms[k - 2].isalpha() \
+                and (norms[k - 2] not in lx.FUNCTION_WORDS or norms[k - 2] in _PLAIN_ADJECTIVES | {"old", "new"}) \
+                and (k - 2) not in blocked and not toks.clause_start[k - 2]
+            passive = k + 2 < len(norms) and norms[k + 1] in ("was", "is", "s", "been") \
+                and (toks.tokens[k + 2].text.lower().endswith("ed") or norms[k + 2] in _IRREGULAR_PARTICIPLES)
+            contact = raw == "it" and k + 1 < len(norms) and (norms[k - 2] in lx.ARTICLES or adjective) \
+                and norms[k - 1] in self._place_nouns() and (toks.tokens[k + 1].text.lower().endswith(("s", "ed"))
+                                                             and norms[k + 1] not in lx.COPULAS | lx.FUNCTION_WORDS
+                                                             or passive) and not toks.clause_start[k + 1]
+            # ("the ride it powers": the place the one said before powers; "the old building it was built out from")
             # ("the boardwalk's gone under, and the plant at the far end of it is flooding": a place noun, then where
             # it stands, ending on "of it"; "a guy's hurt up on whatever drags the logs back out of it")
             ends = raw == "it" and norms[k - 1] == "of" and (k + 1 == len(norms) or toks.clause_start[k + 1]
@@ -4193,7 +4209,9 @@ class ReportAnalyzer:
             if not contact and (raw not in ("its", "their") or norms[k - 1] not in ("where", "that", "which")) \
                     or k in blocked or toks.clause_start[k] or toks.clause_start[k - 1]:
                 continue
-            last = _sole_antecedent(ex, toks, k - 2, k)
+            # (the clause may open its sentence on the head itself: "Flashover in the plant. Whatever feeds it the
+            # electric -- that's alight too")
+            last = _sole_antecedent(ex, toks, k - 1 if whatever_of or contact and not (ends or owned) else k - 2, k)
             if last is None:
                 continue  # (none, or another place said between: which one "its" means is not sure)
             out.append(self._mention(toks, k, k + 1, last.landmark, status="reference", reason=f"modifier of '{raw}'"))

@@ -149,11 +149,13 @@ _add(DESIRABLE, "open, dry|open dry|crew room open|got the crew room open|dry an
                "having soup|opened it up as|opened up as a|")
 _add(DESIRABLE, "welcome to wait|are welcome to wait|came through without a scratch|come through without a scratch|"
                "well above the tide line|above the tide line|we'll wait there|"
+               "power's on in there|power is on in there|you can plug|sheltered enough|still above the line|"
                "come and fill up there|fill up there|can fill up there|can fill up from|fill up from it|"
                "assembly spot|where everyone's gathering|where everybody's gathering|nothing to fall on anyone|"
                "dry and cool|can stand on it|can all stand on it|safe to stand on|fine to stand on|")
 # ("the staff say people are welcome to wait inside", "the bottle cellar is dry and cool", "Wharf's solid, crews can
-# stand on it", "I've landed six kids on Heron Rock, it's well above the tide line")
+# stand on it", "I've landed six kids on Heron Rock, it's well above the tide line", "the genny shed's working, power's
+# on in there", "the cricket field's still above the line")
 _add(DESIRABLE, "for everybody to go to|for everyone to go to|for people to go to|for folk to go to")
 _add(DESIRABLE, "has power and heating|got power and heating|power and heating on|can come in here|"
                "anybody can come in|anyone can come in|everyone can come in|can all come in")
