@@ -4984,3 +4984,10 @@ def test_dev92_phenomena(kb_analyzers, kb, text, expected):
 ])
 def test_dev93_phenomena(kb_analyzers, kb, text, expected):
     assert claims(kb_analyzers[kb], text) == expected
+
+
+def test_subject_pronoun_clause_of_only_hesitations(kb_analyzers):
+    """"the place it um is full of smoke": no words after the pronoun but a hesitation, so there is no link to read
+    (this raised IndexError); nothing is read by meaning around "it"."""
+    ex, _ = analyze(kb_analyzers["salmon_cannery"], "The compressor room is fine. The place it um is full of smoke.")
+    assert not any("(by meaning, 'it' =" in (p.via or "") for p in ex.places)

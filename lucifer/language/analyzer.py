@@ -3589,8 +3589,8 @@ class ReportAnalyzer:
             if ante is None:
                 continue
             link = " ".join(toks.tokens[i].text.lower() for i in range(k + 1, e) if norms[i] not in lx.HESITATIONS)
-            if not _verb_like(link.split()[0]):
-                continue
+            if not link or not _verb_like(link.split()[0]):
+                continue  # (only hesitations after the pronoun: "the place it um is full of smoke")
             target, via = self._partner_by_meaning(ante.landmark, link, toks.tokens[h].text.lower(),
                                                    self.PARTNER_CLAUSE_MIN_SCORE, self.PARTNER_CLAUSE_MARGIN)
             if target is None or target == ante.landmark:
