@@ -3380,10 +3380,10 @@ class ReportAnalyzer:
         for rel in self.kb.relations:
             if anchor not in (rel.subject, rel.object) or rel.subject == rel.object:
                 continue
-            if passive and (rel.subject == anchor) == rel.phrase.replace("_", " ").endswith(" by"):
+            if passive and (rel.subject == anchor) == _named_passive(rel.phrase):
                 continue  # (a relation named in the passive itself, "is fed by", has its doer as object)
-            if flowing and ((rel.object == anchor) != rel.phrase.replace("_", " ").endswith(" by")) != anchor_is_object:
-                continue  # (a relation named in the passive, "is fed by", has the anchor the other way round)
+            if flowing and _anchor_receives(rel, anchor) != anchor_is_object:
+                continue
             other = rel.object if rel.subject == anchor else rel.subject
             score = float(self._partner_relation_vectors[rel.phrase] @ v_link) \
                 + float(np.max(self._partner_name_vectors[other] @ v_head))
@@ -3547,6 +3547,21 @@ class ReportAnalyzer:
         subject is "it", right after its head ("but the place it keeps cold, that's still thick with fumes"), the words
         after the pronoun up to the clause's end its link."""
         n = len(norms)
+
+        def read(h: int, k: int, end: int, link: str) -> None:
+            """The description from the article before head ``h`` to ``end``, the pronoun at ``k``, read by meaning
+            around the pronoun's antecedent."""
+            ante = _sole_antecedent(ex, toks, h, k)
+            if ante is None:
+                return  # (none, or another place said since: which one the pronoun means is not sure)
+            target, via = self._partner_by_meaning(ante.landmark, link, toks.tokens[h].text.lower(),
+                                                   self.PARTNER_CLAUSE_MIN_SCORE, self.PARTNER_CLAUSE_MARGIN)
+            if target is None or target == ante.landmark:
+                return
+            ex.places.append(self._mention(toks, h - 1, end, target,
+                                           via=f"{via} ~ '{link}' (by meaning, '{norms[k]}' = {ante.landmark})"))
+            place_tokens.update(range(h - 1, end))
+
         for k in range(4, n):
             if norms[k] not in ("it", "there", "them") or k in place_tokens or k in marker_tokens:
                 continue
@@ -3557,20 +3572,9 @@ class ReportAnalyzer:
             if h is None or any(toks.clause_start[i] for i in range(h + 1, k + 1)) \
                     or any(i in place_tokens or i in marker_tokens or i in cue_tokens for i in range(h - 1, k)):
                 continue
-            ante = _sole_antecedent(ex, toks, h, k)
-            if ante is None:
-                continue  # (none, or another place said since: which one the pronoun means is not sure)
             link_idx = [i for i in range(h + 2, k) if norms[i] not in lx.HESITATIONS]
-            if not any(norms[i] not in lx.FUNCTION_WORDS and norms[i].isalpha() for i in link_idx):
-                continue
-            link = " ".join(toks.tokens[i].text.lower() for i in link_idx)
-            target, via = self._partner_by_meaning(ante.landmark, link, toks.tokens[h].text.lower(),
-                                                   self.PARTNER_CLAUSE_MIN_SCORE, self.PARTNER_CLAUSE_MARGIN)
-            if target is None or target == ante.landmark:
-                continue
-            ex.places.append(self._mention(toks, h - 1, k + 1, target,
-                                           via=f"{via} ~ '{link}' (by meaning, '{norms[k]}' = {ante.landmark})"))
-            place_tokens.update(range(h - 1, k + 1))
+            if any(norms[i] not in lx.FUNCTION_WORDS and norms[i].isalpha() for i in link_idx):
+                read(h, k, k + 1, " ".join(toks.tokens[i].text.lower() for i in link_idx))
         for k in range(3, n - 1):
             # "the compressor room ... but the place it keeps cold, that's still thick with fumes": the pronoun is the
             # clause's subject, the words after it up to the clause's end its link
@@ -3585,19 +3589,9 @@ class ReportAnalyzer:
             if e is None or e - k < 2 or any(i in place_tokens or i in marker_tokens or i in cue_tokens
                                               for i in range(h - 1, e)):
                 continue
-            ante = _sole_antecedent(ex, toks, h, k)
-            if ante is None:
-                continue
             link = " ".join(toks.tokens[i].text.lower() for i in range(k + 1, e) if norms[i] not in lx.HESITATIONS)
-            if not link or not _verb_like(link.split()[0]):
-                continue  # (only hesitations after the pronoun: "the place it um is full of smoke")
-            target, via = self._partner_by_meaning(ante.landmark, link, toks.tokens[h].text.lower(),
-                                                   self.PARTNER_CLAUSE_MIN_SCORE, self.PARTNER_CLAUSE_MARGIN)
-            if target is None or target == ante.landmark:
-                continue
-            ex.places.append(self._mention(toks, h - 1, e, target,
-                                           via=f"{via} ~ '{link}' (by meaning, 'it' = {ante.landmark})"))
-            place_tokens.update(range(h - 1, e))
+            if link and _verb_like(link.split()[0]):  # (not only hesitations: "the place it um is full of smoke")
+                read(h, k, e, link)
 
     @functools.cached_property
     def _partner_relation_vectors(self) -> dict[str, np.ndarray]:
@@ -3944,7 +3938,7 @@ class ReportAnalyzer:
                 if not (between[0] in lx.PREPOSITIONS | lx.RELATION_ENDINGS | lx.DESCRIPTION_OPENERS
                         or between[0].endswith(("s", "ed", "ing"))
                         or _verb_like(toks.tokens[linked[0]].text) and toks.tokens[linked[0]].text.lower().endswith("s")
-                        and between[0] not in lx.HEARSAY_VERBS | {"say", "tell", "reckon", "think", "claim"}
+                        and between[0] not in lx.HEARSAY_VERBS
                         and linked[0] + 1 < len(norms) and norms[linked[0] + 1] in lx.DETERMINERS | {"it", "them"}
                         # (a verb and its object, not a plural noun: "the top floor windows of the barracks")
                         # ("whatever drags the logs back out of it": a verb's "s" the key drops; not "a neighbour says")
@@ -4091,8 +4085,7 @@ class ReportAnalyzer:
                 # "the building that feeds the tank": a verb of supply before the anchor, the anchor its object; only
                 # a place that supplies the anchor (not one the anchor supplies)
                 supplying = {n: v for n, v in pool.items() if any(
-                    (r.subject, r.object) == (n, anchor.landmark) and not r.phrase.replace("_", " ").endswith(" by")
-                    or (r.subject, r.object) == (anchor.landmark, n) and r.phrase.replace("_", " ").endswith(" by")
+                    {r.subject, r.object} == {n, anchor.landmark} and _anchor_receives(r, anchor.landmark)
                     for r in self.kb.relations)}
                 if supplying:
                     pool = supplying
@@ -11115,6 +11108,20 @@ def _verb_like(word: str) -> bool:
 _MOVING_CREWS = frozenset(lx.CREW_NOUNS | {"crews", "teams", "we"})
 _CREW_MOVES = frozenset({"moving", "heading", "going", "headed", "moved", "redeploying", "relocating", "transferring"})
 _SUBJECT_PRONOUNS = frozenset({"they", "we", "you", "i", "he", "she", "people", "everyone"})
+def _named_passive(phrase: str) -> bool:
+    """A KB relation named in the passive ("is_fed_by"): its object is the doer.
+
+    >>> [_named_passive(p) for p in ("is_fed_by", "gravity feeds", "stands by")]
+    [True, False, True]
+    """
+    return phrase.replace("_", " ").endswith(" by")
+
+
+def _anchor_receives(rel: Relation, anchor: str) -> bool:
+    """``anchor`` is what ``rel`` is done to (its object, or the subject of a relation named in the passive)."""
+    return (rel.object == anchor) != _named_passive(rel.phrase)
+
+
 # Verbs of supplying one place from another, whose active voice says which end the doer is ("feeds the tank").
 _SUPPLY_VERBS = frozenset({"feeds", "feed", "fed", "supplies", "supply", "supplied", "fills", "fill", "filled",
                            "powers", "power", "powered", "pumps", "pump", "pumped", "drains", "drain", "drained",

@@ -170,9 +170,9 @@ _add(DESIRABLE, "|".join(f"{verb} {who} {where}"
 _add(CRITICAL, "|".join(f"{aux} {verb} in" for aux in ("haven't", "havent", "hasn't", "hasnt", "have not", "has not",
                                                            "not", "never")
                          for verb in ("radioed", "checked", "reported")))  # "haven't radioed in for forty minutes"
+# ("We've pulled a man out of the coffee shop, he's breathing"; "one of the engineers still out on it")
 _add(CRITICAL, "|".join(f"pulled {who} out of" for who in ("a man", "a woman", "someone", "somebody", "a child", "a kid",
                                                              "him", "her", "a lad", "a girl", "a boy")))
-# ("We've pulled a man out of the coffee shop, he's breathing"; "one of the engineers still out on it")
 _add(CRITICAL, "still out on it|still out on the|stuck out on it|still stuck out on")
 _add(CRITICAL, "didn't come back|didnt come back|did not come back|haven't come back|havent come back|"
                "can't see them anywhere|cant see them anywhere|can't find them anywhere|cant find them anywhere|"
@@ -397,11 +397,11 @@ BACK_REFERENCE_WORDS = {"it", "its", "s", "is", "has", "been", "thats", "that", 
 
 # Phrases that contain cue words but claim nothing ("the smoke alarm went off", "fire crew on site").
 NEUTRAL_PHRASES = ["a bonfire",
-                   # (a warning, nothing comes down: "nobody come down here")
-                   # (a warning of what could set it off: "nobody goes in with anything that sparks")
                    # (a verb of a relation: "the wall that shelters the yard")
                    "that shelters the", "which shelters the", "that shields the", "which shields the",
+                   # (a warning of what could set it off: "nobody goes in with anything that sparks")
                    "anything that sparks", "anything that could spark", "anything that might spark",
+                   # (a warning, nothing comes down: "nobody come down here")
                    "nobody come down here", "no one come down here", "don't come down here", "do not come down here",
                    "nobody come down there", "don't come down there",
                    # (how far a place reaches, no flood: "the houses whose back gardens go right up to the car park")
