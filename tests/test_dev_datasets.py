@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev94) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev95) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -194,6 +194,10 @@ LAVENDER_DISTILLERY = ROOT / "knowledge_bases" / "lavender_distillery"
 TIDAL_BARRAGE = ROOT / "knowledge_bases" / "tidal_barrage"
 ICE_HOTEL = ROOT / "knowledge_bases" / "ice_hotel"
 GLASSWORKS_TOWN = ROOT / "knowledge_bases" / "glassworks_town"
+CHOCOLATE_FACTORY_TOWN = ROOT / "knowledge_bases" / "chocolate_factory_town"
+SEAWEED_COAST = ROOT / "knowledge_bases" / "seaweed_coast"
+BELL_FOUNDRY_VILLAGE = ROOT / "knowledge_bases" / "bell_foundry_village"
+SCOUT_JAMBOREE = ROOT / "knowledge_bases" / "scout_jamboree"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -541,6 +545,11 @@ SETS = {
     "dev94/ice_hotel": _set("dev94/ice_hotel.jsonl", ICE_HOTEL, "ih94", TWENTY, sep=""),
     "dev94/tidal_barrage": _set("dev94/tidal_barrage.jsonl", TIDAL_BARRAGE, "tb94", TWENTY, sep=""),
     "dev94/glassworks_town": _set("dev94/glassworks_town.jsonl", GLASSWORKS_TOWN, "gw94", TWENTY, sep=""),
+    "dev95/chocolate_factory_town": _set("dev95/chocolate_factory_town.jsonl", CHOCOLATE_FACTORY_TOWN, "cf95", TWENTY,
+                                         sep=""),
+    "dev95/seaweed_coast": _set("dev95/seaweed_coast.jsonl", SEAWEED_COAST, "sw95", TWENTY, sep=""),
+    "dev95/bell_foundry_village": _set("dev95/bell_foundry_village.jsonl", BELL_FOUNDRY_VILLAGE, "bf95", TWENTY, sep=""),
+    "dev95/scout_jamboree": _set("dev95/scout_jamboree.jsonl", SCOUT_JAMBOREE, "sj95", TWENTY, sep=""),
 }
 
 
