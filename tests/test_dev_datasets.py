@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev95) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev96) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -198,6 +198,10 @@ CHOCOLATE_FACTORY_TOWN = ROOT / "knowledge_bases" / "chocolate_factory_town"
 SEAWEED_COAST = ROOT / "knowledge_bases" / "seaweed_coast"
 BELL_FOUNDRY_VILLAGE = ROOT / "knowledge_bases" / "bell_foundry_village"
 SCOUT_JAMBOREE = ROOT / "knowledge_bases" / "scout_jamboree"
+GEOTHERMAL_FIELD = ROOT / "knowledge_bases" / "geothermal_field"
+SEAL_SANCTUARY = ROOT / "knowledge_bases" / "seal_sanctuary"
+CIDER_MILL_FARM = ROOT / "knowledge_bases" / "cider_mill_farm"
+MOTOCROSS_TRACK = ROOT / "knowledge_bases" / "motocross_track"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -550,6 +554,10 @@ SETS = {
     "dev95/seaweed_coast": _set("dev95/seaweed_coast.jsonl", SEAWEED_COAST, "sw95", TWENTY, sep=""),
     "dev95/bell_foundry_village": _set("dev95/bell_foundry_village.jsonl", BELL_FOUNDRY_VILLAGE, "bf95", TWENTY, sep=""),
     "dev95/scout_jamboree": _set("dev95/scout_jamboree.jsonl", SCOUT_JAMBOREE, "sj95", TWENTY, sep=""),
+    "dev96/geothermal_field": _set("dev96/geothermal_field.jsonl", GEOTHERMAL_FIELD, "gf96", TWENTY, sep=""),
+    "dev96/seal_sanctuary": _set("dev96/seal_sanctuary.jsonl", SEAL_SANCTUARY, "ss96", TWENTY, sep=""),
+    "dev96/cider_mill_farm": _set("dev96/cider_mill_farm.jsonl", CIDER_MILL_FARM, "cm96", TWENTY, sep=""),
+    "dev96/motocross_track": _set("dev96/motocross_track.jsonl", MOTOCROSS_TRACK, "mx96", TWENTY, sep=""),
 }
 
 
