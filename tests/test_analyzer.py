@@ -4986,6 +4986,86 @@ def test_dev93_phenomena(kb_analyzers, kb, text, expected):
     assert claims(kb_analyzers[kb], text) == expected
 
 
+# Stop 44: what the dev95/dev96 blind rounds' tuned sets showed (their reports and variations of them).
+@pytest.mark.parametrize(("kb", "text", "expected"), [
+    # a place put against the one talked about ("not the car park") is not the place a danger in a sentence
+    # before it is said of
+    ("lavender_distillery", "the lawn? that's where everyone's gathering, not the car park",
+     [("picnic meadow", "safe_haven")]),
+    ("lavender_distillery", "ok so the, uh, the picnic field, the lawn? that's where everyone's gathering, the "
+                            "firemen said it's safe there, send the buses there... not the car park, the car park's "
+                            "got smoke rolling all over it",
+     [("picnic meadow", "safe_haven"), ("visitor car park", "blaze_or_fumes")]),
+    # "going under" said of a place; mud gone soft
+    ("seaweed_coast", "pontoon's, uh, it's under water, sorry no, correction, the pontoon's a safe landing, it's the "
+                      "quay that's going under",
+     [("harbour pier", "water_and_mud_danger"), ("pontoon", "dry_and_safe")]),
+    ("seal_sanctuary", "it's the mud that's the problem, not the marsh, um, the mud's gone really soft out past the "
+                       "slip, nobody walk out there", [("mudflats", "tide_and_flood")]),
+    # a leak (and a hole) written as it sounds, inside a longer danger phrase
+    ("seaweed_coast", "hello coast guard there is ammonia leek at the fridge box and my colleague he is lying inside "
+                      "it very sick please come quick",
+     [("cold store", "fire_fume_or_wreckage"), ("cold store", "person_in_difficulty")]),
+    ("geothermal_field", "ranger check at the silica steps. there is a big whole in the crust keep people off them",
+     [("sinter terraces", "gas_or_ground_danger")]),
+    # "on the ground at the bottom of it": where a person lies, by the place, no other place
+    ("chocolate_factory_town", "the sugar silo's venting smoke, and one of the lads came off the ladder, he's on the "
+                               "ground at the bottom of it, leg's broken",
+     [("sugar silo", "fire_or_fumes"), ("sugar silo", "person_in_need")]),
+    # "everything it looks out over": all that the place "it" takes up so stands to
+    ("seaweed_coast", "the office is on fire, and everything it looks out over is on fire as well",
+     [("drying racks", "fire_fume_or_wreckage"), ("site office", "fire_fume_or_wreckage")]),
+    # "out on the flats, past the pools": a clause that only says where the place before it lies
+    ("seaweed_coast", "er the kid's stuck at the rock pools, no, sorry, out on the flats, past the pools, she's in up "
+                      "to her knees", [("tidal flats", "person_in_difficulty")]),
+    # a danger said, then "that's cleared now" / "has cleared": gone, the place not said to be safe
+    ("seal_sanctuary", "um yeah so the chlorine smell at the filters, that's, er, that's cleared now, so stand down "
+                       "on that", []),
+    ("seal_sanctuary", "the smoke at the filters has cleared", []),
+    ("seal_sanctuary", "fire at the cafe, the filters are cleared and safe",
+     [("café", "no_go_hazard"), ("filtration plant", "safe_haven")]),
+    ("geothermal_field", "The gas over the vents the lookout looks down on has cleared, readings are back to zero.",
+     []),
+    # a notice pinned up is no one pinned
+    ("seal_sanctuary", "All staff, reminder that tonight's tide tables are pinned up in the vols' hut. High water is "
+                       "21:40.", []),
+    ("seal_sanctuary", "a volunteer is pinned under a fallen beam in the vols' hut",
+     [("volunteers' cabin", "person_in_trouble")]),
+    # nobody has seen him come out
+    ("seal_sanctuary", "The generator house is on fire. Mick the mechanic was working in there and nobody has seen "
+                       "him come out.",
+     [("generator house", "no_go_hazard"), ("generator house", "person_in_trouble")]),
+    # people moved to a place are no description of another place
+    ("seal_sanctuary", "Live wire in the education barn. The school group have been moved across to the tea room, "
+                       "which is dry and safe.", [("café", "safe_haven"), ("education barn", "no_go_hazard")]),
+    # "... is starting to fill up as well": the same danger as the clause before
+    ("seal_sanctuary", "The kitchen the cold store opens off is full of smoke, and the place that kitchen sends the "
+                       "feeds over to is starting to fill up as well.",
+     [("fish kitchen", "no_go_hazard"), ("pup hospital", "no_go_hazard")]),
+    # where a danger spills to gets nothing from the sentence before
+    ("seal_sanctuary", "Keeper slipped and cracked his head at the weaning pool, and the pool its gate opens into is "
+                       "overflowing onto the path.",
+     [("release pool", "tide_and_flood"), ("weaning pool", "person_in_trouble")]),
+    # "the well just downhill of it": the relation, not the well named last
+    ("geothermal_field", "Gas alarm on pad B, and the well just downhill of it is reading high too.",
+     [("reinjection well", "gas_or_ground_danger"), ("wellhead pad B", "gas_or_ground_danger")]),
+    # scalding and boiling are heat; an order to keep out names no danger of its own beside them
+    ("geothermal_field", "the bathing pool's safe, correction, correction, it's scalding, the spring's surged and the "
+                         "water's boiling now, keep everyone out of it", [("warm pool", "heat_danger")]),
+    # people coming down off a place: nothing fallen
+    ("geothermal_field", "It's safe here at the locals' pool. Quite a few people have come down off the trail to wait "
+                         "here.", [("warm pool", "safe_refuge")]),
+    ("geothermal_field", "rocks have come down off the slope onto the trail",
+     [("hot springs trail", "gas_or_ground_danger")]),
+    # "the kelp it shelters from the swell": a relation's verb, no shelter and no negation of what follows
+    ("seaweed_coast", "Kayaker clinging to the Scart, and, um, the kelp it shelters from the swell has all torn loose "
+                      "and is drifting towards the harbour.",
+     [("black rock", "person_in_difficulty"), ("kelp lines", "water_and_mud_danger")]),
+])
+def test_dev95_phenomena(kb_analyzers, kb, text, expected):
+    assert claims(kb_analyzers[kb], text) == expected
+
+
 def test_subject_pronoun_clause_of_only_hesitations(kb_analyzers):
     """"the place it um is full of smoke": no words after the pronoun but a hesitation, so there is no link to read
     (this raised IndexError); nothing is read by meaning around "it"."""

@@ -492,6 +492,10 @@ class ReportAnalyzer:
                 entries.setdefault(norm_phrase(form), (term.category, "glossary"))
         for phrase in lx.NEUTRAL_PHRASES:
             entries[norm_phrase(phrase)] = ("", "neutral")
+        for key, val in list(entries.items()):
+            # "ammonia leek": a leak misspelt as it sounds, inside a phrase of more words (not "the leek beds")
+            if len(key) >= 2 and val[1] != "neutral" and set(key) & set(_SOUND_ALIKE_WORDS):
+                entries.setdefault(tuple(_SOUND_ALIKE_WORDS.get(w, w) for w in key), val)
         for key, val in entries.items():
             self._cues.add(key, val)
 
@@ -2328,7 +2332,9 @@ class ReportAnalyzer:
                 end += 1
             else:
                 goes_on = end < len(norms) and not toks.clause_start[end] \
-                    and norms[end] not in lx.COPULAS | lx.ANAPHOR_VERBS \
+                    and (norms[end] not in lx.COPULAS | lx.ANAPHOR_VERBS
+                         # ("the well just downhill of it": where it stands, said of it)
+                         or norms[end] in ("just", "right") and self._relations.match_at(norms, end + 1) is not None) \
                     and not toks.tokens[i].text.lower().endswith(("'s", "’s"))
             if goes_on and not (norms[i - 1] in ("that", "this") and (norms[end] in self._relation_verbs
                                                                       or self._relations.match_at(norms, end) is not None)):
@@ -3078,6 +3084,17 @@ class ReportAnalyzer:
             k = p.start_tok
             while k > 0 and norms[k - 1] in lx.ARTICLES | {"to"} and k > p.start_tok - 2:
                 k -= 1
+            b = k - 1 - (k >= 2 and norms[k - 2] in ("just", "right", "a", "bit"))
+            if b >= 1 and norms[k - 1] in ("past", "beyond") and toks.clause_start[b] \
+                    and (p.end_tok == len(norms) or toks.clause_start[p.end_tok]) \
+                    and not any(toks.clause_start[j] for j in range(b + 1, p.end_tok)):
+                # "stuck out on the flats, past the pools, ...": a clause of its own that only says where the place
+                # said just before it lies
+                q = next((q for q in ex.places if q.status == "active" and q.end_tok == b and q.landmark != p.landmark
+                          and toks.sentence_of[q.start_tok] == toks.sentence_of[p.start_tok]), None)
+                if q is not None:
+                    ex.places[idx] = replace(p, status="reference", reason=f"reference point for '{q.text}'")
+                    continue
             if k < 2 or norms[k - 1] not in ("nearest", "closest") or not norms[k - 2].isalpha() \
                     or norms[k - 2] in lx.FUNCTION_WORDS or norms[k - 2] in lx.COPULAS \
                     or any(toks.clause_start[j] for j in range(k - 1, p.start_tok + 1)):
@@ -3682,6 +3699,8 @@ class ReportAnalyzer:
                 continue
             if norms[k - 1] == "one" and norms[k] == "of":
                 continue  # "one of my riders came off on widowmaker": one of them, no place
+            if norms[k] in _PEOPLE_WORDS | _PEOPLE_GROUPS:
+                continue  # "the school group have been moved across to the tea room": people the noun says whose
             if norms[k - 1] in lx.ROUTE_HEADS and all(w in lx.ROUTE_LINKS for w in norms[k:j]):
                 continue  # "the road down to the boatyard is impassable": the way to the place, no relation
             link = " ".join(toks.tokens[i].text.lower() for i in range(k, j))
@@ -3899,6 +3918,8 @@ class ReportAnalyzer:
                     break
             if head is None:
                 continue
+            if norms[head] == "ground" and norms[max(0, head - 2):head] == ("on", "the"):
+                continue  # "he's on the ground at the bottom of it": where he lies, by the anchor, no other place
             if norms[head] == norms[anchor.end_tok - 1] and all(norms[i] in lx.DETERMINERS | lx.FILLERS
                                                                 for i in range(head + 1, anchor.start_tok)):
                 continue  # "the hut the toll hut's roof is half off": the speaker starts again on a fuller name
@@ -4660,6 +4681,9 @@ class ReportAnalyzer:
                     return  # "a car swept against the Mitre Arch": where a thing is, no description of a place
                 if h >= 0 and norms[h] in lx.LAY_PERSONS | lx.WORKER_PERSONS | {"she", "he", "they", "someone", "somebody"}:
                     return  # "a nurse climbed up onto the big wall": where a person went, no description of a place
+                if any(norms[i] in lx.MOVING_VERBS and i > 0 and norms[i - 1] in ("been", "being", "was", "were", "get", "got")
+                       for i in range(a, b)):
+                    return  # "the school group have been moved across to the tea room": where people were taken
                 if anchor.via is not None and b < len(norms) and norms[b] in ("that", "which"):
                     return  # "the rock face that looks down over the holiday park": the place resolved already; the
                     # word before its "that" ("face", as in "facing") is its head, no relation of its own
@@ -7024,6 +7048,7 @@ class ReportAnalyzer:
         blocked |= ex.relation_tokens
         self._place_tokens = {i for p in ex.places for i in range(p.start_tok, p.end_tok)}
         self._places_now = ex.places
+        self._relation_tokens_now = frozenset(ex.relation_tokens)
         self._marker_tokens = marker_tokens
         cues: list[CueMention] = []
         shut: set[int] = set()
@@ -7246,6 +7271,13 @@ class ReportAnalyzer:
                                                                   or norms[a - 1] in ("re", "m") and a > 1
                                                                   and norms[a - 2] in ("we", "i", "you")):
                 continue  # "we come down past the fish market": the speaker moving, nothing fallen
+            if norms[a] in ("come", "came", "coming") and (subj := next(
+                    (i for i in range(a - 1, max(-1, a - 5), -1) if norms[i] not in lx.FILLERS | {
+                        "have", "ve", "has", "had", "all", "just", "now", "re"}), None)) is not None \
+                    and subj not in self._place_tokens and not toks.clause_start[subj + 1] \
+                    and (norms[subj] in _PEOPLE_WORDS | _PEOPLE_GROUPS or norms[subj] in ("everyone", "everybody")):
+                continue  # "quite a few people have come down off the trail": people moving, nothing fallen
+                # (not "the ceiling of the chemist's has come down")
             if b - a == 1 and a >= 3 and norms[a - 1] == "the" and norms[a - 2] == "of" and norms[a - 3] in _COMPASS \
                     and b < len(norms) and norms[b].isalpha() and not toks.clause_start[b] \
                     and (norms[b] not in lx.COPULAS | lx.FUNCTION_WORDS or norms[b] == "well") \
@@ -7451,9 +7483,13 @@ class ReportAnalyzer:
         undesirable = {c.name for c in self.kb.categories_with_role(Role.UNDESIRABLE)}
         if len(undesirable) < 2:
             return claims
+        def unspecific(c: Claim) -> bool:
+            # (nor does an order to keep out or get out: "it's scalding, keep everyone out of it")
+            return c.cue.reason.endswith(self.NOT_DESIRABLE) or norm_phrase(c.cue.text) in _UNSPECIFIC_DANGERS
+
         specific = {(c.place.landmark, c.cue.category) for c in claims
-                    if c.cue.category in undesirable and not c.cue.reason.endswith(self.NOT_DESIRABLE)}
-        return [c for c in claims if not (c.cue.reason.endswith(self.NOT_DESIRABLE)
+                    if c.cue.category in undesirable and not unspecific(c)}
+        return [c for c in claims if not (unspecific(c) and c.cue.category in undesirable
                                           and any(lm == c.place.landmark and cat != c.cue.category
                                                   for lm, cat in specific))]
 
@@ -7972,8 +8008,11 @@ class ReportAnalyzer:
         done = {id(c.place) for c in claims} | {id(c.place) for c in denied}
         done_keys = {(c.place.start_tok) for c in claims} | {c.place.start_tok for c in denied}
         silent = getattr(self, "_non_report_tokens", set())
+        claimed = {c.place.landmark for c in claims}
+        # (nor a head word that takes up a place already claimed: "the fields ... are burning now, the wind's driving
+        # it straight across the terraces")
         todo = [p for p in ex.places if p.status == "active" and id(p) not in done and p.start_tok not in done_keys
-                and p.start_tok not in silent]
+                and p.start_tok not in silent and not (p.landmark in claimed and "' named last, " in p.reason)]
         if not todo:
             return []
         toks = ex.tokens
@@ -8711,6 +8750,25 @@ class ReportAnalyzer:
         return self._role_category.get("undesirable") or next(
             (c.name for c in self.kb.categories_with_role(Role.UNDESIRABLE)), None)
 
+    def _cleared_of_danger_before(self, toks: Tokens, norms: tuple[str, ...], k: int) -> bool:
+        """"the chlorine smell at the filters, that's cleared now": "cleared" at ``k`` opens its clause with only words
+        that take up what was said before, and the clause before has a danger in it: the danger has gone."""
+        a = k
+        while a > 0 and not toks.clause_start[a] and norms[a - 1] in lx.BACK_REFERENCE_WORDS | lx.FILLERS:
+            a -= 1
+        if a == k or not toks.clause_start[a] or a == 0 or set(norms[a:k]) & _CLEARING_SUBJECTS:
+            return False  # (not "we've cleared it": the crew has emptied the place)
+        b = a - 1
+        while b > 0 and not toks.clause_start[b]:
+            b -= 1
+        while b > 0 and all(w in lx.BACK_REFERENCE_WORDS | lx.FILLERS for w in norms[b:a]):
+            a = b  # ("that's, er, that's cleared now": past the restart)
+            b -= 1
+            while b > 0 and not toks.clause_start[b]:
+                b -= 1
+        return any(self.kb.category_by_name[c].role == Role.UNDESIRABLE and b <= s < a
+                   for s, _, (c, _src) in self._cues.find_all(norms) if c in self.kb.category_by_name)
+
     def _apply_cue_negation(self, toks: Tokens, norms: tuple[str, ...], cue: CueMention) -> CueMention:
         # negator shortly before, inside the clause: "no fire", "not safe", "no one trapped"
         negated_by = None
@@ -8801,6 +8859,8 @@ class ReportAnalyzer:
                 break  # "no entry till it's shored up": what will end it, not that it has
             if k in ends and ends[k] > k:
                 k = ends[k]  # a place (or a whole relational description) counts as one word
+                while k < len(norms) and k in getattr(self, "_relation_tokens_now", ()) and not toks.clause_start[k]:
+                    k += 1  # (with the words that relate it: "the gas over the vents the lookout looks down on")
                 steps += 1
                 continue
             if norms[k] in ("the", "a", "an") and k + 1 < len(norms) and not toks.clause_start[k + 1]:
@@ -8922,6 +8982,9 @@ class ReportAnalyzer:
                 h = None  # (a clause of its own, "no sign of him", needs no "it's" before it)
             if h is None and j > k and j < len(norms) and norms[j] == "out":
                 h = (j + 1, "out")
+            if h is None and j > k and j < len(norms) and norms[j] == "cleared" and undesirable \
+                    and not set(norms[k:j]) & _CLEARING_SUBJECTS:
+                h = (j + 1, "cleared")  # "the chlorine smell at the filters, that's cleared now": the danger gone
             if h is None and j > k and j < len(norms) and norms[j] in ("not", "isnt", "wasnt", "arent", "werent") \
                     and (j + 1 >= len(norms) or toks.clause_start[j + 1]):
                 h = (j + 1, norms[j])  # "I said the archway was coming down — it's not, ...": said of it, denied
@@ -8942,14 +9005,18 @@ class ReportAnalyzer:
                 j -= 1
             if j >= 1 and norms[j] == "on" and norms[j - 1] == "negative":
                 negated_by = "negative on"  # "negative on the fire at the ice house"
-        if negated_by is None and cancelled_by is None and self.kb.category_by_name[cue.category].role == Role.DESIRABLE \
-                and norms[cue.start_tok:cue.end_tok] == ("cleared",) and cue.start_tok > 0 and (
-                    norms[cue.start_tok - 1] == "been"
-                    or toks.tokens[cue.start_tok - 1].text.lower().endswith(("'s", "’s")) and any(
-                        b == cue.start_tok and self.kb.category_by_name[c].role == Role.UNDESIRABLE
-                        for _, b, (c, src) in self._cues.find_all(norms) if c in self.kb.category_by_name)):
-            # "the rockfall at the elbow has been cleared", "the bad air's cleared" (the danger's own "'s"): the danger
-            # is gone, the place is not said to be safe
+        cleared = negated_by is None and cancelled_by is None and cue.start_tok > 0 \
+            and self.kb.category_by_name[cue.category].role == Role.DESIRABLE \
+            and norms[cue.start_tok:cue.end_tok] == ("cleared",)
+        if cleared and self._cleared_of_danger_before(toks, norms, cue.start_tok):
+            # "the chlorine smell at the filters, that's cleared now": the danger the clause before spoke of
+            return replace(cue, polarity="denied", reason="the danger before it was cleared")
+        if cleared and (norms[cue.start_tok - 1] in ("been", "has", "have")
+                        or toks.tokens[cue.start_tok - 1].text.lower().endswith(("'s", "’s")) and any(
+                            b == cue.start_tok and self.kb.category_by_name[c].role == Role.UNDESIRABLE
+                            for _, b, (c, src) in self._cues.find_all(norms) if c in self.kb.category_by_name)):
+            # "the rockfall at the elbow has been cleared", "the bad air's cleared" (the danger's own "'s"), "the smoke
+            # at the filters has cleared": the danger is gone, the place is not said to be safe
             for i in range(cue.start_tok - 1, -1, -1):
                 if toks.clause_start[i + 1]:
                     break
@@ -9631,6 +9698,16 @@ class ReportAnalyzer:
             also = before[-2:] in (["as", "can"], ["as", "is"], ["as", "does"], ["as", "has"], ["as", "are"],
                                    ["as", "will"]) or before[-1:] == ["and"] and (
                 after[:1] == ["too"] or after[:2] == ["as", "well"])
+            if not also and before[-1:] == ["and"]:
+                # "... is full of smoke, and the place that kitchen sends the feeds over to is starting to fill up as
+                # well": a clause that says only that the same goes for it
+                e = p.end_tok
+                while e < len(norms) and not toks.clause_start[e] and e - p.end_tok < 8:
+                    e += 1
+                told = [w for w in norms[p.end_tok:e] if w not in lx.FILLERS or w == "well"]
+                also = 2 <= len(told) <= 7 and told[0] in ("is", "s", "are", "has", "was") \
+                    and (told[-2:] == ["as", "well"] or told[-1:] == ["too"]) \
+                    and not any(c.start_tok in range(p.end_tok, e) for c in cues)
             if also:
                 # "City hall has been secured and can take evacuees, as can the post office"; "the police post is
                 # being used for shelter and um the grocer's too": what the place before it in the sentence has
@@ -9751,6 +9828,11 @@ class ReportAnalyzer:
                                                             for r in ex.places) for q in seg_places.get(donor, [])):
                 continue  # "following the brook down from the ford - the field it runs along the bottom of has gone
                 # under": the brook is the "it" of the place described there, not said to be under
+            np0 = _noun_phrase_start(norms, p)
+            if donor is not None and donor != k and np0 >= 2 and norms[np0 - 1] in ("onto", "into", "over", "across") \
+                    and any(c.end_tok == np0 - 1 and c.category != self._person_category for c in cues):
+                continue  # "..., and the pool its gate opens into is overflowing onto the path": where the danger
+                # spills, not a place the sentence before says anything of
             if donor is not None and tail[:1] and tail[0] in lx.COPULAS | {"looks", "seems", "has", "got"} and any(
                     _anchored_at(q, p.landmark) for q in seg_places.get(donor, [])):
                 continue  # "the library is quiet but the hall next to it is burning": its own word, then the anchor
@@ -10390,6 +10472,9 @@ class ReportAnalyzer:
                     # given way in the church"), though that place has a danger of its own
                     later = next((i for i in range(k + 1, len(segs)) if sentence_of[segs[i][0]] == here
                                   and seg_places.get(i)), None)
+                    if later is not None and all(q.status == "negated" for q in seg_places[later]):
+                        return j  # ("the lawn? that's where everyone's gathering, not the car park": a place put
+                        # against the one talked about, not the one the danger is said of)
                     if later is not None and (not seg_cues.get(later) or opening == "but"):
                         return later
                     if later == k + 1 and _cue_list_into(k, later, segs, seg_cues, norms):
@@ -10786,6 +10871,10 @@ _OVERRUN_GROUND = frozenset({"road", "lane", "track", "path", "towpath", "footpa
 # Water that stands or is held, besides the flowing kind ("the dew pond's bone dry": no water in it)
 _STILL_WATERS = frozenset({"pond", "pool", "reservoir", "ditch", "drain", "dyke", "rhyne", "well", "fountain", "lagoon",
                            "moat", "leat", "cistern", "tarn", "lido"})
+# Collective nouns for people ("the school group", "the walking party").
+# (word keys: "parties" is "partie")
+_PEOPLE_GROUPS = frozenset({"group", "party", "partie", "class", "classe", "team", "crowd", "family", "familie", "tour",
+                            "trip", "pupil", "children", "kid", "visitor", "guest", "resident", "staff"})
 _PEOPLE_WORDS = _PERSON_WORDS | lx.LAY_PERSONS | lx.WORKER_PERSONS | {"men", "women", "folk", "folks"}
 _LIST_OPENERS = frozenset({"and", "there", "theres", "is", "are", "lots", "of", "loads", "some", "also", "got", "weve"})
 
@@ -11122,6 +11211,14 @@ def _anchor_receives(rel: Relation, anchor: str) -> bool:
     return (rel.object == anchor) != _named_passive(rel.phrase)
 
 
+# Words of danger phrases a caller's spelling or speech-to-text writes as another word ("ammonia leek").
+_SOUND_ALIKE_WORDS = {"leak": "leek", "leaking": "leeking", "leaked": "leeked", "hole": "whole"}
+# Who may clear a place of people ("we've cleared it"), not a danger that has cleared.
+_CLEARING_SUBJECTS = frozenset({"ive", "weve", "theyve", "they", "theyre", "ve", "re", "we", "i"})
+# Danger words that name no kind of danger, only to keep out or get out ("keep everyone out of it").
+_UNSPECIFIC_DANGERS = frozenset(norm_phrase(p) for p in (
+    "everyone out", "get everyone out", "everybody out", "keep out", "stay out", "stay away", "keep away", "keep clear",
+    "no entry", "do not enter", "don't go in", "evacuate", "evacuating", "unsafe", "dangerous", "danger"))
 # Verbs of supplying one place from another, whose active voice says which end the doer is ("feeds the tank").
 _SUPPLY_VERBS = frozenset({"feeds", "feed", "fed", "supplies", "supply", "supplied", "fills", "fill", "filled",
                            "powers", "power", "powered", "pumps", "pump", "pumped", "drains", "drain", "drained",

@@ -176,7 +176,10 @@ _add(CRITICAL, "|".join(f"pulled {who} out of" for who in ("a man", "a woman", "
 _add(CRITICAL, "still out on it|still out on the|stuck out on it|still stuck out on")
 _add(CRITICAL, "didn't come back|didnt come back|did not come back|haven't come back|havent come back|"
                "can't see them anywhere|cant see them anywhere|can't find them anywhere|cant find them anywhere|"
-               "can't see him anywhere|can't see her anywhere|can't find him anywhere|can't find her anywhere")
+               "can't see him anywhere|can't see her anywhere|can't find him anywhere|can't find her anywhere|"
+               "nobody has seen him come out|nobody has seen her come out|no one has seen him come out|"
+               "no one has seen her come out|no one's seen him come out|no one's seen her come out|"
+               "haven't come out|havent come out")
 _add(CRITICAL, """
 folk up on the roofs|people up on the roofs|got folk up on the roofs|got people up on the roofs|up on their roofs|
 can't pull himself out|can't pull herself out|cant pull himself out|cant pull herself out|up to his chest|up to her chest|
@@ -397,8 +400,11 @@ BACK_REFERENCE_WORDS = {"it", "its", "s", "is", "has", "been", "thats", "that", 
 
 # Phrases that contain cue words but claim nothing ("the smoke alarm went off", "fire crew on site").
 NEUTRAL_PHRASES = ["a bonfire",
+                   # (a notice put up: "tide tables are pinned up in the vols' hut")
+                   "pinned up in", "pinned up on", "pinned up at", "pinned up by",
                    # (a verb of a relation: "the wall that shelters the yard")
                    "that shelters the", "which shelters the", "that shields the", "which shields the",
+                   "it shelters from", "it shelters from the", "it shields from the",
                    # (a warning of what could set it off: "nobody goes in with anything that sparks")
                    "anything that sparks", "anything that could spark", "anything that might spark",
                    # (a warning, nothing comes down: "nobody come down here")
@@ -721,7 +727,7 @@ GENERIC_HEADS = {
     "park", "field", "ground", "grounds", "point", "thing", "bit", "side", "corner", "room",
     "space", "green", "lawn", "garden", "gardens", "road", "street", "lane", "alley", "terrace", "plot", "land", "apartments",
     "flats", "bay", "wing", "hotel", "inn", "library", "hospital", "quarter", "section", "zone", "ones",
-    "neighbour", "neighbor", "door", "location", "address", "greenspace", "premise", "whatever", "wherever", "whichever", "whoever", "what", "works", "work",
+    "neighbour", "neighbor", "door", "location", "address", "greenspace", "premise", "whatever", "wherever", "whichever", "whoever", "everything", "what", "works", "work",
     "row", "parade", "arcade", "kiosk", "stall", "lodge", "chapel", "compartment", "tent", "deck", "campsite",
 }
 
@@ -1145,7 +1151,7 @@ RELATIVE_COPULAS = {("that", "is"), ("which", "is"), ("that", "s"), ("which", "s
 KIND_VOTE_STOPWORDS = frozenset({"have", "with", "from", "that", "this", "been", "were", "into", "onto", "their",
                                  "there", "they", "them", "what", "when", "where", "which", "while", "will", "would",
                                  "shedding", "also", "just", "only", "some", "such", "than", "then", "very", "full",
-                                 "completely", "totally", "showing", "really"})
+                                 "completely", "totally", "showing", "really", "itself", "themselves"})
 KIND_FALLBACK = {"breakage": "collapse", "smoke": "fire", "storm": "collapse", "fire": "explosion", "vehicle": "access", "disorder": "fire"}
 DANGER_KINDS: dict[str, list[str]] = {
     "snow": ["avalanche", "avalanches", "avalanched", "snow slide", "snowslide", "snow slip", "slab avalanche",
@@ -1256,6 +1262,11 @@ DANGER_KINDS: dict[str, list[str]] = {
               "theres water in", "water pouring in", "water's pouring in", "water is pouring in",
               "water's still pouring", "water still pouring in", "water is come in", "full of water",
               "filled with water", "filling with water", "filling up with water", "it's going under",
+              "that's going under", "is going under", "are going under",
+              "surge is coming through", "surge coming through", "surge is coming back through",
+              "surge coming back through", "surge is coming straight back through", "surge is coming straight through",
+              "surge is coming over", "surge coming over", "surge's coming through", "surge's coming over",
+              "gone soft", "has gone soft", "gone all soft",
               "it's gone under", "going under fast", "all under", "all under water", "roofs only showing",
               "only the roofs showing", "floor's gone under", "floor has gone under", "whole floor's gone under",
               "burst main", "burst pipe", "pipe burst", "pipe's burst", "overflowing", "overflowed", "overtopped",
@@ -1596,7 +1607,8 @@ DANGER_KIND_EXTRA: dict[str, list[str]] = {
               "lost the roof", "lost its leads", "lost the leads", "roof lifted", "blown clean off", "blown off",
               "off its hinges", "pulled up by the roots", "open to the sky", "rain's coming in", "rain is coming in",
               "rain coming straight in", "rain's coming straight in", "rain pouring in", "rain is pouring"],
-    "fire": ["starting to burn", "started to burn", "begun to burn", "beginning to burn", "taken hold of", "has taken hold", "taken hold in", "took hold of", "taking hold of", "flare-up", "flare up", "flared up", "flaring up", "burning debris", "roof is going up", "houses have caught", "have caught", "is going up", "s going up", "going up properly", "roof's going up", "roofs going up", "thatch is going up", "thatch's going up",
+    "fire": ["it's scalding", "it is scalding", "scalding hot", "water is boiling", "water's boiling now", "boiling hot",
+             "starting to burn", "started to burn", "begun to burn", "beginning to burn", "taken hold of", "has taken hold", "taken hold in", "took hold of", "taking hold of", "flare-up", "flare up", "flared up", "flaring up", "burning debris", "roof is going up", "houses have caught", "have caught", "is going up", "s going up", "going up properly", "roof's going up", "roofs going up", "thatch is going up", "thatch's going up",
              "thatch going up", "embers are landing", "embers landing", "embers are falling", "embers falling", "embers coming down"],
     "electric": ["wire is hot", "wires are hot", "line is hot", "lines are hot", "wire as hot", "wires as hot",
                  "conductors are on", "conductor down", "conductors down", "feeder is down", "feeder down", "lines down",
@@ -1604,7 +1616,8 @@ DANGER_KIND_EXTRA: dict[str, list[str]] = {
                  "cables down", "cable down", "cables are down", "transformer's blown", "transformer has blown",
                  "transformer blew", "transformer's gone bang"],
     "gas": ["rotten egg", "rotten eggs", "rotten-egg smell", "rotten egg smell", "eggy smell", "smell like eggs", "smells like eggs", "smell of eggs", "smells of eggs", "smell like rotten eggs", "stinks of eggs", "stinks of rotten eggs", "stink of eggs", "reeks of eggs", "reeks of rotten eggs", "smell of rotten eggs", "smells of rotten eggs", "like egg", "like eggs", "like rotten egg", "there's a hiss", "a loud hiss", "hissing out of", "h2s", "so2", "co2", "sulphur dioxide", "hydrogen sulphide", "carbon dioxide", "methane", "methane leak", "natural gas", "co detected", "co reading", "co readings", "co levels", "high co", "carbon monoxide", "carbon monoxide alarm", "co alarm"],
-    "collapse": ["started to sag", "starting to sag", "begun to sag", "beginning to sag", "wall's come in", "wall has come in", "walls have come in", "wall's come down on", "roof's come in",
+    "collapse": ["a big hole in", "big hole in the", "huge hole in the", "a hole in the ground", "hole in the crust",
+                 "started to sag", "starting to sag", "begun to sag", "beginning to sag", "wall's come in", "wall has come in", "walls have come in", "wall's come down on", "roof's come in",
                  "roof has come in", "ceiling's come in", "ceiling has come in", "tipped over", "has tipped over", "have tipped over", "have slid", "has slid",
                  "flattened", "been flattened", "torn to bits", "torn to pieces", "ripped to bits", "ripped to pieces", "blown to bits", "giving way", "is giving way", "gives way", "piles are sheared", "piles have sheared", "pile is sheared", "pile's sheared", "torn open", "been torn open", "gone over into the water", "gone over into the lagoon", "gone over into the sea", "gone over into the river", "split down a seam", "split a seam", "split its seam", "split at the seam", "split along a seam", "has snapped", "have snapped", "cable snapped", "cables snapped", "hanging sideways", "floor went through", "floor went thru", "floor gone through", "developed a lean", "has a lean", "bricks coming off", "bricks are coming off", "wall has split", "walls have split", "has split from", "split right across", "split from top to bottom", "roof's coming in", "roof is coming in", "ceiling's coming in", "ceiling is coming in", "coming off in chunks", "coming away in chunks", "falling off in chunks", "in chunks", "breaking up", "is breaking up", "coming adrift", "come adrift", "broken adrift", "peeling off", "coming off in slabs", "coming away in slabs", "roof fall on", "roof fall in", "roof has dropped", "pole's snapped", "pole has snapped", "poles have snapped", "poles snapped", "canvas is down", "canvas's down", "canvas has come down", "canvas came down", "tent's down", "tent is down", "poles down", "poles are down", "roof's dropped", "roof dropped", "ceiling has dropped", "ceiling's dropped", "roof has split", "roof split", "is bending", "it's bending", "is fall down", "has fall down", "fallen down"],
     "water": ["going down by the bow", "going down by the stern", "down by the bow", "down by the stern",
