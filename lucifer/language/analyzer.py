@@ -3084,7 +3084,7 @@ class ReportAnalyzer:
             k = p.start_tok
             while k > 0 and norms[k - 1] in lx.ARTICLES | {"to"} and k > p.start_tok - 2:
                 k -= 1
-            b = k - 1 - (k >= 2 and norms[k - 2] in ("just", "right", "a", "bit"))
+            b = k - 1 - (k >= 2 and norms[k - 2] in ("just", "right"))
             if b >= 1 and norms[k - 1] in ("past", "beyond") and toks.clause_start[b] \
                     and (p.end_tok == len(norms) or toks.clause_start[p.end_tok]) \
                     and not any(toks.clause_start[j] for j in range(b + 1, p.end_tok)):
