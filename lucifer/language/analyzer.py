@@ -494,7 +494,7 @@ class ReportAnalyzer:
             entries[norm_phrase(phrase)] = ("", "neutral")
         for key, val in list(entries.items()):
             # "ammonia leek": a leak misspelt as it sounds, inside a phrase of more words (not "the leek beds")
-            if len(key) >= 2 and val[1] != "neutral" and set(key) & set(_SOUND_ALIKE_WORDS):
+            if len(key) >= 2 and val[1] != "neutral" and any(w in _SOUND_ALIKE_WORDS for w in key):
                 entries.setdefault(tuple(_SOUND_ALIKE_WORDS.get(w, w) for w in key), val)
         for key, val in entries.items():
             self._cues.add(key, val)
@@ -3699,7 +3699,7 @@ class ReportAnalyzer:
                 continue
             if norms[k - 1] == "one" and norms[k] == "of":
                 continue  # "one of my riders came off on widowmaker": one of them, no place
-            if norms[k] in _PEOPLE_WORDS | _PEOPLE_GROUPS:
+            if norms[k] in _PEOPLE_OR_GROUPS:
                 continue  # "the school group have been moved across to the tea room": people the noun says whose
             if norms[k - 1] in lx.ROUTE_HEADS and all(w in lx.ROUTE_LINKS for w in norms[k:j]):
                 continue  # "the road down to the boatyard is impassable": the way to the place, no relation
@@ -7275,7 +7275,7 @@ class ReportAnalyzer:
                     (i for i in range(a - 1, max(-1, a - 5), -1) if norms[i] not in lx.FILLERS | {
                         "have", "ve", "has", "had", "all", "just", "now", "re"}), None)) is not None \
                     and subj not in self._place_tokens and not toks.clause_start[subj + 1] \
-                    and (norms[subj] in _PEOPLE_WORDS | _PEOPLE_GROUPS or norms[subj] in ("everyone", "everybody")):
+                    and (norms[subj] in _PEOPLE_OR_GROUPS or norms[subj] in ("everyone", "everybody")):
                 continue  # "quite a few people have come down off the trail": people moving, nothing fallen
                 # (not "the ceiling of the chemist's has come down")
             if b - a == 1 and a >= 3 and norms[a - 1] == "the" and norms[a - 2] == "of" and norms[a - 3] in _COMPASS \
@@ -10876,6 +10876,7 @@ _STILL_WATERS = frozenset({"pond", "pool", "reservoir", "ditch", "drain", "dyke"
 _PEOPLE_GROUPS = frozenset({"group", "party", "partie", "class", "classe", "team", "crowd", "family", "familie", "tour",
                             "trip", "pupil", "children", "kid", "visitor", "guest", "resident", "staff"})
 _PEOPLE_WORDS = _PERSON_WORDS | lx.LAY_PERSONS | lx.WORKER_PERSONS | {"men", "women", "folk", "folks"}
+_PEOPLE_OR_GROUPS = _PEOPLE_WORDS | _PEOPLE_GROUPS
 _LIST_OPENERS = frozenset({"and", "there", "theres", "is", "are", "lots", "of", "loads", "some", "also", "got", "weve"})
 
 

@@ -176,10 +176,7 @@ _add(CRITICAL, "|".join(f"pulled {who} out of" for who in ("a man", "a woman", "
 _add(CRITICAL, "still out on it|still out on the|stuck out on it|still stuck out on")
 _add(CRITICAL, "didn't come back|didnt come back|did not come back|haven't come back|havent come back|"
                "can't see them anywhere|cant see them anywhere|can't find them anywhere|cant find them anywhere|"
-               "can't see him anywhere|can't see her anywhere|can't find him anywhere|can't find her anywhere|"
-               "nobody has seen him come out|nobody has seen her come out|no one has seen him come out|"
-               "no one has seen her come out|no one's seen him come out|no one's seen her come out|"
-               "haven't come out|havent come out")
+               "can't see him anywhere|can't see her anywhere|can't find him anywhere|can't find her anywhere")
 _add(CRITICAL, """
 folk up on the roofs|people up on the roofs|got folk up on the roofs|got people up on the roofs|up on their roofs|
 can't pull himself out|can't pull herself out|cant pull himself out|cant pull herself out|up to his chest|up to her chest|
@@ -261,7 +258,7 @@ he fall|she fall|frostbite|frostbitten|frostbite case|is lost|he's lost|she's lo
 cut by flying glass|cut by glass|cut by falling glass|hit by flying glass|hit by debris|hit by falling debris|
 broken his hip|broken her hip|broken his leg|broken her leg|broken his arm|broken her arm|broke his leg|broke her leg|
 waving out the window|waving out of the window|waving out of windows|waving from the window|
-not come out|hasn't come out|has not come out|didn't come out|never came out|nobody's seen them come out|nobody has seen them come out|no one's seen them come out|no one has seen them come out|nobody's seen him come out|nobody's seen her come out|nobody saw them come out|not come back out|hasn't come back out|
+not come out|hasn't come out|has not come out|haven't come out|havent come out|didn't come out|never came out|nobody has seen him come out|nobody has seen her come out|no one has seen him come out|no one has seen her come out|no one's seen him come out|no one's seen her come out|nobody's seen them come out|nobody has seen them come out|no one's seen them come out|no one has seen them come out|nobody's seen him come out|nobody's seen her come out|nobody saw them come out|not come back out|hasn't come back out|
 been knocked down|got knocked down|knocked off her bike|knocked off his bike|was knocked down|knocked over by|been hit by|was hit by|got hit by|hit by a|
 struck by a|been run over|was run over|got run over|not conscious|isn't conscious|is not conscious|
 send a boat|please send a boat|need a boat|send help|please send help|come and get us|come get us|get us out|
