@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev96) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev98) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -202,6 +202,14 @@ GEOTHERMAL_FIELD = ROOT / "knowledge_bases" / "geothermal_field"
 SEAL_SANCTUARY = ROOT / "knowledge_bases" / "seal_sanctuary"
 CIDER_MILL_FARM = ROOT / "knowledge_bases" / "cider_mill_farm"
 MOTOCROSS_TRACK = ROOT / "knowledge_bases" / "motocross_track"
+OLIVE_TERRACES = ROOT / "knowledge_bases" / "olive_terraces"
+LIFEBOAT_STATION = ROOT / "knowledge_bases" / "lifeboat_station"
+SULPHUR_MINE = ROOT / "knowledge_bases" / "sulphur_mine"
+APIARY_VILLAGE = ROOT / "knowledge_bases" / "apiary_village"
+BAMBOO_TEMPLE = ROOT / "knowledge_bases" / "bamboo_temple"
+EXPO_SITE = ROOT / "knowledge_bases" / "expo_site"
+LIDO_PARK = ROOT / "knowledge_bases" / "lido_park"
+SALT_FLATS_SPEEDWAY = ROOT / "knowledge_bases" / "salt_flats_speedway"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -558,6 +566,14 @@ SETS = {
     "dev96/seal_sanctuary": _set("dev96/seal_sanctuary.jsonl", SEAL_SANCTUARY, "ss96", TWENTY, sep=""),
     "dev96/cider_mill_farm": _set("dev96/cider_mill_farm.jsonl", CIDER_MILL_FARM, "cm96", TWENTY, sep=""),
     "dev96/motocross_track": _set("dev96/motocross_track.jsonl", MOTOCROSS_TRACK, "mx96", TWENTY, sep=""),
+    "dev97/olive_terraces": _set("dev97/olive_terraces.jsonl", OLIVE_TERRACES, "ot97", TWENTY, sep=""),
+    "dev97/sulphur_mine": _set("dev97/sulphur_mine.jsonl", SULPHUR_MINE, "su97", TWENTY, sep=""),
+    "dev97/lifeboat_station": _set("dev97/lifeboat_station.jsonl", LIFEBOAT_STATION, "lb97", TWENTY, sep=""),
+    "dev97/apiary_village": _set("dev97/apiary_village.jsonl", APIARY_VILLAGE, "ap97", TWENTY, sep=""),
+    "dev98/expo_site": _set("dev98/expo_site.jsonl", EXPO_SITE, "ex98", TWENTY, sep=""),
+    "dev98/salt_flats_speedway": _set("dev98/salt_flats_speedway.jsonl", SALT_FLATS_SPEEDWAY, "sf98", TWENTY, sep=""),
+    "dev98/lido_park": _set("dev98/lido_park.jsonl", LIDO_PARK, "lp98", TWENTY, sep=""),
+    "dev98/bamboo_temple": _set("dev98/bamboo_temple.jsonl", BAMBOO_TEMPLE, "bt98", TWENTY, sep=""),
 }
 
 
