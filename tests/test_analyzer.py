@@ -5066,6 +5066,103 @@ def test_dev95_phenomena(kb_analyzers, kb, text, expected):
     assert claims(kb_analyzers[kb], text) == expected
 
 
+@pytest.mark.parametrize(("kb", "text", "expected"), [
+    # "haven't caught": a danger word said with its own negation
+    ("olive_terraces", "fire's in the burn pile, not in the patriarchs, the old trees haven't caught — just the brash "
+                       "heap, it's well alight", [("brash heap", "blaze_and_fumes")]),
+    ("olive_terraces", "the barn hasn't caught yet but the lodge is burning", [("pickers' lodge", "blaze_and_fumes")]),
+    ("olive_terraces", "the old trees have caught", [("ancient grove", "blaze_and_fumes")]),
+    # a bare "path" (or "track", "trail") is any path, not the one landmark some of whose other names end in it
+    ("olive_terraces", "Wall blowout on the mids. About ten metres of dry stone has come away onto the path, and one "
+                       "of the pickers is under the stones with both legs pinned.",
+     [("middle terraces", "person_in_need"), ("middle terraces", "slip_and_collapse")]),
+    ("olive_terraces", "Caller is at the humpback bridge with her two children. The stream's come up over the path "
+                       "and they're cut off on the far side, the little one is soaked and shivering.",
+     [("stone bridge", "person_in_need")]),
+    ("olive_terraces", "rockfall on the donkey path, nobody use it", [("mule track", "slip_and_collapse")]),
+    # where a danger is running "towards" is not reached yet
+    ("olive_terraces", "Fire's on the terraces directly above the ones the cistern waters, uh, it's running along the "
+                       "top wall towards the threshing floor.", [("upper terraces", "blaze_and_fumes")]),
+    ("olive_terraces", "the fire is spreading fast, it's heading towards the chapel, and the lodge is full of smoke",
+     [("pickers' lodge", "blaze_and_fumes")]),
+    # a warning or a cordon lifted ends the danger, however long the place's description
+    ("olive_terraces", "Update: the fire in the heap at the foot of the old trees is out, and the gas warning on the "
+                       "pond the new mill pipes its waste into has been lifted.", []),
+    ("expo_site", "Ops log 14:32. Fire at the japanese pavilion confirmed out by the brigade, building handed back to "
+                  "the pavilion manager, cordon lifted.", []),
+    ("expo_site", "Update: the pavilion that backs onto the dome has reopened, the smoke's cleared and the cordon's "
+                  "been lifted.", []),
+    # "cordon it off now": an order, nothing over
+    ("expo_site", "Control to all stewards: the red canopy on the maple leaf is tearing loose in this wind, cordon it "
+                  "off now; the flag plaza is the assembly point for that sector.",
+     [("canada pavilion", "unsafe_structure_or_crowd"), ("welcome plaza", "safe_refuge")]),
+    # "the refuge" for the one "gas refuge", where a safe-place word is said as a place
+    ("sulphur_mine", "the refuge is — uh — it's safe, no wait, correction, the door seal's gone and the gas is "
+                     "getting in, don't send anyone there", [("gas refuge", "fumes_and_fire")]),
+    ("sulphur_mine", "Team two at the refuge now, heading into the tunnel next to it to do the check, will report "
+                     "back.", []),
+    ("sulphur_mine", "gas in the refuge", [("gas refuge", "fumes_and_fire")]),
+    ("sulphur_mine", "the mess hut is the refuge now", [("canteen", "safe_to_gather")]),
+    # danger words
+    ("sulphur_mine", "ok two things uh the lake, the green lake is gassing off bad, and um there's a tourist hurt on "
+                     "the rim path — not the zigzag, the rim path — twisted ankle, can't walk",
+     [("crater lake", "fumes_and_fire"), ("crater rim path", "person_down")]),
+    ("sulphur_mine", "we got a m-man under at the yel-- at the sulphur face, big slab come off the wall, he's he's "
+                     "pinned", [("sulphur face", "ground_giving_way"), ("sulphur face", "person_down")]),
+    ("sulphur_mine", "Rescue one here. The flat ground cleared at the back of the truck yard is strewn with rocks "
+                     "from the slide, we can't put down there.", [("helipad", "ground_giving_way")]),
+    # where the speaker was before is no claim; "here" is where they are now
+    ("sulphur_mine", "you know we were at the camp before, uh, now we're up at the helipad, um, and there's a burn "
+                     "case here, a porter, he got the molten stuff all over his hands", [("helipad", "person_down")]),
+    # "a section out of the rim path": a part of the place itself
+    ("sulphur_mine", "Be aware, a landslip has taken a section out of the rim path west of the top station, I can see "
+                     "the scar from up here.", [("crater rim path", "ground_giving_way")]),
+    # a name word said right is no slip: "sulphur gas" is not "sulphur face"
+    ("sulphur_mine", "Sulphur gas is drifting over the camp", [("miners' camp", "fumes_and_fire")]),
+    # "you know, the avenue the flag plaza leads into": the reference point said again
+    ("expo_site", "Man down on the viewing deck of the structure standing at the head of the avenue, you know, the "
+                  "avenue the flag plaza leads into, chest pains, he's sixty-odd.",
+     [("expo tower", "person_needs_help")]),
+    # "draws its cooling water from": the KB's relation with a possessive in it
+    ("expo_site", "glass panels are cracking and dropping out of the roof of the pavilion that draws its cooling "
+                  "water from the lake the pump house fills, get everyone out from under it",
+     [("host nation pavilion", "unsafe_structure_or_crowd")]),
+    # a person "not back", who "can't feel his leg"; a "cool spot"
+    ("salt_flats_speedway", "um hi yes I'm calling because my my son he walked out to the, to the rock pile, you know "
+                            "the benchmark thing, and he's not back and it's like a hundred and five out there",
+     [("survey cairn", "person_in_trouble")]),
+    ("salt_flats_speedway", "Tower to all stations, debris field on the traps, the bike went down just past the first "
+                            "beam and there's bodywork spread right across the lane. Rider is conscious but says he "
+                            "can't feel his left leg.",
+     [("measured mile", "person_in_trouble"), ("measured mile", "unsafe_ground")]),
+    ("salt_flats_speedway", "The camp that the bowser waters is the cool spot now, shade canopies, misters and plenty "
+                            "to drink, send the overheated crowd up there.", [("dry camp", "safe_refuge")]),
+    # things blown over in the wind, tent poles fallen: damage, no one fallen
+    ("salt_flats_speedway", "um my dad said i should call and say the johns, the porta-johns, um, they all fell over "
+                            "in the wind and there's, there's broken plastic and yucky stuff everywhere so don't go "
+                            "back there", [("toilet row", "unsafe_ground")]),
+    ("salt_flats_speedway", "Hello, here is team Schmidt from Germany. The wind has broken the tyre tent, all the "
+                            "poles are fallen and the canvas is on the compressor, nobody should go inside.",
+     [("tire tent", "unsafe_ground")]),
+    # heading to a place "where" someone is hurt: the place of the news
+    ("salt_flats_speedway", "medic two, uh, we're at the spectator lot, um, nobody here needs us, we're heading to "
+                            "the rope line where a guy's, uh, got heat stroke, real bad",
+     [("spectator fence", "person_in_trouble")]),
+    ("salt_flats_speedway", "medic two heading to the rope line now", []),
+    # "the pile of rocks out on the rim of the gumbo": where the place is
+    ("salt_flats_speedway", "Two students hiked out to the pile of rocks out on the rim of the gumbo and they haven't "
+                            "radioed since noon, they're overdue and out of water.",
+     [("survey cairn", "person_in_trouble")]),
+    # other things denied in a sentence of their own are not the place before
+    ("lakeside_campground", "Ranger 3 — fire in the A cabins — no, no, B row, the B cabins. The A ones haven't "
+                            "caught.", [("cabin row B", "fire_and_smoke")]),
+    ("lakeside_campground", "Ranger 3 — fire in the A cabins — no, no, B row, the B cabins. The A ones aren't "
+                            "burning.", [("cabin row B", "fire_and_smoke")]),
+])
+def test_dev97_phenomena(kb_analyzers, kb, text, expected):
+    assert claims(kb_analyzers[kb], text) == expected
+
+
 def test_subject_pronoun_clause_of_only_hesitations(kb_analyzers):
     """"the place it um is full of smoke": no words after the pronoun but a hesitation, so there is no link to read
     (this raised IndexError); nothing is read by meaning around "it"."""

@@ -1762,6 +1762,15 @@ class ReportAnalyzer:
                            and w not in lx.LOCATIVE_PARTS  # ("at tower five, full burial at the base": its base)
                            and w not in ("step", "steps", "door", "doors", "window", "windows")
                            and not (w in lx.WATER_BODIES and all(name_words(n)[-1:] != (w,) for n in names))}
+            # heads that are words of a safe place as well ("the refuge" where "gas refuge" is the one refuge): the
+            # landmark where the sentence puts it in a place's own position (below)
+            desirable_words = {key[0] for bucket in self._cues._by_first.values() for key, (c, _src) in bucket
+                               if len(key) == 1 and c in self.kb.category_by_name
+                               and self.kb.category_by_name[c].role == Role.DESIRABLE}
+            self._cue_heads = {w: next(iter(names)) for w, names in owners.items()
+                               if len(names) == 1 and w in cue_words and w in desirable_words and w.isalpha()
+                               and len(w) >= 5 and words_elsewhere.get(w, set()) == names
+                               and not described.get(w, set()) - names and w not in rel_words}
             # ("the river is coming in under the doors": the water itself, where only "the back river" is a name)
             # ("can't get up the step": any doorstep; "the fire doors": any building's, not "the red doors")
             # heads no other landmark's description uses either: "the chapel is safe" where the castle chapel is
@@ -1794,6 +1803,14 @@ class ReportAnalyzer:
             if w in self._anchor_heads and i >= 2 and i not in taken and norms[i - 1] == "the" and (i - 1) in rel_ends \
                     and (i + 1 >= len(norms) or toks.clause_start[i + 1] or norms[i + 1] in lx.COPULAS):
                 out.append(self._mention(toks, i, i + 1, self._anchor_heads[w]))
+                continue
+            if w in self._cue_heads and i >= 1 and i not in taken and norms[i - 1] == "the" and (
+                    (toks.clause_start[i - 1] or i == 1) and (
+                        toks.tokens[i].text.lower().endswith(("'s", "’s"))
+                        or i + 1 < len(norms) and norms[i + 1] in ("is", "has", "was"))
+                    or i >= 2 and norms[i - 2] in ("at", "in", "inside", "into", "from")):
+                # "the refuge is, uh, it's safe, no wait, the gas is getting in", "team two at the refuge now"
+                out.append(self._mention(toks, i, i + 1, self._cue_heads[w]))
                 continue
             opens = (i == 0 or toks.sentence_start[i] or toks.clause_start[i] and ":" in toks.gaps[i]
                      and w in self._sole_heads) \
@@ -1855,6 +1872,9 @@ class ReportAnalyzer:
                 and (i + 2 >= len(norms) or toks.clause_start[i + 2]
                      or norms[i + 2] in lx.COPULAS | {"has", "have", "had", "that", "thats", "which"}
                      or self._relations.match_at(norms, i + 1) is not None)  # ("the field the school plays its games on")
+            if w in ("path", "track", "trail") and name_words(self._heads[w])[-1:] != (w,) and (i - 1) not in rel_ends \
+                    and not _after_same(norms, i):
+                continue  # "stone has come away onto the path": any path, where only other names of the mule track end so
             if w in lx.UNNAMING_HEADS and w not in self._own_heads \
                     or (w in lx.GENERIC_HEADS or w in lx.DESCRIPTION_HEADS) and (i - 1) not in rel_ends \
                     and not ((said_of or verb_next) and (w in lx.GENERIC_HEADS and (contracted or w not in lx.DESCRIPTION_HEADS)
@@ -2590,8 +2610,10 @@ class ReportAnalyzer:
             # the cafe has "a deep-fat fryer" is no slip of "the foyer")
             self._kb_prose_words = {w for lm in self.kb.landmarks for w in norm_phrase(lm.description)} \
                 - {w for lm in self.kb.landmarks for f in lm.surface_forms for w in name_words(f)}
-        if all(w in known or _derived_word(w, known) or w in self._kb_prose_words for w in words):
+        if all(w in known or _derived_word(w, known) or w in self._kb_prose_words
+               or len(words) > 1 and w in self._name_word_owners for w in words):
             return None  # (nor a known word with an ending: "the heaters going" is no slip of "the header")
+            # (nor a word of the KB's names said right: "sulphur gas" is no slip of "sulphur face")
         if not hasattr(self, "_typo_spellings"):
             self._typo_spellings = {key: name for key, name in self._name_keys()
                                     if len(key) >= self.TYPO_MIN_CHARS and key.isalpha()}
@@ -3708,6 +3730,8 @@ class ReportAnalyzer:
                 continue  # a known phrase: the table-driven pass owns it
             if norms[j - 1] == "of" and set(norms[k - 1:j]) & (lx.STOREY_WORDS | lx.PART_NOUNS | lx.LOCATIVE_PARTS):
                 continue  # "on the ground floor of the chemistry annexe": a part of the place, in it
+            if norms[k - 1] in _SEGMENT_HEADS | {"chunk", "piece", "bit", "part"} and norms[k:j] == ("out", "of"):
+                continue  # "a landslip has taken a section out of the rim path": a part of the place itself
             sims = self._link_similarities(link)
             sim = float(sims.max())
             head_start = k - 1
@@ -3983,6 +4007,8 @@ class ReportAnalyzer:
                         norms[i] in lx.FALLEN_VERBS | {"jumped", "slipped", "thrown", "knocked"}
                         and not any(toks.clause_start[m] for m in range(i + 1, head + 1)) for i in range(max(0, head - 8), head)):
                     continue  # "he fell off the roof of the boat into the top pound": where he fell, no description
+                if norms[head] in _SEGMENT_HEADS | {"chunk", "piece", "bit", "part"} and between == ["out", "of"]:
+                    continue  # "a landslip has taken a section out of the rim path": a part of the anchor itself
                 if norms[head] == "corner" and between[0] == "from":
                     continue  # "the Red Lion, round the corner from the square": somewhere near it, no relation
                 if between[-1] in ("from", "of") and set(between) & _PEOPLE_WORDS \
@@ -4693,6 +4719,10 @@ class ReportAnalyzer:
                         and norms[a] in ("under", "underneath", "beneath", "below"):
                     return  # "road under the scales is gone": the ground it stands on, when nothing lies below it
                     # ("I live on the lane below the bund. There's a long crack along the top of it")
+                if any(norms[i] in ("heading", "headed") and norms[i + 1:i + 2] in (
+                        ("to",), ("for",), ("towards",), ("toward",), ("back",), ("down",), ("up",), ("over",), ("out",), ("off",))
+                       for i in range(a, b)):
+                    return  # "we're heading to the rope line": where people go, not ``sits at the head of``
                 named_words = set(norm_phrase(phrase))
                 if b - a >= 3 and any(
                         (m := self._cues.match_at(norms, i)) is not None and m[1][0]
@@ -6058,11 +6088,17 @@ class ReportAnalyzer:
             return "near it ('round the corner from'): no claim"
         if k >= 3 and norms[k - 3:k] in (("not", "that", "thats"), ("not", "that", "that")):
             return "what the place taken back was ('not that, that's X'): no claim"
-        if k < 3 or norms[k - 1] != "of" or norms[k - 2] not in ("side", "end", "edge"):
+        if k < 3 or norms[k - 1] != "of" or norms[k - 2] not in ("side", "end", "edge", "rim"):
             return ""
         for q in places:
-            if q is not p and q.status in ("active", "reference") and q.end_tok < k - 2 and k - q.end_tok <= 6 \
-                    and norms[q.end_tok] in ("on", "at") and all(w in _SIDE_WORDS for w in norms[q.end_tok:k]):
+            if q is p or q.status not in ("active", "reference") or not q.end_tok < k - 2:
+                continue
+            m = q.end_tok
+            if norms[m:m + 1] == ("of",) and m + 1 < k and norms[m + 1].isalpha() \
+                    and norms[m + 1] not in lx.FUNCTION_WORDS:
+                m += 2  # "the pile of rocks out on the rim of the gumbo": what the place is made of
+            m += norms[m:m + 1] in (("out",), ("over",), ("up",), ("down",))
+            if k - m <= 6 and norms[m] in ("on", "at") and all(w in _SIDE_WORDS for w in norms[m:k]):
                 return f"where '{q.text}' stands ('{' '.join(norms[q.end_tok:k])}'): no claim"
         return ""
 
@@ -6209,6 +6245,20 @@ class ReportAnalyzer:
             if self._evacuated_to(toks, norms, p.end_tok):
                 ex.places[idx] = replace(p, status="reference", reason="evacuated to another place: no claim")
                 continue
+            prep = j if norms[j] in ("at", "in", "on") else j - 1
+            if prep >= 1 and norms[prep] in ("at", "in", "on") and norms[prep - 1] in ("were", "was") \
+                    and norms[p.end_tok:p.end_tok + 1] in (("before",), ("earlier",)) and any(
+                        norms[m] == "now" and any(q.start_tok > m and q.landmark != p.landmark for q in ex.places)
+                        for m in range(p.end_tok + 1, len(norms))):
+                # "we were at the camp before, uh, now we're up at the helipad": where the speaker was
+                ex.places[idx] = replace(p, status="reference", reason="where the speaker was before: no claim")
+                continue
+            mover = next((m for m in range(j - 2, max(-1, j - 9), -1) if norms[m] in _ON_THE_MOVE), None) \
+                if j >= 2 and norms[j - 1] in ("towards", "toward") else None
+            if mover is not None and not any(toks.clause_start[i] for i in range(mover + 1, j)):
+                # "it's running along the top wall towards the threshing floor": where the danger is heading
+                ex.places[idx] = replace(p, status="reference", reason="in transit ('towards'): no claim")
+                continue
             if any(norms[k:k + 2] == ("last", "seen") for k in range(max(0, j - 7), j)):
                 continue  # "Last seen going into the still house": where the missing were last, no passing through
             for k in range(max(0, j - 5), j):
@@ -6232,6 +6282,9 @@ class ReportAnalyzer:
                         break  # "going past the town hall there was loads of people hurt": what was seen there
                     if any(norms[i] in ("dont", "never") or norms[i:i + 2] == ("do", "not") for i in range(max(0, k - 2), k)):
                         break  # "dont go to the bakery, theres a fire": a warning about the place, not a move
+                    if norms[p.end_tok:p.end_tok + 1] == ("where",) and hit[1].split()[0] in ("heading", "headed", "going") \
+                            and any(self._role_cue_at(norms, m, Role.CRITICAL) for m in range(p.end_tok + 1, min(len(norms), p.end_tok + 9))):
+                        break  # "we're heading to the rope line where a guy's got heat stroke": who is hurt there
                     if norms[p.end_tok:p.end_tok + 2] in (("which", "is"), ("which", "s"), ("which", "has")) \
                             and hit[1].split()[0] in ("diverting", "diverted", "rerouting", "relocating", "moving",
                                                       "heading", "headed", "going", "evacuating", "sending", "taking"):
@@ -6248,7 +6301,8 @@ class ReportAnalyzer:
         # to describe it is still only the reference point
         for idx, p, j in self._bare_places(ex, norms):
             ref = next((q for q in ex.places if q.status == "reference" and q.landmark == p.landmark and q.via is None
-                        and 0 <= j - q.end_tok <= 2 and all(norms[i] in lx.FILLERS for i in range(q.end_tok, j))
+                        and 0 <= j - q.end_tok <= 4 and all(norms[i] in lx.FILLERS or norms[i:i + 2] == ("you", "know")
+                                                            or norms[i - 1:i + 1] == ("you", "know") for i in range(q.end_tok, j))
                         and any(d in toks.gaps[i] for i in range(q.end_tok, j + 1) for d in ("—", "–", "--", " - ", ","))
                         and q.reason.startswith("reference point:")), None)
             own = p.end_tok >= len(norms) or norms[p.end_tok] in lx.COPULAS | lx.ANAPHOR_VERBS | {"itself"} \
@@ -8775,6 +8829,17 @@ class ReportAnalyzer:
         j = cue.start_tok - 1
         steps = 0
         place_toks = self._place_tokens | self._marker_tokens
+        e = cue.end_tok
+        while e < len(norms) and e - cue.end_tok < 3 and norms[e] in ("has", "have", "s", "is", "been", "now", "just"):
+            e += 1
+        if norms[cue.end_tok - 1] in ("cordon", "cordons", "closure", "warning", "alert") \
+                and norms[e:e + 1] in (("lifted",), ("removed",), ("stood",)) \
+                and (norms[e] != "stood" or norms[e + 1:e + 2] == ("down",)):
+            # "cordon lifted", "the cordon's been lifted": the warning withdrawn, the danger with it
+            return replace(cue, polarity="denied", reason=f"negated by '{norms[e]}'")
+        if norms[cue.start_tok] in ("hasnt", "havent") and norms[cue.start_tok + 1:cue.end_tok] == ("caught",):
+            # "the old trees haven't caught": the danger word said with its own negation
+            return replace(cue, polarity="denied", reason=f"negated by '{toks.tokens[cue.start_tok].text}'")
         if norms[cue.start_tok] in lx.NEGATORS:
             j = -1  # "he's not, he's not breathing": a cue that is itself a negation is not negated again
         if cue.start_tok > 0 and norms[cue.start_tok - 1] == "negative" and cue.category == self._person_category:
@@ -8884,7 +8949,8 @@ class ReportAnalyzer:
             h = self._cancel.match_at(norms, k)
             if h is None and k == cue.end_tok and norms[k] == "cleared" and undesirable and contracted:
                 h = (k + 1, "s cleared")  # "the bad air's cleared": the cue took the "'s"
-            if h is not None and h[1].endswith("out") and h[0] < len(norms) and norms[h[0]] in lx.ROUTE_PREPOSITIONS:
+            if h is not None and h[1].endswith("out") and h[0] < len(norms) and norms[h[0]] in lx.ROUTE_PREPOSITIONS \
+                    and not (h[1] == "confirmed out" and norms[h[0]] == "by"):
                 h = None  # "evacuation route is out through the park": the way out, nothing put out
             if h is not None and h[1].endswith("out") and norms[h[0]:h[0] + 1] in (("at",), ("by",), ("on",), ("near",)) \
                     and self.kb.category_by_name[cue.category].role == Role.DESIRABLE:
@@ -8927,6 +8993,9 @@ class ReportAnalyzer:
                 if h[1] == "gone" and norms[h[0]:h[0] + 1] == ("up",) \
                         and self.kb.category_by_name[cue.category].role == Role.DESIRABLE:
                     break  # "that's where the welfare tent's gone up": put up, not gone
+                if h[1].startswith(("off", "s off", "is off")) and k >= 2 and norms[k - 1] in ("it", "that", "them", "this") \
+                        and norms[k - 2] in ("cordon", "tape", "rope", "fence", "block") and k - 2 == cue.end_tok - 1:
+                    break  # "the canopy is tearing loose, cordon it off now": an order to keep out, nothing over
                 if h[1] == "contained" and norms[h[0]:h[0] + 1] in (("to",), ("within",), ("in",), ("inside",)):
                     break  # "fire's contained to the bakery": still burning, there
                 cancelled_by = h[1]
@@ -9461,6 +9530,10 @@ class ReportAnalyzer:
             if not cs or seg_usable.get(k):
                 continue
             a, b = segs[k]
+            lead3 = [w for w in norms[a:b] if w not in lx.FILLERS][:3]
+            if all(c.polarity == "denied" for c in cs) and lead3[:1] == ["the"] and (
+                    lead3[2:3] in (["ones"], ["one"]) or lead3[1:2] in (["others"], ["rest"])):
+                continue  # "fire in the B cabins. The A ones haven't caught.": other things denied, not the place before
             # "two people are unconscious inside. The coffee house ...": a preposition that ends a
             # sentence is an adverb, not a broken-off "at the" (which a dash or ellipsis marks)
             closed = b < len(toks) and (toks.sentence_start[b] or ";" in toks.gaps[b]) \
@@ -10985,8 +11058,12 @@ _COORDINATOR_KEYS = [norm_phrase(p) for p in lx.COORDINATOR_PHRASES]
 _FALSE_ALARM_KEYS = [(p, norm_phrase(p)) for p in lx.FALSE_ALARM]
 _EXERCISE_KEYS = [norm_phrase(p) for p in lx.EXERCISE_FRAME]
 _CREW_POSITION = "in transit (a crew's position): no claim"
+# Verbs of a danger or of people on the move: a place they go "towards" is not yet reached
+_ON_THE_MOVE = frozenset({"running", "spreading", "moving", "heading", "creeping", "racing", "burning", "drifting",
+                          "working", "making", "travelling", "traveling", "edging", "rolling", "flowing", "sliding",
+                          "advancing", "pushing", "blowing", "going", "walking", "driving", "crawling", "jumping"})
 _SIDE_WORDS = frozenset({"on", "at", "the", "east", "west", "north", "south", "far", "other", "near", "side", "end",
-                         "edge", "of", "eastern", "western", "northern", "southern"})
+                         "edge", "of", "eastern", "western", "northern", "southern", "rim"})
 _PERSON_KEYS = frozenset(w for p in lx.PERSON_NOUNS for w in norm_phrase(p))
 
 # The withdrawal markers ("scratch that") as token keys joined by spaces.
@@ -11332,6 +11409,10 @@ def _relation_forms(phrase: str) -> list[tuple[str, bool]]:
     if cut is not None and words[0].endswith("s") and not words[0].endswith("ss") and words[0] not in lx.GENERIC_VERBS \
             and words[0] not in lx.COPULAS and not _direction_word(words[0]):
         out.extend(_relation_forms(" ".join(words[:cut])))
+    if len(words) >= 4 and words[0].endswith("s") and not words[0].endswith("ss") and words[0] not in lx.COPULAS \
+            and words[1].isalpha() and words[1] not in lx.FUNCTION_WORDS and words[-1] in lx.RELATION_ENDINGS:
+        # "the pavilion that draws its cooling water from the lake" for ``draws cooling water from``
+        out.extend((" ".join([words[0], owner, *words[1:]]), False) for owner in ("its", "their"))
     # direction words: "seaward of" is also "on the sea side of"; "landward of" reads it backwards
     for i, w in enumerate(words):
         if w not in lx.DIRECTION_FAMILIES:

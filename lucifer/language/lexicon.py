@@ -157,6 +157,8 @@ _add(DESIRABLE, "welcome to wait|are welcome to wait|came through without a scra
 # stand on it", "I've landed six kids on Heron Rock, it's well above the tide line", "the genny shed's working, power's
 # on in there", "the cricket field's still above the line")
 _add(DESIRABLE, "for everybody to go to|for everyone to go to|for people to go to|for folk to go to")
+_add(DESIRABLE, "the cool spot|a cool spot|cool spot now|cooling spot|cooling point|cooling station|cooling centre|"
+               "cooling center")  # ("the camp the bowser waters is the cool spot now": out of the heat)
 _add(DESIRABLE, "has power and heating|got power and heating|power and heating on|can come in here|"
                "anybody can come in|anyone can come in|everyone can come in|can all come in")
 # people sent or taken to a place ("we're sending families there", "so send the evacuees in there")
@@ -174,6 +176,11 @@ _add(CRITICAL, "|".join(f"{aux} {verb} in" for aux in ("haven't", "havent", "has
 _add(CRITICAL, "|".join(f"pulled {who} out of" for who in ("a man", "a woman", "someone", "somebody", "a child", "a kid",
                                                              "him", "her", "a lad", "a girl", "a boy")))
 _add(CRITICAL, "still out on it|still out on the|stuck out on it|still stuck out on")
+# ("my son walked out to the rock pile and he's not back"; "says he can't feel his left leg")
+_add(CRITICAL, "he's not back|she's not back|they're not back|he isn't back|she isn't back|they aren't back|"
+               "hes not back|shes not back|theyre not back|not back yet|still not back|"
+               "can't feel his|can't feel her|cant feel his|cant feel her|cannot feel his|cannot feel her|"
+               "can't feel my|cant feel my|cannot feel my")
 _add(CRITICAL, "didn't come back|didnt come back|did not come back|haven't come back|havent come back|"
                "can't see them anywhere|cant see them anywhere|can't find them anywhere|cant find them anywhere|"
                "can't see him anywhere|can't see her anywhere|can't find him anywhere|can't find her anywhere")
@@ -318,8 +325,8 @@ NO_LONGER_SO = [("now", "theyre", "not"), ("now", "they", "re", "not"), ("now", 
 CANCEL_AFTER = ["fully out", "is fully out", "damping down", "damping down is finished", "aboard now", "is aboard", "now aboard", "on board now", "safely aboard", "not any more", "not anymore", "cleared off", "it's cleared off", "wind's changed", "wind has changed", "that's cleared", "thats cleared", "it's cleared", "dried out", "has dried out",
                 "s dried out", "hasn't got that far", "hasnt got that far", "not got that far", "hasn't got this far", "hasnt got this far",
                 "not got this far", "hasn't reached us", "hasnt reached us", "blowing the other way", "blowing away from", "going the other way", "never reached", "didn't reach", "didnt reach", "hasn't reached", "hasnt reached", "never got to",
-                "been cleared", "been cleared away", "been towed", "been towed away", "turned up", "has turned up", "s turned up", "turned up safe", "is out", "s out", "are out", "was out", "is now out", "s now out", "are now out", "put out", "out now", "been put out",
-                "has cleared", "have cleared", "s cleared", "has lifted", "s lifted", "has gone down", "s gone down",
+                "been cleared", "been cleared away", "been towed", "been towed away", "turned up", "has turned up", "s turned up", "turned up safe", "is out", "s out", "are out", "was out", "confirmed out", "is now out", "s now out", "are now out", "put out", "out now", "been put out",
+                "has cleared", "have cleared", "s cleared", "has lifted", "s lifted", "has been lifted", "have lifted", "has gone down", "s gone down",
                 "has receded", "s receded", "have receded", "gone down now", "old news", "pumped it out",
                 "pumped it all out", "brought down", "been brought down",
                 "all been brought down", "got them down", "nobody left", "water's gone down", "water has gone down",
@@ -1595,7 +1602,9 @@ DANGER_KIND_EXTRA: dict[str, list[str]] = {
               "come clean off", "came clean off", "lightning strike", "took a lightning strike", "struck by lightning", "hit by lightning", "lightning struck",
               "lightning's struck", "lightning has struck", "lightning hit", "lightning's hit", "lightning has hit",
               "blown over", "been blown over", "has blown over", "torn off their piles", "torn off its piles", "off their piles", "off its piles", "broken loose",
-              "broke loose", "torn loose", "has broken free", "come adrift", "broken adrift", "torn from its moorings",
+              "broke loose", "torn loose", "all fell over in the wind", "fell over in the wind", "blew over in the wind",
+              "poles are fallen", "poles have fallen", "poles have come down", "wind has broken", "wind's broken",
+              "tearing loose", "ripping loose", "coming loose", "come loose", "came loose", "has broken free", "come adrift", "broken adrift", "torn from its moorings",
               "is adrift", "s adrift", "gone adrift", "drifting free", "broken every mooring", "broken all her moorings",
               "broken her moorings", "broken its moorings", "broke her moorings", "broke its moorings",
               "parted her moorings", "parted its moorings", "torn up", "been torn up", "planks are all up",
@@ -1604,7 +1613,7 @@ DANGER_KIND_EXTRA: dict[str, list[str]] = {
               "lost the roof", "lost its leads", "lost the leads", "roof lifted", "blown clean off", "blown off",
               "off its hinges", "pulled up by the roots", "open to the sky", "rain's coming in", "rain is coming in",
               "rain coming straight in", "rain's coming straight in", "rain pouring in", "rain is pouring"],
-    "fire": ["it's scalding", "it is scalding", "scalding hot", "water is boiling", "water's boiling now", "boiling hot",
+    "fire": ["haven't caught", "hasn't caught", "havent caught", "hasnt caught", "it's scalding", "it is scalding", "scalding hot", "water is boiling", "water's boiling now", "boiling hot",
              "starting to burn", "started to burn", "begun to burn", "beginning to burn", "taken hold of", "has taken hold", "taken hold in", "took hold of", "taking hold of", "flare-up", "flare up", "flared up", "flaring up", "burning debris", "roof is going up", "houses have caught", "have caught", "is going up", "s going up", "going up properly", "roof's going up", "roofs going up", "thatch is going up", "thatch's going up",
              "thatch going up", "embers are landing", "embers landing", "embers are falling", "embers falling", "embers coming down"],
     "electric": ["wire is hot", "wires are hot", "line is hot", "lines are hot", "wire as hot", "wires as hot",
@@ -1612,8 +1621,8 @@ DANGER_KIND_EXTRA: dict[str, list[str]] = {
                  "line down", "lines are down", "line is down", "wires down", "wire down", "wires are down",
                  "cables down", "cable down", "cables are down", "transformer's blown", "transformer has blown",
                  "transformer blew", "transformer's gone bang"],
-    "gas": ["rotten egg", "rotten eggs", "rotten-egg smell", "rotten egg smell", "eggy smell", "smell like eggs", "smells like eggs", "smell of eggs", "smells of eggs", "smell like rotten eggs", "stinks of eggs", "stinks of rotten eggs", "stink of eggs", "reeks of eggs", "reeks of rotten eggs", "smell of rotten eggs", "smells of rotten eggs", "like egg", "like eggs", "like rotten egg", "there's a hiss", "a loud hiss", "hissing out of", "h2s", "so2", "co2", "sulphur dioxide", "hydrogen sulphide", "carbon dioxide", "methane", "methane leak", "natural gas", "co detected", "co reading", "co readings", "co levels", "high co", "carbon monoxide", "carbon monoxide alarm", "co alarm"],
-    "collapse": ["a big hole in", "big hole in the", "huge hole in the", "a hole in the ground", "hole in the crust",
+    "gas": ["gassing off", "gassing out", "is gassing", "s gassing", "rotten egg", "rotten eggs", "rotten-egg smell", "rotten egg smell", "eggy smell", "smell like eggs", "smells like eggs", "smell of eggs", "smells of eggs", "smell like rotten eggs", "stinks of eggs", "stinks of rotten eggs", "stink of eggs", "reeks of eggs", "reeks of rotten eggs", "smell of rotten eggs", "smells of rotten eggs", "like egg", "like eggs", "like rotten egg", "there's a hiss", "a loud hiss", "hissing out of", "h2s", "so2", "co2", "sulphur dioxide", "hydrogen sulphide", "carbon dioxide", "methane", "methane leak", "natural gas", "co detected", "co reading", "co readings", "co levels", "high co", "carbon monoxide", "carbon monoxide alarm", "co alarm"],
+    "collapse": ["slab come off", "slab came off", "slab has come off", "slab's come off", "a big hole in", "big hole in the", "huge hole in the", "a hole in the ground", "hole in the crust",
                  "started to sag", "starting to sag", "begun to sag", "beginning to sag", "wall's come in", "wall has come in", "walls have come in", "wall's come down on", "roof's come in",
                  "roof has come in", "ceiling's come in", "ceiling has come in", "tipped over", "has tipped over", "have tipped over", "have slid", "has slid",
                  "flattened", "been flattened", "torn to bits", "torn to pieces", "ripped to bits", "ripped to pieces", "blown to bits", "giving way", "is giving way", "gives way", "piles are sheared", "piles have sheared", "pile is sheared", "pile's sheared", "torn open", "been torn open", "gone over into the water", "gone over into the lagoon", "gone over into the sea", "gone over into the river", "split down a seam", "split a seam", "split its seam", "split at the seam", "split along a seam", "has snapped", "have snapped", "cable snapped", "cables snapped", "hanging sideways", "floor went through", "floor went thru", "floor gone through", "developed a lean", "has a lean", "bricks coming off", "bricks are coming off", "wall has split", "walls have split", "has split from", "split right across", "split from top to bottom", "roof's coming in", "roof is coming in", "ceiling's coming in", "ceiling is coming in", "coming off in chunks", "coming away in chunks", "falling off in chunks", "in chunks", "breaking up", "is breaking up", "coming adrift", "come adrift", "broken adrift", "peeling off", "coming off in slabs", "coming away in slabs", "roof fall on", "roof fall in", "roof has dropped", "pole's snapped", "pole has snapped", "poles have snapped", "poles snapped", "canvas is down", "canvas's down", "canvas has come down", "canvas came down", "tent's down", "tent is down", "poles down", "poles are down", "roof's dropped", "roof dropped", "ceiling has dropped", "ceiling's dropped", "roof has split", "roof split", "is bending", "it's bending", "is fall down", "has fall down", "fallen down"],
@@ -1634,7 +1643,7 @@ DANGER_KIND_EXTRA: dict[str, list[str]] = {
               "water's at the top of", "water is at the top of",
               "water at the top of", "water's up to the top of", "water is up to the top of"],
     "access": ["blocking", "blocking the way", "blocking it", "blocks the way", "rocks across", "rocks across it", "rocks across the road", "debris across", "debris right across", "fallen oak", "fallen beech", "fallen ash", "fallen branch", "fallen branches"],
-    "ground": ["buried to the axles", "buried to its axles", "buried up to the axles", "buried up to its axles",
+    "ground": ["strewn with rocks", "strewn with boulders", "littered with rocks", "littered with boulders", "buried to the axles", "buried to its axles", "buried up to the axles", "buried up to its axles",
                "sunk to the axles", "sunk to its axles", "bogged down", "there's a slip on", "there's been a slip on", "there is a slip on", "scree moving", "scree is moving", "ground is moving", "ground moving", "slope is moving", "hillside is moving", "rocks are coming off", "rocks are coming down", "rocks are falling", "dropping rocks", "rocks dropping", "dropping stones", "has sunk", "have sunk", "its sunk", "ground dropped", "ground has dropped", "ground dropping", "ground is dropping", "ground gone", "ground has gone", "ground just gone", "floor dropped", "floor has dropped", "hole opened up", "hole has opened up", "hole just opened up", "floor has opened", "floor's opened", "sinkhole", "sink hole", "ash a foot deep", "ash is knee deep", "ash knee deep", "ash's knee deep", "ash is ankle deep", "a foot of ash", "feet of ash", "inches of ash", "deep in ash", "covered in ash", "covered in stones", "covered in rocks", "covered in boulders", "covered with stones", "covered with rocks", "stones all over it", "rocks all over it", "heaped with ash", "buried in ash", "under the ash", "drifts of ash", "ash drifts", "half buried", "half-buried", "slurry", "full of slurry", "sludge", "silt", "full of silt"],
     "fallen": ["tree's down", "tree is down", "tree down", "trees are down", "trees down", "tree's come over",
                "tree has come over", "come over in the wind", "came over in the wind", "taken the top off", "took the top off", "knocked the top off", "blown the top off", "blew the top off",
