@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev98) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev99) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -574,6 +574,9 @@ SETS = {
     "dev98/salt_flats_speedway": _set("dev98/salt_flats_speedway.jsonl", SALT_FLATS_SPEEDWAY, "sf98", TWENTY, sep=""),
     "dev98/lido_park": _set("dev98/lido_park.jsonl", LIDO_PARK, "lp98", TWENTY, sep=""),
     "dev98/bamboo_temple": _set("dev98/bamboo_temple.jsonl", BAMBOO_TEMPLE, "bt98", TWENTY, sep=""),
+    "dev99/market_square": _set("dev99/market_square.jsonl", MARKET_SQUARE, "ms99", TWENTY, sep=""),
+    "dev99/riverbend": _set("dev99/riverbend.jsonl", RIVERBEND, "rb99", TWENTY, sep=""),
+    "dev99/market_square_b": _set("dev99/market_square_b.jsonl", MARKET_SQUARE, "mb99", TWENTY, sep=""),
 }
 
 
