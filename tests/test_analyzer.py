@@ -5158,6 +5158,32 @@ def test_dev95_phenomena(kb_analyzers, kb, text, expected):
                             "caught.", [("cabin row B", "fire_and_smoke")]),
     ("lakeside_campground", "Ranger 3 — fire in the A cabins — no, no, B row, the B cabins. The A ones aren't "
                             "burning.", [("cabin row B", "fire_and_smoke")]),
+    # "out past the ramp thing": somewhere beyond it, not there
+    ("seal_sanctuary", "hiya um im at the seal place theres a little boy stuck in the mud like out past the ramp "
+                       "thing hes crying and his mums screaming please come quick",
+     [("mudflats", "person_in_trouble")]),
+    # "bank of the acid creek": the creek's own bank, not the place the KB stands on it
+    ("sulphur_mine", "SMS from Ranger Dewi: bank of the acid creek has slumped into the water, the path beside it is "
+                     "gone for about 20m. pls warn porters", [("acid stream", "ground_giving_way")]),
+    ("sulphur_mine", "the loading point on the bank of the acid creek is on fire",
+     [("ropeway loading point", "fumes_and_fire")]),
+    # a head word no name says, whose stem names the one relation the anchor has: "the drain that feeds" the gumbo
+    ("salt_flats_speedway", "The road the RVs are strung out along has a soft spot, the crust broke under a tow rig, "
+                            "and that's our only way out. The drain that feeds the gumbo has burst its banks as well.",
+     [("access causeway", "unsafe_ground"), ("brine ditch", "unsafe_ground")]),
+    # "the tower lights just went out": what failed there, no danger lent
+    ("salt_flats_speedway", "yeah uh theres smoke coming off the genny like black smoke and the and the tower lights "
+                            "just went out", [("generator trailer", "fire_and_fumes")]),
+    # "properly out", "fire service confirm it's out and they're leaving": over
+    ("knowledge_base", "Hi, it's Dev from the bakehouse, just ringing to say that fire you were at this morning is "
+                       "properly out now, the last engine left about ten. Nothing else to report, thanks.", []),
+    ("riverbend", "Control, ref the fire in the building adjoining the granary, fire service confirm it's out and "
+                  "they're leaving, over.", []),
+    ("riverbend", "the fire at the granary, crews report it's spreading", [("granary", "threat")]),
+    # "the cloud's now inside the brewhouse too": the fumes said again
+    ("riverbend", "Lock keeper calling. Toxic fumes off the leather works and the cloud's now inside the brewhouse "
+                  "too, both need emptying before anyone else goes in.",
+     [("brewery", "threat"), ("tannery", "threat")]),
 ])
 def test_dev97_phenomena(kb_analyzers, kb, text, expected):
     assert claims(kb_analyzers[kb], text) == expected

@@ -678,6 +678,9 @@ class ReportAnalyzer:
                                  and not word.lower().endswith(("ing", "ed")))):
                 continue  # "Water's pouring through ...", "Water is up over ...": a subject, not "lifts_water_out_of"
                 # ("Waves coming straight over the wall": not ``keeps_the_waves_off``)
+            if opening and norms[t + 1:t + 2] == ("of",) \
+                    and norms[t] in ("bank", "banks", "edge", "side", "shore", "foot", "top", "end"):
+                continue  # "bank of the acid creek has slumped": the creek's own bank, not ``stands_on_the_bank_of``
             if t > 0 and word[:1].isupper() and not word.isupper() and toks.tokens[t - 1].text[:1].isupper() \
                     and not toks.sentence_start[t]:
                 continue  # "Red Watch to TCC": a word of a name, not a relation's verb
@@ -3087,8 +3090,7 @@ class ReportAnalyzer:
                     and any(name_words(f)[-1:] == (norms[e - 1],) for f in forms):
                 ex.places[idx] = replace(p, status="reference", reason=f"'{raw}' of many things ('{raw} {toks.tokens[e].text}')")
 
-    @staticmethod
-    def _nearest_points(ex: Extraction, toks: Tokens, norms: tuple[str, ...]) -> None:
+    def _nearest_points(self, ex: Extraction, toks: Tokens, norms: tuple[str, ...]) -> None:
         """Places said only to say where: "flashover in the north-lights, end bay nearest the river" (a part of the
         place said before it, picked out by the place it is nearest to) and "the weir's right below him" (where the
         place is from a person)."""
@@ -3117,6 +3119,14 @@ class ReportAnalyzer:
                 if q is not None:
                     ex.places[idx] = replace(p, status="reference", reason=f"reference point for '{q.text}'")
                     continue
+            if k >= 3 and norms[k - 1] in ("past", "beyond") and norms[k - 2] in ("out", "further", "farther", "way") \
+                    and (p.end_tok >= len(norms) or toks.clause_start[p.end_tok]
+                         or norms[p.end_tok:p.end_tok + 1] in (("thing",), ("bit",))) \
+                    and any(self._role_cue_at(norms, m, Role.CRITICAL) for m in range(max(0, k - 10), k - 2)
+                            if toks.sentence_of[m] == toks.sentence_of[p.start_tok]):
+                # "a little boy stuck in the mud like out past the ramp thing": somewhere beyond it, not there
+                ex.places[idx] = replace(p, status="reference", reason="a place beyond it ('out past'): no claim")
+                continue
             if k < 2 or norms[k - 1] not in ("nearest", "closest") or not norms[k - 2].isalpha() \
                     or norms[k - 2] in lx.FUNCTION_WORDS or norms[k - 2] in lx.COPULAS \
                     or any(toks.clause_start[j] for j in range(k - 1, p.start_tok + 1)):
@@ -3662,6 +3672,11 @@ class ReportAnalyzer:
             return None, None
         found = {other: via for other, (via, _) in self._related_to(anchor).items()
                  if any(key[0] in name_words(f) for f in self.kb.landmark_by_name[other].surface_forms)}
+        if not found and len(key[0]) >= 5:
+            # "the drain that feeds the gumbo": no name says "drain", but the one relation the anchor has that
+            # the head word's stem names (``brine ditch drains into mud sink``) does
+            found = {other: via for other, (via, phrase) in self._related_to(anchor).items()
+                     if any(_same_stem(key[0], w) for w in norm_phrase(phrase))}
         if len(found) != 1:
             return None, None
         other, via = next(iter(found.items()))
@@ -9042,6 +9057,12 @@ class ReportAnalyzer:
             j = k
             if norms[k] == "but" and not self._cue_between(norms, cue.end_tok, k):
                 j += 1  # "we did have smoke, er, from the kitchen, but it's out now"
+            said_by = next((m for m in range(j, min(len(norms), j + 4)) if norms[m] in (
+                "confirm", "confirms", "confirmed", "say", "says", "report", "reports")), None)
+            if said_by is not None and said_by + 1 < len(norms) and norms[said_by + 1] in ("its", "it", "thats", "that") \
+                    and not any(toks.clause_start[m] for m in range(j + 1, said_by + 1)) \
+                    and not any(j <= q.start_tok < said_by for q in self._places_now):
+                j = said_by + 1  # "ref the fire in the building adjoining the granary, fire service confirm it's out"
             while j < len(norms) and j - k < 6 and norms[j] in lx.BACK_REFERENCE_WORDS | lx.FILLERS:
                 j += 1
             h = self._cancel.match_at(norms, j) if j < len(norms) else None
@@ -9066,8 +9087,10 @@ class ReportAnalyzer:
                     and (h[0] + 1 >= len(norms) or toks.clause_start[h[0] + 1]):
                 h = (h[0] + 1, h[1])  # "the gas leak at the hardware store, they've capped it, ..."
             if h is not None and (h[0] >= len(norms) or toks.clause_start[h[0]] or norms[h[0]] in ("now", "completely")
-                                  or h[1] in lx.CANCEL_CLAUSES):
-                cancelled_by = h[1]
+                                  or h[1] in lx.CANCEL_CLAUSES
+                                  or norms[h[0]] == "and" and norms[h[0] + 1:h[0] + 2] in (
+                                      ("theyre",), ("they",), ("were",), ("we",), ("crews",), ("everyone",))):
+                cancelled_by = h[1]  # ("fire service confirm it's out and they're leaving": a new clause after it)
         if negated_by is None:
             j = cue.start_tok - 1
             while j >= 0 and norms[j] in lx.DETERMINERS | lx.FILLERS:
@@ -9880,6 +9903,11 @@ class ReportAnalyzer:
             if len(tail) >= 3 and set(tail[:3]) & {"got", "has", "have", "is", "was", "are", "had"} \
                     and len(seg_places.get(k, [])) == 1 and not {"too", "also", "well", "same"} & set(tail):
                 continue  # "the hotel's got the gas leak, the bank's just got its alarm ringing": a predicate of its own
+            if len(tail) >= 3 and set(tail[:4]) & {"went", "stopped", "tripped", "failed", "died", "cut"} \
+                    and tail[0] in ("lights", "light", "power", "electric", "electrics", "alarm", "alarms", "radio", "phone",
+                                    "phones", "pump", "pumps", "engine", "generator") \
+                    and len(seg_places.get(k, [])) == 1 and not {"too", "also", "well", "same"} & set(tail):
+                continue  # "smoke coming off the genny ... and the tower lights just went out": what failed there
             done_to = [w for w in norms[max(0, np0 - 4):np0] if w not in lx.FILLERS]
             if len(done_to) >= 2 and done_to[-1] in lx.CREW_ACTION_VERBS \
                     and done_to[-2] in ("we", "weve", "ive", "i", "theyve", "they", "have", "ve"):
