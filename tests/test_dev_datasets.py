@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev99) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev100) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -210,6 +210,10 @@ BAMBOO_TEMPLE = ROOT / "knowledge_bases" / "bamboo_temple"
 EXPO_SITE = ROOT / "knowledge_bases" / "expo_site"
 LIDO_PARK = ROOT / "knowledge_bases" / "lido_park"
 SALT_FLATS_SPEEDWAY = ROOT / "knowledge_bases" / "salt_flats_speedway"
+PITHEAD_VILLAGE = ROOT / "knowledge_bases" / "pithead_village"
+REGATTA_COURSE = ROOT / "knowledge_bases" / "regatta_course"
+DAIRY_FARM = ROOT / "knowledge_bases" / "dairy_farm"
+BALLOON_FIESTA = ROOT / "knowledge_bases" / "balloon_fiesta"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -577,6 +581,10 @@ SETS = {
     "dev99/market_square": _set("dev99/market_square.jsonl", MARKET_SQUARE, "ms99", TWENTY, sep=""),
     "dev99/riverbend": _set("dev99/riverbend.jsonl", RIVERBEND, "rb99", TWENTY, sep=""),
     "dev99/market_square_b": _set("dev99/market_square_b.jsonl", MARKET_SQUARE, "mb99", TWENTY, sep=""),
+    "dev100/pithead_village": _set("dev100/pithead_village.jsonl", PITHEAD_VILLAGE, "ph100", TWENTY, sep=""),
+    "dev100/regatta_course": _set("dev100/regatta_course.jsonl", REGATTA_COURSE, "rg100", TWENTY, sep=""),
+    "dev100/dairy_farm": _set("dev100/dairy_farm.jsonl", DAIRY_FARM, "dy100", TWENTY, sep=""),
+    "dev100/balloon_fiesta": _set("dev100/balloon_fiesta.jsonl", BALLOON_FIESTA, "hb100", TWENTY, sep=""),
 }
 
 
