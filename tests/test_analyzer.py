@@ -5184,6 +5184,59 @@ def test_dev95_phenomena(kb_analyzers, kb, text, expected):
     ("riverbend", "Lock keeper calling. Toxic fumes off the leather works and the cloud's now inside the brewhouse "
                   "too, both need emptying before anyone else goes in.",
      [("brewery", "threat"), ("tannery", "threat")]),
+    # spoil through the fence and into the gardens: the slide has reached them
+    ("pithead_village", "Control, Tip Watch one. We've got a tip slide off the south face of the bing, spoil's "
+                        "already through the fence and into the leek gardens, over.",
+     [("allotments", "ground_or_structure_failing"), ("spoil tip", "ground_or_structure_failing")]),
+    # "burns to both arms": a body part, not "the arms" (a pub)
+    ("pithead_village", "Smoke pouring out of the washery roof, the main conveyor belt's caught inside. One of the "
+                        "fitters with burns to both arms has walked over to the first aid room, he needs an "
+                        "ambulance.", [("ambulance room", "person_in_danger"), ("coal washery", "burning_or_bad_air")]),
+    # "the school is the same": what was said of the place before
+    ("pithead_village", "Chapel's open as an assembly point, the minister's got blankets out and a kettle on. The "
+                        "school is the same, the head says she can take the little ones in the hall.",
+     [("bethel chapel", "safe_refuge"), ("colliery school", "safe_refuge")]),
+    ("pithead_village", "fire at the chapel. The school is the same.",
+     [("bethel chapel", "burning_or_bad_air"), ("colliery school", "burning_or_bad_air")]),
+    ("pithead_village", "The chapel is on fire. The school is the same age.",
+     [("bethel chapel", "burning_or_bad_air")]),
+    # "the back legs": which legs, not "the backs"; "clear the yard": an order, no safe place
+    ("pithead_village", "The headgear's leaning. The back legs have shifted off their footings, clear the yard round "
+                        "number one shaft, nobody goes under it.", [("headframe", "ground_or_structure_failing")]),
+    ("knowledge_base", "Clear the square, it's safe now", [("market square", "safe_zone")]),
+    # "locked up" is shut, where no category speaks of locked places
+    ("pithead_village", "the school — sorry, the chapel — no wait, the school, yeah, the school is the assembly "
+                        "point, not the chapel, the chapel's locked up", [("colliery school", "safe_refuge")]),
+    # a person down on the floor, burned, going under
+    ("pithead_village", "afterdamp in the lamp r-- the lamp room, lads get out get out, and and there's one of the "
+                        "lamp lads down on the floor in there",
+     [("lamp room", "burning_or_bad_air"), ("lamp room", "person_in_danger")]),
+    ("pithead_village", "Fire in the boiler house, and one of the enginemen's been burned in the building it raises "
+                        "steam for.",
+     [("boiler house", "burning_or_bad_air"), ("winding engine house", "person_in_danger")]),
+    ("regatta_course", "theres a kid gone in off the end of the landing stages i think hes ok no hes not hes going "
+                       "under please come", [("landing stages", "person_in_difficulty")]),
+    # "the tip": the one spoil tip, a short head word
+    ("pithead_village", "My lad's shut himself in his grandad's shed on the ground the tip looms over, he's cut his "
+                        "hand bad and he won't come out.", [("allotments", "person_in_danger")]),
+    ("pithead_village", "the tip is burning", [("spoil tip", "burning_or_bad_air")]),
+    # "the lock keeper", "one of the start marshals": who, not where
+    ("regatta_course", "This is the lock keeper. With all this rain the weir's running a proper stopper. Nobody, and "
+                       "I mean nobody, takes a boat past the finish towards the tumbling bay.",
+     [("mill weir", "unsafe_ground_or_water")]),
+    ("regatta_course", "Race control, the wobbly bridge has given way at the island end and one of the start marshals "
+                       "went through into the water with it, he's hanging on to a pile.",
+     [("eyot footbridge", "person_in_difficulty"), ("eyot footbridge", "unsafe_ground_or_water")]),
+    ("regatta_course", "14:32 Umpire 2: whole willow came down in the night and it's snagged across lanes one and two "
+                       "on the course. Stake boats have also broken their moorings, start unusable.",
+     [("long reach", "unsafe_ground_or_water"), ("start pontoon", "unsafe_ground_or_water")]),
+    # "the concrete ramp coming down from Kingfisher": a way, nothing falling
+    ("regatta_course", "All launches, your safe landing is the pontoon at the foot of the concrete ramp coming down "
+                       "from Kingfisher.", [("launch pontoon", "safe_refuge")]),
+    ("regatta_course", "rocks coming down from the slipway onto the path", [("slipway", "unsafe_ground_or_water")]),
+    # what someone went "to look at" is not where they are
+    ("pithead_village", "erm my little brother's gone missing he went to the allot-- the gardens to look at the tip "
+                        "and he's not come back and it's dark", [("allotments", "person_in_danger")]),
 ])
 def test_dev97_phenomena(kb_analyzers, kb, text, expected):
     assert claims(kb_analyzers[kb], text) == expected

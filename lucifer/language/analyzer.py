@@ -951,6 +951,10 @@ class ReportAnalyzer:
                 continue  # "don't park anything round there": the word as a verb
             if b - a == 1 and norms[a] in ("front", "back", "side", "top", "bottom", "end") and norms[b:b + 1] == ("of",):
                 continue  # "the glasshouse is burning, the whole front of it": a part of a place, not "the front"
+            if b - a == 1 and norms[a] in ("front", "back", "side", "bottom") and b < len(norms) \
+                    and not toks.clause_start[b] and norms[b].isalpha() and norms[b] not in lx.FUNCTION_WORDS \
+                    and toks.tokens[a].text.lower() == norms[a] and self._cues.match_at(norms, b) is None:
+                continue  # "the back legs have shifted": a word that says which legs, not "the backs" (a lane)
             if b - a == 1 and norms[a] in lx.EVENT_NOUNS and b + 1 < len(norms) and norms[b] in ("at", "on", "near") \
                     and norms[b + 1] in lx.ARTICLES and not toks.clause_start[b]:
                 continue  # "re the slip at the cliff path": the landslip there, not the slipway called "the slip"
@@ -966,9 +970,15 @@ class ReportAnalyzer:
                         f.lower().endswith("s") for f in self.kb.landmark_by_name[landmark].surface_forms
                         if norm_phrase(f)[-1:] == norms[a:b]):
                 continue  # "the ride it powers": one ride, described, not the fairground called "the rides"
-            if b - a == 1 and a > 0 and toks.tokens[a - 1].text.lower() in ("their", "his", "her", "my", "your") \
+            if b - a == 1 and a > 0 and toks.tokens[a - 1].text.lower() in ("their", "his", "her", "my", "your", "both") \
                     and norms[a] in lx.BODY_PARTS:
-                continue  # "a lad with burns on his arms": his arms, not "the arms" (a pub)
+                continue  # "a lad with burns on his arms", "burns to both arms": his arms, not "the arms" (a pub)
+            if b < len(norms) and norms[b] in lx.SPEAKER_ROLES | lx.ROLE_LABELS and not toks.clause_start[b] \
+                    and a >= 3 and norms[a - 1] == "the" and (norms[a - 3:a - 1] == ("this", "is") or norms[a - 2] in ("its", "im")):
+                continue  # "This is the lock keeper": who calls, named by the place they keep, no place said
+            if b < len(norms) and norms[b] in lx.SPEAKER_ROLES | lx.ROLE_LABELS and not toks.clause_start[b] \
+                    and a >= 3 and norms[a - 2:a] == ("of", "the") and toks.tokens[b].text.lower().endswith("s"):
+                continue  # "one of the start marshals went through": who they are, no place said
             if b - a == 1 and a > 0 and toks.tokens[a - 1].text.lower() in ("its", "their", "his", "her") \
                     and toks.tokens[a].text.lower().endswith("s") and not any(
                         f.lower().endswith("s") for f in self.kb.landmark_by_name[landmark].surface_forms):
@@ -6260,6 +6270,10 @@ class ReportAnalyzer:
             if self._evacuated_to(toks, norms, p.end_tok):
                 ex.places[idx] = replace(p, status="reference", reason="evacuated to another place: no claim")
                 continue
+            if j >= 2 and norms[j] == "at" and norms[j - 1] in ("look", "stare", "gawp") and norms[j - 2] == "to":
+                # "he went to the gardens to look at the tip and he's not come back": what he went to see
+                ex.places[idx] = replace(p, status="reference", reason="what was looked at: no claim")
+                continue
             prep = j if norms[j] in ("at", "in", "on") else j - 1
             if prep >= 1 and norms[prep] in ("at", "in", "on") and norms[prep - 1] in ("were", "was") \
                     and norms[p.end_tok:p.end_tok + 1] in (("before",), ("earlier",)) and any(
@@ -7271,11 +7285,16 @@ class ReportAnalyzer:
                 continue  # "under the shelter roof", "the bus shelter": the structure, no place of safety
             start, end = toks.tokens[a].start, toks.tokens[b - 1].end
             if (norms[a:b] in lx.LOCK_CUES or norms[a] == "jammed" and norms[a:b] != ("jammed", "open")
-                    and "door" in norms[max(0, a - 3):a]) and not self._access_category():
+                    and "door" in norms[max(0, a - 3):a]) and (not self._access_category() or norms[a:b] in lx.LOCK_CUES
+                                                                and not self._lock_category()):
                 # "The church is locked, nobody's using it": shut, no danger, where no category is about access
                 # (nor a shelter: the MiniLM fallback does not guess at it)
                 shut.update(range(a, b))
                 continue
+            if norms[a:b] in (("coming", "down"), ("comes", "down"), ("running", "down"), ("runs", "down")) \
+                    and norms[b:b + 1] == ("from",) and a > 0 \
+                    and norms[a - 1] in ("ramp", "slip", "slipway", "path", "track", "road", "lane", "steps", "stairs"):
+                continue  # "the concrete ramp coming down from Kingfisher": a way that runs down from it, nothing falling
             if norms[a:b] in (("everyone", "out"), ("everybody", "out")) \
                     and toks.tokens[a].text.lower().endswith(("'s", "’s")) and self._person_category:
                 # "everyone's out of the lift shaft": they have left (nobody in need there), no order to get out
@@ -8852,6 +8871,11 @@ class ReportAnalyzer:
                 and (norms[e] != "stood" or norms[e + 1:e + 2] == ("down",)):
             # "cordon lifted", "the cordon's been lifted": the warning withdrawn, the danger with it
             return replace(cue, polarity="denied", reason=f"negated by '{norms[e]}'")
+        if norms[cue.start_tok:cue.end_tok] == ("clear",) and (toks.clause_start[cue.start_tok] or cue.start_tok == 0) \
+                and norms[cue.end_tok:cue.end_tok + 1] in (("the",), ("everyone",), ("everybody",), ("all",)) \
+                and self.kb.category_by_name[cue.category].role == Role.DESIRABLE:
+            # "the headgear's leaning ..., clear the yard round number one shaft": an order to empty it, no safe place
+            return replace(cue, polarity="denied", reason="an order to clear it, not a safe place")
         if norms[cue.start_tok] in ("hasnt", "havent") and norms[cue.start_tok + 1:cue.end_tok] == ("caught",):
             # "the old trees haven't caught": the danger word said with its own negation
             return replace(cue, polarity="denied", reason=f"negated by '{toks.tokens[cue.start_tok].text}'")
@@ -10114,10 +10138,17 @@ class ReportAnalyzer:
             # "... water's backing up in there. Oh — and the dripstone one too": the same news of another place
             too = j >= 1 and norms[j - 1] == "and" and norms[p.end_tok:p.end_tok + 1] == ("too",) \
                 and not any(c.place.landmark == p.landmark for c in pairs)
+            # "Chapel's open as an assembly point, ... . The school is the same": the same news of another place
+            e = p.end_tok + (norms[p.end_tok:p.end_tok + 1] in (("is",), ("s",), ("was",)))
+            same = (e > p.end_tok or toks.tokens[p.end_tok - 1].text.lower().endswith(("'s", "’s"))) \
+                and norms[e:e + 2] == ("the", "same") and toks.sentence_start[j] \
+                and (e + 2 >= len(norms) or toks.clause_start[e + 2]) \
+                and not any(c.place.landmark == p.landmark for c in pairs)
+            too = too or same
             if not (so_is or too):
                 continue
             n = toks.sentence_of[p.start_tok]
-            k = j - 3 if so_is else j - 1
+            k = j - 3 if so_is else j if same else j - 1
             said_in = (n,) if so_is else (n, n - 1)  # ("too" reaches the sentence before)
             before = [c for c in pairs if c.place.end_tok <= k and c.place.landmark != p.landmark
                       and toks.sentence_of[c.place.start_tok] in said_in and c.cue.start_tok < k]
@@ -10173,6 +10204,13 @@ class ReportAnalyzer:
             return []
         place = next(iter(at.values()))
         return [Claim(place, c) for c in mine]
+
+    def _lock_category(self) -> bool:
+        """Does an undesirable category's description speak of places locked or jammed shut?"""
+        if not hasattr(self, "_lock_cat"):
+            self._lock_cat = any(re.search(r"\b(lock|locks|locked|lockdown|jammed)\b", c.description.lower())
+                                 for c in self.kb.categories_with_role(Role.UNDESIRABLE))  # (not "blocked")
+        return self._lock_cat
 
     def _access_category(self) -> bool:
         """Does an undesirable category's description speak of places that cannot be entered or got through?"""
@@ -11089,7 +11127,8 @@ _CREW_POSITION = "in transit (a crew's position): no claim"
 # Verbs of a danger or of people on the move: a place they go "towards" is not yet reached
 _ON_THE_MOVE = frozenset({"running", "spreading", "moving", "heading", "creeping", "racing", "burning", "drifting",
                           "working", "making", "travelling", "traveling", "edging", "rolling", "flowing", "sliding",
-                          "advancing", "pushing", "blowing", "going", "walking", "driving", "crawling", "jumping"})
+                          "advancing", "pushing", "blowing", "going", "walking", "driving", "crawling", "jumping",
+                          "takes", "take", "taking", "rowing", "paddling", "steering"})
 _SIDE_WORDS = frozenset({"on", "at", "the", "east", "west", "north", "south", "far", "other", "near", "side", "end",
                          "edge", "of", "eastern", "western", "northern", "southern", "rim"})
 _PERSON_KEYS = frozenset(w for p in lx.PERSON_NOUNS for w in norm_phrase(p))

@@ -177,6 +177,11 @@ _add(CRITICAL, "|".join(f"pulled {who} out of" for who in ("a man", "a woman", "
                                                              "him", "her", "a lad", "a girl", "a boy")))
 _add(CRITICAL, "still out on it|still out on the|stuck out on it|still stuck out on")
 # ("my son walked out to the rock pile and he's not back"; "says he can't feel his left leg")
+_add(CRITICAL, "he's going under|hes going under|she's going under|shes going under|they're going under|"
+               "theyre going under|")  # ("a kid gone in off the end of the landing stages ... he's going under")
+_add(CRITICAL, "been burned in|been burnt in|been badly burned|been badly burnt|got burned|got burnt|")
+_add(CRITICAL, "down on the floor in there|lad down on the floor|lads down on the floor|man down on the floor|"
+               "one of them down on the floor|")  # ("there's one of the lamp lads down on the floor in there")
 _add(CRITICAL, "he's not back|she's not back|they're not back|he isn't back|she isn't back|they aren't back|"
                "hes not back|shes not back|theyre not back|not back yet|still not back|"
                "can't feel his|can't feel her|cant feel his|cant feel her|cannot feel his|cannot feel her|"
@@ -1606,7 +1611,7 @@ DANGER_KIND_EXTRA: dict[str, list[str]] = {
               "poles are fallen", "poles have fallen", "poles have come down", "wind has broken", "wind's broken",
               "tearing loose", "ripping loose", "coming loose", "come loose", "came loose", "has broken free", "come adrift", "broken adrift", "torn from its moorings",
               "is adrift", "s adrift", "gone adrift", "drifting free", "broken every mooring", "broken all her moorings",
-              "broken her moorings", "broken its moorings", "broke her moorings", "broke its moorings",
+              "broken her moorings", "broken its moorings", "broke her moorings", "broke its moorings", "broken their moorings", "broke their moorings",
               "parted her moorings", "parted its moorings", "torn up", "been torn up", "planks are all up",
               "planks are up", "planking is up", "planking's up",
               "windows all blown out", "windows blown out", "windows are blown out", "windows have blown out", "all blown out", "strewn across", "strewn over", "strewn all over", "on their sides", "on its side", "onto its side", "onto their sides", "blew in", "blew straight in", "blown straight in", "roof is gone", "roof's torn", "torn clean off", "came down through", "peeled off", "been peeled off", "peeled back", "lost its roof", "lost their roof", "lost their roofs",
@@ -1644,7 +1649,8 @@ DANGER_KIND_EXTRA: dict[str, list[str]] = {
               "water's at the top of", "water is at the top of",
               "water at the top of", "water's up to the top of", "water is up to the top of"],
     "access": ["blocking", "blocking the way", "blocking it", "blocks the way", "rocks across", "rocks across it", "rocks across the road", "debris across", "debris right across", "fallen oak", "fallen beech", "fallen ash", "fallen branch", "fallen branches"],
-    "ground": ["strewn with rocks", "strewn with boulders", "littered with rocks", "littered with boulders", "buried to the axles", "buried to its axles", "buried up to the axles", "buried up to its axles",
+    "ground": ["spoil's already through", "spoil is already through", "spoil's through", "spoil is through", "spoil's come through",
+               "spoil has come through", "spoil's come down", "spoil has come down", "strewn with rocks", "strewn with boulders", "littered with rocks", "littered with boulders", "buried to the axles", "buried to its axles", "buried up to the axles", "buried up to its axles",
                "sunk to the axles", "sunk to its axles", "bogged down", "there's a slip on", "there's been a slip on", "there is a slip on", "scree moving", "scree is moving", "ground is moving", "ground moving", "slope is moving", "hillside is moving", "rocks are coming off", "rocks are coming down", "rocks are falling", "dropping rocks", "rocks dropping", "dropping stones", "has sunk", "have sunk", "its sunk", "ground dropped", "ground has dropped", "ground dropping", "ground is dropping", "ground gone", "ground has gone", "ground just gone", "floor dropped", "floor has dropped", "hole opened up", "hole has opened up", "hole just opened up", "floor has opened", "floor's opened", "sinkhole", "sink hole", "ash a foot deep", "ash is knee deep", "ash knee deep", "ash's knee deep", "ash is ankle deep", "a foot of ash", "feet of ash", "inches of ash", "deep in ash", "covered in ash", "covered in stones", "covered in rocks", "covered in boulders", "covered with stones", "covered with rocks", "stones all over it", "rocks all over it", "heaped with ash", "buried in ash", "under the ash", "drifts of ash", "ash drifts", "half buried", "half-buried", "slurry", "full of slurry", "sludge", "silt", "full of silt"],
     "fallen": ["tree's down", "tree is down", "tree down", "trees are down", "trees down", "tree's come over",
                "tree has come over", "come over in the wind", "came over in the wind", "taken the top off", "took the top off", "knocked the top off", "blown the top off", "blew the top off",
@@ -1708,7 +1714,7 @@ CREW_ACTION_VERBS = frozenset({"shut", "closed", "evacuated", "emptied", "cleare
 # Verbs of people moving away that take "clear" ("crew have stepped well clear"): no safe place said
 MOVED_CLEAR_VERBS = frozenset({"stepped", "stood", "backed", "moved", "pulled", "jumped", "scrambled",
                                "step", "stand", "move", "pull", "standing", "stepping", "backing"})
-SHORT_PLACE_NOUNS = frozenset({"gym", "pub", "inn", "spa", "zoo", "dam"})
+SHORT_PLACE_NOUNS = frozenset({"gym", "pub", "inn", "spa", "zoo", "dam", "tip"})
 # Kinds of place said by another word ("the pub" for a landmark its description calls an inn)
 PLACE_KIND_SYNONYMS = {"pub": ("inn", "tavern", "alehouse"), "inn": ("pub", "tavern"), "tavern": ("pub", "inn"),
                        "shop": ("store",), "store": ("shop",)}
