@@ -973,12 +973,10 @@ class ReportAnalyzer:
             if b - a == 1 and a > 0 and toks.tokens[a - 1].text.lower() in ("their", "his", "her", "my", "your", "both") \
                     and norms[a] in lx.BODY_PARTS:
                 continue  # "a lad with burns on his arms", "burns to both arms": his arms, not "the arms" (a pub)
-            if b < len(norms) and norms[b] in lx.SPEAKER_ROLES | lx.ROLE_LABELS and not toks.clause_start[b] \
-                    and a >= 3 and norms[a - 1] == "the" and (norms[a - 3:a - 1] == ("this", "is") or norms[a - 2] in ("its", "im")):
-                continue  # "This is the lock keeper": who calls, named by the place they keep, no place said
-            if b < len(norms) and norms[b] in lx.SPEAKER_ROLES | lx.ROLE_LABELS and not toks.clause_start[b] \
-                    and a >= 3 and norms[a - 2:a] == ("of", "the") and toks.tokens[b].text.lower().endswith("s"):
-                continue  # "one of the start marshals went through": who they are, no place said
+            if b < len(norms) and norms[b] in lx.SPEAKER_ROLES | lx.ROLE_LABELS and not toks.clause_start[b] and a >= 3 \
+                    and (norms[a - 1] == "the" and (norms[a - 3:a - 1] == ("this", "is") or norms[a - 2] in ("its", "im"))
+                         or norms[a - 2:a] == ("of", "the") and toks.tokens[b].text.lower().endswith("s")):
+                continue  # "This is the lock keeper", "one of the start marshals went through": who, no place said
             if b - a == 1 and a > 0 and toks.tokens[a - 1].text.lower() in ("its", "their", "his", "her") \
                     and toks.tokens[a].text.lower().endswith("s") and not any(
                         f.lower().endswith("s") for f in self.kb.landmark_by_name[landmark].surface_forms):
@@ -8863,14 +8861,13 @@ class ReportAnalyzer:
         j = cue.start_tok - 1
         steps = 0
         place_toks = self._place_tokens | self._marker_tokens
-        e = cue.end_tok
-        while e < len(norms) and e - cue.end_tok < 3 and norms[e] in ("has", "have", "s", "is", "been", "now", "just"):
-            e += 1
-        if norms[cue.end_tok - 1] in ("cordon", "cordons", "closure", "warning", "alert") \
-                and norms[e:e + 1] in (("lifted",), ("removed",), ("stood",)) \
-                and (norms[e] != "stood" or norms[e + 1:e + 2] == ("down",)):
+        if norms[cue.end_tok - 1] in ("cordon", "cordons", "closure", "warning", "alert"):
             # "cordon lifted", "the cordon's been lifted": the warning withdrawn, the danger with it
-            return replace(cue, polarity="denied", reason=f"negated by '{norms[e]}'")
+            w = cue.end_tok
+            while w < len(norms) and w - cue.end_tok < 3 and norms[w] in ("has", "have", "s", "is", "been", "now", "just"):
+                w += 1
+            if norms[w:w + 1] in (("lifted",), ("removed",)) or norms[w:w + 2] == ("stood", "down"):
+                return replace(cue, polarity="denied", reason=f"negated by '{norms[w]}'")
         if norms[cue.start_tok:cue.end_tok] == ("clear",) and (toks.clause_start[cue.start_tok] or cue.start_tok == 0) \
                 and norms[cue.end_tok:cue.end_tok + 1] in (("the",), ("everyone",), ("everybody",), ("all",)) \
                 and self.kb.category_by_name[cue.category].role == Role.DESIRABLE:
