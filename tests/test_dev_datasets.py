@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev100) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev101) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -214,6 +214,10 @@ PITHEAD_VILLAGE = ROOT / "knowledge_bases" / "pithead_village"
 REGATTA_COURSE = ROOT / "knowledge_bases" / "regatta_course"
 DAIRY_FARM = ROOT / "knowledge_bases" / "dairy_farm"
 BALLOON_FIESTA = ROOT / "knowledge_bases" / "balloon_fiesta"
+ROPE_WALK_QUAY = ROOT / "knowledge_bases" / "rope_walk_quay"
+TULIP_FIELDS = ROOT / "knowledge_bases" / "tulip_fields"
+OASIS_TOWN = ROOT / "knowledge_bases" / "oasis_town"
+AVALANCHE_HAMLET = ROOT / "knowledge_bases" / "avalanche_hamlet"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -585,6 +589,10 @@ SETS = {
     "dev100/regatta_course": _set("dev100/regatta_course.jsonl", REGATTA_COURSE, "rg100", TWENTY, sep=""),
     "dev100/dairy_farm": _set("dev100/dairy_farm.jsonl", DAIRY_FARM, "dy100", TWENTY, sep=""),
     "dev100/balloon_fiesta": _set("dev100/balloon_fiesta.jsonl", BALLOON_FIESTA, "hb100", TWENTY, sep=""),
+    "dev101/rope_walk_quay": _set("dev101/rope_walk_quay.jsonl", ROPE_WALK_QUAY, "rw101", TWENTY, sep=""),
+    "dev101/tulip_fields": _set("dev101/tulip_fields.jsonl", TULIP_FIELDS, "tf101", TWENTY, sep=""),
+    "dev101/oasis_town": _set("dev101/oasis_town.jsonl", OASIS_TOWN, "oa101", TWENTY, sep=""),
+    "dev101/avalanche_hamlet": _set("dev101/avalanche_hamlet.jsonl", AVALANCHE_HAMLET, "ah101", TWENTY, sep=""),
 }
 
 
