@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev101) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev102) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -218,6 +218,10 @@ ROPE_WALK_QUAY = ROOT / "knowledge_bases" / "rope_walk_quay"
 TULIP_FIELDS = ROOT / "knowledge_bases" / "tulip_fields"
 OASIS_TOWN = ROOT / "knowledge_bases" / "oasis_town"
 AVALANCHE_HAMLET = ROOT / "knowledge_bases" / "avalanche_hamlet"
+MAPLE_SUGAR_BUSH = ROOT / "knowledge_bases" / "maple_sugar_bush"
+GALVANISING_WORKS = ROOT / "knowledge_bases" / "galvanising_works"
+SHOW_CAVERNS = ROOT / "knowledge_bases" / "show_caverns"
+FLOATING_MARKET = ROOT / "knowledge_bases" / "floating_market"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -593,6 +597,10 @@ SETS = {
     "dev101/tulip_fields": _set("dev101/tulip_fields.jsonl", TULIP_FIELDS, "tf101", TWENTY, sep=""),
     "dev101/oasis_town": _set("dev101/oasis_town.jsonl", OASIS_TOWN, "oa101", TWENTY, sep=""),
     "dev101/avalanche_hamlet": _set("dev101/avalanche_hamlet.jsonl", AVALANCHE_HAMLET, "ah101", TWENTY, sep=""),
+    "dev102/maple_sugar_bush": _set("dev102/maple_sugar_bush.jsonl", MAPLE_SUGAR_BUSH, "mb102", TWENTY, sep=""),
+    "dev102/galvanising_works": _set("dev102/galvanising_works.jsonl", GALVANISING_WORKS, "gw102", TWENTY, sep=""),
+    "dev102/show_caverns": _set("dev102/show_caverns.jsonl", SHOW_CAVERNS, "sc102", TWENTY, sep=""),
+    "dev102/floating_market": _set("dev102/floating_market.jsonl", FLOATING_MARKET, "fm102", TWENTY, sep=""),
 }
 
 
