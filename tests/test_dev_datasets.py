@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev102) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev103) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -222,6 +222,10 @@ MAPLE_SUGAR_BUSH = ROOT / "knowledge_bases" / "maple_sugar_bush"
 GALVANISING_WORKS = ROOT / "knowledge_bases" / "galvanising_works"
 SHOW_CAVERNS = ROOT / "knowledge_bases" / "show_caverns"
 FLOATING_MARKET = ROOT / "knowledge_bases" / "floating_market"
+OAST_VALLEY = ROOT / "knowledge_bases" / "oast_valley"
+BRIDGE_WORKS = ROOT / "knowledge_bases" / "bridge_works"
+PINE_CAMPGROUND = ROOT / "knowledge_bases" / "pine_campground"
+GANNET_ISLE = ROOT / "knowledge_bases" / "gannet_isle"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -601,6 +605,10 @@ SETS = {
     "dev102/galvanising_works": _set("dev102/galvanising_works.jsonl", GALVANISING_WORKS, "gw102", TWENTY, sep=""),
     "dev102/show_caverns": _set("dev102/show_caverns.jsonl", SHOW_CAVERNS, "sc102", TWENTY, sep=""),
     "dev102/floating_market": _set("dev102/floating_market.jsonl", FLOATING_MARKET, "fm102", TWENTY, sep=""),
+    "dev103/oast_valley": _set("dev103/oast_valley.jsonl", OAST_VALLEY, "ov103", TWENTY, sep=""),
+    "dev103/bridge_works": _set("dev103/bridge_works.jsonl", BRIDGE_WORKS, "bw103", TWENTY, sep=""),
+    "dev103/pine_campground": _set("dev103/pine_campground.jsonl", PINE_CAMPGROUND, "pc103", TWENTY, sep=""),
+    "dev103/gannet_isle": _set("dev103/gannet_isle.jsonl", GANNET_ISLE, "gi103", TWENTY, sep=""),
 }
 
 
