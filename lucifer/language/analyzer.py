@@ -410,6 +410,12 @@ class ReportAnalyzer:
             # ("wind-blown embers": one word, not "blown")
             for part in clause.split(","):
                 ws = norm_phrase(re.sub(r"(?<=[a-z])-(?=[a-z])", "", part))
+                # ("dangerous to enter for a reason other than flames at it": what the category leaves to another)
+                cut = next((i for i in range(len(ws)) if ws[i:i + 2] in (("other", "than"), ("rather", "than"),
+                                                                         ("apart", "from")) or ws[i] in ("except", "excluding")), None)
+                if cut is not None:
+                    out.update(w for w in ws[:cut] if _weighty(w))
+                    continue
                 neg = next((i for i, w in enumerate(ws) if w in lx.NEGATORS), None)
                 if neg is None:
                     out.update(w for w in ws if _weighty(w))
@@ -890,7 +896,7 @@ class ReportAnalyzer:
                     and b not in glossary_ends and not acronym and not heading and not self._telegraphic_subject(toks, norms, a, b) \
                     and not (log and (b - a >= 2 or prev in lx.PREPOSITIONS and len(norms[a]) >= 5)) \
                     and not (b - a >= 2 and prev in ("in", "at", "from") and a >= 2 and norms[a - 2] in ("live", "living", "lives", "stay", "staying")) \
-                    and not (b - a >= 2 and (a == 0 or toks.sentence_start[a])
+                    and not ((b - a >= 2 or len(norms[a]) >= 6) and (a == 0 or toks.sentence_start[a])
                              and toks.tokens[b - 1].text.lower().replace("’", "'").endswith("'s")) \
                     and not (b - a >= 2 and self._bare_pair(norms, a, b)) \
                     and not ((a == 0 or toks.sentence_start[a]) and norms[b:b + 1] == ("itself",)) \
@@ -1883,6 +1889,9 @@ class ReportAnalyzer:
                 and (i + 2 >= len(norms) or toks.clause_start[i + 2]
                      or norms[i + 2] in lx.COPULAS | {"has", "have", "had", "that", "thats", "which"}
                      or self._relations.match_at(norms, i + 1) is not None)  # ("the field the school plays its games on")
+            if w in ("gate", "gates", "fence", "wall", "walls") and i >= 2 and toks.clause_start[i - 1] and (i - 2) in taken \
+                    and (contracted or said_of):
+                continue  # "the old dock, the gate's gone": the place just named, its gate (not the town gate)
             if w in ("path", "track", "trail") and name_words(self._heads[w])[-1:] != (w,) and (i - 1) not in rel_ends \
                     and not _after_same(norms, i):
                 continue  # "stone has come away onto the path": any path, where only other names of the mule track end so
@@ -1981,6 +1990,17 @@ class ReportAnalyzer:
     def _relation_name_words(self) -> set[str]:
         """The words of the KB's relation names."""
         return {w for rel in self.kb.relations for w in rel.phrase.split()}
+
+    def _described_as_thing(self, name: str, word: str) -> bool:
+        """The landmark's description has ``word`` as a noun of its own ("with the big wood-fired evaporator, its
+        stack"), not only before another ("coastguard lookout hut"), and the name does not say whose ("doctor's room")."""
+        lm = self.kb.landmark_by_name[name]
+        if "'" in lm.name or "’" in lm.name:
+            return False
+        words = re.findall(r"[a-z0-9]+|[,.;:()\-]", (lm.description or "").lower())
+        return any(t in (word, word + "s") and (k + 1 == len(words) or not words[k + 1].isalnum()
+                                                 or words[k + 1] in lx.FUNCTION_WORDS)
+                   for k, t in enumerate(words))
 
     @functools.cached_property
     def _first_words(self) -> dict[str, str]:
@@ -2164,6 +2184,15 @@ class ReportAnalyzer:
                 # (only a noun phrase that ends there: "the ferry building upstream of the weir" is a description
                 # for the relation passes, headed by "building"; not "it's a rally point", any one, a glossary term)
                 out.append(self._mention(toks, i - 1, nxt + 1, self._first_words[w]))
+                continue
+            name = self._first_words[w]
+            if norms[i - 1] == "the" and len(name_words(name)) == 2 and name_words(name)[0] == w \
+                    and name_words(name)[1] in _HOUSING_HEADS and w not in lx.WATER_WORDS | lx.VEHICLE_WORDS \
+                    and self._described_as_thing(name, w) \
+                    and not toks.tokens[i].text.lower().endswith("s") \
+                    and (nxt >= len(norms) or toks.clause_start[nxt] or norms[nxt] in lx.COPULAS | {"has", "have", "from", "s"}):
+                # "the shed they fire the evaporator from": the machine the evaporator house is named for, said for it
+                out.append(self._mention(toks, i, nxt, name))
                 continue
             j = i - 1 if norms[i - 1] == "the" else i
             if j in rel_ends and (nxt >= len(norms) or toks.clause_start[nxt] or norms[nxt] in lx.COPULAS | {"has", "have"}) \
@@ -2959,11 +2988,12 @@ class ReportAnalyzer:
 
     @functools.cached_property
     def _role_relations(self) -> dict[tuple[str, ...], list[Relation]]:
-        """The KB's relations named "is the <noun> of", by their noun ("drinking hole" of ``is the drinking hole of``)."""
+        """The KB's relations named "is the <noun> of" (or "for"), by their noun ("drinking hole" of ``is the drinking
+        hole of``, "fire water" of ``is the fire water for``)."""
         roles: dict[tuple[str, ...], list[Relation]] = {}
         for rel in self.kb.relations:
             words = norm_phrase(rel.phrase)
-            if len(words) >= 4 and words[0] in ("is", "are") and words[1] in lx.ARTICLES and words[-1] == "of":
+            if len(words) >= 4 and words[0] in ("is", "are") and words[1] in lx.ARTICLES and words[-1] in ("of", "for"):
                 roles.setdefault(tuple(words[2:-1]), []).append(rel)
         return roles
 
@@ -3370,6 +3400,10 @@ class ReportAnalyzer:
 
     OPEN_RELATION_MARGIN = 0.1
     OPEN_RELATION_SOLE_MIN_SIM = 0.1
+    # a relation of the anchor's far ahead of its others needs less: "whatever's built against the khan" for
+    # ``camel pens lean against caravanserai`` (0.52, the next 0.08)
+    OPEN_RELATION_CLEAR_MIN_SIM = 0.45
+    OPEN_RELATION_CLEAR_MARGIN = 0.3
 
     def _follow_link(self, anchor: str, link: str, head: str, inverse: bool,
                      sims: np.ndarray | None = None, partners: bool = True) -> tuple[str | None, str | None]:
@@ -3554,6 +3588,11 @@ class ReportAnalyzer:
             if norms[h] in lx.ROUTE_HEADS and all(norms[i] in lx.ROUTE_LINKS for i in link_idx):
                 continue
             link = " ".join(toks.tokens[i].text.lower() for i in link_idx)
+            if norms[h + 1] == "who" and link_idx and link_idx[0] == h + 2 and norms[h] not in _PEOPLE_OR_GROUPS:
+                # "the trail who go up from the horse barn": a learner's "who" for a thing, and the verb as said
+                v = toks.tokens[h + 2].text.lower()
+                if v.isalpha() and len(v) >= 2 and not v.endswith("s") and v not in lx.FUNCTION_WORDS:
+                    link = (v + ("es" if v.endswith(("o", "sh", "ch", "x")) else "s")) + link[len(v):]
             head_start = h - 1 if norms[h - 1] in lx.ARTICLES else h - 2
             head = " ".join(toks.tokens[i].text.lower() for i in range(head_start + 1, h + 1))
             verbs = [i for i in link_idx if norms[i] in _SUPPLY_VERBS]
@@ -3981,6 +4020,7 @@ class ReportAnalyzer:
             between = [norms[i] for i in linked]
             end = anchor.end_tok
             locative = False
+            said_which: PlaceMention | None = None
             if norms[head] in _WATER_HEADS and norms[head] not in self._place_nouns() \
                     and (between or head == 0 or norms[head - 1] != "the"):
                 continue  # a body of water heads only "the pool the header tank feeds" (not "the canal off the
@@ -4039,17 +4079,34 @@ class ReportAnalyzer:
                     continue  # "a warm place for the old folk from Tanrallt": the people are from it, not the place
             else:
                 # "the tube the shaft draws from": the linking verb comes after the anchor
-                if norms[head] in lx.WHATEVER or head == 0 or norms[head - 1] not in lx.ARTICLES and not (
+                # ("whatever the creek empties into": read like "the place the creek empties into" where the phrase
+                # tables and the link reading found nothing)
+                if head == 0 and norms[head] not in lx.WHATEVER \
+                        or norms[head] not in lx.WHATEVER and norms[head - 1] not in lx.ARTICLES and not (
                         head >= 2 and norms[head - 2] in lx.ARTICLES and norms[head - 1].isalpha()
                         and (head - 1) not in blocked and norms[anchor.start_tok] == "it"):
                     continue  # (an adjective may stand between: "the old building it was built out from")
-                while end < len(norms) and end - anchor.end_tok < 6 and end not in blocked \
+                # ("the chamber that the tunnel from reception opens into": a place that only says which tunnel)
+                said_which = next((q for q in ex.places if q is not anchor and anchor.end_tok < q.start_tok
+                                   <= anchor.end_tok + 5 and q.via is None and norms[anchor.end_tok] in _WHICH_ONE_PREPS
+                                   and all(norms[i] in lx.DETERMINERS | _WHICH_ONE_PREPS | _END_PARTS
+                                           for i in range(anchor.end_tok, q.start_tok))
+                                   and not any(toks.clause_start[i] for i in range(anchor.end_tok, q.end_tok))), None) \
+                    if norms[head - 1:head + 1] != ("the", "one") and norms[head + 1:head + 2] in (("that",), ("which",)) \
+                    and anchor.end_tok < len(norms) and anchor.via is None else None
+                start = end = said_which.end_tok if said_which is not None else end
+                while end < len(norms) and end - start < 6 and end not in blocked \
                         and not toks.clause_start[end] and norms[end] not in lx.COORDINATORS:
                     end += 1
-                after = norms[anchor.end_tok:end]
+                after = norms[start:end]
+                if end < len(norms) and toks.clause_start[end] and any(
+                        q.status == "active" and q.via is None and end <= q.start_tok <= end + 2
+                        and all(norms[i] in ("the", "a", "an") for i in range(end, q.start_tok)) for q in ex.places):
+                    continue  # "on the bit it runs straight into, the north portal": the place named after says which
+                    # (not "the building the long flue comes off -- that's the smelter": the same place, confirmed)
                 # a verb closes the description: the last word of the clause or one before a preposition ("the building
                 # the boiler house runs,": key "run"; not "the surgery's windows are all blown in")
-                verb = any((w.endswith("s") or w.endswith("ed")) and (i + 1 == end or norms[i + 1] in lx.RELATION_ENDINGS)
+                verb = any((w.endswith("s") or w.endswith("ed")) and (i + 1 == end or norms[i + 1] in lx.RELATION_ENDINGS | {"into"})
                            for i in range(anchor.end_tok, end) if (w := toks.tokens[i].text.lower()).isalpha()
                            and norms[i] not in lx.FUNCTION_WORDS | lx.CLAUSE_SUBJECTS | {"there", "here"})
                 verb = verb or bool(after) and after[-1] in lx.IRREGULAR_PARTICIPLES and end - 1 > anchor.end_tok \
@@ -4065,7 +4122,7 @@ class ReportAnalyzer:
                 if passive:  # ("the old building it was built out from has got people trapped inside")
                     end = anchor.end_tok + stop + 1
                 if not purpose and not passive and (not after or after[0] in lx.COPULAS | lx.PREPOSITIONS or not (
-                        verb or any(w.endswith("s") or w.endswith("ed") or w in lx.RELATION_ENDINGS for w in after))):
+                        verb or any(w.endswith("s") or w.endswith("ed") or w in lx.RELATION_ENDINGS | {"into"} for w in after))):
                     continue  # ("a tank wagon on the loading siding is leaking": the anchor's own predicate)
             if between and end < len(norms) and not toks.clause_start[end] and (
                     norms[end] in ("its", "their") or norms[end] == "the" and norms[anchor.start_tok] in ("it", "them")):
@@ -4123,7 +4180,11 @@ class ReportAnalyzer:
             relative = len(between) == 2 and between[0] in ("that", "which") \
                 and toks.tokens[linked[1]].text.lower().endswith("s") and between[1] not in lx.COPULAS
             # ("the water station that feeds the arch at the bottom of heartbreak hill": a verb of its own)
-            if described_anchor and (len(named) != 1 or not between
+            # ("the place the building facing the souk gets its washing water from": a generic head and a verb after
+            # the described anchor read it among the anchor's relations like a named one)
+            generic_after = described_anchor and not between and not named and norms[head] in lx.GENERIC_HEADS \
+                and norms[anchor.start_tok] == "the"
+            if described_anchor and not generic_after and (len(named) != 1 or not between
                                      or between[0] not in lx.PREPOSITIONS | lx.PLACE_PREPOSITIONS and not relative
                                      or norms[anchor.start_tok] != "the" or len(between) > 2 and not (
                         len(between) <= 4 and all(w in lx.FUNCTION_WORDS or w in phrases[next(iter(named))].replace("_", " ").split()
@@ -4207,6 +4268,9 @@ class ReportAnalyzer:
             via = related[target]
             ex.places.append(self._mention(toks, hs, end, target, via=f"{via} (related to {anchor.landmark})"))
             place_tokens.update(range(hs, end))
+            if said_which is not None and said_which in ex.places:
+                ex.places[ex.places.index(said_which)] = replace(said_which, status="reference",
+                                                                 reason=f"says which '{anchor.text}'")
             found = True
         if found:  # ("The pool the header tank feeds ..., and whatever that pool drains into": the description just
             # resolved is what "that pool" takes up)
@@ -4251,6 +4315,12 @@ class ReportAnalyzer:
                 and norms[k - 1] in self._place_nouns() and (toks.tokens[k + 1].text.lower().endswith(("s", "ed"))
                                                              and norms[k + 1] not in lx.COPULAS | lx.FUNCTION_WORDS
                                                              or passive) and not toks.clause_start[k + 1]
+            # ("the trailer they refuel": "they", a plain verb, and a place said in the plural before)
+            plural = raw == "they" and k + 1 < len(norms) and norms[k - 2] in lx.ARTICLES \
+                and norms[k - 1] in self._place_nouns() and toks.tokens[k + 1].text.isalpha() \
+                and norms[k + 1] not in lx.COPULAS | lx.FUNCTION_WORDS | lx.FILLERS and not toks.clause_start[k + 1] \
+                and (k + 2 == len(norms) or toks.clause_start[k + 2] or norms[k + 2] in lx.COPULAS
+                     or norms[k + 2] in lx.RELATION_ENDINGS)
             # ("the ride it powers": the place the one said before powers; "the old building it was built out from")
             # ("the boardwalk's gone under, and the plant at the far end of it is flooding": a place noun, then where
             # it stands, ending on "of it"; "a guy's hurt up on whatever drags the logs back out of it")
@@ -4268,7 +4338,7 @@ class ReportAnalyzer:
             owned = raw in ("its", "their") and norms[k - 1] in self._place_nouns() | lx.GROUND_HEADS | {"land"} \
                 and (norms[k - 2] in lx.ARTICLES or norms[k - 2] == "of" and norms[k - 4:k - 2] in (("the", "bit"),)) \
                 and k + 2 < len(norms) and _verb_like(toks.tokens[k + 2].text) and not toks.clause_start[k + 1]
-            contact = contact or ends or whatever_of or owned
+            contact = contact or ends or whatever_of or owned or plural
             if not contact and (raw not in ("its", "their") or norms[k - 1] not in ("where", "that", "which")) \
                     or k in blocked or toks.clause_start[k] or toks.clause_start[k - 1]:
                 continue
@@ -4277,6 +4347,10 @@ class ReportAnalyzer:
             last = _sole_antecedent(ex, toks, k - 1 if whatever_of or contact and not (ends or owned) else k - 2, k)
             if last is None:
                 continue  # (none, or another place said between: which one "its" means is not sure)
+            if plural and (not last.text.lower().rstrip("'’").endswith("s") or any(
+                    norms[j] in _PEOPLE_OR_GROUPS or norms[j] in lx.PERSON_SUBJECTS or norms[j] in lx.WORKER_PERSONS
+                    for j in range(k) if toks.sentence_of[j] == toks.sentence_of[k])):
+                continue  # ("the shed they built", "the marshals ... the trailer they use": people, not the place)
             out.append(self._mention(toks, k, k + 1, last.landmark, status="reference", reason=f"modifier of '{raw}'"))
         # "the building the laundry's built onto ... And the playground that building looks out over": "that" and
         # the head of a description said before take it up again
@@ -4826,6 +4900,9 @@ class ReportAnalyzer:
         sole = sole and any(_verb_like(w) and w.lower() not in lx.COPULAS for w in words[rel_start:])
         floor = self.OPEN_RELATION_SOLE_MIN_SIM if sole and len(cands) == 1 and sum(
             anchor in (r.subject, r.object) for r in self.kb.relations) == 1 else self.OPEN_RELATION_MIN_SIM
+        if best - runner >= self.OPEN_RELATION_CLEAR_MARGIN and not _in_synonym_group(rel.phrase):
+            # (only a relation no phrase table reads: "across the street from it" is no "behind", however close)
+            floor = min(floor, self.OPEN_RELATION_CLEAR_MIN_SIM)
         if best < floor or best - runner < self.OPEN_RELATION_MARGIN:
             return None, None
         return target, f"{rel.subject} {rel.relation} {rel.object} (by meaning {best:.2f})"
@@ -4959,6 +5036,15 @@ class ReportAnalyzer:
                         # ("the shed where they mix the clay before it goes to the drying sheds": where it goes)
                         # "the station with the crash road out to the two seven end": the place ends the description
                         ex.places[idx] = replace(p, status="reference", reason=f"part of the description of {scores[0][1]}")
+                        for jdx, q in enumerate(ex.places):
+                            if q.status == "active" and q.via is None and p.end_tok < q.start_tok <= p.end_tok + 5 \
+                                    and norms[p.end_tok] in _WHICH_ONE_PREPS and all(
+                                        norms[t] in lx.DETERMINERS | _WHICH_ONE_PREPS | _END_PARTS
+                                        for t in range(p.end_tok, q.start_tok)) \
+                                    and not any(toks.clause_start[t] for t in range(p.end_tok, q.end_tok)):
+                                # ("the shed that cooks for the huts at the bottom of the top garden": which huts)
+                                ex.places[jdx] = replace(q, status="reference",
+                                                         reason=f"part of the description of {scores[0][1]}")
                 i = e
                 continue
             i += 1
@@ -6501,6 +6587,17 @@ class ReportAnalyzer:
                 ex.places[i] = replace(p, status="retracted", reason="restarted: the speaker repeats the place")
                 ex.places[j] = replace(q, replaces=p.start_tok)
 
+        # "not the mess hall, the mess hall's ok": the place denied, said again with why not
+        for i, q in enumerate(ex.places):
+            if q.status != "active":
+                continue
+            r = next((r for r in ex.places if r.status == "negated" and r.landmark == q.landmark and r.end_tok < q.start_tok
+                      and all(w in lx.DETERMINERS | lx.FILLERS for w in norms[r.end_tok:q.start_tok])), None)
+            after = [ex.tokens.tokens[k].text.lower() for k in range(q.end_tok, min(len(norms), q.end_tok + 3))
+                     if norms[k] not in {"s", "is", "um", "uh", "er", "erm"}]  # ("ok" is a filler's word elsewhere)
+            if r is not None and after[:1] in (["ok"], ["okay"], ["fine"], ["alright"]):
+                ex.places[i] = replace(q, status="negated", reason="the place denied, said again ('ok')")
+
     def _after_clause(self, ex: Extraction, k: int) -> tuple[int, int]:
         """Tokens of the first clause after marker ``k`` (up to a clause break, coordinator or marker)."""
         toks = ex.tokens
@@ -7180,7 +7277,8 @@ class ReportAnalyzer:
                     and not norms[b].endswith(("ing", "ed")) and self._cues.match_at(norms, b) is None \
                     and toks.gaps[b].strip() == "":
                 continue  # "the diesel day tank's shifted on its mounts", "the petrol station": what a thing holds
-            if norms[b:b + 1] == ("out",) and any(norms[m] in ("put", "putting", "got", "getting") for m in range(max(0, a - 3), a)) \
+            if norms[b:b + 1] == ("out",) and norms[b + 1:b + 2] != ("of",) \
+                    and any(norms[m] in ("put", "putting", "got", "getting") for m in range(max(0, a - 3), a)) \
                     and self.kb.category_by_name[cat].role == Role.UNDESIRABLE:
                 continue  # "they've put the fire out": over
             if norms[a:b] in (("stuck",), ("attached",)) and norms[b:b + 1] in (("to",), ("onto",)) and not any(
@@ -7192,6 +7290,13 @@ class ReportAnalyzer:
             if norms[a:b] == ("clear",) and a >= 3 and norms[a - 1] == "to" and any(
                     norms[m] in ("waiting", "wait", "waited", "for") for m in range(max(0, a - 6), a - 1)):
                 continue  # "waiting for the road to clear": not clear yet
+            if norms[a] == "clear" and self.kb.category_by_name[cat].role == Role.DESIRABLE and any(
+                    (h := self._cancel.match_at(norms, k)) is not None and toks.sentence_of[k] == toks.sentence_of[a]
+                    and any(w in h[1].split() for w in ("down", "receded", "subsided", "dropped", "drained"))
+                    for k in range(b, min(len(norms), b + 8))):
+                continue  # "the causeway is clear now, water's gone down": the danger over, no safe place said
+            if norms[b - 1] == "full" and norms[b:b + 1] == ("of",) and self.kb.category_by_name[cat].role == Role.DESIRABLE:
+                continue  # "the shower block is still full of people": what fills it, no water supply
             if self._kept_clear_for(toks, norms, a):
                 continue  # "keep the road clear for the aerial ladder coming down from the fire station": who it is for
             if norms[b - 1] == "dry" and self.kb.category_by_name[cat].role == Role.DESIRABLE and self._dry_water(ex, norms, a):
@@ -7403,6 +7508,9 @@ class ReportAnalyzer:
                 if und is None:
                     continue
                 cue = replace(cue, category=und, reason="things in the water, no person")  # "logs everywhere in the water"
+            if self._person_category and norms[b - 1] in ("burnt", "burned", "scalded", "scorched") and b < len(norms) \
+                    and norms[b] in lx.BODY_PARTS and cue.category != self._person_category:
+                cue = replace(cue, category=self._person_category, reason="a person's burn")  # "a lad with a burnt forearm"
             if norms[b:b + 1] in (("burns",), ("burn",), ("inhalation",)) and cue.category != self._person_category \
                     and self.kb.category_by_name[cue.category].role == Role.UNDESIRABLE:
                 continue  # "chemical burns to the face", "acid burns": the injury, the person's claim
@@ -8170,7 +8278,11 @@ class ReportAnalyzer:
                 continue  # "up on the scaffold at the town hall and i seen the roof of the sports hall fold in": where
                 # the one who saw it stood
             if any((h := self._cancel.match_at(norms, i)) is not None and ("out" in h[1].split() or h[1] in (
-                    "extinguished", "under control")) for i in range(p.end_tok, b)):
+                    "extinguished", "under control") or ({"gone", "down"} <= set(h[1].split())
+                                                        or {"receded", "subsided"} & set(h[1].split()))
+                    and (h[0] >= len(norms) or toks.clause_start[h[0]] or norms[h[0]] in ("now", "again", "already")))
+                   for i in range(p.end_tok, b)):
+                # ("the water at the boat landing has gone back down": the water over, no claim to guess)
                 continue  # "it was someone's bonfire on the allotments, and that's out now": ended, no claim to guess
             if all(norms[i] in lx.FILLERS or norms[i] in lx.DETERMINERS or norms[i] in ("all", "whole", "every", "both", "of")
                    for i in range(a, b) if not p.start_tok <= i < p.end_tok):
@@ -10672,11 +10784,26 @@ def _first_was_right_at(norms: tuple[str, ...], i: int) -> bool:
     return norms[i] in _FIRST_WAS_RIGHT_STARTS and any(norms[i:i + len(key)] == key for key in _FIRST_WAS_RIGHT)
 
 
+def _in_synonym_group(phrase: str) -> bool:
+    """A KB relation name the phrase tables read ("behind", "backs_onto"), not one of the KB's own words only."""
+    words = phrase.replace("_", " ").lower().strip()
+    return any(words == canon or words in syns for canon, syns in lx.RELATION_SYNONYMS.items())
+
+
+# Words between a place and another that only says which one it is ("the lobby at the bottom of the lift").
+_WHICH_ONE_PREPS = frozenset({"from", "at", "of", "on", "by", "in", "out", "beside", "behind", "under", "below", "above"})
+_END_PARTS = frozenset({"bottom", "top", "end", "foot", "head", "side", "back", "front", "far", "near", "other"})
+
+# Heads of names that say what a building holds ("evaporator house", "boiler room"): the thing said alone names it.
+_HOUSING_HEADS = frozenset({"house", "shed", "room", "hall", "hut", "building"})
+
+
 def _sole_antecedent(ex: Extraction, toks: Tokens, limit: int, k: int) -> PlaceMention | None:
     """The place a pronoun at ``k`` takes up: the active one named last before ``limit``, in an earlier clause, where
     no other place is said between it and the pronoun; else None."""
+    # (a coordinator opens a clause too: "the bale store's on fire and the shed it sends its bales to")
     before = [p for p in ex.places if p.status == "active" and p.end_tok < limit
-              and any(toks.clause_start[i] for i in range(p.end_tok, limit))]
+              and any(toks.clause_start[i] or toks.tokens[i].norm in ("and", "but", "then") for i in range(p.end_tok, limit))]
     if not before:
         return None
     last = max(before, key=lambda p: p.end_tok)
@@ -10866,7 +10993,9 @@ def _anchored_at(q: PlaceMention, landmark: str) -> bool:
 
 
 _MADE_SAFE = frozenset({"negated by 'isolated'", "negated by 'been isolated'", "negated by 'made safe'",
-                        "negated by 'been made safe'"})  # (a supply made safe, not the place's danger over)
+                        "negated by 'been made safe'", "negated by 'is off'", "negated by 's off'",
+                        "negated by 'turned off'", "negated by 'been turned off'", "negated by 'switched off'",
+                        "negated by 'shut off'"})  # (a supply made safe, not the place's danger over: "the gas is off")
 # Nouns for a stretch of something long (a wall, a road, a bank): "the stretch by the pump house" says where along
 # the place already named, so the place after "by" is a reference point, not a claim.
 _SEGMENT_HEADS = frozenset({"stretch", "section", "length", "portion"})

@@ -261,7 +261,7 @@ broken ankle|broken wrist|head injury|fractured|fracture|crushed|crushed foot|cr
 can hear someone|can hear her|can hear him|can hear them|can hear voices|hear someone|hear her|hear him|
 hear voices|waving at us|waving to us|calling from|shouting from|trapped under|under the timbers|overdue|
 gone under|went under|capsized|has capsized|not come up|hasn't come up|hasnt come up|not come back up|not surfaced|hasn't surfaced|swept away by|in the river|in the sea|hypothermia|casualty recovered|recovered from the water|swept away|
-still in there|still in there somewhere|still got children upstairs|still got kids upstairs|still got people upstairs|children still upstairs|kids still upstairs|people still upstairs|can't find him|can't find her|can't find them|cannot find him|
+still in there|still in there somewhere|still got children upstairs|still got kids upstairs|still got people upstairs|children still upstairs|kids still upstairs|people still upstairs|can't find him|can't find her|can't find them|cannot find him|cannot find my son|cannot find my daughter|cannot find my child|cannot find my boy|cannot find my girl|cannot find my kid|cannot find my little boy|cannot find my little girl|can't find my son|can't find my daughter|can't find my child|can't find my boy|can't find my girl|can't find my kid|can't find my little boy|can't find my little girl|cant find my son|cant find my daughter|cant find my child|cant find my boy|cant find my girl|cant find my kid|cant find my little boy|cant find my little girl|
 people coughing|few of them collapsed|some of them collapsed|collapsed on the floor|
 live find|a live find|indicating a find|can't get down|cannot get down|can't get downstairs|cut his arm|cut her arm|
 cut his hand|cut his head|cut her head|badly cut|in trouble|in difficulty|in difficulties|has fever|has a fever|has a high fever|got a fever|need doctor|needs doctor|need a doctor|needs a doctor|cut very bad|cut very badly|cut really bad|cut bad|cut from the glass|cut by the glass|cut by flying glass|can't get back down|cannot get back down|can't get back out|can't get up the step|cannot get up the step|bleeding heavily|can't get the doors open|can't get the door open|
@@ -332,7 +332,7 @@ CANCEL_AFTER = ["fully out", "is fully out", "damping down", "damping down is fi
                 "not got this far", "hasn't reached us", "hasnt reached us", "blowing the other way", "blowing away from", "going the other way", "never reached", "didn't reach", "didnt reach", "hasn't reached", "hasnt reached", "never got to",
                 "been cleared", "been cleared away", "been towed", "been towed away", "turned up", "has turned up", "s turned up", "turned up safe", "is out", "s out", "are out", "was out", "confirmed out", "properly out", "is properly out", "s properly out", "completely out", "is completely out", "s completely out", "is now out", "s now out", "are now out", "put out", "out now", "been put out",
                 "has cleared", "have cleared", "s cleared", "has lifted", "s lifted", "has been lifted", "have lifted", "has gone down", "s gone down",
-                "has receded", "s receded", "have receded", "gone down now", "old news", "pumped it out",
+                "has receded", "s receded", "have receded", "gone down now", "has gone back down", "s gone back down", "gone back down", "off the boards now", "old news", "pumped it out",
                 "pumped it all out", "brought down", "been brought down",
                 "all been brought down", "got them down", "nobody left", "water's gone down", "water has gone down",
                 "water's receded", "water has receded", "flood's gone down", "flooding's gone down",
@@ -484,7 +484,7 @@ FALSE_ALARM = ["false alarm", "scratch their earlier call", "scratch my earlier 
                "nothing has happened at ours", "that was yesterday's call", "that was yesterday", "exercise exercise", "for the exercise only", "that's for the exercise",
                "none of this is real", "this is a test message", "the scenario has", "tomorrow's exercise",
                "in the exercise", "stand down on the", "standing down on the", "stood down on the", "never mind", "nevermind", "disregard my last", "disregard the last report",
-               "nothing in it", "nothing to it", "on purpose", "controlled burn", "controlled bonfire", "controlled fire", "burning the prunings", "burning prunings", "burning off the", "like they do every", "just steam", "only steam", "just fog", "only fog", "just mist", "only mist", "extractor fan", "was just a", "was only a",
+               "nothing in it", "nothing to it", "on purpose", "controlled burn", "controlled bonfire", "controlled fire", "burning the prunings", "burning prunings", "burning off the", "like they do every", "just steam", "only steam", "just fog", "only fog", "just mist", "only mist", "someone's extractor fan", "someones extractor fan", "their extractor fan", "just the extractor fan", "only the extractor fan", "was the extractor fan", "was just a", "was only a",
                "was just their", "was just the", "its just their", "is just their", "its only their", "nothing to worry about", "ignore my last", "cancel my last",
                "disregard my last message", "nobody in any", "disregard the call about", "disregard the call re", "disregard the report about", "disregard the call from", "burning leaves in a brazier", "burning leaves in a", "disregard previous", "disregard my earlier report",
                "ignore my earlier report", "disregard the earlier report", "disregard the earlier message",
@@ -1039,7 +1039,8 @@ PERSON_STATE_CUES = {("collapsed",), ("collapse",), ("collapsing",), ("burned",)
 
 # Parts of a person: "his arm is burned" is said of a person
 BODY_PARTS = _keyed({"arm", "arms", "leg", "legs", "hand", "hands", "head", "face", "foot", "feet", "back", "chest", "neck",
-              "eyes", "skin"})
+              "eyes", "skin", "forearm", "forearms", "wrist", "wrists", "shoulder", "shoulders", "knee", "knees",
+              "ankle", "ankles", "fingers", "thigh", "shin"})
 
 # Members of the public: "<a|two|there's> <person> <at|in|under|clinging...>" is a casualty claim.
 LAY_PERSONS = {"man", "woman", "person", "people", "someone", "somebody", "child", "children", "kid", "baby", "kiddie",
@@ -1583,11 +1584,14 @@ DESCRIBED_COMFORTS: dict[str, tuple[frozenset[str], list[str]]] = {
                "fill the tenders from", "fill tenders from", "fill the appliances from", "draw their water from",
                "draw water from", "draw from", "can draw from", "draw off", "hydrant on it is working",
                "hydrant on it works", "hydrant is working", "hydrant's working", "hydrant works", "hydrants working",
-               "hydrants are working", "pumping from it", "suction's in", "suction is in"]),
+               "hydrants are working", "pumping from it", "suction's in", "suction is in", "tenders can fill",
+               "tenders can fill there", "tenders can fill right there", "engines can fill", "can fill there",
+               "can fill right there", "filling off the valve", "filling off it", "we're filling off", "still running, tenders"]),
 }
 # Said of a tank or a pool where the safe-place category counts a water supply: that supply is there.
 WATER_SUPPLY_FULL = ["full to the brim", "full to the top", "tank is full", "tank's full", "tanks are full",
-                     "pool's full", "pool is full", "brim full", "plenty of water in it", "plenty of water in"]
+                     "pool's full", "pool is full", "brim full", "plenty of water in it", "plenty of water in",
+                     "s still full", "is still full", "are still full"]
 
 # More phrases of the kinds above that read as their kind but do not vote on which category a kind is (so the
 # kinds map onto a KB's categories as they did before these were added).
@@ -1618,7 +1622,7 @@ DANGER_KIND_EXTRA: dict[str, list[str]] = {
               "lost the roof", "lost its leads", "lost the leads", "roof lifted", "blown clean off", "blown off",
               "off its hinges", "pulled up by the roots", "open to the sky", "rain's coming in", "rain is coming in",
               "rain coming straight in", "rain's coming straight in", "rain pouring in", "rain is pouring"],
-    "fire": ["haven't caught", "hasn't caught", "havent caught", "hasnt caught", "it's scalding", "it is scalding", "scalding hot", "water is boiling", "water's boiling now", "boiling hot",
+    "fire": ["catching embers", "are catching embers", "taking embers", "embers are coming down", "embers coming down", "embers falling", "embers raining down", "embers are raining down", "embers landing", "haven't caught", "hasn't caught", "havent caught", "hasnt caught", "it's scalding", "it is scalding", "scalding hot", "water is boiling", "water's boiling now", "boiling hot",
              "starting to burn", "started to burn", "begun to burn", "beginning to burn", "taken hold of", "has taken hold", "taken hold in", "took hold of", "taking hold of", "flare-up", "flare up", "flared up", "flaring up", "burning debris", "roof is going up", "houses have caught", "have caught", "is going up", "s going up", "going up properly", "roof's going up", "roofs going up", "thatch is going up", "thatch's going up",
              "thatch going up", "embers are landing", "embers landing", "embers are falling", "embers falling", "embers coming down"],
     "electric": ["wire is hot", "wires are hot", "line is hot", "lines are hot", "wire as hot", "wires as hot",
@@ -1628,11 +1632,11 @@ DANGER_KIND_EXTRA: dict[str, list[str]] = {
                  "transformer blew", "transformer's gone bang"],
     "gas": ["the cloud's now", "the cloud is now", "cloud's got into", "cloud has got into", "cloud's drifting",
             "cloud is drifting", "cloud's moving", "cloud is moving", "gassing off", "gassing out", "is gassing", "s gassing", "rotten egg", "rotten eggs", "rotten-egg smell", "rotten egg smell", "eggy smell", "smell like eggs", "smells like eggs", "smell of eggs", "smells of eggs", "smell like rotten eggs", "stinks of eggs", "stinks of rotten eggs", "stink of eggs", "reeks of eggs", "reeks of rotten eggs", "smell of rotten eggs", "smells of rotten eggs", "like egg", "like eggs", "like rotten egg", "there's a hiss", "a loud hiss", "hissing out of", "h2s", "so2", "co2", "sulphur dioxide", "hydrogen sulphide", "carbon dioxide", "methane", "methane leak", "natural gas", "co detected", "co reading", "co readings", "co levels", "high co", "carbon monoxide", "carbon monoxide alarm", "co alarm"],
-    "collapse": ["slab come off", "slab came off", "slab has come off", "slab's come off", "a big hole in", "big hole in the", "huge hole in the", "a hole in the ground", "hole in the crust",
+    "collapse": ["it's all rotten", "it's rotten", "ice is rotten", "ice s rotten", "rotten right across", "the fallen roof of", "fallen roof of", "whole house just dropped", "house just dropped", "whole house dropped", "slab come off", "slab came off", "slab has come off", "slab's come off", "a big hole in", "big hole in the", "huge hole in the", "a hole in the ground", "hole in the crust",
                  "started to sag", "starting to sag", "begun to sag", "beginning to sag", "wall's come in", "wall has come in", "walls have come in", "wall's come down on", "roof's come in",
                  "roof has come in", "ceiling's come in", "ceiling has come in", "tipped over", "has tipped over", "have tipped over", "have slid", "has slid",
                  "flattened", "been flattened", "torn to bits", "torn to pieces", "ripped to bits", "ripped to pieces", "blown to bits", "giving way", "is giving way", "gives way", "piles are sheared", "piles have sheared", "pile is sheared", "pile's sheared", "torn open", "been torn open", "gone over into the water", "gone over into the lagoon", "gone over into the sea", "gone over into the river", "split down a seam", "split a seam", "split its seam", "split at the seam", "split along a seam", "has snapped", "have snapped", "cable snapped", "cables snapped", "hanging sideways", "floor went through", "floor went thru", "floor gone through", "developed a lean", "has a lean", "bricks coming off", "bricks are coming off", "wall has split", "walls have split", "has split from", "split right across", "split from top to bottom", "roof's coming in", "roof is coming in", "ceiling's coming in", "ceiling is coming in", "coming off in chunks", "coming away in chunks", "falling off in chunks", "in chunks", "breaking up", "is breaking up", "coming adrift", "come adrift", "broken adrift", "peeling off", "coming off in slabs", "coming away in slabs", "roof fall on", "roof fall in", "roof has dropped", "pole's snapped", "pole has snapped", "poles have snapped", "poles snapped", "canvas is down", "canvas's down", "canvas has come down", "canvas came down", "tent's down", "tent is down", "poles down", "poles are down", "roof's dropped", "roof dropped", "ceiling has dropped", "ceiling's dropped", "roof has split", "roof split", "is bending", "it's bending", "is fall down", "has fall down", "fallen down"],
-    "water": ["going down by the bow", "going down by the stern", "down by the bow", "down by the stern",
+    "water": ["running bank to bank", "bank to bank", "going down by the bow", "going down by the stern", "down by the bow", "down by the stern",
               "down by the head", "waves coming straight over", "waves coming right over", "roof is leaking", "roof's leaking",
               "roof leaking", "roof leaks", "taken the surge", "took the surge", "drums floating", "floating everywhere",
               "taken in loads of water", "taken in water", "taken in a lot of water", "taking in loads of water",
