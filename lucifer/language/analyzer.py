@@ -4087,11 +4087,8 @@ class ReportAnalyzer:
                         and (head - 1) not in blocked and norms[anchor.start_tok] == "it"):
                     continue  # (an adjective may stand between: "the old building it was built out from")
                 # ("the chamber that the tunnel from reception opens into": a place that only says which tunnel)
-                said_which = next((q for q in ex.places if q is not anchor and anchor.end_tok < q.start_tok
-                                   <= anchor.end_tok + 5 and q.via is None and norms[anchor.end_tok] in _WHICH_ONE_PREPS
-                                   and all(norms[i] in lx.DETERMINERS | _WHICH_ONE_PREPS | _END_PARTS
-                                           for i in range(anchor.end_tok, q.start_tok))
-                                   and not any(toks.clause_start[i] for i in range(anchor.end_tok, q.end_tok))), None) \
+                said_which = next((q for q in ex.places if q is not anchor and q.via is None
+                                   and _says_which_after(toks, norms, anchor.end_tok, q)), None) \
                     if norms[head - 1:head + 1] != ("the", "one") and norms[head + 1:head + 2] in (("that",), ("which",)) \
                     and anchor.end_tok < len(norms) and anchor.via is None else None
                 start = end = said_which.end_tok if said_which is not None else end
@@ -5037,11 +5034,7 @@ class ReportAnalyzer:
                         # "the station with the crash road out to the two seven end": the place ends the description
                         ex.places[idx] = replace(p, status="reference", reason=f"part of the description of {scores[0][1]}")
                         for jdx, q in enumerate(ex.places):
-                            if q.status == "active" and q.via is None and p.end_tok < q.start_tok <= p.end_tok + 5 \
-                                    and norms[p.end_tok] in _WHICH_ONE_PREPS and all(
-                                        norms[t] in lx.DETERMINERS | _WHICH_ONE_PREPS | _END_PARTS
-                                        for t in range(p.end_tok, q.start_tok)) \
-                                    and not any(toks.clause_start[t] for t in range(p.end_tok, q.end_tok)):
+                            if q.status == "active" and q.via is None and _says_which_after(toks, norms, p.end_tok, q):
                                 # ("the shed that cooks for the huts at the bottom of the top garden": which huts)
                                 ex.places[jdx] = replace(q, status="reference",
                                                          reason=f"part of the description of {scores[0][1]}")
@@ -10793,6 +10786,15 @@ def _in_synonym_group(phrase: str) -> bool:
 # Words between a place and another that only says which one it is ("the lobby at the bottom of the lift").
 _WHICH_ONE_PREPS = frozenset({"from", "at", "of", "on", "by", "in", "out", "beside", "behind", "under", "below", "above"})
 _END_PARTS = frozenset({"bottom", "top", "end", "foot", "head", "side", "back", "front", "far", "near", "other"})
+
+def _says_which_after(toks: Tokens, norms: tuple[str, ...], end: int, q: PlaceMention) -> bool:
+    """``q`` stands in a phrase right after ``end`` that only says which place ends there ("the tunnel | from
+    reception", "the huts | at the bottom of the top garden"): a preposition, then articles, prepositions and words
+    for a part's end, in one clause."""
+    return end < q.start_tok <= end + 5 and norms[end] in _WHICH_ONE_PREPS \
+        and all(norms[t] in lx.DETERMINERS | _WHICH_ONE_PREPS | _END_PARTS for t in range(end, q.start_tok)) \
+        and not any(toks.clause_start[t] for t in range(end, q.end_tok))
+
 
 # Heads of names that say what a building holds ("evaporator house", "boiler room"): the thing said alone names it.
 _HOUSING_HEADS = frozenset({"house", "shed", "room", "hall", "hut", "building"})
