@@ -4897,7 +4897,7 @@ class ReportAnalyzer:
         sole = sole and any(_verb_like(w) and w.lower() not in lx.COPULAS for w in words[rel_start:])
         floor = self.OPEN_RELATION_SOLE_MIN_SIM if sole and len(cands) == 1 and sum(
             anchor in (r.subject, r.object) for r in self.kb.relations) == 1 else self.OPEN_RELATION_MIN_SIM
-        if best - runner >= self.OPEN_RELATION_CLEAR_MARGIN and not _in_synonym_group(rel.phrase):
+        if best - runner >= self.OPEN_RELATION_CLEAR_MARGIN and rel.phrase not in _TABLE_RELATIONS:
             # (only a relation no phrase table reads: "across the street from it" is no "behind", however close)
             floor = min(floor, self.OPEN_RELATION_CLEAR_MIN_SIM)
         if best < floor or best - runner < self.OPEN_RELATION_MARGIN:
@@ -5693,8 +5693,7 @@ class ReportAnalyzer:
 
     def _fuzzy_relation(self, kb_phrase: str, phrase: str) -> bool:
         """An unknown KB relation name ("abuts") against a report phrase, via MiniLM."""
-        known = {c for c in lx.RELATION_SYNONYMS} | {s for v in lx.RELATION_SYNONYMS.values() for s in v}
-        if kb_phrase in known or _relation_core(kb_phrase) in known or self.embedder is None:
+        if kb_phrase in _TABLE_RELATIONS or _relation_core(kb_phrase) in _TABLE_RELATIONS or self.embedder is None:
             return False
         v = self.embedder.embed([kb_phrase, phrase])
         return float(v[0] @ v[1]) >= 0.6
@@ -10307,21 +10306,23 @@ class ReportAnalyzer:
         place = next(iter(at.values()))
         return [Claim(place, c) for c in mine]
 
+    def _undesirable_says(self, pattern: str) -> bool:
+        """Does an undesirable category's description match ``pattern`` (a regular expression, lower case)? Cached."""
+        cache = self.__dict__.setdefault("_undesirable_says_cache", {})
+        if pattern not in cache:
+            cache[pattern] = any(re.search(pattern, c.description.lower())
+                                 for c in self.kb.categories_with_role(Role.UNDESIRABLE))
+        return cache[pattern]
+
     def _lock_category(self) -> bool:
         """Does an undesirable category's description speak of places locked or jammed shut?"""
-        if not hasattr(self, "_lock_cat"):
-            self._lock_cat = any(re.search(r"\b(lock|locks|locked|lockdown|jammed)\b", c.description.lower())
-                                 for c in self.kb.categories_with_role(Role.UNDESIRABLE))  # (not "blocked")
-        return self._lock_cat
+        return self._undesirable_says(r"\b(lock|locks|locked|lockdown|jammed)\b")  # (not "blocked")
 
     def _access_category(self) -> bool:
         """Does an undesirable category's description speak of places that cannot be entered or got through?"""
-        if not hasattr(self, "_access_cat"):
-            words = ("lock", "blocked", "access", "impassable", "cannot be entered", "got through",
-                     "cannot be passed", "jammed")  # (not "closed": "bridges the flood has damaged or closed")
-            self._access_cat = any(any(w in c.description.lower() for w in words)
-                                   for c in self.kb.categories_with_role(Role.UNDESIRABLE))
-        return self._access_cat
+        # (not "closed": "bridges the flood has damaged or closed")
+        return self._undesirable_says(
+            "lock|blocked|access|impassable|cannot be entered|got through|cannot be passed|jammed")
 
     def _places_put_out(self, ex: Extraction, norms: tuple[str, ...]) -> list[tuple[str, int]]:
         """(landmark, token) for each "<place> (one)'s out" clause ("the bakery one's out", "garage is out now") and
@@ -10777,15 +10778,13 @@ def _first_was_right_at(norms: tuple[str, ...], i: int) -> bool:
     return norms[i] in _FIRST_WAS_RIGHT_STARTS and any(norms[i:i + len(key)] == key for key in _FIRST_WAS_RIGHT)
 
 
-def _in_synonym_group(phrase: str) -> bool:
-    """A KB relation name the phrase tables read ("behind", "backs_onto"), not one of the KB's own words only."""
-    words = phrase.replace("_", " ").lower().strip()
-    return any(words == canon or words in syns for canon, syns in lx.RELATION_SYNONYMS.items())
-
+# The relation names the phrase tables read ("behind", "backs onto"), as ``Relation.phrase`` writes them.
+_TABLE_RELATIONS = frozenset(lx.RELATION_SYNONYMS) | frozenset(s for v in lx.RELATION_SYNONYMS.values() for s in v)
 
 # Words between a place and another that only says which one it is ("the lobby at the bottom of the lift").
 _WHICH_ONE_PREPS = frozenset({"from", "at", "of", "on", "by", "in", "out", "beside", "behind", "under", "below", "above"})
 _END_PARTS = frozenset({"bottom", "top", "end", "foot", "head", "side", "back", "front", "far", "near", "other"})
+
 
 def _says_which_after(toks: Tokens, norms: tuple[str, ...], end: int, q: PlaceMention) -> bool:
     """``q`` stands in a phrase right after ``end`` that only says which place ends there ("the tunnel | from
