@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev103) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev105) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -226,6 +226,14 @@ OAST_VALLEY = ROOT / "knowledge_bases" / "oast_valley"
 BRIDGE_WORKS = ROOT / "knowledge_bases" / "bridge_works"
 PINE_CAMPGROUND = ROOT / "knowledge_bases" / "pine_campground"
 GANNET_ISLE = ROOT / "knowledge_bases" / "gannet_isle"
+RUBBER_PLANTATION = ROOT / "knowledge_bases" / "rubber_plantation"
+FJORD_FERRY_VILLAGE = ROOT / "knowledge_bases" / "fjord_ferry_village"
+SILK_FARM_VILLAGE = ROOT / "knowledge_bases" / "silk_farm_village"
+MEDIEVAL_TOURNAMENT = ROOT / "knowledge_bases" / "medieval_tournament"
+BAUXITE_MINE_PORT = ROOT / "knowledge_bases" / "bauxite_mine_port"
+COFFEE_FINCA = ROOT / "knowledge_bases" / "coffee_finca"
+ICE_ROAD_CAMP = ROOT / "knowledge_bases" / "ice_road_camp"
+CANYON_RAFTING_BASE = ROOT / "knowledge_bases" / "canyon_rafting_base"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -609,6 +617,14 @@ SETS = {
     "dev103/bridge_works": _set("dev103/bridge_works.jsonl", BRIDGE_WORKS, "bw103", TWENTY, sep=""),
     "dev103/pine_campground": _set("dev103/pine_campground.jsonl", PINE_CAMPGROUND, "pc103", TWENTY, sep=""),
     "dev103/gannet_isle": _set("dev103/gannet_isle.jsonl", GANNET_ISLE, "gi103", TWENTY, sep=""),
+    "dev104/rubber_plantation": _set("dev104/rubber_plantation.jsonl", RUBBER_PLANTATION, "rp104", TWENTY, sep=""),
+    "dev104/fjord_ferry_village": _set("dev104/fjord_ferry_village.jsonl", FJORD_FERRY_VILLAGE, "ff104", TWENTY, sep=""),
+    "dev104/silk_farm_village": _set("dev104/silk_farm_village.jsonl", SILK_FARM_VILLAGE, "sf104", TWENTY, sep=""),
+    "dev104/medieval_tournament": _set("dev104/medieval_tournament.jsonl", MEDIEVAL_TOURNAMENT, "mt104", TWENTY, sep=""),
+    "dev105/bauxite_mine_port": _set("dev105/bauxite_mine_port.jsonl", BAUXITE_MINE_PORT, "bp105", TWENTY, sep=""),
+    "dev105/coffee_finca": _set("dev105/coffee_finca.jsonl", COFFEE_FINCA, "cf105", TWENTY, sep=""),
+    "dev105/ice_road_camp": _set("dev105/ice_road_camp.jsonl", ICE_ROAD_CAMP, "ir105", TWENTY, sep=""),
+    "dev105/canyon_rafting_base": _set("dev105/canyon_rafting_base.jsonl", CANYON_RAFTING_BASE, "cr105", TWENTY, sep=""),
 }
 
 
