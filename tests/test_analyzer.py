@@ -5404,6 +5404,140 @@ def test_dev101_phenomena(kb_analyzers, kb, text, expected):
     assert claims(kb_analyzers[kb], text) == expected
 
 
+@pytest.mark.parametrize(("kb", "text", "expected"), [
+    # a relation named by a phrase after its verb keeps it from one that only reads it backwards ("at the foot of":
+    # ``sits_at_the_foot_of``, not ``looks_out_over``; "round the back of": ``stands round the back of``, not "behind")
+    ("pine_campground", "the dock is fine, the shed at the foot of it is burning", [("boathouse", "fire_and_embers")]),
+    ("pine_campground", "the canoe dock is — no, not the dock, the shed at the foot of it, that's the one burning",
+     [("boathouse", "fire_and_embers")]),
+    ("medieval_tournament", "fire at the toilets — no, wait, the tent they're round the back of, the big one, it's "
+                            "alight", [("beer tent", "fire_or_smoke")]),
+    # a structure that has failed or dropped on one side
+    ("fjord_ferry_village", "MF Skarvfjord to harbour office: the car ramp has dropped on one side, hydraulics have "
+                            "failed, no vehicles on or off until further notice.",
+     [("linkspan", "washed_out_or_blocked")]),
+    # swept into the water: a person in it
+    ("fjord_ferry_village", "Patrol 23 at the race: a boy fishing off the wall has been swept into the tailrace "
+                            "channel, we need the rescue boat now.", [("tailrace", "casualty_or_missing")]),
+    # a cut-off name said again whole, repaired in its turn: the place the repairs end on is meant
+    ("fjord_ferry_village", "landslip at the pipe, no, at the top d-- the dam, sorry, sorry, at the power station, "
+                            "there's mud right up against the turbine hall doors",
+     [("hydro station", "washed_out_or_blocked")]),
+    # a word several names share names none of them ("the ferry ramp"); a word of one other name still does
+    ("fjord_ferry_village", "two casualties at the ferry ramp", [("linkspan", "casualty_or_missing")]),
+    # "across both lanes": the road's two lanes, not the place called "the lanes"
+    ("fjord_ferry_village", "ok so... the long tunnel... it's blocked... there's a lorry jackknifed... right across "
+                            "both lanes... and um the driver... he's trapped in the cab",
+     [("Bergnes tunnel", "casualty_or_missing"), ("Bergnes tunnel", "washed_out_or_blocked")]),
+    ("fjord_ferry_village", "both lanes are blocked", [("ferry queue", "washed_out_or_blocked")]),
+    # a description's clause that says a KB relation to a place named after it is left to the relations
+    ("fjord_ferry_village", "Control, there's smoke and a loud bang from the fenced yard that runs the fans in the "
+                            "long tunnel.", [("switchyard", "burning_or_toxic")]),
+    # "that's tucked in behind": a participle and its particle say no more than "is"
+    ("fjord_ferry_village", "smoke from the harbour that's tucked in behind the ferry dock",
+     [("guest harbour", "burning_or_toxic")]),
+    # a head word several names share: the one the KB relates to the anchor
+    ("fjord_ferry_village", "Smoke divers: the fans have died in the tunnel powered off the yard the power station "
+                            "feeds. Tunnel's smoke-logged and there are drivers trapped in their cars.",
+     [("Bergnes tunnel", "burning_or_toxic"), ("Bergnes tunnel", "casualty_or_missing")]),
+    # a named head before a described anchor: a verb of motion and its particle ("coming off whatever's fed from"),
+    # or words ending on the last words of the relation's name ("tied up at the end of" for `is moored off the end of`)
+    ("bauxite_mine_port", "the conveyor coming off whatever's fed from the ROM pad is on fire, smoke all along the "
+                          "gantry", [("overland conveyor", "spill_fire_or_fumes")]),
+    ("fjord_ferry_village", "Smoke coming off the jetty tied up at the end of the harbour that's tucked in behind the "
+                            "ferry dock, looks like the diesel's caught.", [("fuel pontoon", "burning_or_toxic")]),
+    # the place the head names two relations away has no relation name of its own to compare (this raised KeyError)
+    ("medieval_tournament", "um, the camp pitched along the bank of the water that the plank bridge spans — that's "
+                            "our rally point, it's clear and it's upwind", [("lancastrian camp", "safe_refuge")]),
+    # a head word of one name, a generic one only as that name's own head ("transfer tower")
+    ("bauxite_mine_port", "Control, fire in the tower the overland drops its ore into, flames all round the head "
+                          "pulley.", [("transfer tower", "spill_fire_or_fumes")]),
+    # a split right down the grain
+    ("medieval_tournament", "Trebuchet crew chief: the siege engine's throwing arm has split right down the grain and "
+                            "it's still under tension, nobody goes within fifty metres of Warwolf.",
+     [("trebuchet", "no_go_danger")]),
+    # what hangs down into a place is no claim of it
+    ("medieval_tournament", "The plank bridge is taped off. One of the boards has snapped clean through and the "
+                            "handrail is hanging down into the brook, nobody crosses until the estates team have "
+                            "looked at it.", [("plank bridge", "no_go_danger")]),
+    # "the big one" after the generators: one of those, no "big catapult" whose head was never said
+    ("medieval_tournament", "the gen-- the generators are, uh, sparking — no, wait, not sparking, they're actually on "
+                            "fire, flames out the side of the big one", [("generator compound", "fire_or_smoke")]),
+    ("medieval_tournament", "the big catapult's arm has split right down the grain", [("trebuchet", "no_go_danger")]),
+    # "the yorkies' camp": the head of the place's own name, no relation
+    ("medieval_tournament", "we've got — we've got a, a straw fire in the, um, the yorkies' camp, and, and the "
+                            "bowser's, er, the water tank's working, it's full, crews can fill up there",
+     [("water bowser", "safe_refuge"), ("yorkist camp", "fire_or_smoke")]),
+    # "the place with the horses, the stables": the place said by what it has
+    ("medieval_tournament", "big fire at the place with the horses, the stables.", [("horse lines", "fire_or_smoke")]),
+    # gridlock and jams: where the KB counts no vehicle dangers, the category for a way blocked
+    ("medieval_tournament", "Gate team: the car park that empties out through the wristband hut is gridlocked with "
+                            "cars reversing into pedestrians, keep people out of it. The field that takes its "
+                            "spillover is empty though, safe to walk folk up there.",
+     [("overflow car park", "safe_refuge"), ("visitor car park", "no_go_danger")]),
+    ("medieval_tournament", "the, uh, the engine in the middle of the field the white camp sits below — its "
+                            "counterweight's jammed halfway up, nobody near it", [("trebuchet", "no_go_danger")]),
+    # a range gone live again
+    ("medieval_tournament", "the place the archery range is roped off from is safe now — no — correction, they've "
+                            "gone live again, they're throwing", [("trebuchet field", "no_go_danger")]),
+    # things counted as parts of a place ("the top three rows of benches") are no description of another
+    ("medieval_tournament", "Stand collapse at the king's stand, the top three rows of benches have dropped through "
+                            "the scaffold, and we have walking wounded climbing out from underneath.",
+     [("royal grandstand", "no_go_danger"), ("royal grandstand", "person_in_need")]),
+    # a smell like bleach
+    ("bauxite_mine_port", "Hello, is this the mine emergency number? I'm calling from Tamba. There's a horrible smell "
+                          "like bleach all through the village, and my neighbour's little boy is struggling to "
+                          "breathe.",
+     [("Tamba village", "person_needs_help"), ("Tamba village", "spill_fire_or_fumes")]),
+    # a person from a place, said to be at another further on in the clause
+    ("bauxite_mine_port", "Port security: a fisherman from the kampung has been pulled out of the water under the "
+                          "wharf. He's barely breathing, we're doing CPR on the berth now.",
+     [("jetty", "person_needs_help")]),
+    # "X's not the problem"
+    ("bauxite_mine_port", "ok so it's not the camp, the camp's not the problem, it's the clinic, the clinic roof has "
+                          "come down in the wind, and, and one of the nurses is trapped under it",
+     [("clinic", "ground_or_structure_failure"), ("clinic", "person_needs_help")]),
+    # "catches | the seepage from", two pieces of one relation, read as one; crews brought down: no one fallen
+    ("bauxite_mine_port", "Wash-down point is at the pond that catches the seepage from the wall holding back the mud "
+                          "lakes. Water there is running clean, bring the contaminated crews down.",
+     [("return water pond", "safe_to_gather")]),
+    ("bauxite_mine_port", "two of the crew are down at the ROM pad", [("ROM pad", "person_needs_help")]),
+    # "fed off" for ``is fed from``
+    ("bauxite_mine_port", "Dust-out on the ROM pad, and in the station that's fed off it we've got a man down, fell "
+                          "from the hopper rail.",
+     [("ROM pad", "spill_fire_or_fumes"), ("primary crusher", "person_needs_help")]),
+    # many bays, not the one "fuel bay"
+    ("bauxite_mine_port", "The roof of the shed the diesel tanks are fenced in behind has caved in under the wind, "
+                          "sheeting all over the bays.", [("workshop", "ground_or_structure_failure")]),
+    ("bauxite_mine_port", "the diesel tanks are leaking, and the bay is full of diesel",
+     [("fuel farm", "spill_fire_or_fumes")]),
+    # a relation does not reach past a semicolon
+    ("bauxite_mine_port", "the camp's the green zone — sorry, not the camp, the field it backs onto; the camp itself "
+                          "has smoke right through the rooms",
+     [("sports oval", "safe_to_gather"), ("workers' camp", "spill_fire_or_fumes")]),
+    # "the ponds the pilas drain into": the second place only says which the first is
+    ("coffee_finca", "Base, the ponds the pilas drain into have burst their wall, sludge everywhere.",
+     [("settling ponds", "slide_or_collapse")]),
+    # read forwards already, a named head: no inverse reading of its own words; coughing up smoke is a symptom
+    ("coffee_finca", "the plastic dryer tacked onto the side of the warehouse is on fire, and we've got a man "
+                     "coughing up smoke in the building it's tacked onto",
+     [("bodega", "hurt_or_missing"), ("parabolic dryer", "burning_or_gas")]),
+    # an unnaming head with its adjective, both words of the one related place's description
+    ("coffee_finca", "Safe zone is the flat ground at the end of the swing bridge, everybody from the bottom lot go "
+                     "there.", [("football pitch", "refuge")]),
+])
+def test_dev104_phenomena(kb_analyzers, kb, text, expected):
+    assert claims(kb_analyzers[kb], text) == expected
+
+
+def test_a_noun_after_thats_is_no_relation_verb(kb_analyzers):
+    """"that's steam off the refinery stack": "steam" says what it is, not ``sends steam and power to`` (which would
+    make the power station the place meant)."""
+    ex, _ = analyze(kb_analyzers["bauxite_mine_port"], "No, correction, that's steam off the refinery stack.")
+    assert not any("sends steam" in (p.via or "") for p in ex.places)
+    assert [p.landmark for p in ex.places if p.status == "active"] == ["refinery"]
+
+
 def test_subject_pronoun_clause_of_only_hesitations(kb_analyzers):
     """"the place it um is full of smoke": no words after the pronoun but a hesitation, so there is no link to read
     (this raised IndexError); nothing is read by meaning around "it"."""

@@ -525,6 +525,7 @@ class ReportAnalyzer:
             if opposite:
                 owned.setdefault(opposite, phrase)
         own_names = {norm_phrase(rel.phrase): rel.phrase for rel in self.kb.relations}
+        kb_phrases = set(own_names.values())
         for rel in self.kb.relations:
             name = set(norm_phrase(rel.phrase))
             for form, inverse in _relation_forms(rel.phrase):
@@ -534,6 +535,8 @@ class ReportAnalyzer:
                 held = forms.get(key)
                 if held is not None and owned.get(held[0], rel.phrase) != rel.phrase and not name <= set(key):
                     continue
+                if inverse and held is not None and not held[1] and held[0] in kb_phrases and held[0] != rel.phrase:
+                    continue  # "at the foot of": ``sits_at_the_foot_of`` says it, ``looks_out_over`` only reads it backwards
                 forms[key] = (rel.phrase, inverse)
         for rel in self.kb.relations:
             # "the building at the top of the path" for ``zigzag path leads_up_to mountain hut``: where a way leads up
@@ -547,6 +550,9 @@ class ReportAnalyzer:
             if len(key) >= 3 and key[0] in ("that", "which") and val[0] not in kb_named \
                     and forms.get(key[1:], val)[0] in kb_named:
                 forms[key] = forms[key[1:]]  # "the houses that back onto it": the KB's own ``back onto``, not "behind"
+        for key, val in list(forms.items()):
+            if len(key) >= 2 and key[-1] == "from" and val[0] in kb_phrases and key[-2].endswith("ed"):
+                forms.setdefault((*key[:-1], "off"), val)  # "the station that's fed off it" for ``is fed from``
         for key, val in list(forms.items()):
             for adverb in lx.RELATION_ADVERBS:
                 forms.setdefault((adverb, *key), val)
@@ -693,6 +699,9 @@ class ReportAnalyzer:
             hit = self._keyword_relation(word.lower())
             if hit is None:
                 continue
+            if t > 0 and toks.tokens[t - 1].text.lower().replace("’", "'") in ("that's", "it's") \
+                    and not word.lower().endswith(("ed", "ing", "s")):
+                continue  # "no, that's steam off the refinery stack": what it is, not ``sends steam and power to``
             if t > 0 and (is_number(norms[t - 1]) or norms[t - 1] in lx.NUMBER_WORDS) and not word.lower().endswith(("ed", "ing")):
                 continue  # "two wagons on their sides": things counted, not ``loads_wagons_at``
             verb = hit[0].replace("_", " ").split()[0]
@@ -892,6 +901,8 @@ class ReportAnalyzer:
             if norms[a:b] in self._needs_article and prev in ("that", "which") and b - a == 1 and b < len(norms) \
                     and norms[b] in lx.ARTICLES and norms[a] in self._relation_verbs:
                 continue  # "the pontoon that pumps the diesel for the fish quay": the verb of `pumps_diesel_for`
+            if norms[a:b] in self._needs_article and prev == "both" and a >= 2 and norms[a - 2] == "across":
+                continue  # "a lorry jackknifed right across both lanes": the two lanes of the road, not "the lanes"
             if norms[a:b] in self._needs_article and prev not in lx.DETERMINERS | {"our", "your", "my", "his", "her", "both"} \
                     and b not in glossary_ends and not acronym and not heading and not self._telegraphic_subject(toks, norms, a, b) \
                     and not (log and (b - a >= 2 or prev in lx.PREPOSITIONS and len(norms[a]) >= 5)) \
@@ -2306,9 +2317,17 @@ class ReportAnalyzer:
             names = self._modifiers.get(norms[i])
             if not names or norms[i - 1] != "the" or norms[i + 1] != "one" or {i - 1, i, i + 1} & taken:
                 continue
+            said = set(norms[:i - 1])
             if len(names) > 1:
-                said = set(norms[:i - 1])
                 names = {n for n in names if name_words(n)[-1] in said}
+            elif norms[i] in _PLAIN_ADJECTIVES | {"big", "little", "small", "old", "new"} and any(
+                    p.landmark not in names and p.end_tok < i and toks.sentence_of[p.start_tok] == toks.sentence_of[i]
+                    and toks.tokens[p.end_tok - 1].text.lower().endswith("s")
+                    and not toks.tokens[p.end_tok - 1].text.lower().endswith(("'s", "’s", "ss")) for p in places):
+                # "the generators are on fire, flames out the side of the big one": one of those just said, no "big
+                # catapult" whose head was never said
+                names = {n for n in names if any(name_words(f)[:1] == (norms[i],) and name_words(f)[-1] in said
+                                                 for f in self.kb.landmark_by_name[n].surface_forms)}
             if len(names) != 1:
                 continue
             out.append(replace(self._mention(toks, i - 1, i + 2, next(iter(names))), reason=f"the '{norms[i]}' one"))
@@ -2410,6 +2429,9 @@ class ReportAnalyzer:
             exact = [p for p in before if any(f.lower().split()[-1:] == [raw]
                                               for f in self.kb.landmark_by_name[p.landmark].surface_forms)]
             last = max(exact or before, key=lambda p: p.end_tok)  # ("the sheds": the cattle sheds, not the hay shed)
+            if not exact and raw.endswith("s") and not raw.endswith(("ss", "'s", "’s")) \
+                    and raw not in self.kb.landmark_by_name[last.landmark].description.lower().split():
+                continue  # "sheeting all over the bays": many bays, not the one "fuel bay" said a while before
             if i >= 2 and norms[i - 2] in ("not", "no") and last.end_tok >= i - 6:
                 # "he's in the tea warehouse, not the shed": said against the one just named, the other one
                 other = [p for p in (exact or before) if p.landmark != last.landmark]
@@ -2492,8 +2514,10 @@ class ReportAnalyzer:
         """"off the roof condensers both": "the", a word of the landmark's own description, then its head word."""
         m = i - 1
         if i < 2 or norms[i - 2] != "the" or m in taken or toks.clause_start[m] or toks.clause_start[i] \
-                or not norms[m].isalpha() or norms[m] in lx.FUNCTION_WORDS or norms[m] in self._name_word_owners \
-                or self._cues.match_at(norms, m) is not None:
+                or not norms[m].isalpha() or norms[m] in lx.FUNCTION_WORDS \
+                or len(self._name_word_owners.get(norms[m], ())) == 1 or self._cues.match_at(norms, m) is not None:
+            # (a word of one other landmark's name names that one: "the church hall"; a word that several names share
+            # names none of them: "the ferry ramp" where "ferry quay" and "ferry queue" are two places)
             return False
         name = name or self._heads[norms[i]]
         own = self._description_words().get(name, set())
@@ -2878,8 +2902,9 @@ class ReportAnalyzer:
         merged: list[tuple[int, int, tuple[str, bool]]] = []
         for h in sorted(rel_hits, key=lambda h: h[0]):
             if merged and merged[-1][1] == h[0] and merged[-1][2] == h[2] and not toks.clause_start[h[0]] \
-                    and norms[h[0]] not in norm_phrase(h[2][0].replace("_", " ")):
-                # (not where the second begins with the relation's own words: "that shares its | back lanes with")
+                    and (norms[h[0]] not in norm_phrase(h[2][0].replace("_", " ")) or norms[h[0]] in lx.ARTICLES):
+                # (not where the second begins with the relation's own words: "that shares its | back lanes with";
+                # but an article is no word of its own: "that catches | the seepage from" for ``catches_the_seepage_below``)
                 merged[-1] = (merged[-1][0], h[1], h[2])
             else:
                 merged.append(h)
@@ -3431,7 +3456,9 @@ class ReportAnalyzer:
             target, via = self._follow(anchor, phrase, head, inverse=_reads_backwards(link, phrase, inv) != inverse,
                                        _loose=True)
             if target is not None:
-                return target, via
+                # ("the tower the overland drops its ore into": a head word that names the one place related to the
+                # anchor with it in its names, "transfer tower", names the place meant)
+                return self._head_named_neighbour(anchor, norm(head), target, via) if head.isalpha() else (target, via)
         phrase, inv = meta[int(order[0])]
         # (a link MiniLM only guesses at is read no further by height: "the gardens the Imperial looks out on")
         found = self._follow(anchor, phrase, head, inverse=_reads_backwards(link, phrase, inv) != inverse, _vertical=False)
@@ -3623,12 +3650,17 @@ class ReportAnalyzer:
                     or toks.clause_start[q.start_tok]:
                 continue
             e = q.end_tok
-            while e < n and not toks.clause_start[e] and e - q.end_tok < 5:
-                e += 1
+            endings = lx.RELATION_ENDINGS | {"into", "onto", "in", "up", "down"}
+            while e < n and not toks.clause_start[e] and e - q.end_tok < 5 and not (
+                    e > q.end_tok + 1 and norms[e - 1] in endings and norms[e] in lx.COPULAS | {"has", "have", "had"}):
+                e += 1  # (up to the main clause's verb: "the ponds the pilas drain into have burst their wall")
             after = norms[q.end_tok:e]
-            if not after or not (e == n or toks.clause_start[e]) \
+            if not after or not (e == n or toks.clause_start[e] or norms[e] in lx.COPULAS | {"has", "have", "had"}) \
                     or after[-1] not in lx.RELATION_ENDINGS | {"into", "onto", "in", "up", "down"} \
-                    or not any(_verb_like(toks.tokens[i].text) for i in range(q.end_tok, e - 1)) \
+                    or not any(_verb_like(toks.tokens[i].text) for i in range(q.end_tok, e - 1)) and not (
+                        # ("the ponds the pilas drain into": a plural subject's verb has no "s")
+                        q.text.lower().endswith("s") and len(after) == 2 and after[0].isalpha()
+                        and after[0] not in lx.FUNCTION_WORDS and len(after[0]) >= 3) \
                     or any(r.start_tok < e and r.end_tok > q.end_tok for r in ex.places if r is not q):
                 continue
             ex.places[idx] = replace(q, status="reference", reason=f"reference point of a named place ('{p.text}')")
@@ -3988,6 +4020,10 @@ class ReportAnalyzer:
                     break  # "big hot spot in the dutch barn, and a second one in the roof of the machinery shed"
                 if toks.gaps[h + 1] == "-" and norms[h + 1] in lx.FUNCTION_WORDS:
                     continue  # "the walk-in freezer in the kitchens": the first half of a compound heads nothing
+                if norms[h] in ("end", "edge", "foot", "head") and norms[h + 1:h + 2] == ("of",) and h >= 4 \
+                        and norms[h - 1] == "the" and norms[h - 2] in ("at", "off", "on", "by") \
+                        and any(norms[g] in nouns and norms[g - 1] in lx.ARTICLES for g in range(max(1, h - 6), h - 2)):
+                    continue  # "the jetty tied up at the end of the harbour ...": where the head is, not the head
                 if norms[h] in nouns and h > 0 and (norms[h - 1] in lx.ARTICLES | lx.WHATEVER or h > 1
                                                     and norms[h - 2] in lx.ARTICLES and norms[h - 1].isalpha()
                                                     and (h - 1) not in blocked) or norms[h] in lx.WHATEVER:
@@ -4035,6 +4071,10 @@ class ReportAnalyzer:
                         and (anchor.end_tok == len(norms) or toks.clause_start[anchor.end_tok]
                              or norms[anchor.end_tok] in ("and", "is", "s")):
                     continue  # "the visitor place with the café": a place by what it has, the one whose own café it is
+                if between == ["with"] and norms[head] in lx.GENERIC_HEADS and norms[head - 1:head] == ("the",) \
+                        and anchor.via is None and anchor.status == "active" \
+                        and (anchor.end_tok == len(norms) or toks.clause_start[anchor.end_tok]):
+                    continue  # "the place with the horses, the stables": the place said by what it has, itself
                 if any(w in lx.COPULAS - {"s"} for w in between) or any(
                         between[m] == "its" and between[m + 1] in ("like", "a", "an", "all", "not", "just")
                         for m in range(len(between) - 1)):
@@ -4181,11 +4221,20 @@ class ReportAnalyzer:
             # the described anchor read it among the anchor's relations like a named one)
             generic_after = described_anchor and not between and not named and norms[head] in lx.GENERIC_HEADS \
                 and norms[anchor.start_tok] == "the"
+            # ("the conveyor coming off whatever's fed from the ROM pad": a verb of motion and its particle)
+            moving = len(between) == 2 and between[0].endswith("ing") and between[0] not in lx.FUNCTION_WORDS \
+                and (between[1] in lx.PREPOSITIONS or between[1] in _TO_PARTICLES)
+            # ("the jetty tied up at the end of the harbour that's ...": the last words of ``is moored off the end of``)
+            worded = len(named) == 1 and 2 < len(between) <= 7 \
+                and _ends_on_own_words(between, phrases.get(next(iter(named)), ""))  # (none for a place two hops away)
             if described_anchor and not generic_after and (len(named) != 1 or not between
                                      or between[0] not in lx.PREPOSITIONS | lx.PLACE_PREPOSITIONS and not relative
-                                     or norms[anchor.start_tok] != "the" or len(between) > 2 and not (
-                        len(between) <= 4 and all(w in lx.FUNCTION_WORDS or w in phrases[next(iter(named))].replace("_", " ").split()
-                                                  for w in between))):
+                                     and not moving and not worded
+                                     or norms[anchor.start_tok] != "the" and not (
+                                         moving and norms[anchor.start_tok] in lx.WHATEVER)
+                                     or len(between) > 2 and not (
+                        len(between) <= 4 and all(w in lx.FUNCTION_WORDS or w in phrases.get(next(iter(named)), "").replace("_", " ").split()
+                                                  for w in between) or worded)):
                 continue  # (but "the oast in the yard of the farm whose ...": the words of the relation's own name)
             if norms[head] in lx.ROOMS_OF_A_BUILDING and not named:
                 continue  # "the room above the market hall": a room of it, no landmark of its own
@@ -4207,6 +4256,13 @@ class ReportAnalyzer:
             kinds = (norms[head], *lx.PLACE_KIND_SYNONYMS.get(norms[head], ()))
             head_described = {n: v for n, v in related.items() if norms[head] not in lx.UNNAMING_HEADS
                               and any(_same_stem(k, d) for k in kinds for d in self._description_words()[n])}
+            modifier = norms[head - 1] if head >= 2 and norms[head - 2] in lx.ARTICLES and norms[head - 1].isalpha() \
+                and norms[head - 1] not in lx.FUNCTION_WORDS and (head - 1) not in blocked else None
+            if not head_described and modifier is not None and norms[head] in lx.UNNAMING_HEADS:
+                # ("the flat ground at the end of the swing bridge": an unnaming head with its adjective, both words of
+                # the one related place's description, "flat dirt football pitch, the only level open ground")
+                head_described = {n: v for n, v in related.items()
+                                  if {norms[head], modifier} <= self._description_words()[n]}
             # ("the pub that's the local for caulkers' terrace": the one its description calls a pub)
             pool = named or head_described or related
             if len(pool) > 1 and any(w in _SUPPLY_VERBS for w in between[:3]) and "by" not in between:
@@ -4458,6 +4514,10 @@ class ReportAnalyzer:
             # "the shop the chemist's is stuck onto -- the bread place --": the relation ends its clause; the place
             # after the pause says which place was meant, it anchors nothing
             anchor = None
+        if anchor is None and any(p.reason.startswith("reference point for '") and b <= p.start_tok <= b + 5
+                                  and not any(toks.clause_start[t] for t in range(b, p.start_tok + 1))
+                                  for p in ex.places):
+            return  # ("the plastic dryer tacked onto the side of the warehouse": read forwards already, the dryer named)
         if (anchor is None) != inverse_pass:
             return
         head_end = a
@@ -4483,6 +4543,14 @@ class ReportAnalyzer:
                          and any(p.end_tok == a - k and p.status == "active" and p.via is None for p in ex.places)),
                         None)) is not None:
             head_end = a - k  # "the big pine out west by the quarry": a named head, then where it stands
+        elif a >= 4 and norms[a - 1] in _TUCKED_PARTICLES and toks.tokens[a - 2].text.lower().endswith("ed") \
+                and not any(toks.clause_start[j] for j in range(a - 3, a + 1)):
+            # "the harbour that's tucked in behind the ferry dock", "the hut that is set back from the road": a
+            # participle and its particle before the relation say no more than "is"
+            if toks.tokens[a - 3].text.lower().replace("’", "'") in ("that's", "thats", "which's"):
+                head_end = a - 3
+            elif a >= 5 and norms[a - 4:a - 2] in lx.RELATIVE_COPULAS:
+                head_end = a - 4
         head_place = next((p for p in ex.places if p.end_tok == head_end and p.status == "active"), None)
         if head_place is not None and (toks.sentence_start[head_end] or toks.clause_start[head_end] and pronoun):
             head_place = None  # "I'm at the warehouse. Behind it there's flooding": the place ends another clause
@@ -4909,10 +4977,20 @@ class ReportAnalyzer:
         """"the stack that takes the vent off the cracker", where the words read as ``sulphur recovery unit takes the
         sour gas off cat cracker``: a head noun that is a word of one landmark's names only ("flare stack"), and not a
         word of the place the relation reached (its names or description), names the place meant, when that landmark
-        stands in a KB relation with the anchor. Generic heads ("shed", "building") name no one place."""
+        stands in a KB relation with the anchor. Heads that name no kind ("place", "building") name no one place; other
+        generic heads only as the head of a landmark's own name ("the tower ..." for "transfer tower"). A head word
+        several names end in names the one of them the KB relates to the anchor ("the tunnel powered off ...")."""
         owners = self._name_word_owners.get(head)
-        if head in lx.GENERIC_HEADS or not owners or len(owners) != 1 or target in owners:
+        if head in lx.UNNAMING_HEADS or not owners or target in owners:
             return target, via
+        if head in lx.GENERIC_HEADS and not any(name_words(o)[-1:] == (head,) for o in owners):
+            return target, via  # (a generic head names a place only as the head of its own name: "transfer tower")
+        if len(owners) > 1:
+            # ("the tunnel powered off the yard ...": of the two tunnels, the one the KB relates to the anchor)
+            owners = {o for o in owners if o != anchor and (anchor, o) in self._related_pairs
+                      and name_words(o)[-1:] == (head,)}  # (the head of its own name, not a word of an alias)
+            if len(owners) != 1:
+                return target, via
         other = next(iter(owners))
         if plural and not any(w.endswith("s") and norm_phrase(w) == (head,)
                               for f in self.kb.landmark_by_name[other].surface_forms for w in f.lower().split()):
@@ -4963,6 +5041,10 @@ class ReportAnalyzer:
             has_det = s_ > 0 and norms[s_ - 1] in lx.DETERMINERS and not toks.clause_start[s_]
             if not (has_det or toks.clause_start[s_]) or ("one", "of") in (norms[s_ - 3:s_ - 1], norms[s_ - 2:s_]):
                 i += 1  # ("one of the anchor blocks on the east bank": one of many things, no landmark)
+                continue
+            if i > s_ and (norms[i - 1] in lx.NUMBER_WORDS or is_number(norms[i - 1])) \
+                    and toks.tokens[i].text.lower().endswith("s") and norms[i + 1:i + 2] == ("of",):
+                i += 1  # ("the top three rows of benches": things counted, parts of something; no landmark)
                 continue
             e = i + 1
             if norms[e:e + 2] in _THERE_ADVERBS and norms[e + 2:e + 3] == ("where",) and not toks.clause_start[e]:
@@ -5019,6 +5101,13 @@ class ReportAnalyzer:
                     norms[i] in name_words(f) for f in self.kb.landmark_by_name[sc[1]].surface_forms)]
                 if len(named) == 1:
                     scores = named
+            if scores and scores[0][0] >= 2 and i + 2 < len(norms) and norms[i + 1] in ("that", "which") \
+                    and not any(toks.clause_start[t] for t in range(i + 1, min(len(norms), i + 5))) \
+                    and any(self._keyword_relation(norms[t]) is not None for t in range(i + 3, min(len(norms), i + 6))) \
+                    and any(p.status == "active" and i + 4 <= p.start_tok <= i + 9 and not any(
+                        toks.clause_start[t] for t in range(i + 1, p.start_tok + 1)) for p in ex.places):
+                i += 1  # "the fenced yard that runs the fans in the long tunnel": its clause says a relation of the KB
+                continue  # (``keeps_the_fans_running_in``) to a place named after it, for the relations to read
             if scores and scores[0][0] >= 2 and (len(scores) == 1 or scores[0][0] > scores[1][0]):
                 a = s_ - 1 if has_det else s_
                 while e - 1 > i and norms[e - 1] in lx.DETERMINERS:
@@ -5194,6 +5283,8 @@ class ReportAnalyzer:
         verb = hit[0].split()[0]
         if hit[1] == "active" and _link_stems(word, synonyms=False) & _link_stems(verb, synonyms=False):
             return False  # "hangar two's open": the relation's verb, not a noun for the other place
+        if any(norms[k] in name_words(f) for f in self.kb.landmark_by_name[p.landmark].surface_forms):
+            return False  # "the yorkies' camp": the head of the place's own name ("yorkist camp"), not ``is_camped_at``
         end = k + 1
         if end < len(norms) and (norms[end] in lx.GENERIC_HEADS or norms[end] == p.text.split()[0].lower()) \
                 and not toks.clause_start[end]:
@@ -5294,8 +5385,10 @@ class ReportAnalyzer:
             # ("below the café's car park": the place the possessive names, not its owner)
             place = next((p for p in ex.places if p.start_tok == place.start_tok and p.status == "active"
                           and (p.via or "").startswith(_OWNED) and p.end_tok > place.end_tok), place)
-        if place is not None and any(ex.tokens.sentence_start[t] for t in range(b, place.start_tok + 1)):
+        if place is not None and any(ex.tokens.sentence_start[t] or ";" in ex.tokens.gaps[t]
+                                     for t in range(b, place.start_tok + 1)):
             place = None  # "diesel all over the road. Toll plaza is ...": a relation does not reach into the next sentence
+            # (nor past a semicolon: "the field it backs onto; the camp itself has smoke")
         elif place is not None and norms[b - 1] in ("road", "lane", "street", "way"):
             # "across the lane the surgery's windows are blown in": said where it is ("across the lane" from the
             # speaker); without "from" the place after it is what is described, not the anchor
@@ -5543,8 +5636,11 @@ class ReportAnalyzer:
         if rp == phrase:
             return True
         core = _relation_core(rp)  # "directly_above" is an "above" relation
+        words = rp.split()
+        # ("stands round the back of" is a "behind" relation: a posture verb, then a phrase of the group)
+        rest = " ".join(words[1:]) if len(words) >= 3 and words[0] in _POSTURE_VERBS | {"is", "are"} else None
         for canon, syns in lx.RELATION_SYNONYMS.items():
-            if phrase == canon and (rp == canon or rp in syns or core == canon or core in syns):
+            if phrase == canon and (rp == canon or rp in syns or core == canon or core in syns or rest in syns):
                 return True
         return False
 
@@ -5765,6 +5861,12 @@ class ReportAnalyzer:
                 or untouched and not self._desirable_cue_in_sentence(toks, norms, p.end_tok) \
                 or tail[:2] in ((v, w) for v in ("isnt", "wasnt", "not") for w in ("affected", "involved")) \
                 or tail[:3] in ((v, "not", w) for v in ("is", "was", "s") for w in ("affected", "involved"))
+            # ("it's not the camp, the camp's not the problem, it's the clinic")
+            problem = tail[:4] in ((v, "not", "the", w) for v in ("is", "s", "was") for w in ("problem", "issue")) \
+                or tail[:3] in ((v, "the", w) for v in ("isnt", "wasnt", "not") for w in ("problem", "issue"))
+            if problem and (j < 0 or toks.clause_start[j + 1]):
+                ex.places[idx] = replace(p, status="negated", reason="negated by 'not the problem'")
+                continue
             if j < 0 and not_the_one:
                 ex.places[idx] = replace(p, status="negated", reason="negated by 'not the one'")
                 continue  # "the school isn't the one with people trapped, it's the library"
@@ -6177,8 +6279,11 @@ class ReportAnalyzer:
                 or norms[p.end_tok] not in ("is", "s", "was", "are", "were", "has", "had") or toks.clause_start[p.end_tok]:
             return False
         n = toks.sentence_of[p.start_tok]
+        # ("a fisherman from the kampung has been pulled out of the water under the wharf": in the same clause)
         return any(q.status == "active" and q.landmark != p.landmark and toks.sentence_of[q.start_tok] == n
-                   and p.end_tok < q.start_tok <= p.end_tok + 5 for q in places)
+                   and (p.end_tok < q.start_tok <= p.end_tok + 5
+                        or norms[p.end_tok] == "has" and p.end_tok + 5 < q.start_tok <= p.end_tok + 10
+                        and not any(toks.clause_start[t] for t in range(p.end_tok, q.start_tok + 1))) for q in places)
 
     @staticmethod
     def _locates_other(norms: tuple[str, ...], p: PlaceMention, places: list[PlaceMention]) -> str:
@@ -6726,6 +6831,19 @@ class ReportAnalyzer:
                     b2, end2 = self._after_clause(ex, k + 1)
                     after = [p for p in ex.places if b2 <= p.start_tok < end2 and p.status == "active"] \
                         or _active_repeats(ex, b2, end2)  # ("... the log store, it's the log store": the repeat stands)
+                if cut is None:
+                    # "landslip at the pipe, no, at the top d-- the dam, sorry, at the power station": the cut-off
+                    # name said again whole, that one repaired in its turn; the place the repairs end on is meant
+                    cut = next((p for p in ex.places if p.reason.startswith("false start") and b <= p.start_tok <= b + 3),
+                               None)
+                    restated = next((p for p in ex.places if cut is not None and p.landmark == cut.landmark
+                                     and cut.end_tok <= p.start_tok <= cut.end_tok + 2), None)
+                    followed = set()
+                    while restated is not None and restated.status == "retracted" and restated.start_tok not in followed:
+                        followed.add(restated.start_tok)
+                        restated = next((p for p in ex.places if p.replaces == restated.start_tok), None)
+                    if restated is not None and restated.status == "active":
+                        after = [restated]
             if not after:
                 # "belay that, in the mill — the mill": the new place was restarted; its repeat stands in
                 restarted = [p for p in ex.places if b <= p.start_tok < end and p.reason.startswith("restarted")]
@@ -6910,6 +7028,9 @@ class ReportAnalyzer:
                     and self.kb.category_by_name[c.category].role == Role.CRITICAL and nxt is not None \
                     and self.kb.category_by_name[nxt.category].role == Role.DESIRABLE:
                 continue
+            if c.end_tok - c.start_tok == 1 and norms[c.start_tok] == "contaminated" and c.end_tok < len(norms) \
+                    and norms[c.end_tok] in lx.CREW_NOUNS | _PEOPLE_WORDS:
+                continue  # "bring the contaminated crews down": people to wash down, no spill there
             out.append(c)
         return out
 
@@ -8406,6 +8527,8 @@ class ReportAnalyzer:
             if not self._person_before(norms, i) or norms[i - 1] not in ("is", "are", "s", "re") \
                     and norms[i - 1] not in lx.CREW_NOUNS | lx.WORKER_PERSONS | {"man", "men", "woman", "person"}:
                 continue
+            if any(norms[k] in lx.BRING_VERBS | {"send", "sent", "sending", "get", "move"} for k in range(max(0, i - 5), i - 1)):
+                continue  # "bring the contaminated crews down": people moved down, no one fallen
             start, end = toks.tokens[i].start, toks.tokens[i].end
             out.append(CueMention(i, i + 1, start, end, toks.text[start:end], cat, "lexicon", reason="a person down"))
         for i in range(2, len(norms) - 3):
@@ -10799,6 +10922,13 @@ def _says_which_after(toks: Tokens, norms: tuple[str, ...], end: int, q: PlaceMe
 _HOUSING_HEADS = frozenset({"house", "shed", "room", "hall", "hut", "building"})
 
 
+def _ends_on_own_words(between: list[str], phrase: str) -> bool:
+    """Do the words between a head and its anchor end on the last three words of the relation's name, a noun of
+    its among them ("... tied up at the end of" for ``is moored off the end of``)?"""
+    tail = norm_phrase(phrase.replace("_", " "))[-3:]
+    return len(tail) == 3 and tuple(between[-3:]) == tail and any(w not in lx.FUNCTION_WORDS for w in tail)
+
+
 def _sole_antecedent(ex: Extraction, toks: Tokens, limit: int, k: int) -> PlaceMention | None:
     """The place a pronoun at ``k`` takes up: the active one named last before ``limit``, in an earlier clause, where
     no other place is said between it and the pronoun; else None."""
@@ -11334,6 +11464,8 @@ def _stove_in(toks: Tokens, norms: tuple[str, ...], a: int) -> bool:
 
 _ANIMAL_STATE_KEYS = frozenset(norm_phrase(s) for s in lx.ANIMAL_STATES)
 # "down there", "up there": said between a description's head and its "where"
+# Particles after a participle of where a thing is put ("tucked in behind", "set back from", "hidden away behind")
+_TUCKED_PARTICLES = frozenset({"in", "away", "up", "back", "off", "down", "out"})
 _THERE_ADVERBS = frozenset({(w, "there") for w in ("down", "up", "over", "in", "under", "out", "back")})
 # Where a part of a place is, said before the place ("from under the stadium, the room down there where ...")
 _UNDER_WORDS = frozenset({"under", "beneath", "underneath", "below", "behind", "above"})

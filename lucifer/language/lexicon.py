@@ -32,6 +32,7 @@ def _add(role: str, phrases: str) -> None:
 
 
 _add(UNDESIRABLE, """
+gone live|gone live again|is live again|went live again|
 have come off the|has come off the|running brown|properly under|slid right across|slid across the|come clean off|roof's come off|roof has come off|roof came off|broken straight through its bank|broken through its bank|broken through the bank|is also water|scouring the bank|scouring the bank away|metre above normal|metres above normal|foot above normal|feet above normal|taking the fences with it|up to his windowsills|up to her windowsills|up to their windowsills|up to the windowsills|up to the sills|water is already up to|water's already up to|water is up to the|water's up to the|dropped and split|split in two|split in half|slates have come off|shed half its|has shed half its|
 been torn off|torn away|
 have toppled|has toppled|toppled over|toppled all over|it's a wreck|its a wreck|a complete wreck|a total wreck|
@@ -176,6 +177,7 @@ _add(CRITICAL, "|".join(f"{aux} {verb} in" for aux in ("haven't", "havent", "has
 _add(CRITICAL, "|".join(f"pulled {who} out of" for who in ("a man", "a woman", "someone", "somebody", "a child", "a kid",
                                                              "him", "her", "a lad", "a girl", "a boy")))
 _add(CRITICAL, "still out on it|still out on the|stuck out on it|still stuck out on")
+_add(CRITICAL, "coughing up smoke|coughing smoke|coughing up black")  # (a symptom, not smoke at the place)
 # ("my son walked out to the rock pile and he's not back"; "says he can't feel his left leg")
 _add(CRITICAL, "he's going under|hes going under|she's going under|shes going under|they're going under|"
                "theyre going under|")  # ("a kid gone in off the end of the landing stages ... he's going under")
@@ -260,7 +262,7 @@ ambulance needed|ambulance required|need an ambulance|send an ambulance|needs me
 broken ankle|broken wrist|head injury|fractured|fracture|crushed|crushed foot|crushed leg|concussion|
 can hear someone|can hear her|can hear him|can hear them|can hear voices|hear someone|hear her|hear him|
 hear voices|waving at us|waving to us|calling from|shouting from|trapped under|under the timbers|overdue|
-gone under|went under|capsized|has capsized|not come up|hasn't come up|hasnt come up|not come back up|not surfaced|hasn't surfaced|swept away by|in the river|in the sea|hypothermia|casualty recovered|recovered from the water|swept away|
+gone under|went under|capsized|has capsized|not come up|hasn't come up|hasnt come up|not come back up|not surfaced|hasn't surfaced|swept away by|has been swept into|have been swept into|was swept into|were swept into|got swept into|in the river|in the sea|hypothermia|casualty recovered|recovered from the water|swept away|
 still in there|still in there somewhere|still got children upstairs|still got kids upstairs|still got people upstairs|children still upstairs|kids still upstairs|people still upstairs|can't find him|can't find her|can't find them|cannot find him|cannot find my son|cannot find my daughter|cannot find my child|cannot find my boy|cannot find my girl|cannot find my kid|cannot find my little boy|cannot find my little girl|can't find my son|can't find my daughter|can't find my child|can't find my boy|can't find my girl|can't find my kid|can't find my little boy|can't find my little girl|cant find my son|cant find my daughter|cant find my child|cant find my boy|cant find my girl|cant find my kid|cant find my little boy|cant find my little girl|
 people coughing|few of them collapsed|some of them collapsed|collapsed on the floor|
 live find|a live find|indicating a find|can't get down|cannot get down|can't get downstairs|cut his arm|cut her arm|
@@ -830,7 +832,7 @@ TRANSIT = [*(f"{v} {who} {way}to" for v in ("walk", "take", "bring", "carry", "h
            "driven from", "ran from", "run from", "cycled from", "anyone coming off", "anyone walked off", "anybody walked off", "everyone walked off", "people walked off", "anyone walking off", "people walking off", "anybody coming off", "everyone coming off", "people coming off", "families coming off",
            "visitors coming off", "crowds coming off", "folk coming off", "riders coming off", "families coming out of", "anyone coming out of", "anybody coming out of", "everyone coming out of", "people coming out of", "evacuated from", "moved out of", "moved from", "relocated from", "decanted from", "brought out of",
            "heading to", "heading for", "heading towards", "heading toward", "headed to", "headed for", "head to",
-           "heading up towards", "heading down towards", "creeping towards", "drifting towards", "current towards", "swinging towards", "floating towards",
+           "heading up towards", "heading down towards", "creeping towards", "drifting towards", "hanging down into", "dangling down into", "dangling into", "current towards", "swinging towards", "floating towards",
            "spreading towards", "moving up towards", "running uphill towards", "running downhill towards",
            "running up towards", "running towards", "racing towards", "racing up towards", "burning towards",
            "burning up towards", "carrying it towards", "carrying it down towards",
@@ -993,7 +995,7 @@ PERSON_NOUNS = ["man", "woman", "person", "someone", "somebody", "firefighter", 
                 "patient", "resident", "worker", "officer", "lady", "guy", "bloke", "fella", "casualty", "boy", "girl",
                 "customer", "driver", "student", "teacher", "nurse", "someone's", "somebody's", "chap", "lad", "roofer",
                 "builder", "labourer", "painter", "climber", "mechanic", "spectator", "camper", "walker", "rider",
-                "technician", "farmer", "farmhand"]
+                "technician", "farmer", "farmhand", "fisherman"]
 for _p in PERSON_NOUNS:
     ROLE_CUES[f"{_p} fallen through"] = CRITICAL  # ("a worker's fallen through the roof"; a roof that fell is none)
     ROLE_CUES[f"{_p} has fallen through"] = CRITICAL
@@ -1237,10 +1239,10 @@ DANGER_KINDS: dict[str, list[str]] = {
                "ceiling down", "tree through the roof", "tree on it", "the tree on it", "tree on the roof",
                "roof fell on", "fell on them", "came down on them", "come down on them", "collapsed on them",
                "smashed", "smashed up", "smashed to pieces", "smashed to matchwood", "full of wreckage", "wreckage",
-               "a breach in it", "breach in the", "split down the side", "split down one side", "split wide open", "split right open", "split open", "taken a tree", "taken trees", "took a tree", "taken a falling tree", "ripped off", "ripped clean off", "ripped away", "is bent at", "s bent at", "bent at the top", "bent in half", "bent double", "badly bent", "has a breach", "got a breach", "breached", "been breached", "shedding stone", "shedding stones", "shedding masonry",
+               "a breach in it", "breach in the", "split down the side", "split down one side", "split right down", "split right through", "split down the grain", "split wide open", "split right open", "split open", "taken a tree", "taken trees", "took a tree", "taken a falling tree", "ripped off", "ripped clean off", "ripped away", "is bent at", "s bent at", "bent at the top", "bent in half", "bent double", "badly bent", "has a breach", "got a breach", "breached", "been breached", "shedding stone", "shedding stones", "shedding masonry",
                "masonry dropping", "masonry falling", "masonry coming down", "bits of masonry", "trees are down",
                "trees down", "tree is down", "power lines tangled", "lines tangled in", "half the ceiling's",
-               "has failed", "concrete's gone", "half gone", "ripped out the", "doors burst in", "burst in by the",
+               "has failed", "have failed", "dropped on one side", "dropped at one end", "concrete's gone", "half gone", "ripped out the", "doors burst in", "burst in by the",
                "ceiling's on the floor",
                "windows are all in", "windows all in", "windows have come in", "windows have gone in",
                "roof's come off", "roof has come off", "roof come off", "roof came off"],
@@ -1349,7 +1351,7 @@ DANGER_KINDS: dict[str, list[str]] = {
 DANGER_KIND_PARTS = _keyed({"roof", "roofs", "wall", "walls", "ceiling", "floor", "chimney", "tree", "trees", "door", "doors",
                      "pipe", "main", "bricks", "slates", "right", "across", "through", "everywhere", "going", "could",
                      "might", "about", "second", "under", "over", "coming", "gone", "fully", "well", "again", "risk",
-                     "down"})
+                     "down", "vehicle"})  # ("no vehicle access": what cannot pass, no danger of vehicles)
 
 # Every kind's phrase is an undesirable cue: a new one needs writing only in its kind (older ones are
 # in the UNDESIRABLE list above as well).
@@ -1630,7 +1632,8 @@ DANGER_KIND_EXTRA: dict[str, list[str]] = {
                  "line down", "lines are down", "line is down", "wires down", "wire down", "wires are down",
                  "cables down", "cable down", "cables are down", "transformer's blown", "transformer has blown",
                  "transformer blew", "transformer's gone bang"],
-    "gas": ["the cloud's now", "the cloud is now", "cloud's got into", "cloud has got into", "cloud's drifting",
+    "gas": ["smell like bleach", "smells like bleach", "smell of bleach", "smells of bleach", "stink of bleach",
+            "the cloud's now", "the cloud is now", "cloud's got into", "cloud has got into", "cloud's drifting",
             "cloud is drifting", "cloud's moving", "cloud is moving", "gassing off", "gassing out", "is gassing", "s gassing", "rotten egg", "rotten eggs", "rotten-egg smell", "rotten egg smell", "eggy smell", "smell like eggs", "smells like eggs", "smell of eggs", "smells of eggs", "smell like rotten eggs", "stinks of eggs", "stinks of rotten eggs", "stink of eggs", "reeks of eggs", "reeks of rotten eggs", "smell of rotten eggs", "smells of rotten eggs", "like egg", "like eggs", "like rotten egg", "there's a hiss", "a loud hiss", "hissing out of", "h2s", "so2", "co2", "sulphur dioxide", "hydrogen sulphide", "carbon dioxide", "methane", "methane leak", "natural gas", "co detected", "co reading", "co readings", "co levels", "high co", "carbon monoxide", "carbon monoxide alarm", "co alarm"],
     "collapse": ["it's all rotten", "it's rotten", "ice is rotten", "ice s rotten", "rotten right across", "the fallen roof of", "fallen roof of", "whole house just dropped", "house just dropped", "whole house dropped", "slab come off", "slab came off", "slab has come off", "slab's come off", "a big hole in", "big hole in the", "huge hole in the", "a hole in the ground", "hole in the crust",
                  "started to sag", "starting to sag", "begun to sag", "beginning to sag", "wall's come in", "wall has come in", "walls have come in", "wall's come down on", "roof's come in",
@@ -1652,7 +1655,7 @@ DANGER_KIND_EXTRA: dict[str, list[str]] = {
               "drowned out", "foot under", "feet under", "metre under", "metres under", "inches under",
               "water's at the top of", "water is at the top of",
               "water at the top of", "water's up to the top of", "water is up to the top of"],
-    "access": ["blocking", "blocking the way", "blocking it", "blocks the way", "rocks across", "rocks across it", "rocks across the road", "debris across", "debris right across", "fallen oak", "fallen beech", "fallen ash", "fallen branch", "fallen branches"],
+    "access": ["jammed", "jammed solid", "blocking", "blocking the way", "blocking it", "blocks the way", "rocks across", "rocks across it", "rocks across the road", "debris across", "debris right across", "fallen oak", "fallen beech", "fallen ash", "fallen branch", "fallen branches"],
     "ground": ["spoil's already through", "spoil is already through", "spoil's through", "spoil is through", "spoil's come through",
                "spoil has come through", "spoil's come down", "spoil has come down", "strewn with rocks", "strewn with boulders", "littered with rocks", "littered with boulders", "buried to the axles", "buried to its axles", "buried up to the axles", "buried up to its axles",
                "sunk to the axles", "sunk to its axles", "bogged down", "there's a slip on", "there's been a slip on", "there is a slip on", "scree moving", "scree is moving", "ground is moving", "ground moving", "slope is moving", "hillside is moving", "rocks are coming off", "rocks are coming down", "rocks are falling", "dropping rocks", "rocks dropping", "dropping stones", "has sunk", "have sunk", "its sunk", "ground dropped", "ground has dropped", "ground dropping", "ground is dropping", "ground gone", "ground has gone", "ground just gone", "floor dropped", "floor has dropped", "hole opened up", "hole has opened up", "hole just opened up", "floor has opened", "floor's opened", "sinkhole", "sink hole", "ash a foot deep", "ash is knee deep", "ash knee deep", "ash's knee deep", "ash is ankle deep", "a foot of ash", "feet of ash", "inches of ash", "deep in ash", "covered in ash", "covered in stones", "covered in rocks", "covered in boulders", "covered with stones", "covered with rocks", "stones all over it", "rocks all over it", "heaped with ash", "buried in ash", "under the ash", "drifts of ash", "ash drifts", "half buried", "half-buried", "slurry", "full of slurry", "sludge", "silt", "full of silt"],
