@@ -4227,15 +4227,18 @@ class ReportAnalyzer:
             # ("the jetty tied up at the end of the harbour that's ...": the last words of ``is moored off the end of``)
             worded = len(named) == 1 and 2 < len(between) <= 7 \
                 and _ends_on_own_words(between, phrases.get(next(iter(named)), ""))  # (none for a place two hops away)
-            if described_anchor and not generic_after and (len(named) != 1 or not between
-                                     or between[0] not in lx.PREPOSITIONS | lx.PLACE_PREPOSITIONS and not relative
-                                     and not moving and not worded
-                                     or norms[anchor.start_tok] != "the" and not (
-                                         moving and norms[anchor.start_tok] in lx.WHATEVER)
-                                     or len(between) > 2 and not (
-                        len(between) <= 4 and all(w in lx.FUNCTION_WORDS or w in phrases.get(next(iter(named)), "").replace("_", " ").split()
-                                                  for w in between) or worded)):
-                continue  # (but "the oast in the yard of the farm whose ...": the words of the relation's own name)
+            if described_anchor and not generic_after:
+                # a described anchor is read so only where one named place fits and the words between are a
+                # preposition, a relative verb, a verb of motion or the relation's own words (but "the oast in the
+                # yard of the farm whose ...": the words of the relation's own name)
+                own = phrases.get(next(iter(named)), "").replace("_", " ").split() if len(named) == 1 else []
+                linked_by = bool(between) and (between[0] in lx.PREPOSITIONS | lx.PLACE_PREPOSITIONS or relative
+                                               or moving or worded)
+                opened = norms[anchor.start_tok] == "the" or moving and norms[anchor.start_tok] in lx.WHATEVER
+                short = len(between) <= 2 or len(between) <= 4 and all(w in lx.FUNCTION_WORDS or w in own
+                                                                         for w in between) or worded
+                if len(named) != 1 or not linked_by or not opened or not short:
+                    continue
             if norms[head] in lx.ROOMS_OF_A_BUILDING and not named:
                 continue  # "the room above the market hall": a room of it, no landmark of its own
             if norms[head] in lx.ROUTE_HEADS and not named and len(between) == 1 \
