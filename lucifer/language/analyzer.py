@@ -2320,7 +2320,7 @@ class ReportAnalyzer:
             said = set(norms[:i - 1])
             if len(names) > 1:
                 names = {n for n in names if name_words(n)[-1] in said}
-            elif norms[i] in _PLAIN_ADJECTIVES | {"big", "little", "small", "old", "new"} and any(
+            elif norms[i] in _PLAIN_ADJECTIVES and any(
                     p.landmark not in names and p.end_tok < i and toks.sentence_of[p.start_tok] == toks.sentence_of[i]
                     and toks.tokens[p.end_tok - 1].text.lower().endswith("s")
                     and not toks.tokens[p.end_tok - 1].text.lower().endswith(("'s", "’s", "ss")) for p in places):
@@ -3656,7 +3656,7 @@ class ReportAnalyzer:
                 e += 1  # (up to the main clause's verb: "the ponds the pilas drain into have burst their wall")
             after = norms[q.end_tok:e]
             if not after or not (e == n or toks.clause_start[e] or norms[e] in lx.COPULAS | {"has", "have", "had"}) \
-                    or after[-1] not in lx.RELATION_ENDINGS | {"into", "onto", "in", "up", "down"} \
+                    or after[-1] not in endings \
                     or not any(_verb_like(toks.tokens[i].text) for i in range(q.end_tok, e - 1)) and not (
                         # ("the ponds the pilas drain into": a plural subject's verb has no "s")
                         q.text.lower().endswith("s") and len(after) == 2 and after[0].isalpha()
