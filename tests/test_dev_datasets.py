@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev105) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev107) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -234,6 +234,14 @@ BAUXITE_MINE_PORT = ROOT / "knowledge_bases" / "bauxite_mine_port"
 COFFEE_FINCA = ROOT / "knowledge_bases" / "coffee_finca"
 ICE_ROAD_CAMP = ROOT / "knowledge_bases" / "ice_road_camp"
 CANYON_RAFTING_BASE = ROOT / "knowledge_bases" / "canyon_rafting_base"
+PEAT_RAILWAY_BOG = ROOT / "knowledge_bases" / "peat_railway_bog"
+MARBLE_QUARRY_TOWN = ROOT / "knowledge_bases" / "marble_quarry_town"
+CRUISE_TERMINAL = ROOT / "knowledge_bases" / "cruise_terminal"
+REINDEER_HERDERS_CAMP = ROOT / "knowledge_bases" / "reindeer_herders_camp"
+PRINTING_WORKS = ROOT / "knowledge_bases" / "printing_works"
+CHEESE_CAVES_VILLAGE = ROOT / "knowledge_bases" / "cheese_caves_village"
+SOLAR_FARM_SUBSTATION = ROOT / "knowledge_bases" / "solar_farm_substation"
+SHEARING_STATION = ROOT / "knowledge_bases" / "shearing_station"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -625,6 +633,14 @@ SETS = {
     "dev105/coffee_finca": _set("dev105/coffee_finca.jsonl", COFFEE_FINCA, "cf105", TWENTY, sep=""),
     "dev105/ice_road_camp": _set("dev105/ice_road_camp.jsonl", ICE_ROAD_CAMP, "ir105", TWENTY, sep=""),
     "dev105/canyon_rafting_base": _set("dev105/canyon_rafting_base.jsonl", CANYON_RAFTING_BASE, "cr105", TWENTY, sep=""),
+    "dev106/peat_railway_bog": _set("dev106/peat_railway_bog.jsonl", PEAT_RAILWAY_BOG, "pb106", TWENTY, sep=""),
+    "dev106/marble_quarry_town": _set("dev106/marble_quarry_town.jsonl", MARBLE_QUARRY_TOWN, "mq106", TWENTY, sep=""),
+    "dev106/cruise_terminal": _set("dev106/cruise_terminal.jsonl", CRUISE_TERMINAL, "ct106", TWENTY, sep=""),
+    "dev106/reindeer_herders_camp": _set("dev106/reindeer_herders_camp.jsonl", REINDEER_HERDERS_CAMP, "rh106", TWENTY, sep=""),
+    "dev107/printing_works": _set("dev107/printing_works.jsonl", PRINTING_WORKS, "pw107", TWENTY, sep=""),
+    "dev107/cheese_caves_village": _set("dev107/cheese_caves_village.jsonl", CHEESE_CAVES_VILLAGE, "cc107", TWENTY, sep=""),
+    "dev107/solar_farm_substation": _set("dev107/solar_farm_substation.jsonl", SOLAR_FARM_SUBSTATION, "sf107", TWENTY, sep=""),
+    "dev107/shearing_station": _set("dev107/shearing_station.jsonl", SHEARING_STATION, "ss107", TWENTY, sep=""),
 }
 
 
