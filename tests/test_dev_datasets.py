@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev107) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev108) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -242,6 +242,10 @@ PRINTING_WORKS = ROOT / "knowledge_bases" / "printing_works"
 CHEESE_CAVES_VILLAGE = ROOT / "knowledge_bases" / "cheese_caves_village"
 SOLAR_FARM_SUBSTATION = ROOT / "knowledge_bases" / "solar_farm_substation"
 SHEARING_STATION = ROOT / "knowledge_bases" / "shearing_station"
+CANAL_BOATYARD = ROOT / "knowledge_bases" / "canal_boatyard"
+TRANSMITTER_STATION = ROOT / "knowledge_bases" / "transmitter_station"
+GOLD_DREDGE_CAMP = ROOT / "knowledge_bases" / "gold_dredge_camp"
+CARAVANSERAI_OASIS = ROOT / "knowledge_bases" / "caravanserai_oasis"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -641,6 +645,10 @@ SETS = {
     "dev107/cheese_caves_village": _set("dev107/cheese_caves_village.jsonl", CHEESE_CAVES_VILLAGE, "cc107", TWENTY, sep=""),
     "dev107/solar_farm_substation": _set("dev107/solar_farm_substation.jsonl", SOLAR_FARM_SUBSTATION, "sf107", TWENTY, sep=""),
     "dev107/shearing_station": _set("dev107/shearing_station.jsonl", SHEARING_STATION, "ss107", TWENTY, sep=""),
+    "dev108/canal_boatyard": _set("dev108/canal_boatyard.jsonl", CANAL_BOATYARD, "cb108", TWENTY, sep=""),
+    "dev108/transmitter_station": _set("dev108/transmitter_station.jsonl", TRANSMITTER_STATION, "ts108", TWENTY, sep=""),
+    "dev108/gold_dredge_camp": _set("dev108/gold_dredge_camp.jsonl", GOLD_DREDGE_CAMP, "gd108", TWENTY, sep=""),
+    "dev108/caravanserai_oasis": _set("dev108/caravanserai_oasis.jsonl", CARAVANSERAI_OASIS, "co108", TWENTY, sep=""),
 }
 
 
