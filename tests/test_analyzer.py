@@ -5543,3 +5543,80 @@ def test_subject_pronoun_clause_of_only_hesitations(kb_analyzers):
     (this raised IndexError); nothing is read by meaning around "it"."""
     ex, _ = analyze(kb_analyzers["salmon_cannery"], "The compressor room is fine. The place it um is full of smoke.")
     assert not any("(by meaning, 'it' =" in (p.via or "") for p in ex.places)
+
+
+@pytest.mark.parametrize(("kb", "text", "expected"), [
+    # a place named again in the next sentence, after a sentence that says something of it, is no restart
+    ("marble_quarry_town", "One of the sawyers is missing, last seen inside the compressor house. The compressors are "
+                           "smoking badly.", [("compressor house", "peril"), ("compressor house", "person_in_need")]),
+    # "whiteout out there": where it is, nothing put out
+    ("reindeer_herders_camp", "a herder is lost on the pasture and it's total whiteout out there",
+     [("lichen pasture", "peril"), ("lichen pasture", "stricken")]),
+    # a danger vented out, a leak closed off, "it's all gone" after hearsay: taken back
+    ("cheese_caves_village", "the ammonia in the blue cellar has been vented out now, over", []),
+    ("cheese_caves_village", "ammonia at the cold plant, the leak's been closed off, over", []),
+    ("olive_terraces", "my neighbour says there was smoke at the co-op but I'm here now and it's all gone", []),
+    # breathing trouble, needing oxygen
+    ("cheese_caves_village", "two of the old folk at St Anne's have breathing trouble", [("care home", "person_in_need")]),
+    ("cheese_caves_village", "the inn is our warming room and three residents of the rest home are needing oxygen",
+     [("care home", "person_in_need"), ("chamois inn", "haven")]),
+    # toppling, fell down: a thing; a person fallen reads as a person
+    ("marble_quarry_town", "blocks are toppling in the block yard, keep clear", [("block yard", "peril")]),
+    ("marble_quarry_town", "the roof of the gang saws fell down, nobody inside", [("gang saw mill", "peril")]),
+    ("cheese_caves_village", "an old man fell down on the steps in the square and can't get up",
+     [("village square", "person_in_need")]),
+    # animals said of with "they" / "some of them", and animals down, where the KB has a category for them
+    ("cheese_caves_village", "the goats in the goat yard, some of them fell down and they're coughing badly",
+     [("goat pens", "stock_in_distress")]),
+    ("cheese_caves_village", "the nannies are down in the kid pens", [("goat pens", "stock_in_distress")]),
+    # "not that, X": the place before is taken back, X is not denied
+    ("cheese_caves_village", "the gondola station, no wait, not that, the pad below the car park is our muster point",
+     [("helipad", "haven")]),
+    # people taken to a place: its destination, no place related to it
+    ("marble_quarry_town", "we're taking the walking ones to the osteria, it's safe there", [("osteria", "refuge")]),
+    # "Dispatch relaying": the control room, not the packing hall called "dispatch"
+    ("cheese_caves_village", "Dispatch relaying: ammonia right through the co-op", [("cooperative dairy", "peril")]),
+    # "that slope": a word of the description of one place said before
+    ("marble_quarry_town", "Rockfall on the incline, and two carvers trapped in the sheds at the foot of that slope.",
+     [("carvers' studios", "person_in_need"), ("incline", "peril")]),
+    # whoever is called at a place: no claim of it
+    ("reindeer_herders_camp", "Whoever's in the radio shack, the drums the sled is fuelled from are on fire",
+     [("fuel drums", "peril")]),
+    # a roof still moving, nobody to go in; a rule of entry is no danger
+    ("cheese_caves_village", "the great cave, the roof's still moving, nobody goes in", [("great cave", "peril")]),
+    ("cheese_caves_village", "the blue cave is our muster point, nobody goes in without a lamp", [("blue cave", "haven")]),
+    # spilled all over the floor, where the danger category's description says spilled
+    ("cheese_caves_village", "whey all over the floor of the salt room", [("brine room", "peril")]),
+    # a noun phrase begun again after a pause goes on the clause that asks
+    ("county_prison", "er Control, did you say the fire's in the kitchens or the, um, the laundry? Say again, over.", []),
+    # a place only asked about takes no danger said of the caller's own people after it
+    ("brewery_town", "Is the cottage hospital still open tonight? My wife's got a bad chest from all the smoke.", []),
+    # a named head before a relation to "it": the place said before that the named one stands so to, else none
+    ("printing_works", "Diesel pouring out at the far end of the lorry yard, and the scales at the entrance to it "
+                       "are safe for the tankers.", [("fuel island", "spill"), ("weighbridge", "refuge")]),
+    ("printing_works", "Diesel leaking at the fuel island, and the scales at the entrance to it are safe.",
+     [("fuel island", "spill"), ("weighbridge", "refuge")]),
+])
+def test_dev106_phenomena(kb_analyzers, kb, text, expected):
+    assert claims(kb_analyzers[kb], text) == expected
+
+
+@pytest.mark.parametrize(("kb", "text", "expected"), [
+    # a cue phrase ending on a preposition with no object, after a verb of sending, is a relation's words
+    ("gold_dredge_camp", "The tank the pumps push water up to is on fire.", [("header tank", "no_go")]),
+    ("gold_dredge_camp", "the header tank has split down the seam", [("header tank", "no_go")]),
+    # crew who need the rescue boat
+    ("gold_dredge_camp", "the dredge is listing and two crew on board need the rescue boat",
+     [("dredge", "no_go"), ("dredge", "person_in_trouble")]),
+    # the person said again after "I mean": the danger said before stays
+    ("transmitter_station", "the feeder gantry is half collapsed and there's someone under it, I mean under the "
+                            "gantry, pinned", [("feeder gantry", "danger"), ("feeder gantry", "person_in_need")]),
+    # a head word several names share is no name of its own before a relation to "it"
+    ("northgate", "The sports field is the RVP; the hall that faces onto it has lost its roof, keep out.",
+     [("playing fields", "rally_point"), ("sports hall", "no_go_zone")]),
+    # "that way" is no place said before
+    ("show_caverns", "Rockfall in the tunnel that leads down from reception, nobody can get in or out that way.",
+     [("entrance tunnel", "unsafe_passage")]),
+])
+def test_dev108_phenomena(kb_analyzers, kb, text, expected):
+    assert claims(kb_analyzers[kb], text) == expected

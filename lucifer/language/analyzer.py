@@ -860,6 +860,8 @@ class ReportAnalyzer:
                          or norms[max(0, a - 2):a] == ("this", "is")):
                 continue  # "Carran control, this is Fire One", "Lifeboat to Carran control.": the radio station
                 # named after the place is called, nothing is said of the place
+            if a == 0 and norms[a:b] in lx.CALL_RECEIVERS and norms[b:b + 1] in (("relaying",), ("here",), ("to",)):
+                continue  # "Dispatch relaying from the co-op manager: ...": the control room, not a place called so
             prev = norms[a - 1] if a > 0 else ""
             k = a - 1
             while k > 0 and a - k <= 2 and (norms[k] in lx.NAME_ADJECTIVES or norms[k] in lx.HESITATIONS
@@ -4040,6 +4042,13 @@ class ReportAnalyzer:
                     break
             if head is None:
                 continue
+            own = next((h for h in (self._places.match_at(norms, head - 1) if head >= 1 else None,
+                                    self._places.match_at(norms, head)) if h is not None and h[0] == head + 1), None)
+            if own is not None and own[1] in self.kb.landmark_by_name and own[1] != anchor.landmark \
+                    and own[1] not in self._related_to(anchor.landmark) and anchor.status == "reference" \
+                    and anchor.reason.startswith("modifier of"):
+                continue  # "diesel at the fuel island, and the scales at the entrance to it": "the scales" names the
+                # weighbridge, which the KB does not relate to the fuel island; no other place is meant
             if norms[head] == "ground" and norms[max(0, head - 2):head] == ("on", "the"):
                 continue  # "he's on the ground at the bottom of it": where he lies, by the anchor, no other place
             if norms[head] == norms[anchor.end_tok - 1] and all(norms[i] in lx.DETERMINERS | lx.FILLERS
@@ -4241,6 +4250,9 @@ class ReportAnalyzer:
                     continue
             if norms[head] in lx.ROOMS_OF_A_BUILDING and not named:
                 continue  # "the room above the market hall": a room of it, no landmark of its own
+            if not named and between == ["to"] and any(norms[k] in lx.MOVING_VERBS | lx.BRING_VERBS
+                                                       for k in range(max(0, head - 5), head)):
+                continue  # "we're taking the walking ones to the osteria": where people are taken, no place by it
             if norms[head] in lx.ROUTE_HEADS and not named and len(between) == 1 \
                     and between[0] in ("below", "above", "beneath", "under", "behind", "beside", "near"):
                 continue  # "I live on the lane below the bund": a way by it, no landmark it leads to
@@ -4337,7 +4349,7 @@ class ReportAnalyzer:
             pronoun_anchors.extend(later)
         for p in pronoun_anchors:
             if p in ex.places and not (p.reason.startswith(_THAT_MODIFIER) and p.status == "reference"
-                                       and self._relations.match_at(norms, p.end_tok) is not None):
+                                       and p.end_tok < len(norms) and self._relations.match_at(norms, p.end_tok) is not None):
                 ex.places.remove(p)  # (a pronoun no description took up as its anchor; but "whatever that pool drains
                 # into" may still be read from it, the relation said right after it)
             elif p in ex.places:
@@ -4421,6 +4433,19 @@ class ReportAnalyzer:
             said = {p.landmark: p for p in ex.places if p.status == "active" and p.via is not None and p.end_tok <= k - 1
                     and (norm_phrase(p.text)[:2] == ("the", norms[k]) if norms[k - 1] == "that"
                          else name_words(p.landmark)[-1:] == (norms[k],))}
+            if len(said) == 1:
+                out.append(self._mention(toks, k - 1, k + 1, next(iter(said)), status="reference",
+                                         reason=f"{_THAT_MODIFIER}{norms[k]}'"))
+        for k in range(3, len(norms)):
+            # "the yard the incline runs down from ... the sheds at the foot of that slope": "that" and a word of the
+            # description of one place said before, closing a relation's object
+            if norms[k - 1] != "that" or norms[k - 2] not in lx.PREPOSITIONS or k in blocked or (k - 1) in blocked \
+                    or norms[k] in heads or not norms[k].isalpha() or norms[k] in lx.FUNCTION_WORDS \
+                    or norms[k] in lx.WAY_NOUNS | lx.MEMBER_WORDS | {"side", "one", "lot", "bit", "place", "time"} \
+                    or not (k + 1 == len(norms) or toks.clause_start[k + 1]):
+                continue
+            said = {p.landmark for p in ex.places if p.end_tok <= k - 2 and p.status in ("active", "reference")
+                    and any(_same_stem(norms[k], d) for d in self._description_words()[p.landmark])}
             if len(said) == 1:
                 out.append(self._mention(toks, k - 1, k + 1, next(iter(said)), status="reference",
                                          reason=f"{_THAT_MODIFIER}{norms[k]}'"))
@@ -4806,6 +4831,22 @@ class ReportAnalyzer:
                 return
             head_start, head_text = a, ""
         target, via = self._follow(anchor.landmark, phrase, head_text, inverse=flipped)
+        own = self._places.match_at(norms, head_start) if pronoun and head_text else None
+        if own is not None and own[0] == head_end and own[1] in self.kb.landmark_by_name and target is not None \
+                and own[1] != target and own[1] != anchor.landmark \
+                and not set(norms[head_start:head_end]) & set(name_words(target)):
+            # "diesel at the far end of the lorry yard, and the scales at the entrance to it": the head names the
+            # weighbridge, so "it" is the place said before that the weighbridge stands so to (the lorry yard)
+            other = next((p for p in sorted(ex.places, key=lambda p: -p.end_tok) if p.end_tok <= head_start
+                          and p.landmark != anchor.landmark and p.status != "retracted"
+                          and self._follow(p.landmark, phrase, head_text, inverse=flipped)[0] == own[1]), None)
+            if other is None:
+                if not any(p.start_tok <= head_start < p.end_tok for p in ex.places):
+                    ex.places.append(self._mention(toks, head_start, head_end, own[1]))
+                    place_tokens.update(range(head_start, head_end))
+                return  # the place named, and no place said before that stands so to it
+            anchor = other
+            target, via = self._follow(anchor.landmark, phrase, head_text, inverse=flipped)
         if target is not None and generic and words:
             said = toks.tokens[head_end - 1].text.lower()
             target, via = self._head_named_neighbour(anchor.landmark, words[-1], target, via,
@@ -5501,7 +5542,7 @@ class ReportAnalyzer:
         """The place the speaker says they are at: "I'm at the pharmacy", "Coastguard lookout here"."""
         if cls._speaker_at(norms, p) or norms[p.end_tok:p.end_tok + 1] == ("here",):
             return True
-        if p.end_tok < len(norms) and norms[p.end_tok] in ("reporting", "calling") \
+        if p.end_tok < len(norms) and norms[p.end_tok] in ("reporting", "calling", "relaying") \
                 and all(w in lx.FILLERS | lx.DETERMINERS for w in norms[:p.start_tok]):
             return True  # "Coastguard hut reporting, the station we look down on ...": who calls, from where
         if p.end_tok + 1 < len(norms) and norms[p.end_tok + 1] == "here" and norms[p.end_tok] in lx.WORKPLACE_ROLES:
@@ -5916,6 +5957,9 @@ class ReportAnalyzer:
             if neg and norms[j] == "not" and toks.clause_start[j + 1] and j > 0 and (
                     norms[j - 1] == "its" or j > 1 and norms[j - 2:j] in (("it", "s"), ("it", "is"), ("that", "s"))):
                 neg = False  # "the res is... it's fine, no wait, it's not, the dam's cracked": a word taken back
+            if neg and norms[j] == "not" and norms[j + 1:j + 2] == ("that",) and j + 2 < len(norms) \
+                    and toks.clause_start[j + 2]:
+                neg = False  # "no -- wait -- not that, the pad below the car park": "that" is the place said before
             if not_the_one:
                 neg = True  # "the school isn't the one"
             if neg and any(ma <= j < mb for ma, mb, _ in ex.markers) and norms[j + 1 : j + 2] == ("that",):
@@ -6454,6 +6498,12 @@ class ReportAnalyzer:
             if self._evacuated_to(toks, norms, p.end_tok):
                 ex.places[idx] = replace(p, status="reference", reason="evacuated to another place: no claim")
                 continue
+            w = _noun_phrase_start(norms, p) - 1
+            if w >= 1 and norms[w] in ("at", "in") and (norms[w - 1] in ("whoever", "whoevers") or w >= 2 and norms[
+                    w - 2:w] == ("whoever", "is")) and (p.end_tok == len(norms) or toks.clause_start[p.end_tok]):
+                # "Whoever's at the radio shack, the sled that powers your hut is on fire": who is called, no claim
+                ex.places[idx] = replace(p, status="reference", reason="whoever is there is called: no claim")
+                continue
             if j >= 2 and norms[j] == "at" and norms[j - 1] in ("look", "stare", "gawp") and norms[j - 2] == "to":
                 # "he went to the gardens to look at the tip and he's not come back": what he went to see
                 ex.places[idx] = replace(p, status="reference", reason="what was looked at: no claim")
@@ -6642,6 +6692,15 @@ class ReportAnalyzer:
         return not any(norms[i] == "for" and norms[i - 1] in ("area", "point", "post", "base", "centre", "center", "zone")
                        for i in range(max(1, k - 4), k))
 
+    @staticmethod
+    def _said_in_a_sentence_before(toks: Tokens, norms: tuple[str, ...], p: PlaceMention, q: PlaceMention) -> bool:
+        """"Missing quarryman believed to be inside the compressor house. The compressors are leaking": the first
+        place ends a sentence that says something of it, so the next sentence naming it again is no restart."""
+        if not any(toks.sentence_start[k] for k in range(p.end_tok, q.start_tok + 1)):
+            return False
+        s = max(t for t in range(p.start_tok + 1) if toks.sentence_start[t] or t == 0)
+        return any(norms[k] not in lx.DETERMINERS | lx.FILLERS for k in range(s, _noun_phrase_start(norms, p)))
+
     def _apply_dropped(self, ex: Extraction) -> None:
         """"there's a wash-through ... and the top block - never mind, haven't got to the top block yet": a place
         just begun, then dropped with "never mind" before anything is said of it."""
@@ -6682,6 +6741,7 @@ class ReportAnalyzer:
             if between and len(between) <= 4 and all(w in lx.COPULAS | lx.FILLERS | lx.DETERMINERS | lx.PRONOUNS for w in between) \
                     and any(ex.tokens.clause_start[k] for k in range(p.end_tok, q.start_tok + 1)) \
                     and not any(";" in ex.tokens.gaps[k] for k in range(p.end_tok, q.start_tok + 1)) \
+                    and not self._said_in_a_sentence_before(toks, norms, p, q) \
                     and not self._cue_at(norms, p.start_tok):
                 # (not "frostbite case at the berghaus; the mountain hut is secure": the first has its own claim)
                 ex.places[i] = replace(p, status="retracted", reason="restarted: the speaker repeats the place")
@@ -6741,7 +6801,8 @@ class ReportAnalyzer:
 
     def _claim_cue_spans(self, norms: tuple[str, ...], blocked: set[int]) -> list[tuple[int, int]]:
         """Spans of the cue phrases that claim something (neutral phrases such as "fire crew" left out)."""
-        return [(a, b) for a, b, (_, src) in self._cues.find_all(norms, blocked) if src != "neutral"]
+        return [(a, b) for a, b, (_, src) in self._cues.find_all(norms, blocked) if src != "neutral"
+                and not _stranded_relation_cue(norms, a, b)]
 
     def _claim_cue_tokens(self, norms: tuple[str, ...], blocked: set[int]) -> set[int]:
         return {i for a, b in self._claim_cue_spans(norms, blocked) for i in range(a, b)}
@@ -7427,6 +7488,8 @@ class ReportAnalyzer:
                 continue
             if undesirable and self._danger_not_here(norms, a, b):
                 continue
+            if _stranded_relation_cue(norms, a, b):
+                continue  # "the tank the pumps push water up to has split": a relation's words, its object before it
             if undesirable and self._danger_kept_off(norms, a, b):
                 continue
             if norms[a:b] == ("flooded", "out") and (norms[b:b + 1] == ("of",) or a > 0 and norms[a - 1] in lx.ORIGIN_PEOPLE
@@ -8170,12 +8233,20 @@ class ReportAnalyzer:
     def _animal_subject(self, toks: Tokens, norms: tuple[str, ...], a: int) -> bool:
         """An animal word before token ``a`` in its clause, with no person word between: "the bulls are chained in
         there screaming", "The lions in the barn across the yard from the horse lines are panicking"."""
-        for j in range(a - 1, max(-1, a - 13), -1):
+        they = False
+        for j in range(a - 1, max(-1, a - 25), -1):
+            if norms[j] in ("they", "theyre", "theyve", "them"):
+                they = True  # (whoever "they" are: the sentence before says)
+                continue
             if norms[j] in _PEOPLE_WORDS or norms[j] in lx.PERSON_SUBJECTS or norms[j] in lx.CALLER_ROLES:
                 return False  # ("one of the keepers is trapped in the night den": a person)
             if norms[j] in lx.ANIMAL_WORDS:
                 return True
-            if toks.clause_start[j] and not (j > 0 and norms[j - 1] in lx.ANIMAL_WORDS):
+            if toks.clause_start[j] and not (j > 0 and norms[j - 1] in lx.ANIMAL_WORDS) and not (
+                    they and j > 0 and toks.sentence_of[j - 1] == toks.sentence_of[a]):
+                # (but "the goats are in the goat yard and some of them fell down": "them", the animals said before)
+                return False
+            if j < a - 12 and not they:
                 return False
         return False
 
@@ -8195,6 +8266,14 @@ class ReportAnalyzer:
             a_, b_ = toks.tokens[i].start, toks.tokens[i + n - 1].end
             out.append(CueMention(i, i + n, a_, b_, toks.text[a_:b_], animal, "lexicon", reason="said of animals"))
             taken = taken | set(range(i, i + n))
+        for i in range(2, len(norms)):
+            # "the nannies are down in the kid pens": animals down (a person down is read apart)
+            if norms[i] == "down" and i not in taken and (norms[i - 1] in ("is", "are", "s", "re") and (
+                    norms[i - 2] in lx.ANIMAL_WORDS or norms[i - 2] in ("they", "them")) or norms[i - 1] == "theyre") \
+                    and (i + 1 == len(norms) or toks.clause_start[i + 1] or norms[i + 1] in ("in", "at", "inside", "and"))\
+                    and self._animal_subject(toks, norms, i - 1):
+                a_, b_ = toks.tokens[i].start, toks.tokens[i].end
+                out.append(CueMention(i, i + 1, a_, b_, toks.text[a_:b_], animal, "lexicon", reason="said of animals"))
         return out
 
     def _animals_in_trouble(self, toks: Tokens, norms: tuple[str, ...], cues: list[CueMention]) -> list[CueMention]:
@@ -8205,7 +8284,13 @@ class ReportAnalyzer:
             return cues
         out = []
         for c in cues:
-            if self.kb.category_by_name[c.category].role == Role.CRITICAL and c.category != animal:
+            if c.source == "lexicon" and self.kb.category_by_name[c.category].role == Role.UNDESIRABLE \
+                    and norms[c.start_tok:c.end_tok] in lx.PERSON_STATE_CUES and self._animal_subject(toks, norms, c.start_tok):
+                c = replace(c, category=animal, reason="said of animals")  # "some of the goats fell down"
+            elif c.source == "lexicon" and self.kb.category_by_name[c.category].role == Role.CRITICAL \
+                    and c.category != animal and self._animal_subject(toks, norms, c.start_tok):
+                c = replace(c, category=animal, reason="said of animals")  # "and they're coughing and coughing"
+            elif self.kb.category_by_name[c.category].role == Role.CRITICAL and c.category != animal:
                 j = c.start_tok - 1
                 while j >= 0 and c.start_tok - j <= 4 and (norms[j] in ("are", "is", "s", "re", "been", "got", "all", "still",
                                                                          "now", "just", "a", "an", "the", "two", "three")
@@ -8800,6 +8885,18 @@ class ReportAnalyzer:
                 start = a if norms[opener] in lx.WH_OPENERS and not any(a <= m < b and m != a for m in marker_starts) \
                     else max((i for i in range(a, b) if toks.clause_start[i] and toks.gaps[i] != "-"), default=a)
                 # (a hyphen inside a word, "walk-in", does not open the asking clause)
+                back = start
+                while back > a:
+                    # "did you say the fire's in the kitchens or the, um, the laundry?": a noun phrase begun again
+                    # after a pause goes on the clause that asks (where that clause opens with a question word)
+                    prev = max((i for i in range(a, back) if toks.clause_start[i] and toks.gaps[i] != "-"), default=a)
+                    lead = next((w for w in norms[back:b] if w not in lx.FILLERS), "")
+                    tail = [w for w in norms[prev:back] if w not in lx.FILLERS]
+                    if tail and not (lead in lx.ARTICLES and tail[-1] in lx.ARTICLES | {"or", "and"}):
+                        break
+                    back = prev
+                if next((w for w in norms[back:b] if w not in lx.FILLERS), "") in lx.QUESTION_OPENERS:
+                    start = back
                 first = opener if start == a and opener > a \
                     else next((i for i in range(start, b) if norms[i] not in lx.FILLERS), start)
                 if norms[first] == "or" and first + 1 < b and norms[first + 1] in lx.QUESTION_OPENERS:
@@ -8934,8 +9031,14 @@ class ReportAnalyzer:
             # the cue said of it may stand before it ("collapse at the tower"): back to the last other place
             since = max([p.end_tok - 1 for p in ex.places if lo <= p.end_tok <= since and p.landmark != first.landmark
                          and p.status != "reference"], default=lo - 1)
+        new_roles = {self.kb.category_by_name[c.category].role for c in out
+                     if b <= c.start_tok < end and c.status == "active" and c.polarity == "affirmed"}
         for i, c in enumerate(out):
             if since < c.start_tok < a and c.status == "active":
+                if not withdraw and new_roles == {Role.CRITICAL} \
+                        and self.kb.category_by_name[c.category].role == Role.UNDESIRABLE:
+                    continue  # "the gantry's half collapsed, someone under it, I mean under the gantry, pinned": the
+                    # person said again; the danger stands beside them
                 said = ex.tokens.span_text(a, ex.markers[k][1])
                 out[i] = replace(c, status="retracted",
                                  reason=f"withdrawn by '{said}'" if withdraw else f"category restated after '{said}'")
@@ -9271,6 +9374,7 @@ class ReportAnalyzer:
             copula = norms[k - 1] in ("is", "s", "are", "was", "been", "now", "all") \
                 or k > cue.end_tok and toks.tokens[k - 1].text.lower().endswith(("'s", "’s"))  # "the cafe's out"
             if norms[k] == "out" and undesirable and (right_after or copula) \
+                    and not (norms[k + 1:k + 2] == ("there",) and norms[cue.end_tok - 1].endswith("out")) \
                     and (k + 1 >= len(norms) or toks.clause_start[k + 1] or norms[k + 1] in ("now", "completely", "over", "there")
                          or (contracted or copula) and norms[k + 1] in ("at", "in", "on")):  # "fire's out at the bakery"
                 cancelled_by = "out"
@@ -9961,7 +10065,7 @@ class ReportAnalyzer:
             if target is not None and all(q.start_tok in silent and sentence_of[q.start_tok] != sentence_of[a]
                                           for q in seg_usable[target]) \
                     and not {"there", "it", "its", "inside", "theres"} & set(norms[a:b]) \
-                    and {"we", "weve", "i", "ive", "us", "our"} & set(norms[max(0, a - 3):b]):
+                    and {"we", "weve", "i", "ive", "us", "our", "my", "me"} & set(norms[max(0, a - 3):b]):
                 target = None  # "is anyone at the cottage hospital? we've got walking wounded": asked about, not told of
             if target is not None:
                 denied_at = {bound[c.start_tok].start_tok for c in cues if c.polarity == "denied" and c.start_tok in bound}
@@ -11455,6 +11559,19 @@ class _CancelMatcher(PhraseMatcher[str]):
         if hit is not None and hit[1].endswith("stopped") and "short" in norms[hit[0]:hit[0] + 2]:
             return None  # "the debris stopped short of the track": the danger is there, only not as far as that
         return hit
+
+
+# Verbs that send water or stuff somewhere ("the pumps push water up to"), before a cue phrase that is a relation's
+_PUSHING_VERBS = frozenset({"push", "pushes", "pump", "pumps", "send", "sends", "pipe", "pipes", "feed", "feeds", "lift",
+                            "lifts", "carry", "carries", "drive", "drives", "force", "forces"})
+
+
+
+def _stranded_relation_cue(norms: tuple[str, ...], a: int, b: int) -> bool:
+    """"the tank the pumps push water up to has split": a cue phrase ("water up to") that ends on a preposition with
+    no object, after a verb of sending, is the words of a relation whose object was said before it."""
+    return norms[b - 1] in ("to", "into", "onto") and a > 0 and norms[a - 1] in _PUSHING_VERBS \
+        and (b == len(norms) or norms[b] in lx.COPULAS | {"has", "have", "had"})
 
 
 def _stove_in(toks: Tokens, norms: tuple[str, ...], a: int) -> bool:

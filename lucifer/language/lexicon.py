@@ -35,7 +35,7 @@ _add(UNDESIRABLE, """
 gone live|gone live again|is live again|went live again|
 have come off the|has come off the|running brown|properly under|slid right across|slid across the|come clean off|roof's come off|roof has come off|roof came off|broken straight through its bank|broken through its bank|broken through the bank|is also water|scouring the bank|scouring the bank away|metre above normal|metres above normal|foot above normal|feet above normal|taking the fences with it|up to his windowsills|up to her windowsills|up to their windowsills|up to the windowsills|up to the sills|water is already up to|water's already up to|water is up to the|water's up to the|dropped and split|split in two|split in half|slates have come off|shed half its|has shed half its|
 been torn off|torn away|
-have toppled|has toppled|toppled over|toppled all over|it's a wreck|its a wreck|a complete wreck|a total wreck|
+have toppled|has toppled|toppled over|toppling|has split down|have split down|split down the seam|split open|toppling over|fell down|has fallen down|toppled all over|it's a wreck|its a wreck|a complete wreck|a total wreck|
 back wall in|side wall in|front wall in|gable wall in|pushed the wall in|pushed its wall in|
 has half gone into the water|s half gone into the water|half gone into the river|
 water has gone over|water's gone over|gone over both ends|is roaring|brown and boiling|over the sill|stopper|
@@ -67,7 +67,8 @@ gunfire|shooter|armed|looters|riot|on fire again|reignited|spreading|spread|unso
 compromised|unstable structure|partially collapsed|caving|smouldering|smoldering|charred|gutted|
 alight|well alight|fully involved|going up in flames|gone up in flames|bowing|buckling|wall's bowing|could go any second|
 about to collapse|coming down|falling in|roof has come in|roof's come in|roof came in|ceiling's down|ceiling down|
-ceiling has come in|ceiling's come in|ceiling collapsed|keep clear|stay clear|keep off it|keep off there|red for entry|sparks everywhere|
+ceiling has come in|ceiling's come in|ceiling collapsed|roof's still moving|roof is still moving|roof's moving|
+roof is moving|keep clear|stay clear|keep off it|keep off there|red for entry|sparks everywhere|
 stinks of gas|reeks of gas|reeking of gas|reeking of|fuel leak|oil spill|overtopping|burst its banks|breached|
 landslip|slipping|given way|gave way|has given way|come away|came away|taking on water|taking water|
 flashover|flashover risk|backdraft|backdraft risk|spongy|floor's spongy|leaning|buckled|buckling|ruptured|
@@ -178,6 +179,8 @@ _add(CRITICAL, "|".join(f"pulled {who} out of" for who in ("a man", "a woman", "
                                                              "him", "her", "a lad", "a girl", "a boy")))
 _add(CRITICAL, "still out on it|still out on the|stuck out on it|still stuck out on")
 _add(CRITICAL, "coughing up smoke|coughing smoke|coughing up black")  # (a symptom, not smoke at the place)
+_add(CRITICAL, "breathing trouble|trouble breathing|needing oxygen|short of breath")
+_add(CRITICAL, "need the rescue boat|needs the rescue boat|need a rescue boat|need the lifeboat|needs the lifeboat")
 # ("my son walked out to the rock pile and he's not back"; "says he can't feel his left leg")
 _add(CRITICAL, "he's going under|hes going under|she's going under|shes going under|they're going under|"
                "theyre going under|")  # ("a kid gone in off the end of the landing stages ... he's going under")
@@ -355,7 +358,8 @@ CANCEL_AFTER = ["fully out", "is fully out", "damping down", "damping down is fi
                 "off now", "s off now", "is off", "s off", "shut it off", "turned it off", "switched off",
                 "switched it off", "sealed", "been sealed", "plugged", "been plugged", "is sorted", "s sorted", "been sorted",
                 "all sorted", "sorted now", "neutralised", "neutralized", "been neutralised", "been neutralized",
-                "stood down", "have stood down", "has stood down", "was there already", "were there already",
+                "vented out", "been vented out", "been vented", "been closed off", "all gone", "s all gone", "leak has been closed off",
+                "leak's closed off", "stood down", "have stood down", "has stood down", "was there already", "were there already",
                 "been there for years", "old damage", "no new damage"] + [
                 f"{verb} {who} out" for verb in ("got", "gotten", "taken", "took", "pulled", "brought")
                 for who in ("him", "her", "them", "everyone", "everybody", "all of them", "the casualty")] + [
@@ -1036,7 +1040,7 @@ EARTHWORKS = {"face", "bank", "banking", "slope", "spoil", "tip", "heap", "emban
               "earth", "hillside", "verge", "mound", "bund", "levee", "dyke", "dike"}
 
 PERSON_STATE_CUES = {("collapsed",), ("collapse",), ("collapsing",), ("burned",), ("burnt",), ("burned", "out"),
-                     ("fallen", "in"), ("fell", "in"), ("slipped", "in"), ("falling", "in"),
+                     ("fallen", "in"), ("fell", "in"), ("fell", "down"), ("has", "fallen", "down"), ("slipped", "in"), ("falling", "in"),
                      ("gone", "through", "the", "floor"), ("fallen", "through", "the", "floor"), ("fell", "through", "the", "floor")}
 
 # Parts of a person: "his arm is burned" is said of a person
@@ -1439,7 +1443,8 @@ CONTRADICTIONS = [("it", "isnt"), ("its", "not"), ("it", "is", "standing"), ("it
                   ("nothing", "there"), ("its", "just"), ("bone", "dry"), ("no", "water"), ("its", "dry"),
                   ("nobody", "confirmed"), ("nobody", "has", "confirmed"), ("no", "one", "confirmed"),
                   ("not", "confirmed"), ("unconfirmed",), ("nobody", "confirmed", "anything"),
-                  ("nobody", "confirmed", "it"), ("no", "one", "confirmed", "anything")]
+                  ("nobody", "confirmed", "it"), ("no", "one", "confirmed", "anything"), ("its", "all", "gone"),
+                  ("its", "gone")]
 
 # A person as the subject of a sentence that says where they are: "she's in the back of the shop".
 PERSON_SUBJECTS = {"he", "she", "hes", "shes", "they", "theyre"}
@@ -1556,7 +1561,8 @@ DESCRIBED_KINDS: dict[str, tuple[frozenset[str], list[str]]] = {
     "spill": (frozenset({"spilled", "spill", "spills", "spillage", "spilt"}),
               ["diesel pouring out", "fuel pouring out", "petrol pouring out", "diesel all over the ground",
                "fuel all over the ground", "petrol all over the ground", "diesel everywhere", "fuel everywhere",
-               "pouring out all over the ground", "chemical's all over the floor", "chemicals all over the floor"]),
+               "pouring out all over the ground", "chemical's all over the floor", "chemicals all over the floor",
+               "everywhere on the floor", "all over the floor"]),
     # (a KB whose danger is a gate or fence left open, so animals get out: "the lion gates are standing wide open")
     "open": (frozenset({"standing open", "left open", "wide open"}),
              ["standing open", "standing wide open", "wide open", "left open", "been left open", "left wide open"]),
@@ -1693,12 +1699,14 @@ SHORT_DANGER_WORDS = frozenset({"gas", "oil", "mud", "ice", "ash", "fog"})
 GENERIC_DANGER_WORDS = frozenset({"danger", "dangerous", "dangerously", "unsafe", "hazard", "hazardous", "hazards",
                                   "threat", "risk", "risky", "getting"})
 # Animals, where a KB gives them a category of their own ("bullocks stuck in the cattle lines")
-ANIMAL_WORDS = frozenset({"sheep", "ewe", "ewes", "lamb", "lambs", "tup", "tups", "ram", "rams", "cow", "cows", "cattle", "bullock", "bullocks", "heifer", "heifers", "calf", "calves", "bull", "bulls", "steer", "steers", "beast", "beasts", "stock", "livestock", "horse", "horses", "pony", "ponies", "foal", "pig", "pigs", "sow", "sows", "goat", "goats", "dog", "dogs", "animal", "animals", "hens", "chickens", "elephant", "elephants", "lion", "lions", "tiger", "tigers", "cats", "camel",
+ANIMAL_WORDS = _keyed({"sheep", "ewe", "ewes", "lamb", "lambs", "tup", "tups", "ram", "rams", "cow", "cows", "cattle", "bullock", "bullocks", "heifer", "heifers", "calf", "calves", "bull", "bulls", "steer", "steers", "beast", "beasts", "stock", "livestock", "horse", "horses", "pony", "ponies", "foal", "pig", "pigs", "sow", "sows", "goat", "goats", "dog", "dogs", "animal", "animals", "hens", "chickens", "elephant", "elephants", "lion", "lions", "tiger", "tigers", "cats", "camel",
                           "camels", "donkey", "donkeys", "llama", "llamas", "alpaca", "alpacas", "mare", "mares",
                           "stallion", "stallions", "geese", "lioness", "lionesses", "zebra", "zebras", "giraffe",
                           "giraffes", "rhino", "rhinos", "hippo", "hippos", "baboon", "baboons", "monkey", "monkeys",
                           "ostrich", "ostriches", "wolf", "wolves", "bear", "bears", "deer", "bison", "buffalo",
-                          "antelope", "antelopes", "cheetah", "cheetahs", "leopard", "leopards", "gibbon", "gibbons"})
+                          "antelope", "antelopes", "cheetah", "cheetahs", "leopard", "leopards", "gibbon", "gibbons",
+                          "nanny", "nannies", "billies", "reindeer", "herd", "mule", "mules", "ox", "oxen", "yak",
+                          "yaks", "ducks", "turkeys", "poultry"})
 # Injuries said of a body part ("burns to the face", "a cut on the head")
 INJURY_WORDS = frozenset({"burns", "burn", "burned", "burnt", "cut", "cuts", "injury", "injuries", "wound", "wounds",
                           "hit", "struck", "blow", "bleeding", "lacerations", "laceration", "scalds", "scalded", "gash",
