@@ -4042,13 +4042,6 @@ class ReportAnalyzer:
                     break
             if head is None:
                 continue
-            own = next((h for h in (self._places.match_at(norms, head - 1) if head >= 1 else None,
-                                    self._places.match_at(norms, head)) if h is not None and h[0] == head + 1), None)
-            if own is not None and own[1] in self.kb.landmark_by_name and own[1] != anchor.landmark \
-                    and own[1] not in self._related_to(anchor.landmark) and anchor.status == "reference" \
-                    and anchor.reason.startswith("modifier of"):
-                continue  # "diesel at the fuel island, and the scales at the entrance to it": "the scales" names the
-                # weighbridge, which the KB does not relate to the fuel island; no other place is meant
             if norms[head] == "ground" and norms[max(0, head - 2):head] == ("on", "the"):
                 continue  # "he's on the ground at the bottom of it": where he lies, by the anchor, no other place
             if norms[head] == norms[anchor.end_tok - 1] and all(norms[i] in lx.DETERMINERS | lx.FILLERS
@@ -11564,7 +11557,6 @@ class _CancelMatcher(PhraseMatcher[str]):
 # Verbs that send water or stuff somewhere ("the pumps push water up to"), before a cue phrase that is a relation's
 _PUSHING_VERBS = frozenset({"push", "pushes", "pump", "pumps", "send", "sends", "pipe", "pipes", "feed", "feeds", "lift",
                             "lifts", "carry", "carries", "drive", "drives", "force", "forces"})
-
 
 
 def _stranded_relation_cue(norms: tuple[str, ...], a: int, b: int) -> bool:
