@@ -4830,16 +4830,17 @@ class ReportAnalyzer:
                 and not set(norms[head_start:head_end]) & set(name_words(target)):
             # "diesel at the far end of the lorry yard, and the scales at the entrance to it": the head names the
             # weighbridge, so "it" is the place said before that the weighbridge stands so to (the lorry yard)
-            other = next((p for p in sorted(ex.places, key=lambda p: -p.end_tok) if p.end_tok <= head_start
-                          and p.landmark != anchor.landmark and p.status != "retracted"
-                          and self._follow(p.landmark, phrase, head_text, inverse=flipped)[0] == own[1]), None)
-            if other is None:
+            for other in sorted(ex.places, key=lambda p: -p.end_tok):
+                if other.end_tok <= head_start and other.landmark != anchor.landmark and other.status != "retracted":
+                    hit = self._follow(other.landmark, phrase, head_text, inverse=flipped)
+                    if hit[0] == own[1]:
+                        anchor, (target, via) = other, hit
+                        break
+            else:
                 if not any(p.start_tok <= head_start < p.end_tok for p in ex.places):
                     ex.places.append(self._mention(toks, head_start, head_end, own[1]))
                     place_tokens.update(range(head_start, head_end))
                 return  # the place named, and no place said before that stands so to it
-            anchor = other
-            target, via = self._follow(anchor.landmark, phrase, head_text, inverse=flipped)
         if target is not None and generic and words:
             said = toks.tokens[head_end - 1].text.lower()
             target, via = self._head_named_neighbour(anchor.landmark, words[-1], target, via,
@@ -6491,7 +6492,7 @@ class ReportAnalyzer:
             if self._evacuated_to(toks, norms, p.end_tok):
                 ex.places[idx] = replace(p, status="reference", reason="evacuated to another place: no claim")
                 continue
-            w = _noun_phrase_start(norms, p) - 1
+            w = k - 1  # (the word before the noun phrase)
             if w >= 1 and norms[w] in ("at", "in") and (norms[w - 1] in ("whoever", "whoevers") or w >= 2 and norms[
                     w - 2:w] == ("whoever", "is")) and (p.end_tok == len(norms) or toks.clause_start[p.end_tok]):
                 # "Whoever's at the radio shack, the sled that powers your hut is on fire": who is called, no claim
