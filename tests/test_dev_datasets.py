@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev108) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev111) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -246,6 +246,18 @@ CANAL_BOATYARD = ROOT / "knowledge_bases" / "canal_boatyard"
 TRANSMITTER_STATION = ROOT / "knowledge_bases" / "transmitter_station"
 GOLD_DREDGE_CAMP = ROOT / "knowledge_bases" / "gold_dredge_camp"
 CARAVANSERAI_OASIS = ROOT / "knowledge_bases" / "caravanserai_oasis"
+AIRSHIP_HANGAR = ROOT / "knowledge_bases" / "airship_hangar"
+WATCHMAKING_TOWN = ROOT / "knowledge_bases" / "watchmaking_town"
+RODEO_GROUNDS = ROOT / "knowledge_bases" / "rodeo_grounds"
+CORK_OAK_ESTATE = ROOT / "knowledge_bases" / "cork_oak_estate"
+FISH_AUCTION_QUAY = ROOT / "knowledge_bases" / "fish_auction_quay"
+VOLCANO_VILLAGE = ROOT / "knowledge_bases" / "volcano_village"
+COTTON_GIN_TOWN = ROOT / "knowledge_bases" / "cotton_gin_town"
+BOAT_LIFT = ROOT / "knowledge_bases" / "boat_lift"
+SLED_DOG_KENNELS = ROOT / "knowledge_bases" / "sled_dog_kennels"
+WINDMILL_VILLAGE = ROOT / "knowledge_bases" / "windmill_village"
+VICTORIAN_PUMPING_STATION = ROOT / "knowledge_bases" / "victorian_pumping_station"
+ZIPLINE_PARK = ROOT / "knowledge_bases" / "zipline_park"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -649,6 +661,18 @@ SETS = {
     "dev108/transmitter_station": _set("dev108/transmitter_station.jsonl", TRANSMITTER_STATION, "ts108", TWENTY, sep=""),
     "dev108/gold_dredge_camp": _set("dev108/gold_dredge_camp.jsonl", GOLD_DREDGE_CAMP, "gd108", TWENTY, sep=""),
     "dev108/caravanserai_oasis": _set("dev108/caravanserai_oasis.jsonl", CARAVANSERAI_OASIS, "co108", TWENTY, sep=""),
+    "dev109/airship_hangar": _set("dev109/airship_hangar.jsonl", AIRSHIP_HANGAR, "ah109", TWENTY, sep=""),
+    "dev109/watchmaking_town": _set("dev109/watchmaking_town.jsonl", WATCHMAKING_TOWN, "wt109", TWENTY, sep=""),
+    "dev109/rodeo_grounds": _set("dev109/rodeo_grounds.jsonl", RODEO_GROUNDS, "rg109", TWENTY, sep=""),
+    "dev109/cork_oak_estate": _set("dev109/cork_oak_estate.jsonl", CORK_OAK_ESTATE, "co109", TWENTY, sep=""),
+    "dev110/fish_auction_quay": _set("dev110/fish_auction_quay.jsonl", FISH_AUCTION_QUAY, "fa110", TWENTY, sep=""),
+    "dev110/volcano_village": _set("dev110/volcano_village.jsonl", VOLCANO_VILLAGE, "vv110", TWENTY, sep=""),
+    "dev110/cotton_gin_town": _set("dev110/cotton_gin_town.jsonl", COTTON_GIN_TOWN, "cg110", TWENTY, sep=""),
+    "dev110/boat_lift": _set("dev110/boat_lift.jsonl", BOAT_LIFT, "bl110", TWENTY, sep=""),
+    "dev111/sled_dog_kennels": _set("dev111/sled_dog_kennels.jsonl", SLED_DOG_KENNELS, "sk111", TWENTY, sep=""),
+    "dev111/windmill_village": _set("dev111/windmill_village.jsonl", WINDMILL_VILLAGE, "wv111", TWENTY, sep=""),
+    "dev111/victorian_pumping_station": _set("dev111/victorian_pumping_station.jsonl", VICTORIAN_PUMPING_STATION, "vp111", TWENTY, sep=""),
+    "dev111/zipline_park": _set("dev111/zipline_park.jsonl", ZIPLINE_PARK, "zp111", TWENTY, sep=""),
 }
 
 
