@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev111) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev112) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -258,6 +258,10 @@ SLED_DOG_KENNELS = ROOT / "knowledge_bases" / "sled_dog_kennels"
 WINDMILL_VILLAGE = ROOT / "knowledge_bases" / "windmill_village"
 VICTORIAN_PUMPING_STATION = ROOT / "knowledge_bases" / "victorian_pumping_station"
 ZIPLINE_PARK = ROOT / "knowledge_bases" / "zipline_park"
+HOP_KILN_FARM_MUSEUM = ROOT / "knowledge_bases" / "hop_kiln_farm_museum"
+TIDE_MILL_QUAY = ROOT / "knowledge_bases" / "tide_mill_quay"
+ROPEWAY_MINE_CAMP = ROOT / "knowledge_bases" / "ropeway_mine_camp"
+SEA_BATHING_POOL = ROOT / "knowledge_bases" / "sea_bathing_pool"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -673,6 +677,10 @@ SETS = {
     "dev111/windmill_village": _set("dev111/windmill_village.jsonl", WINDMILL_VILLAGE, "wv111", TWENTY, sep=""),
     "dev111/victorian_pumping_station": _set("dev111/victorian_pumping_station.jsonl", VICTORIAN_PUMPING_STATION, "vp111", TWENTY, sep=""),
     "dev111/zipline_park": _set("dev111/zipline_park.jsonl", ZIPLINE_PARK, "zp111", TWENTY, sep=""),
+    "dev112/hop_kiln_farm_museum": _set("dev112/hop_kiln_farm_museum.jsonl", HOP_KILN_FARM_MUSEUM, "hk112", TWENTY, sep=""),
+    "dev112/tide_mill_quay": _set("dev112/tide_mill_quay.jsonl", TIDE_MILL_QUAY, "tm112", TWENTY, sep=""),
+    "dev112/ropeway_mine_camp": _set("dev112/ropeway_mine_camp.jsonl", ROPEWAY_MINE_CAMP, "rm112", TWENTY, sep=""),
+    "dev112/sea_bathing_pool": _set("dev112/sea_bathing_pool.jsonl", SEA_BATHING_POOL, "sb112", TWENTY, sep=""),
 }
 
 
