@@ -756,6 +756,18 @@ class ReportAnalyzer:
             obj = [w for w in norms[max(0, t - 4):t] if w not in lx.FILLERS | lx.ARTICLES | {"all", "both", "our"}]
             if norms[t] in lx.MOVED_PEOPLE and obj and obj[-1] in lx.MOVING_VERBS:
                 continue  # "I've walked all the guests up to the Fellside": whom we moved, not "built_for_the_guests_of"
+            if norms[t + 1:t + 2] in (("it",), ("them",)) and t > 0 and norms[t - 1] in (
+                    "cant", "cannot", "couldnt", "wont", "can", "could", "to", "dont", "didnt"):
+                continue  # "they can't open it from their side": a deed done to it, not ``opens off``
+            noun = not _same_stem(norms[t], hit[0].replace("_", " ").split()[0]) and not word.lower().endswith(("ed", "ing"))
+            anchor_hit = self._places.match_at(norms, t + 2) if noun and t + 2 < len(norms) else None
+            if noun and t > 0 and norms[t - 1] in lx.DETERMINERS and norms[t + 1:t + 2] in (("the",), ("a",), ("an",)) \
+                    and anchor_hit is not None and not any(
+                        norm_phrase(r.relation.replace("_", " ")) == norm_phrase(hit[0].replace("_", " "))
+                        and anchor_hit[1] in (r.subject, r.object) for r in self.kb.relations) and any(
+                    t + 1 < k <= t + 6 and not any(toks.clause_start[m] for m in range(t + 1, k + 1)) for k in known):
+                continue  # "the water the dam holds back": a noun of a relation's name heading a description whose
+                # own words the tables list further on
             phrase, voice = hit
             if voice == "active" and t > 0 and norms[t - 1] in lx.ARTICLES - {"that"} and phrase.split()[0] in (
                     norms[t], toks.tokens[t].text.lower()):
@@ -1117,9 +1129,11 @@ class ReportAnalyzer:
         ex.places[:] = [replace(h, status="reference", reason="where something fell, no claim of its own")
                         if h.status == "active" and h.via is None and self._fallen_into(toks, norms, h, ex.places)
                         else h for h in ex.places]
-        if any(h.end_tok < len(norms) and norms[h.start_tok] in ("that", "this")
-               and self._relations.match_at(norms, h.end_tok) is not None for h in heads):
+        if any(norms[h.start_tok] in ("that", "this") and (
+                h.end_tok < len(norms) and self._relations.match_at(norms, h.end_tok) is not None
+                or h.start_tok - 1 in self._rel_tokens) for h in heads):
             self._resolve_relations(ex)  # "the yard that shed takes its plate from": the shed anchors a relation
+            # (or ends one: "the trees next to the workers' row, and the building standing above that grove")
         self._speakers_premises(ex, norms)
         self._ordinal_anaphora(toks, norms, ex)
         self._apply_place_negation(ex)
@@ -1167,10 +1181,15 @@ class ReportAnalyzer:
             return
         opener = first[0]
         end = next((i for i in range(1, len(norms)) if toks.sentence_of[i] > 0), len(norms))
-        if end == len(norms) or end > 10 or any(self._cues.match_at(norms, i) is not None for i in range(end)):
+        if end == len(norms) or end > 10:
             return
+        # ("Vats at the leather works have split. Brown slick spreading across the yard": a claim said of it first
+        # reads the yard of the next sentence so too)
+        claimed = any(self._cues.match_at(norms, i) is not None for i in range(end))
         for idx, p in enumerate(ex.places):
             w = norms[p.start_tok]
+            if claimed and toks.sentence_of[p.start_tok] != 1:
+                continue
             if p.status != "active" or p.via is not None or p.end_tok - p.start_tok != 1 or p.start_tok < end \
                     or w not in lx.PREMISES_PARTS or norms[p.start_tok - 1] != "the" or p.landmark == opener.landmark \
                     or any(name_words(f) == (w,) for f in self.kb.landmark_by_name[p.landmark].surface_forms):
@@ -1613,6 +1632,9 @@ class ReportAnalyzer:
                 | {"kitchen", "kitchens"} and not toks.clause_start[b] \
                 and not toks.clause_start[b + 1]:
             b += 1  # "Gym roof's come down": the part of the place is the subject's head, the place said before it
+        if not contracted and norms[b] in _PLACING_PREPOSITIONS and any(
+                self._places.match_at(norms, t) is not None for t in range(b + 1, min(len(norms), b + 4))):
+            return True  # "Graveyard behind Bethel is flooded", "Stop above the landing stage is our muster point"
         return toks.clause_start[b] or norms[b] in lx.COPULAS | lx.CREW_ACTION_VERBS \
             or self._cues.match_at(norms, b) is not None \
             or (norms[b] in lx.TELEGRAPHIC_LINKS and (self._cues.match_at(norms, b + 1) is not None
@@ -2743,6 +2765,7 @@ class ReportAnalyzer:
             if t.i > 0 and any((hit := self._cues.match_at(norms, k)) is not None
                                and hit[0] == t.i + 1 and k < t.i for k in range(max(0, t.i - 3), t.i)):
                 continue  # "the bank's on fire— wait": a cue said whole, not "fire st—"
+            best: tuple[int, str] | None = None  # (words said before the cut-off one, landmark)
             for lm in self.kb.landmarks:
                 for form in lm.surface_forms:
                     words = list(name_words(form))
@@ -2752,18 +2775,15 @@ class ReportAnalyzer:
                             continue
                         if list(toks.norms(start, t.i)) == words[: n - 1] and words[n - 1].startswith(frag) \
                                 and words[n - 1] != frag and (n > 1 or len(frag) >= 3 or len(frag) == 2 and (
-                                    t.i == 0 or norms[t.i - 1] != "to")):
-                            # ("the ba-- the bakery"; not "it's safe to br— no, ...": a verb begun)
-                            out.append(self._mention(toks, start, t.i + 1, lm.name, status="retracted",
-                                                     reason="false start (word cut off)"))
-                            taken.update(range(start, t.i + 1))
-                            break
-                    else:
-                        continue
-                    break
-                else:
-                    continue
-                break
+                                    t.i == 0 or norms[t.i - 1] != "to")) and (best is None or n > best[0]):
+                            # ("the ba-- the bakery"; not "it's safe to br— no, ...": a verb begun; the name the most
+                            # words said fit: "the engine ha--" begins "engine hall", not "halt")
+                            best = (n, lm.name)
+            if best is not None:
+                start = t.i - (best[0] - 1)
+                out.append(self._mention(toks, start, t.i + 1, best[1], status="retracted",
+                                         reason="false start (word cut off)"))
+                taken.update(range(start, t.i + 1))
         return out
 
     @staticmethod
@@ -2780,6 +2800,9 @@ class ReportAnalyzer:
             pause_after = b >= len(norms) or toks.clause_start[b]
             if words[-1:] == ("wrong",) and nxt in ("word", "words"):
                 continue  # "gas leak, sorry, gas leak, wrong word": said of the word already repaired
+            if len(words) == 2 and words[1] == "that" and a > 0 and norms[a - 1] in lx.DETERMINERS \
+                    and not toks.clause_start[a] and toks.gaps[a].strip() == "":
+                continue  # "bin hang-up in the bin that feeds the top station": a noun and its relative clause
             if words == ("back", "up") and a > 0 and not toks.clause_start[a] and norms[a - 1] not in lx.FILLERS:
                 continue  # "she can't climb back up", "the power's back up": no "back up, start again"
             if words == ("wrong",) and nxt in ("side", "end", "bank") and norms[b + 1:b + 2] == ("of",) and a > 0 \
@@ -4509,8 +4532,10 @@ class ReportAnalyzer:
         if anchor is None and implicit and (b >= len(norms) or ex.tokens.clause_start[b]
                                                                     or not any(p.start_tok == b for p in ex.places)) \
                 and not self._names_other_object(toks, norms, b):
-            # "the building next door": the anchor is the place last spoken of
+            # "the building next door": the anchor is the place last spoken of (not the reference point of its
+            # description: "the wall holding back the albufeira is cracking. And the shed at its foot")
             before = [p for p in ex.places if p.end_tok <= a and p.status != "retracted"]
+            before = [p for p in before if p.status != "reference" or p.via is not None] or before
             if before and max(before, key=lambda p: p.end_tok).end_tok == a and not ex.tokens.clause_start[a] \
                     and norms[a:b] != ("next", "door") and not (
                         toks.tokens[a - 1].text.lower().replace("’", "'").endswith("'s")
@@ -5441,8 +5466,10 @@ class ReportAnalyzer:
         if j > b and norms[j - 1] in ("its", "their") and j < len(norms) and (norms[j] in (
                 "side", "back", "wall", "rear", "front", "end", "corner", "gable", "left", "right", "north", "south", "east",
                 "west") or norms[j] in own_nouns):
-            # "the shop attached to its side": the possessive points back to the last place
+            # "the shop attached to its side": the possessive points back to the last place (the place spoken of,
+            # not the reference point of its description: "the wall holding back the albufeira ... the shed at its foot")
             before = [p for p in ex.places if p.end_tok <= b]
+            before = [p for p in before if p.status != "reference"] or before
             if before:
                 return max(before, key=lambda p: p.end_tok), j + 1, True
         if j > b and norms[j - 1] in ("that", "this", "same") and j < len(norms) and norms[j] in lx.UNNAMING_HEADS \
@@ -6398,6 +6425,12 @@ class ReportAnalyzer:
                 ex.places[idx] = replace(p, status="reference", reason="who is calling ('X to Y:'), said of no more")
                 continue
             j = _noun_phrase_start(norms, p)
+            if j >= 2 and norms[j - 1] == "by" and norms[j - 2] in _CHECKED_BY \
+                    and any(q.landmark != p.landmark and q.status == "active" and q.end_tok <= j - 2
+                            and toks.sentence_of[q.start_tok] == toks.sentence_of[p.start_tok] for q in ex.places):
+                # "The train depot has been checked by the fire department": who checked it, not a place spoken of
+                ex.places[idx] = replace(p, status="reference", reason="who did it ('checked by X'): no claim")
+                continue
             k = j - 1 if j >= 1 and norms[j - 1] in ("up", "at", "in", "on", "down", "from", "by") else j
             if k >= 4 and norms[k - 1] in lx.LAY_PERSONS | lx.WORKER_PERSONS and norms[k - 2] in ("a", "an", "the") \
                     and norms[k - 3] == "from" and norms[k - 4] in _CALL_NOUNS \
@@ -6518,6 +6551,13 @@ class ReportAnalyzer:
                 continue
             if any(norms[k:k + 2] == ("last", "seen") for k in range(max(0, j - 7), j)):
                 continue  # "Last seen going into the still house": where the missing were last, no passing through
+            if j >= 5 and norms[j - 3:j] in (("coming", "out", "of"), ("walking", "out", "of")) \
+                    and norms[j - 4] in _PEOPLE_WORDS | {"visitors", "crowds", "crowd", "people", "families"} \
+                    and norms[j - 5] in ("the", "for", "all") \
+                    and not any(toks.clause_start[i] for i in range(j - 3, j + 1)):
+                # "assembly points for the visitors coming out of the engine hall": where people leave from
+                ex.places[idx] = replace(p, status="reference", reason="where people come out of: no claim")
+                continue
             for k in range(max(0, j - 5), j):
                 hit = self._transit.match_at(norms, k)
                 if hit is not None and norms[k] == "were" and "'" not in toks.tokens[k].text.replace("’", "'") \
@@ -6529,8 +6569,10 @@ class ReportAnalyzer:
                         "gone", "went", "fallen", "fell", "slipped", "jumped", "go"):
                     continue  # "a fisherman's gone in off the weir": into the water there, no one passing
                 if hit is not None and hit[1].split()[0] in ("came", "come", "coming") and len(hit[1].split()) == 3 \
-                        and not any(norms[m] in lx.MOVING_PEOPLE for m in range(max(0, k - 4), k)):
-                    continue  # "debris came down from the roof": a thing fallen, not people who came from there
+                        and not any(norms[m] in lx.MOVING_PEOPLE | lx.WORKER_PERSONS | _MOVING_VEHICLES
+                                    for m in range(max(0, k - 4), k)):
+                    continue  # "debris came down from the roof": a thing fallen, not people who came from there (but
+                    # "ambulance is coming in through the car park": a crew on its way)
                 if hit is not None and j <= hit[0] <= p.start_tok and not any(toks.clause_start[i] for i in range(k + 1, min(hit[0], p.start_tok) + 1) if i < p.start_tok):
                     if norms[k] in ("passing", "past", "going", "driving", "walking", "passed") \
                             and (norms[p.end_tok:p.end_tok + 2] in lx.SEEN_THERE
@@ -6873,6 +6915,11 @@ class ReportAnalyzer:
             after = [p for p in ex.places if b <= p.start_tok < end and p.status in ("active", "negated")]
             said_of = next((t for t in range(b, min(end, b + 8)) if norms[t:t + 4] in (
                 ("what", "i", "said", "about"), ("what", "we", "said", "about"), ("what", "i", "told", "you"))), None)
+            first_q = min((q.start_tok for q in after), default=None)
+            if first_q is not None and any(d in toks.gaps[t] for t in range(b + 1, first_q + 1) for d in ("...", "…")) \
+                    and any(w in lx.NUMBER_WORDS or w == "one" for w in norms[b:first_q]):
+                continue  # "a scald victim at the boiling vats and, um, another one, no, sorry, just the one... the weigh
+                # shed is safe": the count right after the marker is the repair; the place after the pause is news
             if said_of is not None and all(q.start_tok > said_of for q in after):
                 continue  # "no, scrap what I said about the cottage, water's just come in": that place's word withdrawn,
                 # not the place just before the marker
@@ -6947,10 +6994,23 @@ class ReportAnalyzer:
                     and not any(p.start_tok <= a - 1 < p.end_tok for p in ex.places):
                 continue  # "the far end's blocked too north end i mean the far mouth": the unnamed end is repaired
             if any(p.reason.startswith("false start") and last.end_tok <= p.start_tok and a - 2 <= p.end_tok <= a
-                   and p.landmark != last.landmark for p in ex.places) \
-                    and self._cue_between(norms, last.end_tok, a):
+                   and p.landmark != last.landmark and (self._cue_between(norms, last.end_tok, a) or any(
+                       norms[t] in ("and", "also", "plus") for t in range(last.end_tok, p.start_tok)))
+                   for p in ex.places):
                 continue  # "the library has a live wire down and the supermar-- sorry the marketplace": the cut-off
-                # name is what the marker repairs
+                # name is what the marker repairs (or one added to a list: "the pilhas and also the weighing sh-- no")
+            e = a
+            while e - 1 > last.end_tok and norms[e - 1] in lx.HESITATIONS:
+                e -= 1
+            if e - last.end_tok >= 4 and norms[e - 2] in lx.ARTICLES and norms[e - 1].isalpha() \
+                    and norms[e - 1] not in lx.FUNCTION_WORDS and any(d in toks.gaps[e] for d in ("—", "–", "--")) \
+                    and not any(p.start_tok <= e - 1 < p.end_tok for p in ex.places) \
+                    and any(len(ws := name_words(f)) >= 2 and ws[0] == norms[e - 1]
+                            for lm in self.kb.landmarks for f in lm.surface_forms) \
+                    and self._cue_between(norms, last.end_tok, e - 2) and not toks.sentence_start[e - 2] \
+                    and any(toks.clause_start[t] or norms[t] == "and" for t in range(last.end_tok, e - 2)):
+                continue  # "The place behind the changing huts is our recovery area, and there's a near drowning at
+                # the deep— er, sorry, the paddling pool": a name broken off ("the deep end") is what the marker repairs
             if a - last.end_tok >= 6 and norms[a - 2] in lx.ARTICLES and norms[a - 1].isalpha() \
                     and norms[a - 1] not in lx.FUNCTION_WORDS and toks.tokens[a - 1].text.lower().endswith(("'s", "’s")) \
                     and any(d in toks.gaps[a] for d in ("...", "…", "—", "–", "--")) \
@@ -7539,6 +7599,10 @@ class ReportAnalyzer:
                     and toks.tokens[a - 1].text.lower().replace("’", "'") in ("we're", "were", "i'm", "im", "they're",
                                                                                "we", "they", "everyone's"):
                 continue  # "we're clear of the slipway and heading out": the crew has left it
+            if norms[a:b] == ("clear",) and norms[b:b + 2] in (("of", "it"), ("of", "that"), ("of", "them")) \
+                    and a > 0 and norms[a - 1] in ("is", "s", "are", "re"):
+                continue  # "bad air in the building behind it, the bunkhouse is clear of it": the danger just said is
+                # not there, no safety claimed
             nb = b + 1  # ("Fire Two-One en route": a number of two words)
             if nb < len(norms) and (norms[nb] in lx.NUMBER_WORDS | {"one"} or norms[nb].isdigit()) \
                     and toks.gaps[nb] in ("-", "–"):
@@ -7586,6 +7650,11 @@ class ReportAnalyzer:
                     and norms[a:b] in lx.PERSON_STATE_CUES and self._person_category and self._person_before(norms, a):
                 # (the undesirable category's description may list "collapsed" too: "one of the riggers has collapsed")
                 cue = replace(cue, category=self._person_category, reason=f"a person {norms[a]}")
+            elif (source == "lexicon" or source == "category" and self.kb.category_by_name[cat].role != Role.CRITICAL) \
+                    and norms[a:b] in (("burned",), ("burnt",)) and self._person_category and a > 0 \
+                    and norms[a - 1] in ("a", "an", "one", "two", "three", "badly", "the") and b < len(norms) \
+                    and norms[b] in _PEOPLE_WORDS | lx.CREW_NOUNS:
+                cue = replace(cue, category=self._person_category, reason=f"a {norms[a]} person")  # "a burned worker"
             if norms[a:b] == ("slumped",) and cue.category == self._person_category and not self._person_before(norms, a) \
                     and (self._thing_before(norms, a, self._place_tokens) or next(
                         (w for w in reversed(norms[max(0, a - 3):a]) if w not in lx.FILLERS | {"s", "has", "have", "is"}),
@@ -7593,6 +7662,11 @@ class ReportAnalyzer:
                 und = self._category_for_role(lx.UNDESIRABLE, "the ground has slumped and given way")
                 if und is not None:  # "the whole south side's slumped": ground, no person
                     cue = replace(cue, category=und, reason="ground slumped")
+            if norms[a] in ("jammed", "stuck", "trapped", "caught", "wedged") and self._person_category and a >= 2 \
+                    and norms[a - 1] in lx.BODY_PARTS and norms[a - 2] in ("his", "her", "their", "my", "your") \
+                    and cue.category != self._person_category:
+                cue = replace(cue, category=self._person_category, reason="a person's limb caught")  # "Kid's got his
+                # foot jammed in the grate"
             if norms[a:b] == ("crushed", "against") and self._person_category and next(
                     (w for w in reversed(norms[max(0, a - 3):a]) if w not in lx.FILLERS), "") in (
                     "man", "woman", "lad", "kid", "child", "boy", "girl", "he", "she", "hes", "shes", "bloke"):
@@ -7612,6 +7686,14 @@ class ReportAnalyzer:
                 und = self._category_for_role(lx.UNDESIRABLE, "slumped, collapsed ground")
                 if und is not None:
                     cue = replace(cue, category=und, reason="ground slumped")  # "part of the face has slumped"
+            if source == "lexicon" and norms[a:b] in (("been", "hit", "by"), ("was", "hit", "by"), ("got", "hit", "by")) \
+                    and cue.category == self._person_category and not self._person_before(norms, a) \
+                    and not any(w in _PEOPLE_WORDS for w in norms[max(0, a - 8):a]) \
+                    and (self._thing_before(norms, a, self._place_tokens) or a > 1 and norms[a - 1] == "that"
+                         and a - 2 in self._place_tokens):
+                und = self._category_for_role(lx.UNDESIRABLE, "struck and damaged")
+                if und is not None:
+                    cue = replace(cue, category=und, reason="a thing hit")  # "the seismo hut that's been hit by a bomb"
             if source == "lexicon" and norms[a:b] == ("swept", "away") and cue.category == self._person_category \
                     and self._thing_before(norms, a, self._place_tokens) and not self._person_before(norms, a):
                 und = self._category_for_role(lx.UNDESIRABLE, "washed away by the flood")
@@ -7754,7 +7836,22 @@ class ReportAnalyzer:
             cues.extend(c.cue for c in extra)
         claims = self._the_actual_one(ex, norms, claims)
         claims = self._motion_of_named_danger(ex, cues, claims)
+        claims = self._all_clear_after_revocation(ex, claims, denied)
         return Classification(cues, self._not_from_us(ex, norms, self._drop_unspecific_dangers(claims)), denied)
+
+    def _all_clear_after_revocation(self, ex: Extraction, claims: list[Claim], denied: list[Claim]) -> list[Claim]:
+        """"the chlorine leak in the shed beside the pump room is sealed, all clear there": an all-clear said right
+        after the danger at the same place is said to be over ends that danger; it makes no place of safety."""
+        toks = ex.tokens
+        out = []
+        for c in claims:
+            if c.cue.text.lower().replace("-", " ") == "all clear" and c.cue.source == "lexicon" and any(
+                    d.place.landmark == c.place.landmark and d.cue.end_tok <= c.cue.start_tok <= d.cue.end_tok + 12
+                    and toks.sentence_of[d.cue.start_tok] == toks.sentence_of[c.cue.start_tok]
+                    and self.kb.category_by_name[d.cue.category].role == Role.UNDESIRABLE for d in denied):
+                continue
+            out.append(c)
+        return out
 
     def _motion_of_named_danger(self, ex: Extraction, cues: list[CueMention], claims: list[Claim]) -> list[Claim]:
         """"Avalanche has come down onto the 4k loop", "avalanche, it came down the black gully": a verb of
@@ -8654,6 +8751,15 @@ class ReportAnalyzer:
                 j -= 1  # "a forklift driver", "one delivery driver"
             introduced = j >= 0 and (norms[j] in lx.PERSON_INTRODUCERS or norms[j].isdigit() or norms[j] in lx.NUMBER_WORDS)
             k = i + 1
+            held_in = j >= 1 and norms[j - 1] == "with" and norms[k:k + 1] in (("inside",), ("aboard",), ("onboard",)) \
+                and (k + 1 >= len(norms) or toks.clause_start[k + 1]) \
+                and any(norms[m] in ("stuck", "stranded", "trapped", "jammed", "hanging", "dangling")
+                        for m in range(max(0, j - 5), j - 1))
+            if held_in:  # "one car stuck with the driver inside": someone held in the thing that is stuck
+                t0, t1 = toks.tokens[i], toks.tokens[k]
+                out.append(CueMention(i, k + 1, t0.start, t1.end, toks.text[t0.start:t1.end], cat, "lexicon",
+                                      reason="a person held inside"))
+                continue
             if not introduced and i > 0 and norms[i - 1] == "the" and w in norms[:i - 1] \
                     and toks.tokens[i].text.lower().endswith(("'s", "’s")):
                 # "an injured man at the water tower? -- no, ... the man's at the water tower": the one spoken of,
@@ -8674,8 +8780,18 @@ class ReportAnalyzer:
             while k < len(norms) and norms[k] in lx.FILLERS | {"still", "definitely", "probably", "possibly", "maybe",
                                                                 "apparently", "certainly", "stuck"}:
                 k += 1
-            if k >= len(norms) or norms[k] not in lx.PERSON_SITUATIONS or toks.clause_start[k] \
-                    or worker and norms[k] not in lx.PINNED_SITUATIONS and not any(
+            pinned = False
+            if k + 1 < len(norms) and norms[k] in ("were", "was", "are", "is") and introduced:
+                m = k + 1
+                while m < len(norms) and norms[m] in lx.FILLERS and not toks.sentence_start[m]:
+                    m += 1
+                if m < len(norms) and norms[m] in ("under", "underneath", "beneath", "pinned", "trapped"):
+                    k, pinned = m, True  # "two kids were, like, under it": pinned there
+            still = "still" in norms[i + 1:k] and k < len(norms) and norms[k] in ("in", "inside", "up") \
+                and j >= 1 and norms[j] in ("a", "an", "one") and norms[j - 1] in ("theres", "there", "s", "is")
+            # ("there's a lifeguard still up in it": someone left in the place the danger is at)
+            if k >= len(norms) or norms[k] not in lx.PERSON_SITUATIONS or toks.clause_start[k] and not pinned \
+                    or worker and not still and norms[k] not in lx.PINNED_SITUATIONS and not any(
                         norms[m] in ("waving", "stranded", "screaming", "shouting", "clinging") for m in range(k, min(
                             len(norms), k + 7)) if not any(toks.clause_start[t] for t in range(k, m + 1))):
                 continue  # ("a lad on the roof of one waving at me": in distress there, whatever his work)
@@ -9369,6 +9485,8 @@ class ReportAnalyzer:
                 or k > cue.end_tok and toks.tokens[k - 1].text.lower().endswith(("'s", "’s"))  # "the cafe's out"
             if norms[k] == "out" and undesirable and (right_after or copula) \
                     and not (norms[k + 1:k + 2] == ("there",) and norms[cue.end_tok - 1].endswith("out")) \
+                    and not (norms[k + 1:k + 2] == ("there",) and norms[k + 2:k + 3] in (
+                        ("is",), ("s",), ("are",), ("was",), ("has",), ("getting",), ("still",))) \
                     and (k + 1 >= len(norms) or toks.clause_start[k + 1] or norms[k + 1] in ("now", "completely", "over", "there")
                          or (contracted or copula) and norms[k + 1] in ("at", "in", "on")):  # "fire's out at the bakery"
                 cancelled_by = "out"
@@ -9610,6 +9728,19 @@ class ReportAnalyzer:
         return before is not None and bool(after) and all(p.landmark == before.landmark for p in after) \
             and words[:2] in (["its", "not"], ["it", "isnt"], ["thats", "not"]) and bool(set(norms[b_after:e_after]) & lx.DISMISSALS)
 
+    @staticmethod
+    def _repairs_uncued_statement(ex: Extraction, cues: list[CueMention], since: int, a: int, b: int, first_cue: int) -> bool:
+        """"an old lady with a broken hip, and the heating's out... no wait the heating's back on, they're sheltering
+        people there": the repair begins by naming again the thing of a statement said after the last cue ("the
+        heating"), so it corrects that statement, and the cue before it stands."""
+        norms = ex.tokens.norms(0, len(ex.tokens))
+        words = [(i, w) for i, w in enumerate(norms[b:first_cue], start=b) if w not in lx.FUNCTION_WORDS]
+        if not words or any(p.start_tok <= words[0][0] < p.end_tok for p in ex.places):
+            return False
+        taken = {i for c in cues for i in range(c.start_tok, c.end_tok)} | {
+            i for p in ex.places for i in range(p.start_tok, p.end_tok)}
+        return any(norms[i] == words[0][1] and i not in taken for i in range(since, a))
+
     def _apply_cue_repairs(self, ex: Extraction, cues: list[CueMention]) -> list[CueMention]:
         """A marker followed by a cue (and no new place) retracts the last cue before it."""
         toks = ex.tokens
@@ -9690,6 +9821,8 @@ class ReportAnalyzer:
                                                     for p in ex.places):
                 # "it's the rest centre, and the cloisters, they're shut, actually there's a gas smell in
                 # there": what the new place was said to be is corrected, not the claim before it
+                continue
+            if self._repairs_uncued_statement(ex, out, last.end_tok, a, b, first_cue.start_tok):
                 continue
             i = out.index(last)
             out[i] = replace(last, status="retracted", reason=f"self-repair: '{toks.span_text(a, b)}' then '{first_cue.text}'")
@@ -9807,6 +9940,15 @@ class ReportAnalyzer:
                                         or any(norms[i] == "same" and norms[i + 1:i + 2] in (("thing",), ("place",),
                                                                                               ("one",), ("building",))
                                                for i in range(p.end_tok, q.start_tok)))), None)
+                    neg = next((q for q in ex.places if nxt is None and q.landmark == p.landmark
+                                and q.start_tok > p.start_tok and q.status == "negated"), None)
+                    if neg is not None:
+                        # "a guy hurt at the depot— at the d- the scale house, not the depot": the place said before
+                        # the negation is the one put in its stead
+                        nxt = max((q for q in usable if q.landmark != p.landmark and p.end_tok <= q.start_tok
+                                   and q.end_tok <= neg.start_tok and q.status != "negated"
+                                   and toks.sentence_of[q.start_tok] == toks.sentence_of[neg.start_tok]),
+                                  key=lambda q: q.start_tok, default=None)
                 elif nxt is None and p.status == "negated" and p.reason.startswith("negated by 'not"):
                     # "it's not the library that's flooding it's the town hall basement": the place the cleft names
                     nxt = next((q for q in ex.places if q.status == "active" and q.landmark != p.landmark
@@ -10283,12 +10425,25 @@ class ReportAnalyzer:
                     and any(c.end_tok == np0 - 1 and c.category != self._person_category for c in cues):
                 continue  # "..., and the pool its gate opens into is overflowing onto the path": where the danger
                 # spills, not a place the sentence before says anything of
-            if donor is not None and tail[:1] and tail[0] in lx.COPULAS | {"looks", "seems", "has", "got"} and any(
-                    _anchored_at(q, p.landmark) for q in seg_places.get(donor, [])):
+            if donor is not None and tail[:1] and tail[0] in (lx.COPULAS | {"looks", "seems", "has", "got"}) - _ADDING \
+                    and any(_anchored_at(q, p.landmark) for q in seg_places.get(donor, [])):
                 continue  # "the library is quiet but the hall next to it is burning": its own word, then the anchor
             if donor is not None and next((w for w in norms[segs[donor][0]:segs[donor][1]] if w not in lx.FILLERS), "") \
                     in ("which", "where") and any(p.end_tok <= q.start_tok < segs[donor][0] for q in active):
                 continue  # "..., evacuated up to the quarry car park, which is safe ground": said of the place before it
+            left_open = [w for w in norms[segs[donor][0]:segs[donor][1]] if w not in lx.FILLERS][-1:] \
+                if donor is not None else []
+            if donor is not None and donor > k and left_open and left_open[0] in lx.PREPOSITIONS | lx.DETERMINERS and any(
+                    q.status == "retracted" and q.reason.startswith("self-repair") and q.start_tok >= segs[donor][1]
+                    and q.start_tok - segs[donor][1] <= 4 and "and" not in norms[segs[donor][1]:q.start_tok]
+                    and sentence_of[q.start_tok] == sentence_of[segs[donor][0]] for q in ex.places):
+                continue  # "this is Jean at the co-op, we've got ammonia in the, in the cave two — no, sorry, cave
+                # one": the cue's clause breaks off before its own place, then repaired; the place before lends nothing
+            if donor is not None and donor > k and self._speaker_here(norms, p) and any(
+                    q.status == "active" and q.landmark != p.landmark and p.end_tok <= q.start_tok < segs[donor][0]
+                    for q in ex.places):
+                continue  # "this is Maria from the mill houses my son he fell off the water tank, he's hurt bad":
+                # where the caller is; another place is named before the cue
             if donor is not None:
                 for c in seg_cues[donor]:
                     if c.start_tok >= counted:
@@ -10666,10 +10821,11 @@ class ReportAnalyzer:
                 and set(norms[c.end_tok:p.start_tok]) <= {
                 "coming", "pouring", "billowing", "from", "out", "of", "the", "a", "rising", "blowing"}:
             return -5.0  # "a man at the bakery reported smoke coming from the bank": where it comes from
-        if c.end_tok <= p.start_tok:  # cue before place: "fire at the bakery"
+        if c.end_tok <= p.start_tok:  # cue before place: "fire at the bakery" ("he fell off the uh the water tank")
             between = norms[c.end_tok : p.start_tok]
-            glue = all(w in lx.PREPOSITIONS or w in lx.DETERMINERS or w in lx.FILLERS or w in lx.COPULAS for w in between)
-            return len(between) - (2.5 if glue and any(w in lx.PREPOSITIONS for w in between) else 0)
+            preps = lx.PREPOSITIONS | {"off"}
+            glue = all(w in preps or w in lx.DETERMINERS or w in lx.FILLERS or w in lx.COPULAS for w in between)
+            return len(between) - (2.5 if glue and any(w in preps for w in between) else 0)
         # place before cue: "the bakery is on fire" (a hesitation is no distance: "the viaduct has, um, lost a parapet
         # into the marina")
         between = tuple(w for w in norms[p.end_tok : c.start_tok] if w not in lx.HESITATIONS)
@@ -11349,6 +11505,16 @@ def _vertical_sense(phrase: str) -> int | None:
 # The parts of a place a relation's name may say in other words ("the foot of" / "the bottom of" / "the base of")
 _PART_SYNONYMS = {"foot": ("bottom", "base"), "bottom": ("foot", "base"), "base": ("foot", "bottom")}
 # First words of the direction families' members ("below", "down the hill", "further inland")
+# Verbs of a check done by someone ("checked by the fire department": the doer, no place spoken of)
+_CHECKED_BY = frozenset({"checked", "inspected", "searched", "cleared", "surveyed", "assessed", "swept", "declared",
+                         "passed", "approved", "certified", "signed"})
+# Words that add a place to what was said of the one before ("and on the building that looks down on the vents too")
+_ADDING = frozenset({"too", "also", "as"})
+# Words that place a place by another ("Graveyard behind Bethel is flooded")
+_PLACING_PREPOSITIONS = frozenset({"behind", "beside", "next", "opposite", "above", "below", "beneath", "under", "near"})
+# Vehicles and crews that come and go through a place ("ambulance is coming in through the car park")
+_MOVING_VEHICLES = frozenset({"ambulance", "ambulances", "appliance", "appliances", "truck", "van", "bus", "coach",
+                              "helicopter"})
 _DIRECTION_BARE = frozenset(m.split()[0] for fam in lx.DIRECTION_FAMILIES.values() for m in fam)
 # The parts of a building that fall in ("the roof of the vehicle hangar is down": collapsed)
 _FALLING_PARTS = frozenset({"roof", "ceiling", "gable", "chimney", "spire", "tower", "canopy", "floor"})
@@ -11875,6 +12041,10 @@ def _relation_forms(phrase: str) -> list[tuple[str, bool]]:
         out.append((" ".join(swapped), True))
     if words[0] in ("sits", "stands", "lies") and len(words) >= 4 and words[-1] in ("with", "to", "of"):
         out.append((" ".join(words[1:]), False))  # "the cottage cheek by jowl with the tea room": the posture unsaid
+    elif words[0] in ("runs", "stretches", "extends") and len(words) >= 4 and words[1] in ("along", "across", "around",
+                                                                                          "round", "beside", "below") \
+            and words[-1] == "of":
+        out.append((" ".join(words[1:]), False))  # "the canal along the foot of the dyke road": the way it runs unsaid
     elif words[0] in _POSTURES and 2 <= len(words) <= 3 and words[1] in _POSTURE_PLACES \
             and words[-1] in lx.RELATION_ENDINGS | _SPATIAL_ENDINGS:
         out.append((" ".join(words[1:]), False))  # "the landing area beside it" for ``sits beside``

@@ -251,8 +251,8 @@ stuck on the roof|stranded on the roof|on the roof waiting|waving from|trapped u
 can't get up|cannot get up|can't get out|can't free|cannot free|waving for help|yelling for help|for help|
 can't climb out|cannot climb out|can't climb back up|cannot climb back up|can't climb back out|can't get back out|
 can't get back up|
-still on board|riders still on board|stuck at the top|stranded at the top|leg is broken|arm is broken|broken leg|broken arm|broken hip|broke his leg|broke her leg|broke his arm|
-broke her arm|broke his hip|broke her hip|broken ankle|broke his ankle|broke her ankle|burnt arm|burnt hand|burned arm|burned hand|burnt leg|burnt face|burned face|with burns|burns to his|
+still on board|riders still on board|stuck at the top|stranded at the top|leg is broken|arm is broken|broken leg|broken arm|broken hip|busted leg|busted arm|busted ankle|busted wrist|broke his leg|broke her leg|broke his arm|
+stung all over|been stung|badly stung|stung by bees|stung by a bee|broke her arm|broke his hip|broke her hip|broken ankle|broke his ankle|broke her ankle|burnt arm|burnt hand|burned arm|burned hand|burnt leg|burnt face|burned face|with burns|burns to his|
 burns to her|burnt his|burnt her|burned his|burned her|cracked his head|cracked her head|cracked their head|cracked his skull|cracked her skull|banged his head|
 banged her head|hit his head|hit her head|split his head|split her head|cut his hand|cut her hand|cut his head|
 cut her head|cut his leg|cut her leg|head wound|head injury|hurt bad|badly hurt|walking wounded|screaming inside|kids screaming|someone in the water|people have gone into the water|have gone into the water|has gone into the water|gone in the water|went into the water|
@@ -350,7 +350,8 @@ CANCEL_AFTER = ["fully out", "is fully out", "damping down", "damping down is fi
                 "been brought out", "been pulled out", "gone off in the ambulance", "gone off in an ambulance", "handed to the ambulance crew", "handed over to the ambulance", "been handed over",
                 "been handed to the ambulance crew", "been shored", "shored up", "been shored up", "shored", "holding now", "it's holding",
                 "knocked down", "been knocked down", "lifted off", "been lifted off", "winched up", "been winched up", "taken off",
-                "been taken off", "picked up", "been picked up", "is resolved", "resolved", "withdrawn", "been withdrawn",
+                "been taken off", "picked up", "been picked up", "is resolved", "resolved", "withdrawn", "been withdrawn", "cancelled", "canceled", "is cancelled",
+                "been cancelled",
                 "was a mix up", "a mix up", "isolated", "been isolated", "made safe", "been made safe",
                 "boomed off", "been boomed", "dispersed", "been dispersed", "cleaned up", "been cleaned up",
                 "pumped out", "been pumped out", "no sign of him", "no sign of her", "no sign of them",
@@ -415,6 +416,10 @@ BACK_REFERENCE_WORDS = {"it", "its", "s", "is", "has", "been", "thats", "that", 
 
 # Phrases that contain cue words but claim nothing ("the smoke alarm went off", "fire crew on site").
 NEUTRAL_PHRASES = ["a bonfire",
+                   # (a radio check: "reading you loud and clear")
+                   "loud and clear", "reading you clear", "read you clear",
+                   # (who reports the all-clear: "All clear from the stamp mill after the tremor")
+                   "all clear from",
                    # (a notice put up: "tide tables are pinned up in the vols' hut")
                    "pinned up in", "pinned up on", "pinned up at", "pinned up by",
                    # (a verb of a relation: "the wall that shelters the yard")
@@ -585,7 +590,8 @@ RELATION_SYNONYMS: dict[str, list[str]] = {
                     "looks across the square at", "looks across the street at", "across the road", "across the street",
                     "over the road", "over the way", "across the lane from", "over the lane from", "across the lane",
                     "over the lane", "across the alley from", "across the track from", "over the track from",
-                    "across the green from", "across the street of", "across the road of", "in opposite of",
+                    "across the green from", "across the yard from", "over the yard from", "across the car park from",
+                    "across the street of", "across the road of", "in opposite of",
                     "on the opposite of", "on the other side of the street of", "on the other side of the road of"],
     "behind": ["behind", "round the back of", "around the back of", "at the back of", "in back of",
                "back of", "to the rear of", "at the rear of", "out back of", "directly behind", "right behind",
@@ -806,7 +812,7 @@ MODIFIED_BY = {"team", "crew", "unit", "squad", "staff", "manager", "owner", "wo
                "chef", "caretaker", "porter", "receptionist", "warden", "supervisor", "foreman",
                "side", "car", "truck", "van", "bus", "sign", "road", "street", "lane",
                "lads", "lad", "guys", "guy", "blokes", "bloke", "boys", "boy", "fellas", "fella", "chaps", "chap", "lot",
-               "kids", "kid", "children", "child", "pupils", "pupil"}
+               "kids", "kid", "children", "child", "pupils", "pupil", "trip", "trips", "outing", "excursion"}
 
 # Words after a place that name a part of it, not another thing ("the surgery car park").
 PART_OF_PLACE = {("car", "park"), ("car", "parks"), ("crew", "room"), ("staff", "room"), ("team", "room"),
@@ -1064,7 +1070,7 @@ WORKER_PERSONS = {"driver", "worker", "workman", "lad", "labourer", "passenger",
                   "engineer", "gardener", "fan", "punter", "marshal", "chemist", "resident", "technician", "keeper",
                   "porter", "nurse", "midwife", "tourist", "walker", "climber", "swimmer", "diver", "angler", "member",
                   "rigger", "roustabout", "roughneck", "driller", "welder", "scaffolder", "miner", "logger", "docker",
-                  "stevedore", "farmhand", "kayaker", "canoeist", "skier", "staff", "skater", "cook", "chef"}
+                  "stevedore", "farmhand", "kayaker", "canoeist", "skier", "staff", "skater", "cook", "chef", "lifeguard"}
 # Who calls in, said before where they are ("Security guard at the savings bank."): a role, not a claim.
 CALLER_ROLES = {"guard", "warden", "officer", "patrol", "assistant", "attendant", "manager", "caretaker", "courier",
                 "inspector", "first-aider", "firstaider", "aider", "volunteer", "medic", "paramedic", "constable",
@@ -1207,7 +1213,7 @@ DANGER_KINDS: dict[str, list[str]] = {
     "explosion": ["explosion", "exploded", "explosive", "blast", "exploding", "explode", "could explode", "just gone up", "just went up", "gone up again", "went up again", "gone up like", "went up like",
                   "another bang", "loud bang", "big bang", "massive bang", "huge bang", "blown out", "blown apart",
                   "blown in", "blew out", "blew up", "blown up", "bottles went up", "cylinders went up",
-                  "gas bottles went up", "gas cylinders went up", "gas bottles exploded", "gas bottle went up", "gas bottles went off",
+                  "gas bottles went up", "gas cylinders went up", "about to blow", "going to blow", "could blow any", "gas bottles exploded", "gas bottle went up", "gas bottles went off",
                   "bottles went off", "cylinders went off", "went off like a bomb"],
     "collapse": ["collapse", "collapsed", "collapsing", "caved in", "cave in", "cave-in", "caving in", "caving",
                  "fell in", "falling down", "come down", "came down", "coming down", "about to collapse", "unstable",
@@ -1243,7 +1249,8 @@ DANGER_KINDS: dict[str, list[str]] = {
                "ceiling down", "tree through the roof", "tree on it", "the tree on it", "tree on the roof",
                "roof fell on", "fell on them", "came down on them", "come down on them", "collapsed on them",
                "smashed", "smashed up", "smashed to pieces", "smashed to matchwood", "full of wreckage", "wreckage",
-               "a breach in it", "breach in the", "split down the side", "split down one side", "split right down", "split right through", "split down the grain", "split wide open", "split right open", "split open", "taken a tree", "taken trees", "took a tree", "taken a falling tree", "ripped off", "ripped clean off", "ripped away", "is bent at", "s bent at", "bent at the top", "bent in half", "bent double", "badly bent", "has a breach", "got a breach", "breached", "been breached", "shedding stone", "shedding stones", "shedding masonry",
+               "a breach in it", "breach in the", "split down the side", "split down one side", "split right down", "split right through", "split down the grain", "split wide open", "tank has split", "tank's split", "tanks have split", "pipe has split", "main has split",
+               "vat has split", "vats have split", "drum has split", "drums have split", "hull has split", "split right open", "split open", "taken a tree", "taken trees", "took a tree", "taken a falling tree", "ripped off", "ripped clean off", "ripped away", "is bent at", "s bent at", "bent at the top", "bent in half", "bent double", "badly bent", "has a breach", "got a breach", "breached", "been breached", "shedding stone", "shedding stones", "shedding masonry",
                "masonry dropping", "masonry falling", "masonry coming down", "bits of masonry", "trees are down",
                "trees down", "tree is down", "power lines tangled", "lines tangled in", "half the ceiling's",
                "has failed", "have failed", "dropped on one side", "dropped at one end", "concrete's gone", "half gone", "ripped out the", "doors burst in", "burst in by the",
@@ -1645,7 +1652,7 @@ DANGER_KIND_EXTRA: dict[str, list[str]] = {
                  "started to sag", "starting to sag", "begun to sag", "beginning to sag", "wall's come in", "wall has come in", "walls have come in", "wall's come down on", "roof's come in",
                  "roof has come in", "ceiling's come in", "ceiling has come in", "tipped over", "has tipped over", "have tipped over", "have slid", "has slid",
                  "flattened", "been flattened", "torn to bits", "torn to pieces", "ripped to bits", "ripped to pieces", "blown to bits", "giving way", "is giving way", "gives way", "piles are sheared", "piles have sheared", "pile is sheared", "pile's sheared", "torn open", "been torn open", "gone over into the water", "gone over into the lagoon", "gone over into the sea", "gone over into the river", "split down a seam", "split a seam", "split its seam", "split at the seam", "split along a seam", "has snapped", "have snapped", "cable snapped", "cables snapped", "hanging sideways", "floor went through", "floor went thru", "floor gone through", "developed a lean", "has a lean", "bricks coming off", "bricks are coming off", "wall has split", "walls have split", "has split from", "split right across", "split from top to bottom", "roof's coming in", "roof is coming in", "ceiling's coming in", "ceiling is coming in", "coming off in chunks", "coming away in chunks", "falling off in chunks", "in chunks", "breaking up", "is breaking up", "coming adrift", "come adrift", "broken adrift", "peeling off", "coming off in slabs", "coming away in slabs", "roof fall on", "roof fall in", "roof has dropped", "pole's snapped", "pole has snapped", "poles have snapped", "poles snapped", "canvas is down", "canvas's down", "canvas has come down", "canvas came down", "tent's down", "tent is down", "poles down", "poles are down", "roof's dropped", "roof dropped", "ceiling has dropped", "ceiling's dropped", "roof has split", "roof split", "is bending", "it's bending", "is fall down", "has fall down", "fallen down"],
-    "water": ["running bank to bank", "bank to bank", "going down by the bow", "going down by the stern", "down by the bow", "down by the stern",
+    "water": ["jellyfish", "jellyfish bloom", "jellies everywhere", "stingers everywhere", "running bank to bank", "bank to bank", "going down by the bow", "going down by the stern", "down by the bow", "down by the stern",
               "down by the head", "waves coming straight over", "waves coming right over", "roof is leaking", "roof's leaking",
               "roof leaking", "roof leaks", "taken the surge", "took the surge", "drums floating", "floating everywhere",
               "taken in loads of water", "taken in water", "taken in a lot of water", "taking in loads of water",
@@ -1657,14 +1664,14 @@ DANGER_KIND_EXTRA: dict[str, list[str]] = {
               "water at the windows", "water's at the windows", "water is at the windows", "water's right round",
               "water right round", "water all round", "water's all round", "water all around", "water's all around",
               "yard's a lake", "is a lake", "'s a lake", "like a lake", "completely under", "cut off by water", "cut off by the water", "cut off by floodwater", "cut off by the flood", "over its banks", "over the banks", "out of its banks", "broken its banks", "burst their banks", "bursting its banks", "scoured", "scoured out", "water coming through the ceiling", "water through the ceiling", "water pouring through the ceiling",
-              "water coming through the roof", "ceiling's leaking", "ceiling is leaking", "water pouring through",
+              "water coming through the roof", "ceiling's leaking", "ceiling is leaking", "water pouring through", "bricks pouring off", "bricks pouring down", "masonry pouring off", "spurting through", "spurting out", "water spurting", "jetting out", "water jetting",
               "drowned out", "foot under", "feet under", "metre under", "metres under", "inches under",
               "water's at the top of", "water is at the top of",
               "water at the top of", "water's up to the top of", "water is up to the top of"],
     "access": ["jammed", "jammed solid", "blocking", "blocking the way", "blocking it", "blocks the way", "rocks across", "rocks across it", "rocks across the road", "debris across", "debris right across", "fallen oak", "fallen beech", "fallen ash", "fallen branch", "fallen branches"],
-    "ground": ["spoil's already through", "spoil is already through", "spoil's through", "spoil is through", "spoil's come through",
+    "ground": ["dead slippery", "really slippery", "covered in weed", "spoil's already through", "spoil is already through", "spoil's through", "spoil is through", "spoil's come through",
                "spoil has come through", "spoil's come down", "spoil has come down", "strewn with rocks", "strewn with boulders", "littered with rocks", "littered with boulders", "buried to the axles", "buried to its axles", "buried up to the axles", "buried up to its axles",
-               "sunk to the axles", "sunk to its axles", "bogged down", "there's a slip on", "there's been a slip on", "there is a slip on", "scree moving", "scree is moving", "ground is moving", "ground moving", "slope is moving", "hillside is moving", "rocks are coming off", "rocks are coming down", "rocks are falling", "dropping rocks", "rocks dropping", "dropping stones", "has sunk", "have sunk", "its sunk", "ground dropped", "ground has dropped", "ground dropping", "ground is dropping", "ground gone", "ground has gone", "ground just gone", "floor dropped", "floor has dropped", "hole opened up", "hole has opened up", "hole just opened up", "floor has opened", "floor's opened", "sinkhole", "sink hole", "ash a foot deep", "ash is knee deep", "ash knee deep", "ash's knee deep", "ash is ankle deep", "a foot of ash", "feet of ash", "inches of ash", "deep in ash", "covered in ash", "covered in stones", "covered in rocks", "covered in boulders", "covered with stones", "covered with rocks", "stones all over it", "rocks all over it", "heaped with ash", "buried in ash", "under the ash", "drifts of ash", "ash drifts", "half buried", "half-buried", "slurry", "full of slurry", "sludge", "silt", "full of silt"],
+               "sunk to the axles", "sunk to its axles", "bogged down", "there's a slip on", "there's been a slip on", "there is a slip on", "scree moving", "scree is moving", "ground is moving", "ground moving", "slope is moving", "hillside is moving", "rocks are coming off", "rocks are coming down", "rocks are falling", "dropping rocks", "rocks dropping", "dropping stones", "has sunk", "have sunk", "its sunk", "ground dropped", "ground has dropped", "ground dropping", "ground is dropping", "ground gone", "ground has gone", "ground just gone", "floor dropped", "floor has dropped", "hole opened up", "hole has opened up", "hole just opened up", "floor has opened", "floor's opened", "sinkhole", "sink hole", "ash a foot deep", "ash is knee deep", "ash knee deep", "ash's knee deep", "ash is ankle deep", "a foot of ash", "feet of ash", "inches of ash", "deep in ash", "covered in ash", "ash everywhere", "covered in stones", "covered in rocks", "covered in boulders", "covered with stones", "covered with rocks", "stones all over it", "rocks all over it", "heaped with ash", "buried in ash", "under the ash", "drifts of ash", "ash drifts", "half buried", "half-buried", "slurry", "full of slurry", "sludge", "silt", "full of silt"],
     "fallen": ["tree's down", "tree is down", "tree down", "trees are down", "trees down", "tree's come over",
                "tree has come over", "come over in the wind", "came over in the wind", "taken the top off", "took the top off", "knocked the top off", "blown the top off", "blew the top off",
                "stonework through", "masonry through", "through the glass roof", "debris through the roof",
@@ -1679,6 +1686,9 @@ DANGER_KIND_EXTRA: dict[str, list[str]] = {
 for _phrases in DANGER_KIND_EXTRA.values():  # each an undesirable cue as well, as the kinds' own phrases are
     for _p in _phrases:
         ROLE_CUES.setdefault(_p, UNDESIRABLE)
+# bees or wasps swarming at a place ("swarm at the beehives")
+for _p in ("swarm", "swarming", "bees swarming", "angry bees", "wasps swarming"):
+    ROLE_CUES.setdefault(_p, UNDESIRABLE)
 
 # Nouns for the way to a place, between a relation and its anchor ("guarding the way into reception")
 APPROACH_NOUNS = _keyed({"way", "approach", "approaches", "entrance", "road", "path", "route", "gate", "door"})
