@@ -759,7 +759,8 @@ class ReportAnalyzer:
             if norms[t + 1:t + 2] in (("it",), ("them",)) and t > 0 and norms[t - 1] in (
                     "cant", "cannot", "couldnt", "wont", "can", "could", "to", "dont", "didnt"):
                 continue  # "they can't open it from their side": a deed done to it, not ``opens off``
-            noun = not _same_stem(norms[t], hit[0].replace("_", " ").split()[0]) and not word.lower().endswith(("ed", "ing"))
+            noun = not _same_stem(norms[t], hit[0].replace("_", " ").split()[0]) \
+                and not word.lower().endswith(("ed", "ing"))
             anchor_hit = self._places.match_at(norms, t + 2) if noun and t + 2 < len(norms) else None
             if noun and t > 0 and norms[t - 1] in lx.DETERMINERS and norms[t + 1:t + 2] in (("the",), ("a",), ("an",)) \
                     and anchor_hit is not None and not any(
@@ -1634,7 +1635,7 @@ class ReportAnalyzer:
             b += 1  # "Gym roof's come down": the part of the place is the subject's head, the place said before it
         if not contracted and norms[b] in _PLACING_PREPOSITIONS and any(
                 self._places.match_at(norms, t) is not None for t in range(b + 1, min(len(norms), b + 4))):
-            return True  # "Graveyard behind Bethel is flooded", "Stop above the landing stage is our muster point"
+            return True  # "Graveyard behind Bethel is flooded": placed by another
         return toks.clause_start[b] or norms[b] in lx.COPULAS | lx.CREW_ACTION_VERBS \
             or self._cues.match_at(norms, b) is not None \
             or (norms[b] in lx.TELEGRAPHIC_LINKS and (self._cues.match_at(norms, b + 1) is not None
@@ -6916,7 +6917,8 @@ class ReportAnalyzer:
             said_of = next((t for t in range(b, min(end, b + 8)) if norms[t:t + 4] in (
                 ("what", "i", "said", "about"), ("what", "we", "said", "about"), ("what", "i", "told", "you"))), None)
             first_q = min((q.start_tok for q in after), default=None)
-            if first_q is not None and any(d in toks.gaps[t] for t in range(b + 1, first_q + 1) for d in ("...", "…")) \
+            if first_q is not None \
+                    and any(d in toks.gaps[t] for t in range(b + 1, first_q + 1) for d in ("...", "…")) \
                     and any(w in lx.NUMBER_WORDS or w == "one" for w in norms[b:first_q]):
                 continue  # "a scald victim at the boiling vats and, um, another one, no, sorry, just the one... the weigh
                 # shed is safe": the count right after the marker is the repair; the place after the pause is news
@@ -7686,7 +7688,8 @@ class ReportAnalyzer:
                 und = self._category_for_role(lx.UNDESIRABLE, "slumped, collapsed ground")
                 if und is not None:
                     cue = replace(cue, category=und, reason="ground slumped")  # "part of the face has slumped"
-            if source == "lexicon" and norms[a:b] in (("been", "hit", "by"), ("was", "hit", "by"), ("got", "hit", "by")) \
+            if source == "lexicon" and norms[a:b] in (("been", "hit", "by"), ("was", "hit", "by"),
+                                                      ("got", "hit", "by")) \
                     and cue.category == self._person_category and not self._person_before(norms, a) \
                     and not any(w in _PEOPLE_WORDS for w in norms[max(0, a - 8):a]) \
                     and (self._thing_before(norms, a, self._place_tokens) or a > 1 and norms[a - 1] == "that"
@@ -9729,7 +9732,8 @@ class ReportAnalyzer:
             and words[:2] in (["its", "not"], ["it", "isnt"], ["thats", "not"]) and bool(set(norms[b_after:e_after]) & lx.DISMISSALS)
 
     @staticmethod
-    def _repairs_uncued_statement(ex: Extraction, cues: list[CueMention], since: int, a: int, b: int, first_cue: int) -> bool:
+    def _repairs_uncued_statement(ex: Extraction, cues: list[CueMention], since: int, a: int, b: int,
+                                  first_cue: int) -> bool:
         """"an old lady with a broken hip, and the heating's out... no wait the heating's back on, they're sheltering
         people there": the repair begins by naming again the thing of a statement said after the last cue ("the
         heating"), so it corrects that statement, and the cue before it stands."""
