@@ -764,8 +764,7 @@ class ReportAnalyzer:
             anchor_hit = self._places.match_at(norms, t + 2) if noun and t + 2 < len(norms) else None
             if noun and t > 0 and norms[t - 1] in lx.DETERMINERS and norms[t + 1:t + 2] in (("the",), ("a",), ("an",)) \
                     and anchor_hit is not None and not any(
-                        norm_phrase(r.relation.replace("_", " ")) == norm_phrase(hit[0].replace("_", " "))
-                        and anchor_hit[1] in (r.subject, r.object) for r in self.kb.relations) and any(
+                        r.phrase == hit[0] and anchor_hit[1] in (r.subject, r.object) for r in self.kb.relations) and any(
                     t + 1 < k <= t + 6 and not any(toks.clause_start[m] for m in range(t + 1, k + 1)) for k in known):
                 continue  # "the water the dam holds back": a noun of a relation's name heading a description whose
                 # own words the tables list further on
@@ -10827,9 +10826,9 @@ class ReportAnalyzer:
             return -5.0  # "a man at the bakery reported smoke coming from the bank": where it comes from
         if c.end_tok <= p.start_tok:  # cue before place: "fire at the bakery" ("he fell off the uh the water tank")
             between = norms[c.end_tok : p.start_tok]
-            preps = lx.PREPOSITIONS | {"off"}
-            glue = all(w in preps or w in lx.DETERMINERS or w in lx.FILLERS or w in lx.COPULAS for w in between)
-            return len(between) - (2.5 if glue and any(w in preps for w in between) else 0)
+            glue = all(w in _BINDING_PREPOSITIONS or w in lx.DETERMINERS or w in lx.FILLERS or w in lx.COPULAS
+                       for w in between)
+            return len(between) - (2.5 if glue and any(w in _BINDING_PREPOSITIONS for w in between) else 0)
         # place before cue: "the bakery is on fire" (a hesitation is no distance: "the viaduct has, um, lost a parapet
         # into the marina")
         between = tuple(w for w in norms[p.end_tok : c.start_tok] if w not in lx.HESITATIONS)
@@ -11508,7 +11507,6 @@ def _vertical_sense(phrase: str) -> int | None:
 
 # The parts of a place a relation's name may say in other words ("the foot of" / "the bottom of" / "the base of")
 _PART_SYNONYMS = {"foot": ("bottom", "base"), "bottom": ("foot", "base"), "base": ("foot", "bottom")}
-# First words of the direction families' members ("below", "down the hill", "further inland")
 # Verbs of a check done by someone ("checked by the fire department": the doer, no place spoken of)
 _CHECKED_BY = frozenset({"checked", "inspected", "searched", "cleared", "surveyed", "assessed", "swept", "declared",
                          "passed", "approved", "certified", "signed"})
@@ -11516,9 +11514,12 @@ _CHECKED_BY = frozenset({"checked", "inspected", "searched", "cleared", "surveye
 _ADDING = frozenset({"too", "also", "as"})
 # Words that place a place by another ("Graveyard behind Bethel is flooded")
 _PLACING_PREPOSITIONS = frozenset({"behind", "beside", "next", "opposite", "above", "below", "beneath", "under", "near"})
-# Vehicles and crews that come and go through a place ("ambulance is coming in through the car park")
+# Vehicles that come and go through a place ("ambulance is coming in through the car park")
 _MOVING_VEHICLES = frozenset({"ambulance", "ambulances", "appliance", "appliances", "truck", "van", "bus", "coach",
                               "helicopter"})
+# Prepositions that bind a cue to the place after it ("he fell off the uh the water tank")
+_BINDING_PREPOSITIONS = frozenset(lx.PREPOSITIONS | {"off"})
+# First words of the direction families' members ("below", "down the hill", "further inland")
 _DIRECTION_BARE = frozenset(m.split()[0] for fam in lx.DIRECTION_FAMILIES.values() for m in fam)
 # The parts of a building that fall in ("the roof of the vehicle hangar is down": collapsed)
 _FALLING_PARTS = frozenset({"roof", "ceiling", "gable", "chimney", "spire", "tower", "canopy", "floor"})
