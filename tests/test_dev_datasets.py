@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev112) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev116) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -262,6 +262,22 @@ HOP_KILN_FARM_MUSEUM = ROOT / "knowledge_bases" / "hop_kiln_farm_museum"
 TIDE_MILL_QUAY = ROOT / "knowledge_bases" / "tide_mill_quay"
 ROPEWAY_MINE_CAMP = ROOT / "knowledge_bases" / "ropeway_mine_camp"
 SEA_BATHING_POOL = ROOT / "knowledge_bases" / "sea_bathing_pool"
+SEAPLANE_BASE = ROOT / "knowledge_bases" / "seaplane_base"
+SALT_MINE_MUSEUM = ROOT / "knowledge_bases" / "salt_mine_museum"
+CRICKET_GROUND_VILLAGE = ROOT / "knowledge_bases" / "cricket_ground_village"
+MUSSEL_FARM_BAY = ROOT / "knowledge_bases" / "mussel_farm_bay"
+LUMBER_FLUME_VALLEY = ROOT / "knowledge_bases" / "lumber_flume_valley"
+CHARCOAL_BURNERS_WOOD = ROOT / "knowledge_bases" / "charcoal_burners_wood"
+RAILWAY_ROUNDHOUSE = ROOT / "knowledge_bases" / "railway_roundhouse"
+BANANA_PLANTATION = ROOT / "knowledge_bases" / "banana_plantation"
+PEAT_CUTTING_MOSS = ROOT / "knowledge_bases" / "peat_cutting_moss"
+LIGHTHOUSE_CAUSEWAY = ROOT / "knowledge_bases" / "lighthouse_causeway"
+SILK_ROAD_CARAVAN_MARKET = ROOT / "knowledge_bases" / "silk_road_caravan_market"
+GRAVEL_PIT_NATURE_RESERVE = ROOT / "knowledge_bases" / "gravel_pit_nature_reserve"
+HOVERCRAFT_TERMINAL = ROOT / "knowledge_bases" / "hovercraft_terminal"
+STUD_DAIRY_SHOWGROUND = ROOT / "knowledge_bases" / "stud_dairy_showground"
+COPPER_MINE_TAILINGS_DAM = ROOT / "knowledge_bases" / "copper_mine_tailings_dam"
+FERRY_SLIPWAY_ISLAND = ROOT / "knowledge_bases" / "ferry_slipway_island"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -681,6 +697,22 @@ SETS = {
     "dev112/tide_mill_quay": _set("dev112/tide_mill_quay.jsonl", TIDE_MILL_QUAY, "tm112", TWENTY, sep=""),
     "dev112/ropeway_mine_camp": _set("dev112/ropeway_mine_camp.jsonl", ROPEWAY_MINE_CAMP, "rm112", TWENTY, sep=""),
     "dev112/sea_bathing_pool": _set("dev112/sea_bathing_pool.jsonl", SEA_BATHING_POOL, "sb112", TWENTY, sep=""),
+    "dev113/seaplane_base": _set("dev113/seaplane_base.jsonl", SEAPLANE_BASE, "sp113", TWENTY, sep=""),
+    "dev113/salt_mine_museum": _set("dev113/salt_mine_museum.jsonl", SALT_MINE_MUSEUM, "sm113", TWENTY, sep=""),
+    "dev113/cricket_ground_village": _set("dev113/cricket_ground_village.jsonl", CRICKET_GROUND_VILLAGE, "cr113", TWENTY, sep=""),
+    "dev113/mussel_farm_bay": _set("dev113/mussel_farm_bay.jsonl", MUSSEL_FARM_BAY, "mf113", TWENTY, sep=""),
+    "dev114/lumber_flume_valley": _set("dev114/lumber_flume_valley.jsonl", LUMBER_FLUME_VALLEY, "lf114", TWENTY, sep=""),
+    "dev114/charcoal_burners_wood": _set("dev114/charcoal_burners_wood.jsonl", CHARCOAL_BURNERS_WOOD, "cb114", TWENTY, sep=""),
+    "dev114/railway_roundhouse": _set("dev114/railway_roundhouse.jsonl", RAILWAY_ROUNDHOUSE, "rr114", TWENTY, sep=""),
+    "dev114/banana_plantation": _set("dev114/banana_plantation.jsonl", BANANA_PLANTATION, "bp114", TWENTY, sep=""),
+    "dev115/peat_cutting_moss": _set("dev115/peat_cutting_moss.jsonl", PEAT_CUTTING_MOSS, "pc115", TWENTY, sep=""),
+    "dev115/lighthouse_causeway": _set("dev115/lighthouse_causeway.jsonl", LIGHTHOUSE_CAUSEWAY, "lc115", TWENTY, sep=""),
+    "dev115/silk_road_caravan_market": _set("dev115/silk_road_caravan_market.jsonl", SILK_ROAD_CARAVAN_MARKET, "sr115", TWENTY, sep=""),
+    "dev115/gravel_pit_nature_reserve": _set("dev115/gravel_pit_nature_reserve.jsonl", GRAVEL_PIT_NATURE_RESERVE, "gp115", TWENTY, sep=""),
+    "dev116/hovercraft_terminal": _set("dev116/hovercraft_terminal.jsonl", HOVERCRAFT_TERMINAL, "ht116", TWENTY, sep=""),
+    "dev116/stud_dairy_showground": _set("dev116/stud_dairy_showground.jsonl", STUD_DAIRY_SHOWGROUND, "sg116", TWENTY, sep=""),
+    "dev116/copper_mine_tailings_dam": _set("dev116/copper_mine_tailings_dam.jsonl", COPPER_MINE_TAILINGS_DAM, "ct116", TWENTY, sep=""),
+    "dev116/ferry_slipway_island": _set("dev116/ferry_slipway_island.jsonl", FERRY_SLIPWAY_ISLAND, "fi116", TWENTY, sep=""),
 }
 
 
