@@ -5719,3 +5719,86 @@ def test_dev108_phenomena(kb_analyzers, kb, text, expected):
 def test_dev109_phenomena(kb_analyzers, kb, text, expected):
     """Stop 49: what the tuned dev109-dev112 sets showed (paraphrased), and guards the sweeps asked for."""
     assert claims(kb_analyzers[kb], text) == sorted(expected)
+
+
+@pytest.mark.parametrize(("kb", "text", "expected"), [
+    # how a person is hurt: broke a wrist, feeling faint, burned on both arms, hit in the face, trampled
+    ("salt_mine_museum", "water coming in along the roadway, and a guide slipped there and broke her wrist",
+     [("haulage road", "peril"), ("haulage road", "person_in_distress")]),
+    ("salt_mine_museum", "two visitors feeling faint in the carvings hall", [("sculpture gallery", "person_in_distress")]),
+    ("silk_road_caravan_market", "a porter in the spice hall is burned on both arms", [("spice hall", "stricken")]),
+    ("stud_dairy_showground", "a lad's been trampled in the cattle shed", [("cattle shed", "patient")]),
+    # overcome by fumes: the person, not a second danger
+    ("seaplane_base", "a mechanic overcome by fumes in the pump house", [("pump house", "person_in_distress")]),
+    # an animal that did it ("kicked by a cow") and a place named for animals ("the poultry tent") are no animal subject
+    ("stud_dairy_showground", "a stockman kicked by a cow in the cattle shed, head injury", [("cattle shed", "patient")]),
+    ("stud_dairy_showground", "a dog loose in the poultry tent, and an exhibitor has been bitten in there",
+     [("poultry tent", "patient"), ("poultry tent", "peril")]),
+    # dangers: a snake, a live building, treacherous ground, lines whipping about, stones flying, vapour
+    ("banana_plantation", "big snake seen in the nursery beds", [("nursery beds", "peril")]),
+    ("banana_plantation", "the pump house is live, nobody touch it", [("pump house", "peril")]),
+    ("hovercraft_terminal", "the lifeboat slip is treacherous, nobody use it", [("lifeboat slip", "peril")]),
+    ("lumber_flume_valley", "the donkey lines snapped and they're whipping around at the steam donkey",
+     [("steam donkey", "peril")]),
+    ("hovercraft_terminal", "stones flying all over the taxi rank, and a driver's been hit in the face",
+     [("taxi rank", "peril"), ("taxi rank", "person_in_need")]),
+    ("seaplane_base", "the pump room is thick with vapour", [("pump house", "peril")]),
+    # a glossary noun of a verb and its particle, said as the verb ("plough-in": "ploughed in")
+    ("hovercraft_terminal", "the craft has ploughed in on the hover ramp", [("hover ramp", "peril")]),
+    # leave to move is no safety; people going out to a place claim nothing of it
+    ("seaplane_base", "Delta Mike, you're cleared for take-off from the north dock, good flight", []),
+    ("salt_mine_museum", "fire in the ticket hall, and the shop staff are heading out to the car park",
+     [("ticket hall", "peril")]),
+    ("hovercraft_terminal", "we're at the lifeboat station, launching down the slip, man overboard off the groyne",
+     [("groyne", "person_in_need")]),
+    # people addressed by where they are, then told where to go
+    ("seaplane_base", "Everyone in the cafe and the car park, please make your way to the pilots' lodge, it's the "
+                      "muster point", [("pilots' lodge", "refuge")]),
+    # "passengers" is no "passenger car park"
+    ("hovercraft_terminal", "passengers are being walked up to the hover pad, it's safe up there", [("hover pad", "haven")]),
+    # a state of its own is the reason for the other place, no claim lent
+    ("silk_road_caravan_market", "The clinic's full, so the building next to the clinic is our aid station now.",
+     [("madrasa", "refuge")]),
+    # an all-clear that closes what was called off, or said of a jam broken loose, makes no place safe
+    ("banana_plantation", "the fire behind the cable station is out and nobody at the clinic needs the nurse, all clear", []),
+    ("lumber_flume_valley", "All clear on the flume trestle, the log jam's been broke loose.", []),
+    ("banana_plantation", "team three at the tank the pumps feed, no problems seen", []),
+    # "that one": the place the speaker moved on to
+    ("knowledge_base", "Moving on to the garage, yeah, that one's got flames round the pumps.", [("garage", "hazard")]),
+    # a pronoun after "below", where the head names the place reached; "where it ends"
+    ("lighthouse_causeway", "Rockfall at the old chapel, stones have come down onto the pad below it.",
+     [("chapel ruin", "peril"), ("helipad", "peril")]),
+    ("banana_plantation", "the cable line has snapped, and the station where it ends has collapsed",
+     [("cableway terminal", "peril"), ("overhead cableway", "peril")]),
+    # "it": the place spoken of, not the object of the relation describing it
+    ("seaplane_base", "the ramp that runs down from the hangar is cracked, and a man fell on the pad next to it, "
+                      "he's hurt",
+     [("slipway", "peril"), ("wash-down bay", "person_in_distress")]),
+    # a link that ends the other way from the relation's name ("draws ... from" against "pumps ... out to")
+    ("seaplane_base", "a leak at whatever the pump house draws its fuel from", [("fuel store", "peril")]),
+    # a named place on another it stands at: the second only says which
+    ("seaplane_base", "the crane on B dock is swinging loose", [("seaplane hoist", "peril")]),
+    # a verb of the description that is a cue word too ("comes down", "leaning", "coming down out of")
+    ("lumber_flume_valley", "the road coming down out of the cutting is washed out", [("skid road", "peril")]),
+    ("lumber_flume_valley", "a faller is pinned up where the skid road comes down from", [("timber show", "rescue_needed")]),
+    ("lumber_flume_valley", "a man with a crushed hand in the shed leaning on the one behind the bunkhouse",
+     [("filing shack", "rescue_needed")]),
+    # "building up": a verb, no building; a tender is a person
+    ("lumber_flume_valley", "someone missing at the log deck, and a jam building up at the rollway",
+     [("upper landing", "rescue_needed")]),
+    ("lumber_flume_valley", "relaying from the dam tender: the headbox is choked with a log jam", [("flume intake", "peril")]),
+    # a place broken off and repaired after the cue
+    ("banana_plantation", "this is Ana at the packing shed, we got a fire in the box-- no wait, in the generator shed",
+     [("generator shed", "peril")]),
+    # one more person; hesitations are no aside; a name without its article right after a cue
+    ("stud_dairy_showground", "heat exhaustion, two of them, in the grandstand, and one more at the trade stands",
+     [("grandstand", "patient"), ("trade stand avenue", "patient")]),
+    ("stud_dairy_showground", "heat exhaustion, uh, two of them, in the stand — the terraces, the grandstand",
+     [("grandstand", "patient")]),
+    ("stud_dairy_showground", "Stock breakout in pig lines, pigs everywhere.", [("pig shed", "peril")]),
+    ("stud_dairy_showground", "a gazebo blown into the crowd on the trade stands, three people hurt",
+     [("trade stand avenue", "patient"), ("trade stand avenue", "peril")]),
+])
+def test_dev113_phenomena(kb_analyzers, kb, text, expected):
+    """Stop 50: what the tuned dev113-dev116 sets showed (paraphrased)."""
+    assert claims(kb_analyzers[kb], text) == sorted(expected)

@@ -493,7 +493,8 @@ class ReportAnalyzer:
             if len(rest) >= 2:
                 entries.setdefault(rest, (term.category, "glossary"))
         for term in self.kb.glossary:
-            for form in _verb_forms(term.term) + _determined_forms(term.term) + _event_forms(term.term):
+            for form in _verb_forms(term.term) + _determined_forms(term.term) + _event_forms(term.term) \
+                    + _particle_verb_forms(term.term):
                 # "undercut": "the spate is undercutting its back wall"; "dropped plug": "she's dropped her plug"
                 entries.setdefault(norm_phrase(form), (term.category, "glossary"))
         for phrase in lx.NEUTRAL_PHRASES:
@@ -921,6 +922,9 @@ class ReportAnalyzer:
                     and b not in glossary_ends and not acronym and not heading and not self._telegraphic_subject(toks, norms, a, b) \
                     and not (log and (b - a >= 2 or prev in lx.PREPOSITIONS and len(norms[a]) >= 5)) \
                     and not (b - a >= 2 and prev in ("in", "at", "from") and a >= 2 and norms[a - 2] in ("live", "living", "lives", "stay", "staying")) \
+                    and not (b - a >= 2 and prev in ("in", "at", "inside") and a >= 2 and not toks.clause_start[a - 1] and any(
+                        (h := self._cues.match_at(norms[:a - 1], k)) is not None and h[0] == a - 1 and h[1][1] != "neutral"
+                        for k in range(max(0, a - 5), a - 1))) \
                     and not ((b - a >= 2 or len(norms[a]) >= 6) and (a == 0 or toks.sentence_start[a])
                              and toks.tokens[b - 1].text.lower().replace("’", "'").endswith("'s")) \
                     and not (b - a >= 2 and self._bare_pair(norms, a, b)) \
@@ -932,7 +936,8 @@ class ReportAnalyzer:
                 # stretch of trail" is the trail's)
                 # ("Jam tent's gone up": a name that opens its sentence as the subject, "the" left off; "both kilns" is
                 # "both the kilns")
-                # ("I live in toast rack, number 14": the article a learner of the language leaves out)
+                # ("I live in toast rack, number 14": the article a learner of the language leaves out; "Stock breakout
+                # in pig lines": a name of several words, right after a cue and "in")
                 # the KB wrote "the tower": "bell tower" is not it (a log drops articles: "fire LPG plant",
                 # "leak at bldg at mouth of galleria")
                 continue
@@ -1032,6 +1037,10 @@ class ReportAnalyzer:
         places.extend(self._definite_heads(toks, norms, places))
         places.extend(self._numbered_places(toks, norms, {i for p in places for i in range(p.start_tok, p.end_tok)}))
         places = [p for p in places if not _names_what_came(norms, p)]
+        # ("passengers are being walked up onto ...": people, not the "passenger car park" the word is part of)
+        places = [p for p in places if not (p.end_tok - p.start_tok == 1 and norms[p.start_tok] in _PEOPLE_OR_GROUPS
+                                            and p.via is None and norms[p.start_tok:p.end_tok] not in {
+                                                name_words(f) for f in self.kb.landmark_by_name[p.landmark].surface_forms})]
         for idx, p in enumerate(places):
             if p.end_tok < len(norms) and norms[p.end_tok] in lx.MODIFIED_BY and not toks.clause_start[p.end_tok] \
                     and norms[p.end_tok : p.end_tok + 2] not in lx.PART_OF_PLACE \
@@ -1109,6 +1118,7 @@ class ReportAnalyzer:
         self._relative_clause_anchors(ex, norms)
         self._way_ends(ex, norms)
         self._apposed_anchor(ex, norms)
+        self._locating_place(ex, norms)
         for idx, p in enumerate(ex.places):
             if p.status == "active" and p.via is None and norms[p.end_tok:p.end_tok + 2] in (
                     ("same", "thing"), ("same", "place"), ("same", "difference")) \
@@ -1452,6 +1462,24 @@ class ReportAnalyzer:
             return False
         return any(src == "glossary" and cb == b and ca < a and (ca == 0 or norms[ca - 1] not in lx.DETERMINERS)
                    for ca, cb, (_, src) in all_cues)
+
+    def _locating_place(self, ex: Extraction, norms: tuple[str, ...]) -> None:
+        """"The crane on B dock is swinging loose": a named place said "on" or "at" another that the KB relates to it
+        (the hoist stands at the end of the south dock); the second only says which one or where, a reference point."""
+        toks = ex.tokens
+        for idx, q in enumerate(ex.places):
+            if q.status != "active" or q.via is not None or q.start_tok < 2:
+                continue
+            k = q.start_tok - 1
+            if norms[k] in lx.ARTICLES:
+                k -= 1
+            if k < 1 or norms[k] not in ("on", "at") or any(toks.clause_start[t] for t in range(k, q.start_tok + 1)):
+                continue
+            p = next((p for p in ex.places if p.end_tok == k and p.status == "active" and p.via is None), None)
+            if p is None or p.landmark == q.landmark or (p.landmark, q.landmark) not in self._related_pairs \
+                    or any(o is not q and o.landmark == q.landmark and o.status == "active" for o in ex.places):
+                continue
+            ex.places[idx] = replace(q, status="reference", reason=f"reference point for '{p.text}'")
 
     def _apposed_anchor(self, ex: Extraction, norms: tuple[str, ...]) -> None:
         """"a woman down on the line the lift drops its fish onto, the lift that unloads the scow": a description
@@ -3473,7 +3501,7 @@ class ReportAnalyzer:
                 found = self._related_by_head(anchor, head)
                 if found[0] is not None or not partners:
                     return found
-            return self._partner_by_meaning(anchor, link, head) if partners else (None, None)
+            return self._partner_by_meaning(anchor, link, head, link_subject=inverse) if partners else (None, None)
         for i in order:
             if sims[i] < max(self.OPEN_RELATION_MIN_SIM, best - self.OPEN_RELATION_MARGIN):
                 break
@@ -3485,16 +3513,20 @@ class ReportAnalyzer:
                 # anchor with it in its names, "transfer tower", names the place meant)
                 return self._head_named_neighbour(anchor, norm(head), target, via) if head.isalpha() else (target, via)
         phrase, inv = meta[int(order[0])]
-        # (a link MiniLM only guesses at is read no further by height: "the gardens the Imperial looks out on")
-        found = self._follow(anchor, phrase, head, inverse=_reads_backwards(link, phrase, inv) != inverse, _vertical=False)
-        return found if found[0] is not None or not partners else self._partner_by_meaning(anchor, link, head)
+        # (a link MiniLM only guesses at is read no further by height: "the gardens the Imperial looks out on"; nor
+        # the other way round where its last word says the other way, "draws its fuel from" for ``pumps fuel out to``)
+        found = self._follow(anchor, phrase, head, inverse=_reads_backwards(link, phrase, inv) != inverse, _vertical=False,
+                             _loose=_ends_opposite(link, phrase))
+        return found if found[0] is not None or not partners \
+            else self._partner_by_meaning(anchor, link, head, link_subject=inverse)
 
     PARTNER_MIN_SCORE = 0.55
     PARTNER_MARGIN = 0.08
 
     def _partner_by_meaning(self, anchor: str, link: str, head: str, min_score: float | None = None,
                             margin: float | None = None,
-                            anchor_is_object: bool | None = None) -> tuple[str | None, str | None]:
+                            anchor_is_object: bool | None = None,
+                            link_subject: bool | None = None) -> tuple[str | None, str | None]:
         """A linking phrase no relation form is close to, read among the anchor's own relations only, where the link
         has a word that may be its verb: each place the KB relates to the anchor scores the MiniLM similarity of the
         link to that relation's name plus that of the head noun to the place's best name or description ("the high
@@ -3502,7 +3534,10 @@ class ReportAnalyzer:
         station; "the concrete box the hut gets its water from": the water intake that ``pipes_water_down_to`` it).
         The best wins if it scores ``PARTNER_MIN_SCORE`` (or ``min_score``) and leads the next by ``PARTNER_MARGIN``
         (or ``margin``). ``anchor_is_object`` says where the anchor stands to an active verb of supply in the link
-        ("the building that feeds the tank": its object); only relations that way round are read then."""
+        ("the building that feeds the tank": its object); only relations that way round are read then.
+        ``link_subject`` says whether the anchor is the link's subject ("wherever the pump house draws its fuel
+        from"); a relation whose name ends the other way ("pumps fuel out to") is read only with the anchor at its
+        other end then."""
         assert self.embedder is not None
         words = link.split()
         if not any(_verb_like(w) or w in _SUBJECT_PRONOUNS and k + 1 < len(words)
@@ -3526,6 +3561,8 @@ class ReportAnalyzer:
             if passive and (rel.subject == anchor) == _named_passive(rel.phrase):
                 continue  # (a relation named in the passive itself, "is fed by", has its doer as object)
             if flowing and _anchor_receives(rel, anchor) != anchor_is_object:
+                continue
+            if link_subject is not None and _ends_opposite(link, rel.phrase) and (rel.subject == anchor) == link_subject:
                 continue
             other = rel.object if rel.subject == anchor else rel.subject
             score = float(self._partner_relation_vectors[rel.phrase] @ v_link) \
@@ -3806,12 +3843,18 @@ class ReportAnalyzer:
         # dome the mirror shop recoats"; not one read forwards, "the bridge to the south wing", a relation's own tail)
         self._resolve_open_from(ex, toks, norms, place_tokens, marker_tokens, cue_tokens,
                                 [p for p in ex.places if p.status == "active"
-                                 and (p.via is None or p.via.endswith(f" {p.landmark}"))])
+                                 and (p.via is None or p.via.endswith(f" {p.landmark}")
+                                      or norm_phrase(p.text)[:2] in (("the", "one"), ("the", "place")))])
+        # (and one read forwards that is a noun phrase of its own: "the shed leaning on the one behind the bunkhouse")
         self._resolve_open_from(ex, toks, norms, place_tokens, marker_tokens, cue_tokens,
                                 [p for p in ex.places[first:] if p.status == "active"])
 
     def _resolve_open_from(self, ex: Extraction, toks: Tokens, norms: tuple[str, ...], place_tokens: set[int],
                            marker_tokens: set[int], cue_tokens: set[int], anchors: list[PlaceMention]) -> None:
+        def verb_after_head(i: int) -> bool:  # ("the shed leaning on ...": an "-ing" word right after "the" and a noun)
+            return norms[i].endswith("ing") and i >= 2 and norms[i - 1] in lx.GENERIC_HEADS | self._place_nouns() \
+                and norms[i - 2] in lx.ARTICLES and (i - 1) not in place_tokens | cue_tokens
+
         for anchor in sorted(anchors, key=lambda p: -p.start_tok):
             j = anchor.start_tok
             while j > 0 and norms[j - 1] in lx.DETERMINERS and anchor.start_tok - j < 2:
@@ -3826,7 +3869,12 @@ class ReportAnalyzer:
             open_k = None  # the nearest plain noun after "the", if no generic head stands further back
             while k > 0 and j - k < 6:
                 w = norms[k - 1]
-                if (k - 1) in place_tokens or (k - 1) in marker_tokens or (k - 1) in cue_tokens or toks.clause_start[k]:
+                # (a participle right after "the" and a head noun is the link's verb, though a cue word: "the shed
+                # leaning on the one behind the bunkhouse")
+                participle = verb_after_head(k - 1) or k >= 4 and verb_after_head(k - 2) \
+                    and w in ("down", "up", "out", "off", "over", "back", "round", "in")  # ("the road coming down out of")
+                if (k - 1) in place_tokens or (k - 1) in marker_tokens or (k - 1) in cue_tokens and not participle \
+                        or toks.clause_start[k]:
                     break
                 if w in lx.GENERIC_HEADS and k - 1 > 0 and norms[k - 2] in lx.DETERMINERS:
                     break
@@ -3924,12 +3972,15 @@ class ReportAnalyzer:
                 continue  # "the shop the pharmacy ...", not "shop the pharmacy"
             e = anchor.end_tok
             m = None
+            verb_s = e < len(norms) and toks.tokens[e].text.lower().endswith("s") \
+                and not toks.tokens[e].text.lower().endswith(("'s", "’s"))
             for end in range(e + 2, min(e + 6, len(norms)) + 1):
                 # (a cue word as the clause's verb is a verb: "the car park the lorry park spills into")
                 if any(i in place_tokens or i in marker_tokens or (i > e and toks.clause_start[i])
-                       or i in cue_tokens and not (i == e and toks.tokens[i].text.lower().endswith("s")
-                                                   and not toks.tokens[i].text.lower().endswith(("'s", "’s")))
+                       or i in cue_tokens and not (i == e and verb_s or i == e + 1 and verb_s and norms[i] in (
+                           "down", "up", "out", "off", "over", "back", "round", "in"))
                        for i in range(e, end)):
+                    # (a cue word as the clause's verb, with its particle: "up where the skid road comes down from")
                     break
                 # ("the quay that the ice plant makes the ice for -", "the car park the lorry park spills into when
                 # it's full": a preposition that ends the clause)
@@ -4065,6 +4116,8 @@ class ReportAnalyzer:
                     break
             if head is None:
                 continue
+            if norms[head] == "building" and norms[head + 1:head + 2] == ("up",) and head >= 1 and norms[head - 1] not in lx.ARTICLES:
+                continue  # "a jam building up at the rollway": a verb, the jam building up there; no building
             if norms[head] == "ground" and norms[max(0, head - 2):head] == ("on", "the"):
                 continue  # "he's on the ground at the bottom of it": where he lies, by the anchor, no other place
             if norms[head] == norms[anchor.end_tok - 1] and all(norms[i] in lx.DETERMINERS | lx.FILLERS
@@ -4296,6 +4349,13 @@ class ReportAnalyzer:
                                   if {norms[head], modifier} <= self._description_words()[n]}
             # ("the pub that's the local for caulkers' terrace": the one its description calls a pub)
             pool = named or head_described or related
+            if not between and end > anchor.end_tok:
+                # ("whatever the pump house draws its fuel from": not the place it ``pumps fuel out to``, a relation
+                # whose name ends the other way round, with the anchor its subject)
+                said = " ".join(norms[anchor.end_tok:end])
+                pool = {n: v for n, v in pool.items() if not (_ends_opposite(said, phrases[n]) and any(
+                    r.subject == anchor.landmark and r.object == n and r.phrase == phrases[n] for r in self.kb.relations))} \
+                    or pool
             if len(pool) > 1 and any(w in _SUPPLY_VERBS for w in between[:3]) and "by" not in between:
                 # "the building that feeds the tank": a verb of supply before the anchor, the anchor its object; only
                 # a place that supplies the anchor (not one the anchor supplies)
@@ -4422,13 +4482,28 @@ class ReportAnalyzer:
             owned = raw in ("its", "their") and norms[k - 1] in self._place_nouns() | lx.GROUND_HEADS | {"land"} \
                 and (norms[k - 2] in lx.ARTICLES or norms[k - 2] == "of" and norms[k - 4:k - 2] in (("the", "bit"),)) \
                 and k + 2 < len(norms) and _verb_like(toks.tokens[k + 2].text) and not toks.clause_start[k + 1]
-            contact = contact or ends or whatever_of or owned or plural
+            # ("the cable line is down, and the station where it ends has half collapsed": "where", then the pronoun)
+            where_it = raw == "it" and norms[k - 1] == "where" and norms[k - 3] in lx.ARTICLES \
+                and norms[k - 2] in self._place_nouns() | lx.GENERIC_HEADS and k + 1 < len(norms) \
+                and toks.tokens[k + 1].text.lower().endswith(("s", "ed")) and toks.tokens[k + 1].text.isalpha() \
+                and norms[k + 1] not in lx.COPULAS | lx.FUNCTION_WORDS and not toks.clause_start[k + 1]
+            contact = contact or ends or whatever_of or owned or plural or where_it
             if not contact and (raw not in ("its", "their") or norms[k - 1] not in ("where", "that", "which")) \
                     or k in blocked or toks.clause_start[k] or toks.clause_start[k - 1]:
                 continue
             # (the clause may open its sentence on the head itself: "Flashover in the plant. Whatever feeds it the
             # electric -- that's alight too")
             last = _sole_antecedent(ex, toks, k - 1 if whatever_of or contact and not (ends or owned) else k - 2, k)
+            if where_it:
+                # (the place spoken of, not a reference point of its description: "the bridge over the lusk has lost
+                # its handrail, and the field where it comes down on the other bank is under")
+                last = max((p for p in ex.places if p.end_tok <= k - 3 and p.status == "active"
+                            and toks.sentence_of[p.start_tok] == toks.sentence_of[k]
+                            and not (p.start_tok >= 4 and norms[p.start_tok - 1] in lx.ARTICLES
+                                     and norms[p.start_tok - 2] in lx.PREPOSITIONS
+                                     and norms[p.start_tok - 3] not in lx.FUNCTION_WORDS
+                                     and norms[p.start_tok - 4] in lx.ARTICLES)),
+                           key=lambda p: p.end_tok, default=None)
             if last is None:
                 continue  # (none, or another place said between: which one "its" means is not sure)
             if plural and (not last.text.lower().rstrip("'’").endswith("s") or any(
@@ -4466,6 +4541,13 @@ class ReportAnalyzer:
                 out.append(self._mention(toks, k - 1, k + 1, next(iter(said)), status="reference",
                                          reason=f"{_THAT_MODIFIER}{norms[k]}'"))
         return out
+
+    def _head_names_target(self, anchor: str, phrase: str, head_text: str, flipped: bool, head: str) -> bool:
+        """"stones have come down onto the pad below it": the place the relation leads to from the place "it" means
+        is one a name of which ends in the head noun (the landing pad), so a bare "below" is the KB's relation."""
+        target = self._follow(anchor, phrase, head_text, inverse=flipped)[0]
+        return target is not None and any(name_words(f)[-1:] == (head,)
+                                          for f in self.kb.landmark_by_name[target].surface_forms)
 
     @staticmethod
     def _names_other_object(toks: Tokens, norms: tuple[str, ...], b: int) -> bool:
@@ -4657,7 +4739,9 @@ class ReportAnalyzer:
         # ("the old workings overlooking the holiday park": an adjective between)
         if not generic and words and len(words) <= 3 and after_article \
                 and (norms[a:b] not in lx.AMBIGUOUS_HEADLESS or (words[-1],) in self._shared_tails()
-                     or words[-1] in _SEGMENT_HEADS):  # ("cracked along the stretch by the pump house")
+                     or words[-1] in _SEGMENT_HEADS  # ("cracked along the stretch by the pump house")
+                     or pronoun and anchor is not None and self._head_names_target(anchor.landmark, phrase, head_text,
+                                                                                   flipped, words[-1])):
             # ("the platform underneath us": a word several names end in heads a description even before
             # a bare "underneath")
             # "the stretch seaward of the fish market": any plain noun after an article heads a description
@@ -5012,8 +5096,10 @@ class ReportAnalyzer:
         spatial = lx.PREPOSITIONS | set(lx.RELATION_ADVERBS) | lx.SPATIAL_WORDS | lx.PRONOUNS | lx.FILLERS
         if not any(len(w) >= 4 and w.isalpha() and w.lower() not in spatial for w in words[rel_start:]):
             return None, None  # ("right under it": only where, no verb for MiniLM to tell relations apart by)
+        # (not a relation whose name ends the other way round: "whatever the pump house draws its fuel from" is no
+        # place it ``pumps fuel out to``)
         cands = [(rel.subject if not inverse else rel.object, rel) for rel in self.kb.relations
-                 if (rel.object if not inverse else rel.subject) == anchor]
+                 if (rel.object if not inverse else rel.subject) == anchor and not _ends_opposite(said.lower(), rel.phrase)]
         if not cands:
             return None, None
         vecs = self.embedder.embed([said] + [rel.phrase for _, rel in cands])
@@ -5503,6 +5589,9 @@ class ReportAnalyzer:
             # "the park behind the warehouse. Across the street from it": the pronoun takes up the place
             # spoken of, not the reference point of its description
             before = [p for p in before if p.status != "reference"] or before
+            # (nor one said as the object of a relation after a named place, its description not read yet: "cracks
+            # across the ramp that runs down from the hangar ... a mechanic fell on the pad next to it")
+            before = [p for p in before if not self._named_relation_object(ex, norms, p)] or before
             if self._awaits_description(ex, norms, before, b):
                 # "The tank standing over the baler shed has split, and the shed underneath it is flooding": a place
                 # said as another's reference point, that one not yet read, and a new clause on "and"; the pronoun
@@ -5517,6 +5606,49 @@ class ReportAnalyzer:
                 ante = max(before, key=lambda p: p.end_tok)
                 return ante, j + 1, True
         return None, b, False
+
+    @staticmethod
+    def _addressed_list(norms: tuple[str, ...], segs: list[tuple[int, int]], k: int,
+                        seg_places: dict[int, list[PlaceMention]]) -> bool:
+        """Is segment ``k`` (or the list it belongs to) the people a call addresses, by where they are, before it
+        tells them where to go: "Passengers in the waiting cabin, the cafe and the car park, please make your way to
+        the pilots' lodge"?"""
+        def bare(j: int) -> bool:  # a list member: its place and "and", "the", "or" only
+            taken = {i for p in seg_places.get(j, []) for i in range(p.start_tok, p.end_tok)}
+            return bool(taken) and all(norms[i] in ("and", "or", "the", "a") or norms[i] in lx.FILLERS or i in taken
+                                       for i in range(*segs[j]))
+        j = k
+        while j > 0 and bare(j):
+            j -= 1
+        if not seg_places.get(j):
+            return False
+        first = min(p.start_tok for p in seg_places[j])
+        opening = [w for w in norms[segs[j][0]:first] if w not in lx.FILLERS]
+        if opening[:1] in (["all"], ["any"]):
+            opening = opening[1:]
+        if len(opening) < 3 or opening[0] not in _PEOPLE_OR_GROUPS | {"everyone", "everybody", "anyone", "anybody"} \
+                or opening[1] not in ("in", "at", "on", "inside") or opening[2] not in lx.ARTICLES or len(opening) > 3:
+            return False
+        m = k + 1
+        while m < len(segs) and bare(m):
+            m += 1
+        told = [w for w in norms[segs[m][0]:segs[m][1]] if w not in lx.FILLERS] if m < len(segs) else []
+        return told[:1] == ["please"] or told[:3] == ["make", "your", "way"] \
+            or told[:1] in (["proceed"], ["evacuate"]) or told[:2] in (["head", "to"], ["go", "to"], ["move", "to"])
+
+    def _named_relation_object(self, ex: Extraction, norms: tuple[str, ...], p: PlaceMention) -> bool:
+        """Is ``p`` the object of a relation phrase said right after another place named in the same clause ("the ramp
+        that runs down from the hangar": the hangar), that is, the reference point of a description of a named place?"""
+        toks = ex.tokens
+        for q in ex.places:
+            if q is p or q.status != "active" or q.landmark == p.landmark or not 0 < p.start_tok - q.end_tok <= 7 \
+                    or any(toks.clause_start[t] for t in range(q.end_tok, p.start_tok + 1)):
+                continue
+            for t in range(q.end_tok, p.start_tok):
+                h = self._relations.match_at(norms, t)
+                if h is not None and p.start_tok - h[0] <= 1 and all(norms[i] in lx.ARTICLES for i in range(h[0], p.start_tok)):
+                    return True
+        return False
 
     def _awaits_description(self, ex: Extraction, norms: tuple[str, ...], before: list[PlaceMention], b: int) -> bool:
         """Should a pronoun ending at ``b`` wait for a description not read yet? Its one antecedent so far is said as
@@ -7848,10 +7980,18 @@ class ReportAnalyzer:
         out = []
         for c in claims:
             if c.cue.text.lower().replace("-", " ") == "all clear" and c.cue.source == "lexicon" and any(
-                    d.place.landmark == c.place.landmark and d.cue.end_tok <= c.cue.start_tok <= d.cue.end_tok + 12
+                    d.place.landmark == c.place.landmark and (d.cue.end_tok <= c.cue.start_tok <= d.cue.end_tok + 12
+                                                              or c.cue.end_tok <= d.cue.start_tok <= c.cue.end_tok + 8)
                     and toks.sentence_of[d.cue.start_tok] == toks.sentence_of[c.cue.start_tok]
                     and self.kb.category_by_name[d.cue.category].role == Role.UNDESIRABLE for d in denied):
                 continue
+            a, b = c.cue.start_tok, c.cue.end_tok
+            if c.cue.text.lower().replace("-", " ") == "all clear" and c.cue.source == "lexicon" and toks.clause_start[a] \
+                    and c.place.end_tok <= a and all(toks.sentence_of[t] != toks.sentence_of[a] or toks.norms(t, t + 1)[0]
+                                                     in lx.FILLERS for t in range(b, len(toks))) \
+                    and any(d.cue.end_tok <= a and toks.sentence_of[d.cue.start_tok] == toks.sentence_of[a] for d in denied):
+                continue  # "the fire round the back of the cable station is out, and the nurse says nobody on the pitch
+                # needs her, all clear": an all-clear closing what was called off sums it up; no place said safe
             out.append(c)
         return out
 
@@ -8327,7 +8467,12 @@ class ReportAnalyzer:
         """An animal word before token ``a`` in its clause, with no person word between: "the bulls are chained in
         there screaming", "The lions in the barn across the yard from the horse lines are panicking"."""
         they = False
+        # (a word that only qualifies a place's name, "the poultry tent", "the cattle shed"; not "the goats" said of a
+        # place named so)
+        places = {i for p in getattr(self, "_places_now", []) for i in range(p.start_tok, p.end_tok - 1)}
         for j in range(a - 1, max(-1, a - 25), -1):
+            if j in places or j >= 2 and norms[j - 1] in lx.ARTICLES and norms[j - 2] == "by":
+                continue  # (or an animal that did it, "kicked by a cow")
             if norms[j] in ("they", "theyre", "theyve", "them"):
                 they = True  # (whoever "they" are: the sentence before says)
                 continue
@@ -8514,9 +8659,13 @@ class ReportAnalyzer:
         # "the kids from the school are all out": got out, nobody left to guess a claim for
         negated.update(i for i in range(len(norms) - 1) if norms[i + 1] == "out" and norms[i] in lx.GOT_OUT_BEFORE)
         asking = self._question_sentences(toks)
+        # ("team three at the tank the pumps feed, moving on to the hangar next, no problems seen": all well there)
+        well = {toks.sentence_of[i] for i in range(len(norms)) if norms[i:i + 2] in _ALL_WELL}
         for p in todo:
             if toks.sentence_of[p.start_tok] in asking:
                 continue  # "is the health centre still taking walk-ins?": a question is no claim to guess at
+            if toks.sentence_of[p.start_tok] in well:
+                continue  # (said to be well)
             if p.start_tok == 0 and p.via is None and p.end_tok < len(toks) and toks.gaps[p.end_tok].strip().startswith(","):
                 nxt = next((w for w in norms[p.end_tok:] if w not in lx.FILLERS), "")
                 if nxt in lx.RADIO_CALL_WORDS:
@@ -8905,9 +9054,13 @@ class ReportAnalyzer:
         for i in range(len(norms)):
             n = 3 if norms[i : i + 3] in (("a", "new", "one"), ("a", "second", "one"), ("one", "more", "one")) else \
                 2 if norms[i : i + 2] in (("another", "one"), ("new", "one")) else 0
+            # ("heat exhaustion, two of them, in the grandstand, and one more at the trade stands": one more person)
+            more = not n and norms[i:i + 2] == ("one", "more") and norms[i + 2:i + 3] in (("at",), ("in",), ("on",), ("inside",))
+            n = 2 if more else n
             if not n or taken.intersection(range(i, i + n)):
                 continue
-            before = [c for c in cues if c.end_tok <= i and i - c.end_tok <= 12]
+            before = [c for c in cues if c.end_tok <= i and i - c.end_tok <= (24 if more else 12)
+                      and (not more or self.kb.category_by_name[c.category].role == Role.CRITICAL)]
             if not before:
                 continue
             src = max(before, key=lambda c: c.end_tok)
@@ -9975,6 +10128,7 @@ class ReportAnalyzer:
 
         pairs: list[Claim] = []
         claimed_places: set[int] = set()
+        broken_off: set[int] = set()  # cue segments whose place broke off and was repaired after them
         handled: set[int] = set()
         for c in cues:
             if c.status != "active":
@@ -10082,6 +10236,20 @@ class ReportAnalyzer:
                     pairs.extend(Claim(p, c) for p in seg_places[nxt] for c in cs)
                     claimed_places.update(p.start_tok for p in seg_places[nxt])
                     continue
+            fix = k + 1  # (the repair may stand as a segment of its own: "no wait, in the generator shed")
+            if fix < len(segs) and not seg_places.get(fix) and not seg_cues.get(fix) and segs[fix][1] - segs[fix][0] <= 3:
+                fix += 1
+            if b - a >= 3 and norms[b - 3] in lx.PREPOSITIONS and norms[b - 2] in lx.ARTICLES and norms[b - 1].isalpha() \
+                    and norms[b - 1] not in lx.FUNCTION_WORDS and not seg_places.get(k) and fix < len(segs) \
+                    and any(d in toks.gaps[b] for d in ("-", "—", "–")) and seg_places.get(fix) \
+                    and any(segs[k + 1][0] <= ma <= segs[k + 1][0] + 1 for ma, _, _ in ex.markers) \
+                    and sentence_of[segs[fix][0]] == sentence_of[a]:
+                # "we got a, like, a fire in the box-- no wait, in the generator shed": a place broken off and
+                # repaired; the place said in the repair has the claim
+                pairs.extend(Claim(p, c) for p in seg_places[fix][:1] for c in cs)
+                claimed_places.add(seg_places[fix][0].start_tok)
+                broken_off.add(k)
+                continue
             nxt, steps, opened = k + 1, 0, False
             cats = {c.category for c in cs}
             while nxt < len(segs) and steps < 4 and not seg_places.get(nxt) \
@@ -10114,7 +10282,9 @@ class ReportAnalyzer:
                 (norms[i] in lx.STOREY_WORDS and ("on", "the") in (norms[i - 2:i], norms[i - 3:i - 1])
                  or norms[i] in ("first", "second", "third", "fourth", "fifth", "top") and norms[i - 2:i] == ("on", "the"))
                 for i in range(max(a, 3), b))  # ("we're at the guest house, two casualties on the second floor")
-            if (first in ("it", "its", "there", "thats", "theres") or storey) and k > 0:
+            that_one = first == "that" and norms[first_at + 1:first_at + 2] in (("one",), ("ones",))
+            if (first in ("it", "its", "there", "thats", "theres") or storey or that_one) and k > 0:
+                # ("Moving on to the garage, yeah, that one's got actual flames": the place the speaker came to)
                 # "standing by at the garage, it is safe": a position names the place the pronoun claims
                 # ("we're at the bank and it's on fire"; "We're at the bank. It's on fire.")
                 opens = toks.sentence_start[first_at] if first_at < b else False
@@ -10397,11 +10567,20 @@ class ReportAnalyzer:
             if len(tail) >= 3 and set(tail[:3]) & {"got", "has", "have", "is", "was", "are", "had"} \
                     and len(seg_places.get(k, [])) == 1 and not {"too", "also", "well", "same"} & set(tail):
                 continue  # "the hotel's got the gas leak, the bank's just got its alarm ringing": a predicate of its own
+            if tail[1 if tail[:1] in (["is"], ["s"], ["was"], ["are"], ["re"]) else 0:] in (
+                    ["full"], ["packed"], ["rammed"], ["closed"], ["shut"], ["full", "up"], ["locked"]) \
+                    and len(seg_places.get(k, [])) == 1:
+                continue  # "The clinic's full, uh, so the building next to the clinic is now our second aid station":
+                # a state of its own, the reason for the other place
             if len(tail) >= 3 and set(tail[:4]) & {"went", "stopped", "tripped", "failed", "died", "cut"} \
                     and tail[0] in ("lights", "light", "power", "electric", "electrics", "alarm", "alarms", "radio", "phone",
                                     "phones", "pump", "pumps", "engine", "generator") \
                     and len(seg_places.get(k, [])) == 1 and not {"too", "also", "well", "same"} & set(tail):
                 continue  # "smoke coming off the genny ... and the tower lights just went out": what failed there
+            if self._addressed_list(norms, segs, k, seg_places):
+                self._non_report_tokens.add(p.start_tok)  # (nor a claim guessed for it)
+                continue  # "Passengers in the waiting cabin, the cafe and the car park, please make your way to the
+                # pilots' lodge": where the people told to move are, nothing said of them
             done_to = [w for w in norms[max(0, np0 - 4):np0] if w not in lx.FILLERS]
             if len(done_to) >= 2 and done_to[-1] in lx.CREW_ACTION_VERBS \
                     and done_to[-2] in ("we", "weve", "ive", "i", "theyve", "they", "have", "ve"):
@@ -10442,6 +10621,9 @@ class ReportAnalyzer:
                     and sentence_of[q.start_tok] == sentence_of[segs[donor][0]] for q in ex.places):
                 continue  # "this is Jean at the co-op, we've got ammonia in the, in the cave two — no, sorry, cave
                 # one": the cue's clause breaks off before its own place, then repaired; the place before lends nothing
+            if donor is not None and donor in broken_off:
+                continue  # (nor the cue whose own place broke off and was repaired: "this is Ana at the packing shed,
+                # we got a fire in the box-- no wait, in the generator shed")
             if donor is not None and donor > k and self._speaker_here(norms, p) and any(
                     q.status == "active" and q.landmark != p.landmark and p.end_tok <= q.start_tok < segs[donor][0]
                     for q in ex.places):
@@ -11106,13 +11288,16 @@ class ReportAnalyzer:
                         return later  # "And there's sparks and smoke coming off the water tower."
                 return j
         # else the next one in the same sentence ("on fire, the bakery"), over a short aside
-        j = k + 1
-        while j < len(segs) and j - k <= 3 and sentence_of[segs[j][0]] == sentence_of[segs[k][0]]:
+        j, steps = k + 1, 1
+        while j < len(segs) and steps <= 3 and sentence_of[segs[j][0]] == sentence_of[segs[k][0]]:
             if seg_places.get(j):
                 # ("Smoke and sparks from the box the food stalls back onto": a list of dangers said of its place)
                 return j if not seg_cues.get(j) or j == k + 1 and _cue_list_into(k, j, segs, seg_cues, norms) else None
             if seg_cues.get(j):
                 return None
+            # (a segment of hesitations only is no aside: "heat exhaustion, uh, two of them, in the stand — the
+            # terraces, the grandstand")
+            steps += any(w not in lx.FILLERS for w in norms[segs[j][0]:segs[j][1]])
             j += 1
         return None
 
@@ -11242,6 +11427,16 @@ def _synonym_forms(kb: KnowledgeBase) -> list[tuple[tuple[str, ...], str]]:
         name = next(iter(owners))
         out.extend(((k,), name) for k in sorted(keys - used))
     return out
+
+
+def _particle_verb_forms(term: str) -> list[str]:
+    """A glossary term that names a verb and its particle as one noun, said as the verb: "plough-in" -> "ploughed in",
+    "ploughing in", "ploughs in" ("the craft's ploughed in on the ramp"); "cave-in" -> "caved in"."""
+    words = term.strip().lower().replace("-", " ").split()
+    if len(words) != 2 or "-" not in term or words[1] not in ("in", "out", "up", "off", "over", "down") \
+            or not words[0].isalpha() or len(words[0]) < 3:
+        return []
+    return [f"{v} {words[1]}" for v in _verb_forms(words[0])]
 
 
 def _verb_forms(term: str) -> list[str]:
@@ -11482,6 +11677,9 @@ def _cue_list_into(k: int, later: int, segs: list[tuple[int, int]], seg_cues: di
     return any(c.start_tok == i for c in seg_cues.get(later, []))
 
 
+# A sentence that says all is well guesses no claim for its places ("..., no problems seen")
+_ALL_WELL = frozenset({("no", "problems"), ("no", "problem"), ("no", "issues"), ("nothing", "wrong"), ("all", "quiet"),
+                       ("no", "damage"), ("nothing", "to")})
 _PERSON_WORDS = frozenset(lx.PERSON_NOUNS) | {"pensioner", "residents", "neighbour", "neighbor", "tenant", "tenants",
                                               "lady", "gentleman", "family", "pupil", "kid", "child", "children"}
 # Any word for people, a group said as a subject too ("the men in there", "the folk at the chapel")
@@ -11934,7 +12132,16 @@ _IRREGULAR_PARTICIPLES = frozenset({"hidden", "built", "stuck", "tucked", "set",
 def _reads_backwards(link: str, phrase: str, inverse: bool) -> bool:
     """The direction of a relation form as a linking phrase says it: an antonym in the phrase
     ("downhill" against "uphill") reads it the other way."""
-    return not inverse if any(lx.ANTONYMS.get(w) in phrase.split() for w in link.split()) else inverse
+    flip = any(lx.ANTONYMS.get(w) in phrase.split() for w in link.split()) != _ends_opposite(link, phrase)
+    return not inverse if flip else inverse
+
+
+def _ends_opposite(link: str, phrase: str) -> bool:
+    """Does a linking phrase end on "from" where a relation name ends on "to" (or the other way round)? "wherever
+    the pump house draws its fuel from" said against ``pumps fuel out to``: the fuel comes the other way."""
+    ends = link.split()[-1:], phrase.replace("_", " ").split()[-1:]
+    return ends[0] == ["from"] and ends[1] in (["to"], ["into"], ["onto"]) \
+        or ends[1] == ["from"] and ends[0] in (["to"], ["into"], ["onto"])
 
 
 def _name_head(form: str) -> str:

@@ -32,7 +32,7 @@ def _add(role: str, phrases: str) -> None:
 
 
 _add(UNDESIRABLE, """
-gone live|gone live again|is live again|went live again|
+gone live|gone live again|is live again|went live again|is live|s live|are live|still live|
 have come off the|has come off the|running brown|properly under|slid right across|slid across the|come clean off|roof's come off|roof has come off|roof came off|broken straight through its bank|broken through its bank|broken through the bank|is also water|scouring the bank|scouring the bank away|metre above normal|metres above normal|foot above normal|feet above normal|taking the fences with it|up to his windowsills|up to her windowsills|up to their windowsills|up to the windowsills|up to the sills|water is already up to|water's already up to|water is up to the|water's up to the|dropped and split|split in two|split in half|slates have come off|shed half its|has shed half its|
 been torn off|torn away|
 have toppled|has toppled|toppled over|toppling|has split down|have split down|split down the seam|split open|toppling over|fell down|has fallen down|toppled all over|it's a wreck|its a wreck|a complete wreck|a total wreck|
@@ -98,6 +98,9 @@ no-go|no go|no-go area|no go area|no-go areas|no go areas|a no-go|a no go|a torr
 up to the gutters|is up to the|right up to the|up to the windows|up to the second-floor windows|
 lifted clean off|
 uprooted|windthrown|windthrow|blown down|
+blown into the crowd|blew into the crowd|treacherous|stones flying|flying stones|debris flying|flying debris|thick with vapour|thick with fumes|thick with gas|full of vapour|thick with vapor|
+snake|snakes|a snake|venomous snake|adder|adders|viper|vipers|rattlesnake|rattlesnakes|
+lines snapped|line snapped|line's snapped|cable snapped|cable's snapped|cables snapped|rope snapped|rope's snapped|whipping around|whipping about|whipping round|
 """.replace("\n", ""))
 
 _add(DESIRABLE, """
@@ -306,6 +309,10 @@ being treated|being treated there|confused and wandering|wandering about|very co
 isn't getting up|isnt getting up|not getting up|won't get up|having a hypo|had a hypo|funny turn|had a turn|dangling from|left dangling|
 cut badly|cut really badly|cut quite badly|cut pretty badly|cut quite bad|cut pretty bad|lot of blood|lots of blood|loads of blood|who's fallen|
 through the ice|lost a finger|lost two fingers|lost his fingers|lost her fingers|lost some fingers|severed|mangled|
+broke his wrist|broke her wrist|broken his wrist|broken her wrist|feeling faint|felt faint|feel faint|went faint|gone faint|
+come over faint|came over faint|hit in the face|hit in the head|hit in the eye|hit in the chest|struck in the face|
+been trampled|got trampled|was trampled|trampled by|been trampled on|overcome by fumes|overcome by the fumes|overcome by vapour|overcome by the vapour|
+overcome by gas|overcome by the gas|
 """.replace("\n", ""))
 
 # "collapsed" alone is structural (hazard); "collapsed inside" / "passed out" is a person.
@@ -338,7 +345,8 @@ CANCEL_AFTER = ["fully out", "is fully out", "damping down", "damping down is fi
                 "been cleared", "been cleared away", "been towed", "been towed away", "turned up", "has turned up", "s turned up", "turned up safe", "is out", "s out", "are out", "was out", "confirmed out", "properly out", "is properly out", "s properly out", "completely out", "is completely out", "s completely out", "is now out", "s now out", "are now out", "put out", "out now", "been put out",
                 "has cleared", "have cleared", "s cleared", "has lifted", "s lifted", "has been lifted", "have lifted", "has gone down", "s gone down",
                 "has receded", "s receded", "have receded", "gone down now", "has gone back down", "s gone back down", "gone back down", "off the boards now", "old news", "pumped it out",
-                "pumped it all out", "brought down", "been brought down",
+                "pumped it all out", "brought down", "been brought down", "been broke loose", "been broken loose",
+                "been broken up", "been broke up", "been freed", "running clean again", "flowing again", "running again",
                 "all been brought down", "got them down", "nobody left", "water's gone down", "water has gone down",
                 "water's receded", "water has receded", "flood's gone down", "flooding's gone down",
                 "extinguished", "under control", "contained", "is over", "has stopped", "stopped",
@@ -474,6 +482,17 @@ NEUTRAL_PHRASES = ["a bonfire",
                    "nobody home", "no one home", "nobody at home", "no one at home",
                    "waiting for the all clear", "wait for the all clear", "awaiting the all clear",
                    "until the all clear", "until we get the all clear", "waiting on the all clear"]
+
+# A jam freed, water running as it should ("the log jam's been broke loose and water's running clean again")
+NEUTRAL_PHRASES += ["been broke loose", "been broken loose", "running clean again", "water's running clean",
+                    "water is running clean", "running clear again", "water's running clear"]
+# The snake that bit someone: what hurt the person, no danger said of the place ("bitten by a snake")
+NEUTRAL_PHRASES += ["by a snake", "by the snake", "by a viper", "by an adder", "by the adder"]
+# What a controller clears a craft or crew to do ("you're cleared to taxi from the south dock"): leave to move, no
+# place said safe
+NEUTRAL_PHRASES += [f"cleared {p} {move}" for p in ("to", "for") for move in (
+    "taxi", "land", "landing", "take off", "takeoff", "depart", "departure", "launch", "proceed", "enter", "cross",
+    "push back", "pushback", "start up", "climb", "descend", "approach", "lift off", "sail", "berth", "fly", "flight")]
 
 # A report framed as an exercise or a training message: nothing in it is real, in any sentence ("Exercise, exercise,
 # exercise. Simulated casualty on the footbridge. Exercise ends."). "exercise exercise" counts only as the opening.
@@ -809,7 +828,7 @@ CONVEYANCE_WORDS = {"railway", "funicular", "lift", "tram", "tramway", "train", 
                     "cablecar", "chairlift", "monorail"}
 CARRIAGE_WORDS = {"car", "cars", "carriage", "carriages", "cabin", "cabins", "gondola", "gondolas"}
 MODIFIED_BY = {"team", "crew", "unit", "squad", "staff", "manager", "owner", "workers", "worker", "group", "cook",
-               "chef", "caretaker", "porter", "receptionist", "warden", "supervisor", "foreman",
+               "chef", "caretaker", "porter", "receptionist", "warden", "supervisor", "foreman", "tender",
                "side", "car", "truck", "van", "bus", "sign", "road", "street", "lane",
                "lads", "lad", "guys", "guy", "blokes", "bloke", "boys", "boy", "fellas", "fella", "chaps", "chap", "lot",
                "kids", "kid", "children", "child", "pupils", "pupil", "trip", "trips", "outing", "excursion"}
@@ -842,6 +861,8 @@ TRANSIT = [*(f"{v} {who} {way}to" for v in ("walk", "take", "bring", "carry", "h
            "driven from", "ran from", "run from", "cycled from", "anyone coming off", "anyone walked off", "anybody walked off", "everyone walked off", "people walked off", "anyone walking off", "people walking off", "anybody coming off", "everyone coming off", "people coming off", "families coming off",
            "visitors coming off", "crowds coming off", "folk coming off", "riders coming off", "families coming out of", "anyone coming out of", "anybody coming out of", "everyone coming out of", "people coming out of", "evacuated from", "moved out of", "moved from", "relocated from", "decanted from", "brought out of",
            "heading to", "heading for", "heading towards", "heading toward", "headed to", "headed for", "head to",
+           "heading out to", "headed out to",
+           "launching down", "launching from", "launching off", "launched from", "launched off",
            "heading up towards", "heading down towards", "creeping towards", "drifting towards", "hanging down into", "dangling down into", "dangling into", "current towards", "swinging towards", "floating towards",
            "spreading towards", "moving up towards", "running uphill towards", "running downhill towards",
            "running up towards", "running towards", "racing towards", "racing up towards", "burning towards",
@@ -1018,6 +1039,11 @@ for _p in PERSON_NOUNS:
     ROLE_CUES[f"{_p} s collapsed"] = CRITICAL
     ROLE_CUES[f"{_p} underneath it"] = CRITICAL  # ("the barn's come down and the farmer's underneath it")
     ROLE_CUES[f"{_p} under it"] = CRITICAL
+# Burned on a part of a person ("one of the grinders is burned on both arms"): a casualty, not a fire
+for _v in ("burned", "burnt", "scalded"):
+    for _who in ("his", "her", "their", "both", "the"):
+        for _part in ("arm", "arms", "hand", "hands", "leg", "legs", "face", "back", "feet", "foot", "chest", "neck"):
+            ROLE_CUES[f"{_v} on {_who} {_part}"] = CRITICAL
 
 # Danger words that say what happened to a person when a person is their subject ("two residents have
 # collapsed", "one of our crew is burned very bad").
@@ -1070,7 +1096,8 @@ WORKER_PERSONS = {"driver", "worker", "workman", "lad", "labourer", "passenger",
                   "engineer", "gardener", "fan", "punter", "marshal", "chemist", "resident", "technician", "keeper",
                   "porter", "nurse", "midwife", "tourist", "walker", "climber", "swimmer", "diver", "angler", "member",
                   "rigger", "roustabout", "roughneck", "driller", "welder", "scaffolder", "miner", "logger", "docker",
-                  "stevedore", "farmhand", "kayaker", "canoeist", "skier", "staff", "skater", "cook", "chef", "lifeguard"}
+                  "stevedore", "farmhand", "kayaker", "canoeist", "skier", "staff", "skater", "cook", "chef", "lifeguard",
+                  "stockman", "stockmen", "exhibitor", "handler", "herdsman", "shepherd", "farrier", "groom"}
 # Who calls in, said before where they are ("Security guard at the savings bank."): a role, not a claim.
 CALLER_ROLES = {"guard", "warden", "officer", "patrol", "assistant", "attendant", "manager", "caretaker", "courier",
                 "inspector", "first-aider", "firstaider", "aider", "volunteer", "medic", "paramedic", "constable",
