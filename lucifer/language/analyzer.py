@@ -11679,7 +11679,7 @@ def _cue_list_into(k: int, later: int, segs: list[tuple[int, int]], seg_cues: di
 
 # A sentence that says all is well guesses no claim for its places ("..., no problems seen")
 _ALL_WELL = frozenset({("no", "problems"), ("no", "problem"), ("no", "issues"), ("nothing", "wrong"), ("all", "quiet"),
-                       ("no", "damage"), ("nothing", "to")})
+                       ("no", "damage"), ("to", "report")})  # ("nothing to report")
 _PERSON_WORDS = frozenset(lx.PERSON_NOUNS) | {"pensioner", "residents", "neighbour", "neighbor", "tenant", "tenants",
                                               "lady", "gentleman", "family", "pupil", "kid", "child", "children"}
 # Any word for people, a group said as a subject too ("the men in there", "the folk at the chapel")

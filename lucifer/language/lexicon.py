@@ -346,7 +346,7 @@ CANCEL_AFTER = ["fully out", "is fully out", "damping down", "damping down is fi
                 "has cleared", "have cleared", "s cleared", "has lifted", "s lifted", "has been lifted", "have lifted", "has gone down", "s gone down",
                 "has receded", "s receded", "have receded", "gone down now", "has gone back down", "s gone back down", "gone back down", "off the boards now", "old news", "pumped it out",
                 "pumped it all out", "brought down", "been brought down", "been broke loose", "been broken loose",
-                "been broken up", "been broke up", "been freed", "running clean again", "flowing again", "running again",
+                "been broken up", "been broke up", "been freed", "running clean again",
                 "all been brought down", "got them down", "nobody left", "water's gone down", "water has gone down",
                 "water's receded", "water has receded", "flood's gone down", "flooding's gone down",
                 "extinguished", "under control", "contained", "is over", "has stopped", "stopped",
