@@ -3872,7 +3872,7 @@ class ReportAnalyzer:
                 # (a participle right after "the" and a head noun is the link's verb, though a cue word: "the shed
                 # leaning on the one behind the bunkhouse")
                 participle = verb_after_head(k - 1) or k >= 4 and verb_after_head(k - 2) \
-                    and w in ("down", "up", "out", "off", "over", "back", "round", "in")  # ("the road coming down out of")
+                    and w in _VERB_PARTICLES  # ("the road coming down out of")
                 if (k - 1) in place_tokens or (k - 1) in marker_tokens or (k - 1) in cue_tokens and not participle \
                         or toks.clause_start[k]:
                     break
@@ -3977,8 +3977,7 @@ class ReportAnalyzer:
             for end in range(e + 2, min(e + 6, len(norms)) + 1):
                 # (a cue word as the clause's verb is a verb: "the car park the lorry park spills into")
                 if any(i in place_tokens or i in marker_tokens or (i > e and toks.clause_start[i])
-                       or i in cue_tokens and not (i == e and verb_s or i == e + 1 and verb_s and norms[i] in (
-                           "down", "up", "out", "off", "over", "back", "round", "in"))
+                       or i in cue_tokens and not (i == e and verb_s or i == e + 1 and verb_s and norms[i] in _VERB_PARTICLES)
                        for i in range(e, end)):
                     # (a cue word as the clause's verb, with its particle: "up where the skid road comes down from")
                     break
@@ -7979,14 +7978,15 @@ class ReportAnalyzer:
         toks = ex.tokens
         out = []
         for c in claims:
-            if c.cue.text.lower().replace("-", " ") == "all clear" and c.cue.source == "lexicon" and any(
+            all_clear = c.cue.text.lower().replace("-", " ") == "all clear" and c.cue.source == "lexicon"
+            if all_clear and any(
                     d.place.landmark == c.place.landmark and (d.cue.end_tok <= c.cue.start_tok <= d.cue.end_tok + 12
                                                               or c.cue.end_tok <= d.cue.start_tok <= c.cue.end_tok + 8)
                     and toks.sentence_of[d.cue.start_tok] == toks.sentence_of[c.cue.start_tok]
                     and self.kb.category_by_name[d.cue.category].role == Role.UNDESIRABLE for d in denied):
                 continue
             a, b = c.cue.start_tok, c.cue.end_tok
-            if c.cue.text.lower().replace("-", " ") == "all clear" and c.cue.source == "lexicon" and toks.clause_start[a] \
+            if all_clear and toks.clause_start[a] \
                     and c.place.end_tok <= a and all(toks.sentence_of[t] != toks.sentence_of[a] or toks.norms(t, t + 1)[0]
                                                      in lx.FILLERS for t in range(b, len(toks))) \
                     and any(d.cue.end_tok <= a and toks.sentence_of[d.cue.start_tok] == toks.sentence_of[a] for d in denied):
@@ -11608,6 +11608,9 @@ _MATERIALS = frozenset({"stone", "brick", "wooden", "timber", "concrete", "steel
 _SITE_MODIFIERS = frozenset({"works", "factory", "site", "plant", "company", "complex", "compound"})
 _PLAIN_ADJECTIVES = _SIZE_WORDS | _MATERIALS  # (said before a name without being part of it: "the big stone harbour wall")
 _POSTURE_VERBS = frozenset({"sits", "stands", "lies", "sit", "stand", "lie"})
+# The particle a verb of a description may carry, a cue word though it is ("the road coming down out of the
+# cutting", "up where the skid road comes down from")
+_VERB_PARTICLES = frozenset({"down", "up", "out", "off", "over", "back", "round", "in"})
 _TO_PARTICLES = frozenset({"up", "down", "on", "out", "back", "over", "in", "off", "across", "along"})
 _CALL_NOUNS = frozenset({"call", "calls", "message", "report", "phone", "text"})  # ("a 999 call from a lady up the terrace")
 _OWNED = "owned:"  # the ``via`` of "the café's car park" (``_possessive_tail``)
