@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev116) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev120) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -278,6 +278,22 @@ HOVERCRAFT_TERMINAL = ROOT / "knowledge_bases" / "hovercraft_terminal"
 STUD_DAIRY_SHOWGROUND = ROOT / "knowledge_bases" / "stud_dairy_showground"
 COPPER_MINE_TAILINGS_DAM = ROOT / "knowledge_bases" / "copper_mine_tailings_dam"
 FERRY_SLIPWAY_ISLAND = ROOT / "knowledge_bases" / "ferry_slipway_island"
+WHALING_STATION_MUSEUM = ROOT / "knowledge_bases" / "whaling_station_museum"
+SHEEPDOG_TRIALS_FIELD = ROOT / "knowledge_bases" / "sheepdog_trials_field"
+TUNNEL_BORING_WORKSITE = ROOT / "knowledge_bases" / "tunnel_boring_worksite"
+INDOOR_MARKET_HALL = ROOT / "knowledge_bases" / "indoor_market_hall"
+WILDFIRE_BASE_CAMP = ROOT / "knowledge_bases" / "wildfire_base_camp"
+GLIDER_AIRFIELD = ROOT / "knowledge_bases" / "glider_airfield"
+CITRUS_PACKING_HOUSE = ROOT / "knowledge_bases" / "citrus_packing_house"
+STONE_CIRCLE_HERITAGE_SITE = ROOT / "knowledge_bases" / "stone_circle_heritage_site"
+WETLAND_BOARDWALK_RESERVE = ROOT / "knowledge_bases" / "wetland_boardwalk_reserve"
+MAGLEV_TEST_TRACK = ROOT / "knowledge_bases" / "maglev_test_track"
+SKATE_PARK_PLAZA = ROOT / "knowledge_bases" / "skate_park_plaza"
+IRON_ORE_RAILHEAD = ROOT / "knowledge_bases" / "iron_ore_railhead"
+BONFIRE_NIGHT_COMMON = ROOT / "knowledge_bases" / "bonfire_night_common"
+PUMICE_QUARRY_ISLAND = ROOT / "knowledge_bases" / "pumice_quarry_island"
+GREYHOUND_STADIUM = ROOT / "knowledge_bases" / "greyhound_stadium"
+MUSIC_CONSERVATORY = ROOT / "knowledge_bases" / "music_conservatory"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -713,6 +729,22 @@ SETS = {
     "dev116/stud_dairy_showground": _set("dev116/stud_dairy_showground.jsonl", STUD_DAIRY_SHOWGROUND, "sg116", TWENTY, sep=""),
     "dev116/copper_mine_tailings_dam": _set("dev116/copper_mine_tailings_dam.jsonl", COPPER_MINE_TAILINGS_DAM, "ct116", TWENTY, sep=""),
     "dev116/ferry_slipway_island": _set("dev116/ferry_slipway_island.jsonl", FERRY_SLIPWAY_ISLAND, "fi116", TWENTY, sep=""),
+    "dev117/whaling_station_museum": _set("dev117/whaling_station_museum.jsonl", WHALING_STATION_MUSEUM, "wh117", TWENTY, sep=""),
+    "dev117/sheepdog_trials_field": _set("dev117/sheepdog_trials_field.jsonl", SHEEPDOG_TRIALS_FIELD, "sd117", TWENTY, sep=""),
+    "dev117/tunnel_boring_worksite": _set("dev117/tunnel_boring_worksite.jsonl", TUNNEL_BORING_WORKSITE, "tb117", TWENTY, sep=""),
+    "dev117/indoor_market_hall": _set("dev117/indoor_market_hall.jsonl", INDOOR_MARKET_HALL, "mh117", TWENTY, sep=""),
+    "dev118/wildfire_base_camp": _set("dev118/wildfire_base_camp.jsonl", WILDFIRE_BASE_CAMP, "wf118", TWENTY, sep=""),
+    "dev118/glider_airfield": _set("dev118/glider_airfield.jsonl", GLIDER_AIRFIELD, "gl118", TWENTY, sep=""),
+    "dev118/citrus_packing_house": _set("dev118/citrus_packing_house.jsonl", CITRUS_PACKING_HOUSE, "cp118", TWENTY, sep=""),
+    "dev118/stone_circle_heritage_site": _set("dev118/stone_circle_heritage_site.jsonl", STONE_CIRCLE_HERITAGE_SITE, "sc118", TWENTY, sep=""),
+    "dev119/wetland_boardwalk_reserve": _set("dev119/wetland_boardwalk_reserve.jsonl", WETLAND_BOARDWALK_RESERVE, "wb119", TWENTY, sep=""),
+    "dev119/maglev_test_track": _set("dev119/maglev_test_track.jsonl", MAGLEV_TEST_TRACK, "mg119", TWENTY, sep=""),
+    "dev119/skate_park_plaza": _set("dev119/skate_park_plaza.jsonl", SKATE_PARK_PLAZA, "sk119", TWENTY, sep=""),
+    "dev119/iron_ore_railhead": _set("dev119/iron_ore_railhead.jsonl", IRON_ORE_RAILHEAD, "io119", TWENTY, sep=""),
+    "dev120/bonfire_night_common": _set("dev120/bonfire_night_common.jsonl", BONFIRE_NIGHT_COMMON, "bn120", TWENTY, sep=""),
+    "dev120/pumice_quarry_island": _set("dev120/pumice_quarry_island.jsonl", PUMICE_QUARRY_ISLAND, "pq120", TWENTY, sep=""),
+    "dev120/greyhound_stadium": _set("dev120/greyhound_stadium.jsonl", GREYHOUND_STADIUM, "gs120", TWENTY, sep=""),
+    "dev120/music_conservatory": _set("dev120/music_conservatory.jsonl", MUSIC_CONSERVATORY, "mc120", TWENTY, sep=""),
 }
 
 
