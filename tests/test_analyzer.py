@@ -5802,3 +5802,87 @@ def test_dev109_phenomena(kb_analyzers, kb, text, expected):
 def test_dev113_phenomena(kb_analyzers, kb, text, expected):
     """Stop 50: what the tuned dev113-dev116 sets showed (paraphrased)."""
     assert claims(kb_analyzers[kb], text) == sorted(expected)
+
+
+@pytest.mark.parametrize(("kb", "text", "expected"), [
+    # dangers said as a word written apart ("over-topping"), a vehicle with no brakes, a door that could drop
+    ("tunnel_boring_worksite", "the settlement lagoon is over-topping onto the haul road", [("settlement lagoon", "worksite_danger")]),
+    ("tunnel_boring_worksite", "a dumper's lost its brakes on the haul road", [("haul road", "worksite_danger")]),
+    ("citrus_packing_house", "the dock door could drop any second, keep people off the loading docks",
+     [("loading docks", "peril")]),
+    # people: a cut head, someone under the load, blood on the head (said as a learner says it), a fall said so
+    ("citrus_packing_house", "a picker's got a bad head cut at the weighbridge", [("weighbridge", "needs_help")]),
+    ("citrus_packing_house", "crates came down at bin receiving and someone is under them",
+     [("bin receiving", "needs_help"), ("bin receiving", "peril")]),
+    ("whaling_station_museum", "one visitor at the cinema, he have blood on head", [("cinema", "person_in_distress")]),
+    ("maglev_test_track", "person fall at the vehicle ramp", [("vehicle ramp", "person_at_risk")]),
+    ("bonfire_night_common", "i'm lost and i can't find my nan, i'm at the toffee apple stall",
+     [("toffee apple stall", "lost_child")]),
+    # a torch bearer, a medic "there": people, so "collapsed" is a person's
+    ("bonfire_night_common", "a torch bearer has collapsed by the bonfire", [("bonfire", "injured")]),
+    ("music_conservatory", "at the first aid post one of the medics there has collapsed", [("first aid post", "patient")]),
+    # a fight is a danger only where the KB's own words say violence is one
+    ("stone_circle_heritage_site", "a fight has broken out at the camping field", [("camping field", "peril")]),
+    ("racecourse", "there's a fight in the north car park, one lad with a head wound", [("north car park", "in_distress")]),
+    ("stone_circle_heritage_site", "the crush is at the entry gate", [("entry gate", "peril")]),
+    # things that end a claim: landed, reunited, flown out, backfilled, the all-clear on a danger
+    ("tunnel_boring_worksite", "swinging load over the segment yard -- no hang on, it's landed", []),
+    ("bonfire_night_common", "the separated child at the burger vans, her mum's turned up, all good", []),
+    ("iron_ore_railhead", "the injured driver at the airstrip has been flown out", []),
+    ("tunnel_boring_worksite", "the ground loss in the laydown area is fenced off and backfilled", []),
+    ("knowledge_base", "All clear on the fire at the bakery.", []),
+    ("music_conservatory", "the green room had smoke earlier but that's cleared now", []),
+    ("citrus_packing_house", "all clear on the ammonia leak at the plant room, the extraction fans have cleared it", []),
+    # what is said only of what went under a thing, what someone goes for, where a lost child's mother waits
+    ("tunnel_boring_worksite", "casualty at the wash bay, his foot went under a lorry wheel",
+     [("wheel wash", "injured_person")]),
+    ("tunnel_boring_worksite", "team two heading to the bowser for diesel, nothing to report", []),
+    ("bonfire_night_common", "lost child at the dodgems, her mum's at the first aid tent",
+     [("dodgems", "lost_child")]),
+    # a false alarm that only says what a danger was leaves the hurt person hurt
+    ("music_conservatory", "a student cut her hand in the green room, and there's a fire- no, no fire, it's just steam",
+     [("green room", "patient")]),
+    # a danger brought in anew, its place said after an aside
+    ("knowledge_base", "the gas at the school is sorted, but now there's a fire, small one, in the bakery",
+     [("bakery", "hazard")]),
+    # a place said not to be affected, then "no fire there"
+    ("iron_ore_railhead", "fire at the power station, the fuel farm's not affected, no fire there",
+     [("power station", "no_go_zone")]),
+    ("maglev_test_track", "arc flash at the sub, and the converters are-- sorry, the converters are not affected",
+     [("main substation", "danger")]),
+    # "both buildings" after a crew's position; people named by where they are before being sent elsewhere
+    ("iron_ore_railhead", "crews are at the tavern and the clinic, both buildings are safe refuges",
+     [("site clinic", "muster_point"), ("wet mess", "muster_point")]),
+    ("iron_ore_railhead", "The control room is the assembly area now. Everyone from the screens and the stacker, "
+                          "muster there.",
+     [("control room", "muster_point")]),
+    # the one word in the other number is another landmark's head; the cinema's own stage
+    ("music_conservatory", "the rigging's down in the main hall, and the hall's unsafe", [("concert hall", "peril")]),
+    ("whaling_station_museum", "a boy fell off the stage in the cinema", [("cinema", "person_in_distress")]),
+    # a name cut off, then a repair with "no hang on, it's"
+    ("knowledge_base", "smoke at the bak-- no hang on, it's the school", [("school", "hazard")]),
+    # relation forms: the object noun unsaid, an adverb said another way, "outside" for ``lies_outside``
+    ("maglev_test_track", "coolant leak in the plant that draws from the pond", [("cooling plant", "danger")]),
+    ("maglev_test_track", "someone hurt on the ramp that climbs out of the test hall",
+     [("vehicle ramp", "person_at_risk")]),
+    ("citrus_packing_house", "flooding at whatever comes right before the wax tunnel", [("wash line", "peril")]),
+    ("music_conservatory", "the area outside the main gate is our muster station, and a steward's hurt at the hut just "
+                           "inside it", [("car park", "refuge"), ("porters' lodge", "patient")]),
+    # a muster point described by where it is; a pronoun after "and" that opens on "it's"
+    ("citrus_packing_house", "we've put the muster point across from the site office", [("crib room", "refuge")]),
+    ("whaling_station_museum", "we're taking him to the sick bay, it's heated and set up as our warm room",
+     [("hospital", "refuge")]),
+    # "the crowd at the heel stone": a sentence of its own, not an aside on the stone before
+    ("stone_circle_heritage_site", "Man down by the flat stone. The crowd at the heel stone has gone, it's safe "
+                                   "there now.",
+     [("heel stone", "sanctuary"), ("slaughter stone", "patient")]),
+    # a person on the back-up train; the stockpile itself slumped; "clear for landing" then a casualty
+    ("tunnel_boring_worksite", "one of the ring builders on the back-up is feeling faint",
+     [("backup train", "injured_person")]),
+    ("iron_ore_railhead", "it's the lump stockpile itself that's slumped", [("lump stockpile", "no_go_zone")]),
+    ("maglev_test_track", "the helipad is clear for landing, the casualty is on the switch",
+     [("guideway switch", "person_at_risk"), ("helipad", "muster")]),
+])
+def test_dev117_phenomena(kb_analyzers, kb, text, expected):
+    """Stop 51: what the tuned dev117-dev120 sets showed (paraphrased)."""
+    assert claims(kb_analyzers[kb], text) == sorted(expected)

@@ -198,6 +198,27 @@ class ReportAnalyzer:
                 (self._needs_article if had_article else plain).add(key)
                 self._places.add(key, lm.name)
         self._needs_article -= plain
+        # "the halls" (of residence) beside "the main hall": the word said in the one number is the other's head
+        singular_heads = {f.split()[-1].lower() for lm in kb.landmarks for f in lm.surface_forms if f.split()}
+        self._plural_only: dict[tuple[str, ...], str] = {}
+        for lm in kb.landmarks:
+            for f in lm.surface_forms:
+                raw = f.lower().split()
+                key = name_words(f)
+                if len(key) == 1 and raw and raw[-1].endswith("s") and norm(raw[-1]) != raw[-1] \
+                        and norm(raw[-1]) in singular_heads and any(
+                            f2.split() and f2.split()[-1].lower() == norm(raw[-1])
+                            for lm2 in kb.landmarks if lm2.name != lm.name for f2 in lm2.surface_forms):
+                    self._plural_only[key] = lm.name
+        # "the medic's": a name that is someone's premises, said of the person alone ("waiting for the medic") is no
+        # place (unless another form of it is the bare word)
+        bare = {name_words(f) for lm in kb.landmarks for f in lm.surface_forms
+                if not f.rstrip().lower().endswith(("'s", "’s", "s'"))}
+        self._possessive_only = frozenset(
+            name_words(f) for lm in kb.landmarks for f in lm.surface_forms
+            if f.rstrip().lower().endswith(("'s", "’s")) and name_words(f) not in bare
+            and name_words(f)[-1:] and (name_words(f)[-1] in lx.WORKER_PERSONS | lx.LAY_PERSONS
+                                        or name_words(f)[-1] in _PERSON_WORDS))
         derived: set[tuple[str, ...]] = set()  # names the analyzer puts together, not the KB's own
         for key, name in self._compound_forms():
             self._places.add(key, name)
@@ -434,6 +455,12 @@ class ReportAnalyzer:
             cat = self._category_for_role(role, phrase)
             if cat:
                 entries[norm_phrase(phrase)] = (cat, "lexicon")
+        violent = [c for c in self.kb.categories if c.role == Role.UNDESIRABLE
+                   and set(norm_phrase(c.description)) & {norm(w) for w in lx.VIOLENCE_WORDS}]
+        if len(violent) == 1:
+            # 1a. a fight, where the KB's own words count violence a danger
+            for phrase in lx.VIOLENCE_CUES:
+                entries.setdefault(norm_phrase(phrase), (violent[0].name, "lexicon"))
         if self._animal_category is not None:
             # 1b. animals in trouble, where the KB has a category for them ("a bullock loose", "ewes swimming")
             for animal in lx.ANIMAL_WORDS:
@@ -859,6 +886,14 @@ class ReportAnalyzer:
                     and not self._bare_in_glossary(norms, a, b, all_cues)):
                 # ("a backed-up goit", "water over the hatches": a glossary term that ends in a place's name names it)
                 continue  # "first aid post" is a cue, "across the square from" a relation
+            if b - a == 1 and self._plural_only.get(norms[a:b]) == landmark \
+                    and toks.tokens[a].text.lower().replace("’", "'").removesuffix("'s") == norms[a]:
+                continue  # "the hall's unsafe" is not "the halls" (of residence) where "the main hall" is a name
+            if self._possessive_only and tuple(w for w in norms[a:b] if w != "the") in self._possessive_only \
+                    and not toks.tokens[b - 1].text.lower().replace("’", "'").endswith(("'s", "s")) \
+                    and norms[max(0, a - 2):a] in (("for", "the"), ("call", "the"), ("get", "the"), ("fetch", "the")):
+                continue  # "sitting on the ROM pad waiting for the medic": the person, not "the medic's" (nor
+                # "the mechanics", typed without its apostrophe)
             if b - a == 1 and norms[a] in lx.BODY_PARTS and a >= 2 and norms[a - 1] == "the" \
                     and norms[a - 2] in ("to", "on", "from") and any(norms[m] in lx.INJURY_WORDS | {"bleeding"}
                                                                     for m in range(max(0, a - 5), a - 2)):
@@ -1098,7 +1133,11 @@ class ReportAnalyzer:
                 places[idx] = replace(p, status="reference", reason="where the place before it is")
         starts = self._false_starts(toks, {i for p in places for i in range(p.start_tok, p.end_tok)})
         for fs in starts:
-            nxt = min((p for p in places if p.start_tok >= fs.end_tok and p.start_tok - fs.end_tok <= 3),
+            nxt = min((p for p in places if p.start_tok >= fs.end_tok and (
+                p.start_tok - fs.end_tok <= 3
+                # ("the candy floss st— no hang on, it's the burger vans": repair words only, between)
+                or p.start_tok - fs.end_tok <= 7 and all(w in _REPAIR_GAP_WORDS or w in lx.FILLERS
+                                                         for w in norms[fs.end_tok:p.start_tok]))),
                       key=lambda p: p.start_tok, default=None)
             if nxt is not None and nxt.replaces is None:
                 places[places.index(nxt)] = replace(nxt, replaces=fs.start_tok)
@@ -1401,7 +1440,7 @@ class ReportAnalyzer:
                 only_describes(p1, p2)
                 continue
             if (p1.landmark, p2.landmark) in related and 4 <= len(gap) <= 6 and toks.clause_start[p1.end_tok] \
-                    and gap[0] in lx.ARTICLES and gap[-1] in lx.ARTICLES \
+                    and not toks.sentence_start[p1.end_tok] and gap[0] in lx.ARTICLES and gap[-1] in lx.ARTICLES \
                     and gap[-2] in lx.PREPOSITIONS | lx.RELATION_ENDINGS and gap[-3].isalpha() \
                     and not any(toks.clause_start[i] for i in range(p1.end_tok + 1, p2.end_tok)) \
                     and not any(self._cues.match_at(norms, i) is not None for i in range(p1.end_tok, p2.start_tok)):
@@ -1926,6 +1965,12 @@ class ReportAnalyzer:
             if i + 2 < len(norms) and norms[i + 1] in ("at", "of") and not contracted \
                     and any(t in taken for t in range(i + 2, min(len(norms), i + 5))):
                 continue  # "the playground at the primary school": that place's own, not the adventure playground
+            if i + 2 < len(norms) and norms[i + 1] in ("in", "inside") and not contracted and (after := next(
+                    (h for t in range(i + 2, min(len(norms), i + 5)) if t in taken
+                     and (h := self._places.match_at(norms, t)) is not None), None)) is not None \
+                    and after[1] != self._heads[w] and (after[1], self._heads[w]) not in self._related_pairs:
+                continue  # "fell off the stage in the cinema": the cinema's own stage, not the landing stage (but "the
+                # gate in the sea wall", where the KB sets the sluice gate in it, is that gate)
             if i + 2 < len(norms) and norms[i + 1] == "of" and norms[i + 2] in lx.ARTICLES and w in lx.EARTHWORKS \
                     and not contracted:
                 continue  # "over the bank of the pond": the pond's own bank, not "the bring bank"
@@ -5015,6 +5060,9 @@ class ReportAnalyzer:
                     return  # "a car swept against the Mitre Arch": where a thing is, no description of a place
                 if h >= 0 and norms[h] in lx.LAY_PERSONS | lx.WORKER_PERSONS | {"she", "he", "they", "someone", "somebody"}:
                     return  # "a nurse climbed up onto the big wall": where a person went, no description of a place
+                if any(norms[i] in lx.LAY_PERSONS | lx.WORKER_PERSONS and norms[i + 1:i + 2] in (("on",), ("in",), ("at",))
+                       and toks.tokens[i].text.lower().endswith("s") for i in range(max(0, a - 1), b - 1)):
+                    return  # "one of the ring builders on the back-up": where people are, no description of a place
                 if any(norms[i] in lx.MOVING_VERBS and i > 0 and norms[i - 1] in ("been", "being", "was", "were", "get", "got")
                        for i in range(a, b)):
                     return  # "the school group have been moved across to the tea room": where people were taken
@@ -5588,6 +5636,9 @@ class ReportAnalyzer:
             # "the park behind the warehouse. Across the street from it": the pronoun takes up the place
             # spoken of, not the reference point of its description
             before = [p for p in before if p.status != "reference"] or before
+            # (nor the reference point of a description taken back: "the place that serves the stage door of the
+            # concert hall— no, sorry, in the room next to that": the place described, taken back)
+            before = [p for p in before if p.reason != "reference point of a retracted place"] or before
             # (nor one said as the object of a relation after a named place, its description not read yet: "cracks
             # across the ramp that runs down from the hangar ... a mechanic fell on the pad next to it")
             before = [p for p in before if not self._named_relation_object(ex, norms, p)] or before
@@ -5603,6 +5654,15 @@ class ReportAnalyzer:
                           and not p.text.lower().replace("’", "'").endswith("'s")] or before
             if before:
                 ante = max(before, key=lambda p: p.end_tok)
+                if phrase and norms[j] == "it" and not any(
+                        r.phrase == phrase and ante.landmark in (r.subject, r.object) for r in self.kb.relations):
+                    # "the area outside the main gate is our muster station, and ... the hut just inside it": the
+                    # place spoken of is none of the relation's; its reference point, said with it, is
+                    ref = [p for p in ex.places if p.end_tok <= b and p.status == "reference" and p.via is None
+                           and ante.via is not None and ante.start_tok <= p.start_tok < ante.end_tok
+                           and any(r.phrase == phrase and p.landmark in (r.subject, r.object) for r in self.kb.relations)]
+                    if len(ref) == 1:
+                        return ref[0], j + 1, True
                 return ante, j + 1, True
         return None, b, False
 
@@ -6055,8 +6115,16 @@ class ReportAnalyzer:
             not_the_one = tail[:3] in (("isnt", "the", "one"), ("wasnt", "the", "one"), ("aint", "the", "one")) \
                 or tail[:4] in (("is", "not", "the", "one"), ("s", "not", "the", "one"), ("was", "not", "the", "one")) \
                 or untouched and not self._desirable_cue_in_sentence(toks, norms, p.end_tok) \
-                or tail[:2] in ((v, w) for v in ("isnt", "wasnt", "not") for w in ("affected", "involved")) \
-                or tail[:3] in ((v, "not", w) for v in ("is", "was", "s") for w in ("affected", "involved"))
+                or tail[:2] in ((v, w) for v in ("isnt", "wasnt", "arent", "werent", "not") for w in ("affected", "involved")) \
+                or tail[:3] in ((v, "not", w) for v in ("is", "was", "s", "are", "were", "re") for w in ("affected", "involved"))
+            m = p.end_tok
+            while m < len(norms) and m - p.end_tok < 6 and (norms[m] in lx.FILLERS or norms[m] in (
+                    "we", "weve", "ve", "have", "i", "ive", "checked", "searched", "looked", "in", "at")):
+                m += 1
+            if m > p.end_tok and any(norms[i] in ("checked", "searched") for i in range(p.end_tok, m)) \
+                    and norms[m:m + 2] == ("nothing", "there") and (m + 2 >= len(norms) or toks.clause_start[m + 2]):
+                ex.places[idx] = replace(p, status="negated", reason="negated by 'checked, nothing there'")
+                continue  # "and uh the instrument stores we checked, uh, nothing there"
             # ("it's not the camp, the camp's not the problem, it's the clinic")
             problem = tail[:4] in ((v, "not", "the", w) for v in ("is", "s", "was") for w in ("problem", "issue")) \
                 or tail[:3] in ((v, "the", w) for v in ("isnt", "wasnt", "not") for w in ("problem", "issue"))
@@ -6470,6 +6538,23 @@ class ReportAnalyzer:
             norms[p.end_tok + d:p.end_tok + d + 3] in see for d in range(3))
 
     @staticmethod
+    def _everyone_from(toks: Tokens, norms: tuple[str, ...], p: PlaceMention, places: list[PlaceMention]) -> bool:
+        """"Everyone from the screens and the stacker, muster there": the people are named by where they are now, and
+        told to go elsewhere; nothing is said of those places."""
+        k = _noun_phrase_start(norms, p)
+        while k >= 2 and norms[k - 1] in ("and", "or") and (q := next(
+                (q for q in places if q.end_tok == k - 1 and q is not p), None)) is not None:
+            k = _noun_phrase_start(norms, q)  # ("from the screens and the stacker")
+        if k < 2 or norms[k - 1] != "from" or norms[k - 2] not in ("everyone", "everybody", "anyone", "anybody", "all"):
+            return False
+        end = p.end_tok
+        while end < len(norms) and norms[end] in ("and", "or") or any(q.start_tok <= end < q.end_tok for q in places):
+            end += 1
+        return end < len(norms) and toks.clause_start[end] and any(
+            norms[i] in ("muster", "go", "head", "move", "report", "gather", "assemble", "make")
+            for i in range(end, min(len(norms), end + 3)))
+
+    @staticmethod
     def _person_from(toks: Tokens, norms: tuple[str, ...], p: PlaceMention, places: list[PlaceMention]) -> bool:
         """"The old boy from the smokehouse is lying in the shed": a person known by their place, said to be in
         another place right after."""
@@ -6621,6 +6706,21 @@ class ReportAnalyzer:
             if self._watch_point(toks, norms, p):
                 ex.places[idx] = replace(p, status="reference", reason="where the speaker looks from ('From X I can see')")
                 continue
+            k = _noun_phrase_start(norms, p)
+            if k >= 3 and norms[k - 1] in ("at", "in", "by", "outside") and any(
+                    norms[m] in _KIN and all(norms[t] in ("is", "s", "are", "waiting", "now", "still", "sat", "sitting",
+                                                          "stood", "standing")
+                                             or t == m + 1 and toks.tokens[m].text.lower().endswith(("'s", "’s"))
+                                             for t in range(m + 1, k - 1))
+                    and (m == 0 or norms[m - 1] in ("their", "his", "her", "my", "the", "and", "whose") or toks.clause_start[m])
+                    for m in range(max(0, k - 5), k - 1)) and any(
+                    norms[c] in lx.MISSING_CUES or norms[c] in ("lost", "separated", "missing")
+                    for c in range(0, k) if toks.sentence_of[c] == toks.sentence_of[p.start_tok]):
+                ex.places[idx] = replace(p, status="reference", reason="where the lost one's people wait: no claim")
+                continue  # "two kids missing in the dorms ... their mum is at the lodge"
+            if self._everyone_from(toks, norms, p, ex.places):
+                ex.places[idx] = replace(p, status="reference", reason="where the people told to move are from: no claim")
+                continue
             if self._person_from(toks, norms, p, ex.places):
                 ex.places[idx] = replace(p, status="reference", reason="where the person is from, not where they are")
                 continue
@@ -6650,7 +6750,10 @@ class ReportAnalyzer:
             if j >= 3 and norms[j] == "at" and toks.tokens[j - 1].text.lower().replace("’", "'").endswith("'s") \
                     and norms[j - 2] in ("my", "his", "her", "our", "their"):
                 j -= 2  # "on my way to my mom's at Willow Court": to someone's home there
-            if self._crew_position(norms, p.start_tok):
+            if self._crew_position(norms, p.start_tok) and not any(
+                    norms[i] == "both" and toks.clause_start[i] and toks.sentence_of[i] == toks.sentence_of[p.start_tok]
+                    for i in range(p.end_tok, min(len(norms), p.end_tok + 8))):
+                # (not "Crews are at the tavern and the clinic, both buildings are safe refuges": said of both)
                 ex.places[idx] = replace(p, status="reference", reason=_CREW_POSITION)
                 continue
             if self._evacuated_to(toks, norms, p.end_tok):
@@ -7559,12 +7662,13 @@ class ReportAnalyzer:
         subject = next((p for p in ex.places if p.end_tok == j + 1), None)
         return subject is not None and norm(subject.text.split()[-1]) in lx.WATER_BODIES | _STILL_WATERS
 
-    def _safe_for(self, norms: tuple[str, ...], a: int) -> bool:
+    def _safe_for(self, toks: Tokens, norms: tuple[str, ...], a: int) -> bool:
         """Is the word at ``a`` whom a safe place is said to be for ("safe for the walking patients", "open for
         residents")? "for", at most two words before it (an article, a modifier), ends a desirable cue."""
         f = next((j for j in range(a - 1, max(-1, a - 4), -1) if norms[j] == "for"), None)
-        if f is None or any(norms[j] in lx.FUNCTION_WORDS and norms[j] not in lx.ARTICLES for j in range(f + 1, a)):
-            return False
+        if f is None or any(norms[j] in lx.FUNCTION_WORDS and norms[j] not in lx.ARTICLES for j in range(f + 1, a)) \
+                or any(toks.clause_start[j] for j in range(f + 1, a + 1)):
+            return False  # (not "it's clear for landing, the casualty is on the switch": a clause of its own)
         for m in range(max(0, f - 3), f):
             hit = self._cues.match_at(norms, m)
             if hit is not None and hit[0] == f and hit[1][0] is not None \
@@ -7583,6 +7687,16 @@ class ReportAnalyzer:
         for p in ex.places:
             if p.via is not None:
                 blocked.update(range(p.start_tok, p.end_tok))
+                h = p.start_tok + (norms[p.start_tok] in lx.ARTICLES)
+                m = self._cues.match_at(norms, h) if p.status == "active" and h < p.end_tok else None
+                if m is not None and m[1][0] in self.kb.category_by_name and m[0] < p.end_tok \
+                        and self.kb.category_by_name[m[1][0]].role == Role.DESIRABLE \
+                        and (m[1][1] in ("glossary", "category")
+                             or norms[m[0] - 1] in ("point", "area", "station", "zone", "centre", "center", "post")) \
+                        and self._relations.match_at(norms, m[0]) is not None:
+                    # "we've set the muster point across from the site office": the description's head is what the
+                    # place is said to be
+                    blocked.difference_update(range(h, m[0]))
         marker_tokens = {i for a, b, _ in ex.markers for i in range(a, b)}
         blocked |= marker_tokens
         blocked |= self._struck_tokens(toks)  # what a log line strikes through says nothing
@@ -7607,7 +7721,7 @@ class ReportAnalyzer:
                 continue
             if norms[b - 1] == "swamped" and norms[b:b + 1] == ("with",):
                 continue  # "swamped with injured guests": overwhelmed, no water
-            if cat == self._person_category and self._safe_for(norms, a):
+            if cat == self._person_category and self._safe_for(toks, norms, a):
                 continue  # "confirmed safe for the walking patients and visitors": whom a safe place is for
             if norms[a:b] == ("clear",) and toks.sentence_start[a] and b < len(norms) \
                     and norms[b] in ("everyone", "everybody", "people", "all", "out", "the", "them"):
@@ -7640,6 +7754,9 @@ class ReportAnalyzer:
                     and not norms[b].endswith(("ing", "ed")) and self._cues.match_at(norms, b) is None \
                     and toks.gaps[b].strip() == "":
                 continue  # "the diesel day tank's shifted on its mounts", "the petrol station": what a thing holds
+            if b - a == 1 and norms[a] in _SUBSTANCE_MODIFIERS and a > 0 and norms[a - 1] == "for" \
+                    and (b >= len(norms) or toks.clause_start[b]):
+                continue  # "heading to the bowser for diesel": what someone goes there for, nothing spilt
             if norms[b:b + 1] == ("out",) and norms[b + 1:b + 2] != ("of",) \
                     and any(norms[m] in ("put", "putting", "got", "getting") for m in range(max(0, a - 3), a)) \
                     and self.kb.category_by_name[cat].role == Role.UNDESIRABLE:
@@ -7813,8 +7930,12 @@ class ReportAnalyzer:
                     cue = replace(cue, category=und, source="lexicon", reason=f"a thing {norms[a]}")
             if source == "lexicon" and norms[a:b] in (("slumped",), ("slumping",)) and cue.category == self._person_category \
                     and (self._thing_before(norms, a, self._place_tokens) or next(
-                        (w for w in reversed(norms[max(0, a - 3):a]) if w not in ("has", "have", "s", "is", "just", "partly")
-                         and w not in lx.FILLERS), "") in lx.EARTHWORKS):
+                        (w for w in reversed(norms[max(0, a - 5):a]) if w not in ("has", "have", "s", "is", "just", "partly",
+                                                                                  "that", "thats", "which", "itself")
+                         and w not in lx.FILLERS), "") in lx.EARTHWORKS | {"stockpile", "pile"}
+                         or any(i in self._place_tokens for i in range(max(0, a - 4), a - 2))
+                         and norms[a - 3:a] in (("itself", "that", "s"), ("itself", "thats", "s"), ("itself", "that", "has"))):
+                # ("it's the lump stockpile itself that's slumped")
                 und = self._category_for_role(lx.UNDESIRABLE, "slumped, collapsed ground")
                 if und is not None:
                     cue = replace(cue, category=und, reason="ground slumped")  # "part of the face has slumped"
@@ -7869,7 +7990,15 @@ class ReportAnalyzer:
                     norms[j] in lx.MOVING_PEOPLE for j in range(max(0, a - 4), a)):
                 continue  # "forty of us who came down from the campsite": people moving, nothing fallen
             if norms[a:b] in (("gone", "under"), ("going", "under"), ("went", "under")) \
-                    and self.kb.category_by_name[cue.category].role == Role.CRITICAL:
+                    and norms[b:b + 1] in (("a",), ("an",)) and not toks.clause_start[b] \
+                    and norms[b + 1:b + 2] not in (("wave",), ("boat",)):
+                continue  # "foot went under a lorry wheel": how someone was hurt, not a place's claim
+            if norms[a:b] in (("gone", "under"), ("going", "under"), ("went", "under")) \
+                    and self.kb.category_by_name[cue.category].role == Role.CRITICAL \
+                    and not (norms[b:b + 1] in (("a",), ("an",), ("the",), ("his",), ("her",), ("their",))
+                             and not toks.clause_start[b] and b + 1 < len(norms)
+                             and norms[b + 1] not in lx.WATER_WORDS | lx.WATER_BODIES | {"waves", "surface", "ice"}):
+                # (not "his foot went under a lorry wheel": under a thing, caught, no water)
                 near = range(max(0, a - 3), a)
                 # a place (or a place's own thing said as a noun: "the yard's gone under") before it, and no person
                 thing_near = cue.category == self._person_category and any(
@@ -8338,6 +8467,8 @@ class ReportAnalyzer:
             j -= 1
         if j >= 1 and norms[j] in ("there", "here") and norms[j - 1] in ("up", "down", "in", "over", "out", "back"):
             j -= 2  # "one of the riggers up there has collapsed": where they are, between
+        elif j >= 1 and norms[j] in ("there", "here") and norms[j - 1] not in lx.FUNCTION_WORDS:
+            j -= 1  # "one of the medics there has collapsed"
         k = next((k for k in range(j - 1, max(-1, j - 4), -1) if norms[k] in ("in", "wearing")), None)
         if k is not None and k >= 1 and (norms[k - 1] in lx.LAY_PERSONS or norms[k - 1] in lx.WORKER_PERSONS) \
                 and all(norms[m].isalpha() or "-" in norms[m] for m in range(k + 1, j + 1)):
@@ -8471,8 +8602,9 @@ class ReportAnalyzer:
         # place named so)
         places = {i for p in getattr(self, "_places_now", []) for i in range(p.start_tok, p.end_tok - 1)}
         for j in range(a - 1, max(-1, a - 25), -1):
-            if j in places or j >= 2 and norms[j - 1] in lx.ARTICLES and norms[j - 2] == "by":
-                continue  # (or an animal that did it, "kicked by a cow")
+            if j in places or j >= 2 and norms[j - 1] in lx.ARTICLES and norms[j - 2] in ("by", "after"):
+                continue  # (or an animal that did it, "kicked by a cow"; or gone after: "gone in after a dog and is
+                # in trouble")
             if norms[j] in ("they", "theyre", "theyve", "them"):
                 they = True  # (whoever "they" are: the sentence before says)
                 continue
@@ -8968,6 +9100,9 @@ class ReportAnalyzer:
             if norms[k] in ("up", "down", "over", "across", "out") and norms[k + 1:k + 2] in (("to",), ("into",)) \
                     and any(norms[m] in lx.MOVING_VERBS for m in range(max(0, j - 2), j + 1)):
                 continue  # "We've moved our old people up to the tin tabernacle": taken somewhere, no one in need
+            if w in _KIN and any(norms[m] in ("lost", "missing", "separated") or norms[m:m + 2] == ("cant", "find")
+                                 for m in range(0, i) if toks.sentence_of[m] == toks.sentence_of[i]):
+                continue  # "lost child at the dodgems, her mum's at the first aid tent": who waits for the child
             t0, t1 = toks.tokens[i], toks.tokens[k]
             out.append(CueMention(i, k + 1, t0.start, t1.end, toks.text[t0.start:t1.end], cat, "lexicon",
                                   reason="a person placed at the scene"))
@@ -9314,6 +9449,7 @@ class ReportAnalyzer:
         if _exercise_frame(norms):
             return [replace(c, polarity="denied", reason="exercise or training message") for c in cues]
         alarms: dict[int, int] = {}  # sentence -> the token before which its claims are denied
+        danger_only: dict[int, bool] = {}  # sentences whose alarm only says what a danger was
         withdrawn: set[int] = set()  # sentences a withdrawal takes back whole, safe places with the rest
         places_now = getattr(self, "_places_now", [])
         positions: dict[str, list[int]] = {}
@@ -9390,6 +9526,8 @@ class ReportAnalyzer:
                         until = min(repaired)
                     alarms[sentence_of[i]] = max(alarms.get(sentence_of[i], 0), until)
                     n = sentence_of[i]
+                    explained = phrase in lx.DANGER_EXPLAINED  # ("just steam" says what the smoke was, not the hurt)
+                    danger_only[n] = danger_only.get(n, True) and explained
                     if phrase in lx.PREVIOUS_REPORT_WITHDRAWN:
                         withdrawn.add(n)
                     if phrase in lx.WHOLE_REPORT_WITHDRAWN:
@@ -9407,6 +9545,7 @@ class ReportAnalyzer:
                                  and not any(sentence_of[p.start_tok] == n for p in places_now)):
                         # "Fire at the bakery! ... oh, no, sorry, it's just steam off their ovens, false alarm."
                         alarms[n - 1] = len(norms)
+                        danger_only[n - 1] = danger_only.get(n - 1, True) and explained
                         opens = [norms[j] for j in range(i) if sentence_of[j] == n - 1 and norms[j] not in lx.FILLERS][:2]
                         if n > 1 and opens in (["it", "was"], ["that", "was"], ["turned", "out"], ["it", "turned"]):
                             # "... someone in the water at the weir? It was a log with a coat snagged on it. There's
@@ -9426,7 +9565,9 @@ class ReportAnalyzer:
         safe_said = {sentence_of[c.start_tok] for c in cues if self.kb.category_by_name[c.category].role == Role.DESIRABLE
                      and {"safe", "clear", "secure", "secured"} & set(norms[c.start_tok:c.end_tok])}
         return [replace(c, polarity="denied", reason="false alarm")
-                if c.start_tok < alarms.get(sentence_of[c.start_tok], -1) and (
+                if c.start_tok < alarms.get(sentence_of[c.start_tok], -1) and not (
+                    danger_only.get(sentence_of[c.start_tok]) and self.kb.category_by_name[c.category].role == Role.CRITICAL
+                    and sentence_of[c.start_tok] not in withdrawn) and (
                     sentence_of[c.start_tok] in withdrawn or sentence_of[c.start_tok] not in safe_said
                     or self.kb.category_by_name[c.category].role != Role.DESIRABLE) else c for c in cues]
 
@@ -9440,7 +9581,9 @@ class ReportAnalyzer:
         a = k
         while a > 0 and not toks.clause_start[a] and norms[a - 1] in lx.BACK_REFERENCE_WORDS | lx.FILLERS:
             a -= 1
-        if a == k or not toks.clause_start[a] or a == 0 or set(norms[a:k]) & _CLEARING_SUBJECTS:
+        but = a < k and a > 1 and not toks.clause_start[a] and norms[a - 1] == "but"  # ("had smoke earlier but
+        a -= but  # that's cleared now": the clause "but" opens)
+        if a == k or not (toks.clause_start[a] or but) or a == 0 or set(norms[a:k]) & _CLEARING_SUBJECTS:
             return False  # (not "we've cleared it": the crew has emptied the place)
         b = a - 1
         while b > 0 and not toks.clause_start[b]:
@@ -9521,7 +9664,9 @@ class ReportAnalyzer:
             j -= 1
             steps += 1
         cancelled_by = None
-        missing = " ".join(norms[cue.start_tok:cue.end_tok]) in lx.MISSING_CUES  # ("found him" ends only this)
+        missing = " ".join(norms[cue.start_tok:cue.end_tok]) in lx.MISSING_CUES \
+            or bool({"lost", "missing", "separated"} & set(norms[cue.start_tok:cue.end_tok]))  # ("found him" ends only
+        # this; a glossary's "separated child" too)
         # cancellation after: "the fire is out", "gas leak fixed", "fire under control"
         k = cue.end_tok
         steps = 0
@@ -9685,8 +9830,13 @@ class ReportAnalyzer:
                     and not any(toks.clause_start[m] for m in range(j + 1, said_by + 1)) \
                     and not any(j <= q.start_tok < said_by for q in self._places_now):
                 j = said_by + 1  # "ref the fire in the building adjoining the granary, fire service confirm it's out"
-            while j < len(norms) and j - k < 6 and norms[j] in lx.BACK_REFERENCE_WORDS | lx.FILLERS:
-                j += 1
+            while j < len(norms) and j - k < 6 and (norms[j] in lx.BACK_REFERENCE_WORDS | lx.FILLERS
+                                                    or norms[j] in ("no", "hang", "on", "wait") and "its" in norms[j + 1:j + 4]):
+                j += 1  # ("swinging load on the goliath... no hang on it's, it's landed")
+            if missing and j + 1 < len(norms) and norms[j] in ("her", "his", "their", "the") and norms[j + 1] in _KIN:
+                j += 1  # ("her mum's turned up")
+            if missing and j < len(norms) and norms[j] in _KIN and not toks.clause_start[j + 1:j + 2] == (True,):
+                j += 1  # "the separated child at the toffee apples, mum's turned up": the one looked for, found
             h = self._cancel.match_at(norms, j) if j < len(norms) else None
             if h is not None and h[1] in ("gone", "is gone", "has gone") and norms[cue.end_tok - 1] == "gone":
                 h = None  # "the roof's gone, just gone": the cue's own word said again
@@ -9722,6 +9872,13 @@ class ReportAnalyzer:
         cleared = negated_by is None and cancelled_by is None and cue.start_tok > 0 \
             and self.kb.category_by_name[cue.category].role == Role.DESIRABLE \
             and norms[cue.start_tok:cue.end_tok] == ("cleared",)
+        if cleared and norms[cue.start_tok - 1] in ("has", "have") and norms[cue.end_tok:cue.end_tok + 1] == ("it",) \
+                and any(norms[m] in _CLEARING_THINGS for m in range(max(0, cue.start_tok - 4), cue.start_tok - 1)) \
+                and any(self.kb.category_by_name[c].role == Role.UNDESIRABLE and s_ < cue.start_tok
+                        and toks.sentence_of[s_] == toks.sentence_of[cue.start_tok]
+                        for s_, _, (c, _src) in self._cues.find_all(norms) if c in self.kb.category_by_name):
+            # "the ammonia leak in the engine room, the extraction fans have cleared it": the danger has gone
+            return replace(cue, polarity="denied", reason="the danger before it was cleared")
         if cleared and self._cleared_of_danger_before(toks, norms, cue.start_tok):
             # "the chlorine smell at the filters, that's cleared now": the danger the clause before spoke of
             return replace(cue, polarity="denied", reason="the danger before it was cleared")
@@ -10278,6 +10435,10 @@ class ReportAnalyzer:
                 continue
             first_at = next((i for i in range(a, b) if norms[i] not in lx.FILLERS and norms[i] not in ("and", "so")), b)
             first = norms[first_at] if first_at < b else ""
+            if norms[a] == "and" and k > 0 and not seg_usable.get(k - 1) and not seg_cues.get(k - 1) \
+                    and sentence_of[segs[k - 1][0]] == sentence_of[a] \
+                    and norms[segs[k - 1][0]] in ("it", "its") and segs[k - 1][1] - segs[k - 1][0] <= 3:
+                first = norms[segs[k - 1][0]]  # ("bringing him to the sick bay, it's heated and set up as our warm room")
             storey = first not in ("it", "its", "there", "thats", "theres") and any(
                 (norms[i] in lx.STOREY_WORDS and ("on", "the") in (norms[i - 2:i], norms[i - 3:i - 1])
                  or norms[i] in ("first", "second", "third", "fourth", "fifth", "top") and norms[i - 2:i] == ("on", "the"))
@@ -10309,6 +10470,10 @@ class ReportAnalyzer:
                 if here and not seg_usable.get(prev):
                     pairs.extend(Claim(replace(here[-1], status="active"), c) for c in cs)
                     continue
+            if k > 0 and all(c.polarity == "denied" for c in cs) and "there" in norms[a:b] \
+                    and sentence_of[segs[k - 1][0]] == sentence_of[a] and seg_usable.get(k - 1) \
+                    and all(q.status == "negated" for q in seg_usable[k - 1]):
+                continue  # "..., the fuel farm's not affected, no fire there": said of the place just set apart
             if all(c.category == self._person_category for c in cs) and self._person_category is not None:
                 # "we're at the hotel, and the -- the groom's uncle has collapsed": a person said to need help, in
                 # the sentence that says where the speaker is and names no other place, is there
@@ -11266,6 +11431,22 @@ class ReportAnalyzer:
                 return nxt  # "the injured porter, he's in the tea warehouse": where the person is said to be
         # the nearest earlier segment with places ("the bakery — it's on fire", "Checked the school. All clear."),
         # over sentences that are transparent (questions, one-word answers, more about the same place)
+        lo = segs[k - 1][0] if k > 0 and not seg_places.get(k - 1) and not seg_cues.get(k - 1) \
+            and sentence_of[segs[k - 1][0]] == sentence_of[segs[k][0]] else segs[k][0]  # ("there's a — a fire")
+        said = [w for w in norms[lo:segs[k][1]] if w not in lx.FILLERS]
+        if "theres" in said or any(said[i] == "there" and said[i + 1:i + 2] in (["is"], ["a"], ["an"], ["some"])
+                                   and (i == 0 or said[i - 1] not in ("in", "over", "out", "up", "down"))
+                                   for i in range(len(said))):
+            # "..., but now there's a fire, small one, in the spray store": a danger brought in anew, and where,
+            # said after a short aside
+            for j in (k + 1, k + 2):
+                if j >= len(segs) or sentence_of[segs[j][0]] != sentence_of[segs[k][0]] or seg_cues.get(j):
+                    break
+                if seg_places.get(j):
+                    first = next((w for w in norms[segs[j][0]:segs[j][1]] if w not in lx.FILLERS), "")
+                    if j == k + 2 and first in ("in", "at", "inside", "on"):
+                        return j
+                    break
         for j in range(k - 1, -1, -1):
             if seg_places.get(j):
                 between = range(sentence_of[segs[j][0]] + 1, sentence_of[segs[k][0]])
@@ -11598,7 +11779,8 @@ _WAY_VERBS = frozenset({"leads", "lead", "climbs", "climb", "runs", "run", "goes
 _WHERE_ADVERBS = frozenset({"out", "west", "east", "north", "south", "over", "up", "down", "back", "there", "right", "just",
                             "way"})  # (between a place and where it stands: "the big pine out west by the quarry")
 # Where a place sits, said without its posture ("the landing area beside it" for ``sits beside``): not "over" or "by"
-_POSTURE_PLACES = frozenset({"beside", "behind", "alongside", "against", "beneath", "underneath", "below", "above", "next"})
+_POSTURE_PLACES = frozenset({"beside", "behind", "alongside", "against", "beneath", "underneath", "below", "above", "next",
+                             "outside"})
 _POSTURES = frozenset({"sits", "stands", "lies", "sit", "stand", "lie"})  # verbs of where a place is, not what it does
 _EMIT_VERBS = frozenset({"blows", "sends", "pours", "spills", "throws", "casts", "sheds", "vents", "drifts"})
 _EMIT_ENDINGS = ("over", "onto", "across")  # (what one place puts over another and the other gets off it: "blows its smoke over")
@@ -11922,6 +12104,12 @@ class _CancelMatcher(PhraseMatcher[str]):
         if hit is not None and hit[1].endswith("gone") and norms[hit[0]:hit[0] + 1] in (
                 ("up",), ("into",), ("onto",), ("through",), ("across",), ("over",)):
             return None  # "the gas ring's gone up", "sparks have gone into the dry grass": caught fire, moved; not gone
+        if hit is not None and hit[1].endswith(" over") and norms[hit[0]:hit[0] + 1] in (
+                ("topping",), ("flowing",), ("spilling",), ("running",)):
+            return None  # "the lagoon is over-topping": the word written apart, the danger itself; nothing over
+        if hit is not None and hit[1].endswith("landed") and norms[hit[0]:hit[0] + 1] in (
+                ("on",), ("in",), ("at",), ("onto",), ("near",), ("by",), ("across",)):
+            return None  # "embers landed on the thatch": where they fell, nothing set down safely
         if hit is not None and hit[1].endswith("stopped") and "short" in norms[hit[0]:hit[0] + 2]:
             return None  # "the debris stopped short of the track": the danger is there, only not as far as that
         return hit
@@ -11964,6 +12152,12 @@ _NOT_HEADS = lx.PREPOSITIONS | lx.COPULAS | lx.FILLERS | lx.PRONOUNS | lx.INVERS
 _SHED_HEADS = frozenset({"shed", "hut", "cabin"})
 # The parts of a building said in the plural ("the shed roofs", "the cottage doors")
 _PART_PLURALS = frozenset({w + "s" for w in lx.STOREY_WORDS | lx.PART_NOUNS} | {"doors", "windows"})
+# Words of a repair said between a name cut off and the one put in its stead ("st— no hang on, it's the")
+_REPAIR_GAP_WORDS = frozenset({"no", "wait", "hang", "on", "sorry", "i", "mean", "its", "it", "is", "s", "the", "a", "an",
+                               "oh", "actually", "correction", "at", "in"})
+# A lost child's people ("mum's turned up")
+_KIN = frozenset({"mum", "mom", "mam", "dad", "nan", "gran", "grandma", "grandad", "mother", "father", "parents", "parent",
+                  "family"})
 # Substances that, said before a noun, only say what a thing holds or runs on ("the diesel day tank")
 _SUBSTANCE_MODIFIERS = frozenset({"diesel", "petrol", "fuel", "oil", "chlorine", "ammonia", "kerosene", "avgas"})
 # ... and the nouns after them that are the danger itself ("chlorine release", "diesel slick")
@@ -12104,6 +12298,9 @@ def _anchor_receives(rel: Relation, anchor: str) -> bool:
 _SOUND_ALIKE_WORDS = {"leak": "leek", "leaking": "leeking", "leaked": "leeked", "hole": "whole"}
 # Who may clear a place of people ("we've cleared it"), not a danger that has cleared.
 _CLEARING_SUBJECTS = frozenset({"ive", "weve", "theyve", "they", "theyre", "ve", "re", "we", "i"})
+# Things, not people, that clear a danger away ("the extraction fans have cleared it": the fumes, not a search)
+_CLEARING_THINGS = frozenset({"fan", "fans", "extraction", "extractor", "extractors", "ventilation", "vents", "wind",
+                              "breeze", "rain", "pump", "pumps"})
 # Danger words that name no kind of danger, only to keep out or get out ("keep everyone out of it").
 _UNSPECIFIC_DANGERS = frozenset(norm_phrase(p) for p in (
     "everyone out", "get everyone out", "everybody out", "keep out", "stay out", "stay away", "keep away", "keep clear",
@@ -12233,6 +12430,16 @@ def _relation_forms(phrase: str) -> list[tuple[str, bool]]:
             and words[1].isalpha() and words[1] not in lx.FUNCTION_WORDS and words[-1] in lx.RELATION_ENDINGS:
         # "the pavilion that draws its cooling water from the lake" for ``draws cooling water from``
         out.extend((" ".join([words[0], owner, *words[1:]]), False) for owner in ("its", "their"))
+    if len(words) == 3 and words[0].endswith("s") and not words[0].endswith("ss") and words[0] not in lx.COPULAS \
+            and words[1].isalpha() and len(words[1]) >= 4 and words[1] not in lx.FUNCTION_WORDS \
+            and words[1] not in lx.DIRECTION_FAMILIES and not _direction_word(words[1]) \
+            and words[2] in ("from", "to", "into", "onto"):
+        # "the plant that draws from the pond" for ``draws water from``: what it draws left unsaid
+        out.extend(f for f in _relation_forms(f"{words[0]} {words[2]}") if not f[1])
+    if len(words) >= 4 and words[0].endswith("s") and words[1] in ("up", "down") \
+            and words[2] in ("out", "off", "over", "into", "onto", "through"):
+        # "the ramp that climb out of the test hall" for ``climbs up out of``
+        out.extend(f for f in _relation_forms(" ".join([words[0], *words[2:]])) if not f[1])
     # direction words: "seaward of" is also "on the sea side of"; "landward of" reads it backwards
     for i, w in enumerate(words):
         if w not in lx.DIRECTION_FAMILIES:
@@ -12254,6 +12461,12 @@ def _relation_forms(phrase: str) -> list[tuple[str, bool]]:
     swapped = [lx.ANTONYMS.get(w, w) for w in words]
     if swapped != words:
         out.append((" ".join(swapped), True))
+    # (an adverb inside said another way: "whatever comes right before the wax tunnel" for ``comes straight after``)
+    for ws, inverse in ((words, False), (swapped, True)) if swapped != words else ((words, False),):
+        for i, w in enumerate(ws[1:-1], start=1):
+            if w in ("straight", "right", "just", "directly"):
+                out.extend((" ".join([*ws[:i], other, *ws[i + 1:]]), inverse)
+                           for other in ("straight", "right", "just", "directly") if other != w)
     if words[0] in ("sits", "stands", "lies") and len(words) >= 4 and words[-1] in ("with", "to", "of"):
         out.append((" ".join(words[1:]), False))  # "the cottage cheek by jowl with the tea room": the posture unsaid
     elif words[0] in ("runs", "stretches", "extends") and len(words) >= 4 and words[1] in ("along", "across", "around",
@@ -12261,7 +12474,7 @@ def _relation_forms(phrase: str) -> list[tuple[str, bool]]:
             and words[-1] == "of":
         out.append((" ".join(words[1:]), False))  # "the canal along the foot of the dyke road": the way it runs unsaid
     elif words[0] in _POSTURES and 2 <= len(words) <= 3 and words[1] in _POSTURE_PLACES \
-            and words[-1] in lx.RELATION_ENDINGS | _SPATIAL_ENDINGS:
+            and words[-1] in lx.RELATION_ENDINGS | _SPATIAL_ENDINGS | {"outside"}:
         out.append((" ".join(words[1:]), False))  # "the landing area beside it" for ``sits beside``
     if len(words) >= 4 and words[1] in ("out", "up", "down", "back", "along") and words[0].endswith("s") \
             and words[2] in ("in", "on", "at", "by", "to", "into", "onto", "over", "under", "behind", "beside") \

@@ -100,6 +100,9 @@ lifted clean off|
 uprooted|windthrown|windthrow|blown down|
 blown into the crowd|blew into the crowd|treacherous|stones flying|flying stones|debris flying|flying debris|thick with vapour|thick with fumes|thick with gas|full of vapour|thick with vapor|
 snake|snakes|a snake|venomous snake|adder|adders|viper|vipers|rattlesnake|rattlesnakes|
+loose cattle|loose cows|loose bull|bull is loose|bull's loose|bull s loose|loose livestock|cattle loose|cattle are loose|cattle have got out|cows have got out|stampede|stampeding|
+could drop any second|could drop any minute|could drop at any moment|
+over topping|is over topping|lost its brakes|lost his brakes|lost her brakes|no brakes|brakes have gone|brakes failed|
 lines snapped|line snapped|line's snapped|cable snapped|cable's snapped|cables snapped|rope snapped|rope's snapped|whipping around|whipping about|whipping round|
 """.replace("\n", ""))
 
@@ -311,11 +314,24 @@ cut badly|cut really badly|cut quite badly|cut pretty badly|cut quite bad|cut pr
 through the ice|lost a finger|lost two fingers|lost his fingers|lost her fingers|lost some fingers|severed|mangled|
 broke his wrist|broke her wrist|broken his wrist|broken her wrist|feeling faint|felt faint|feel faint|went faint|gone faint|
 come over faint|came over faint|hit in the face|hit in the head|hit in the eye|hit in the chest|struck in the face|
+can't find my nan|can't find my gran|can't find my grandma|can't find my grandad|can't find my grandpa|lost my nan|lost my gran|lost my grandma|
+person fall|a person fall|man fall|woman fall|worker fall|fall from height|fell from height|fallen from height|
+blood on head|have blood on|has blood on|head cut|bad head cut|nasty head cut|a bad cut|nasty cut|
+someone is under|someone's under|somebody is under|somebody's under|someone under them|somebody under them|
 been trampled|got trampled|was trampled|trampled by|been trampled on|overcome by fumes|overcome by the fumes|overcome by vapour|overcome by the vapour|
 overcome by gas|overcome by the gas|
 """.replace("\n", ""))
 
 # "collapsed" alone is structural (hazard); "collapsed inside" / "passed out" is a person.
+
+# Fights and violence: a danger only where the KB's own words say violence is one (a racecourse's "there's a fight,
+# one man with a head wound" is the hurt man; a festival's "violence" in its danger's description makes the fight one).
+VIOLENCE_CUES = """a fight|fight's broken out|fight has broken out|fight broke out|fight's kicked off|fight has kicked off|
+fights breaking out|fighting with|lads fighting|men fighting|people fighting|blokes fighting|fans fighting|a brawl|brawl|
+brawling|punch-up|punch up|a punch-up|scuffle|scuffles|a scuffle|fisticuffs|bottles flying|bottles being thrown|
+throwing bottles|pulled a knife|waving a knife|brandishing a knife""".replace("\n", "").split("|")
+VIOLENCE_WORDS = {"violence", "violent", "fight", "fights", "fighting", "brawl", "brawls", "disorder", "assault",
+                  "assaults", "aggression", "affray"}
 
 # Words that negate a following cue within a short window (same clause).
 NEGATORS = {
@@ -327,7 +343,7 @@ NEGATOR_PHRASES = ["no one", "no longer", "not any", "free of", "clear of", "no 
                    "no more", "not anymore", "any more", "no trace of", "no evidence of", "ruled out", "well away from",
                    "away from the", "far from the", "out of the way of", "upwind of the", "safe from the",
                    "fleeing the", "fled the", "escaping the", "escaped the", "sheltering from the", "shelter from the",
-                   "refuge from the"]
+                   "refuge from the", "all clear on the", "all-clear on the", "all clear for the"]
 
 # Hesitations a cancelling phrase may hold ("the fire at the granary is, er, out").
 HESITATIONS = {"uh", "um", "er", "erm", "ah", "eh"}
@@ -346,7 +362,7 @@ CANCEL_AFTER = ["fully out", "is fully out", "damping down", "damping down is fi
                 "has cleared", "have cleared", "s cleared", "has lifted", "s lifted", "has been lifted", "have lifted", "has gone down", "s gone down",
                 "has receded", "s receded", "have receded", "gone down now", "has gone back down", "s gone back down", "gone back down", "off the boards now", "old news", "pumped it out",
                 "pumped it all out", "brought down", "been brought down", "been broke loose", "been broken loose",
-                "been broken up", "been broke up", "been freed", "running clean again",
+                "been broken up", "been broke up", "been freed", "running clean again", "backfilled", "been backfilled", "fenced off and backfilled", "is fenced off and backfilled", "been flown out", "flown out", "been airlifted", "airlifted out", "been airlifted out", "gone off site", "gone off site in the ambulance", "back together", "been reunited", "reunited with", "back with mum", "back with his mum", "back with her mum", "back with their mum", "it's landed", "its landed", "landed", "load's landed", "load has landed", "landed safely", "on the deck now",
                 "all been brought down", "got them down", "nobody left", "water's gone down", "water has gone down",
                 "water's receded", "water has receded", "flood's gone down", "flooding's gone down",
                 "extinguished", "under control", "contained", "is over", "has stopped", "stopped",
@@ -389,7 +405,9 @@ CANCEL_SAID_AGAIN = {"old news", "pumped it out", "pumped it all out", "pumped o
                      "been put out", "got that out"}
 # ... of which these revoke only a missing person ("lost child at the aviary, mum's found her")
 CANCEL_MISSING_ONLY = {"found her", "found him", "found them", "found safe", "he's been found", "she's been found",
-                       "they've been found", "turned up", "has turned up", "s turned up", "turned up safe"}
+                       "they've been found", "turned up", "has turned up", "s turned up", "turned up safe",
+                       "back together", "been reunited", "reunited with", "back with mum", "back with his mum",
+                       "back with her mum", "back with their mum"}
 MISSING_CUES = {"missing", "lost", "lost child", "last seen", "unaccounted for", "missing person", "missing persons",
                 "not accounted for", "can't find", "cannot find", "lost contact with"}
 # Words after which a cancelling phrase says what will end a danger, not that it has ended.
@@ -408,7 +426,8 @@ CANCEL_PEOPLE_ONLY = {"aboard now", "is aboard", "now aboard", "on board now", "
                       "lifted off", "been lifted off", "winched up", "been winched up", "taken off", "been taken off",
                       "picked up", "been picked up", "handed to the ambulance crew", "handed over to the ambulance",
                       "been handed over", "been handed to the ambulance crew", "nobody was in", "no one was in",
-                      "walked off", "empty", "nobody in", "no one in",
+                      "walked off", "empty", "nobody in", "no one in", "been flown out", "flown out", "been airlifted",
+                      "airlifted out", "been airlifted out", "gone off site", "gone off site in the ambulance",
                       "nobody was inside", "no one was inside", "found her", "found him", "found them",
                       "found safe", "walked out", "she's out", "he's out", "they're out", "she's okay", "he's okay",
                       "they're okay", "carried away", "been carried away", "been moved", "moved away",
@@ -507,6 +526,14 @@ EXERCISE_FRAME = ["this is an exercise", "this is a drill", "training scenario",
 # the whole report before it.
 _WITHDRAWN_WARNINGS = ["withdraw my earlier warning", "withdraw my warning", "withdraw my earlier report", "withdraw my last",
                        "withdraw that warning", "withdraw the warning", "withdraw my report"]
+
+# False alarms that only say what a danger was ("it's just steam"): a person hurt in the same sentence stays hurt.
+DANGER_EXPLAINED = {"just steam", "only steam", "just fog", "only fog", "just mist", "only mist", "someone's extractor fan",
+                    "someones extractor fan", "their extractor fan", "just the extractor fan", "only the extractor fan",
+                    "was the extractor fan", "controlled burn", "controlled bonfire", "controlled fire", "burning the prunings",
+                    "burning prunings", "burning off the", "burning leaves in a brazier", "burning leaves in a",
+                    "was a barbecue", "was a bbq", "was a bonfire", "it's a bonfire", "its a bonfire", "it's just a bonfire",
+                    "it's only a bonfire", "it's a barbecue", "its a barbecue", "garden bonfire"}
 
 # Whole-report "nothing to see" markers that cancel every claim in their sentence.
 FALSE_ALARM = ["false alarm", "scratch their earlier call", "scratch my earlier call", "scratch our earlier call",
@@ -1097,7 +1124,8 @@ WORKER_PERSONS = {"driver", "worker", "workman", "lad", "labourer", "passenger",
                   "porter", "nurse", "midwife", "tourist", "walker", "climber", "swimmer", "diver", "angler", "member",
                   "rigger", "roustabout", "roughneck", "driller", "welder", "scaffolder", "miner", "logger", "docker",
                   "stevedore", "farmhand", "kayaker", "canoeist", "skier", "staff", "skater", "cook", "chef", "lifeguard",
-                  "stockman", "stockmen", "exhibitor", "handler", "herdsman", "shepherd", "farrier", "groom"}
+                  "stockman", "stockmen", "exhibitor", "handler", "herdsman", "shepherd", "farrier", "groom",
+                  "bearer", "bearers", "drummer", "piper", "dancer", "performer", "musician", "singer", "juggler"}
 # Who calls in, said before where they are ("Security guard at the savings bank."): a role, not a claim.
 CALLER_ROLES = {"guard", "warden", "officer", "patrol", "assistant", "attendant", "manager", "caretaker", "courier",
                 "inspector", "first-aider", "firstaider", "aider", "volunteer", "medic", "paramedic", "constable",
@@ -1212,7 +1240,7 @@ DANGER_KINDS: dict[str, list[str]] = {
     "crowd": ["crowd crush", "crowd surge", "surge at", "surge in", "surging", "crammed", "packed solid", "pressed flat",
               "pressed against", "pushed up against", "crushing", "pile-up", "pile up", "overcrowded", "stampede",
               "people pushing", "everyone pushing", "crushed against", "being crushed against", "crush in there",
-              "it's a crush", "a crush at", "a crush on", "a crush by", "crush at the", "a surge",
+              "it's a crush", "the crush is", "crush is at", "crush's at", "a crush at", "a crush on", "a crush by", "crush at the", "a surge",
               "people shoving", "shoving", "jammed solid", "jammed on the", "people jammed", "going over the tables",
               "climbing the fences", "climbing over the barriers", "crowd pressure"],
     "fire": ["has caught", "s caught", "caught fire", "caught light", "fire", "fires", "on fire", "getting very hot", "getting hot", "red hot", "glowing red", "heavy heat", "burning", "burnt", "burned", "burned out", "burnt out", "blaze", "blazing",
