@@ -7991,13 +7991,14 @@ class ReportAnalyzer:
                 continue  # "forty of us who came down from the campsite": people moving, nothing fallen
             if norms[a:b] in (("gone", "under"), ("going", "under"), ("went", "under")) \
                     and norms[b:b + 1] in (("a",), ("an",)) and not toks.clause_start[b] \
-                    and norms[b + 1:b + 2] not in (("wave",), ("boat",)):
+                    and b + 1 < len(norms) and norms[b + 1] not in _UNDER_AMOUNTS | lx.WATER_WORDS:
+                # (not "the yard's gone under a foot of water", "went under a wave")
                 continue  # "foot went under a lorry wheel": how someone was hurt, not a place's claim
             if norms[a:b] in (("gone", "under"), ("going", "under"), ("went", "under")) \
                     and self.kb.category_by_name[cue.category].role == Role.CRITICAL \
                     and not (norms[b:b + 1] in (("a",), ("an",), ("the",), ("his",), ("her",), ("their",))
                              and not toks.clause_start[b] and b + 1 < len(norms)
-                             and norms[b + 1] not in lx.WATER_WORDS | lx.WATER_BODIES | {"waves", "surface", "ice"}):
+                             and norms[b + 1] not in lx.WATER_WORDS | lx.WATER_BODIES | _UNDER_AMOUNTS | {"surface", "ice"}):
                 # (not "his foot went under a lorry wheel": under a thing, caught, no water)
                 near = range(max(0, a - 3), a)
                 # a place (or a place's own thing said as a noun: "the yard's gone under") before it, and no person
@@ -9664,9 +9665,10 @@ class ReportAnalyzer:
             j -= 1
             steps += 1
         cancelled_by = None
+        said = set(norms[cue.start_tok:cue.end_tok])
         missing = " ".join(norms[cue.start_tok:cue.end_tok]) in lx.MISSING_CUES \
-            or bool({"lost", "missing", "separated"} & set(norms[cue.start_tok:cue.end_tok]))  # ("found him" ends only
-        # this; a glossary's "separated child" too)
+            or bool({"lost", "missing", "separated"} & said) and not said & (lx.BODY_PARTS | _LOST_NOT_MISSING)
+        # ("found him" ends only this; a glossary's "separated child" too, not "lost a finger")
         # cancellation after: "the fire is out", "gas leak fixed", "fire under control"
         k = cue.end_tok
         steps = 0
@@ -9881,7 +9883,8 @@ class ReportAnalyzer:
             return replace(cue, polarity="denied", reason="the danger before it was cleared")
         if cleared and self._cleared_of_danger_before(toks, norms, cue.start_tok):
             # "the chlorine smell at the filters, that's cleared now": the danger the clause before spoke of
-            return replace(cue, polarity="denied", reason="the danger before it was cleared")
+            but = "but" in norms[max(0, cue.start_tok - 4):cue.start_tok]  # ("had smoke earlier but that's cleared")
+            return replace(cue, polarity="denied", reason=_CLEARED_AFTER_BUT if but else "the danger before it was cleared")
         if cleared and (norms[cue.start_tok - 1] in ("been", "has", "have")
                         or toks.tokens[cue.start_tok - 1].text.lower().endswith(("'s", "’s")) and any(
                             b == cue.start_tok and self.kb.category_by_name[c].role == Role.UNDESIRABLE
@@ -10851,6 +10854,9 @@ class ReportAnalyzer:
                     and toks.sentence_of[q.cue.start_tok] == toks.sentence_of[c.cue.start_tok]
                     and norms[q.cue.start_tok:q.cue.end_tok] != norms[c.cue.start_tok:c.cue.end_tok] for q in pairs):
                 continue  # "a hot spot on the roof of the valve hut, no flames visible yet": the worse kind not seen yet
+            if c.cue.polarity == "denied" and c.cue.reason == _CLEARED_AFTER_BUT:
+                continue  # "the school is the rest centre, it had a bit of smoke earlier but that's cleared now": the
+                # word says the danger has gone; it takes no safety back
             if c.cue.polarity == "denied" and c.cue.reason in _MADE_SAFE and (
                     kind := self._danger_kind_by_words.get(norm_phrase(c.cue.text))) is not None and any(
                     q.key == c.key and q.cue.polarity == "affirmed" and q.cue.start_tok < c.cue.start_tok
@@ -12155,6 +12161,12 @@ _PART_PLURALS = frozenset({w + "s" for w in lx.STOREY_WORDS | lx.PART_NOUNS} | {
 # Words of a repair said between a name cut off and the one put in its stead ("st— no hang on, it's the")
 _REPAIR_GAP_WORDS = frozenset({"no", "wait", "hang", "on", "sorry", "i", "mean", "its", "it", "is", "s", "the", "a", "an",
                                "oh", "actually", "correction", "at", "in"})
+# What a place may go under that is water, not a thing ("gone under a foot of water", "went under a wave")
+_UNDER_AMOUNTS = frozenset({"foot", "feet", "metre", "metres", "meter", "meters", "yard", "few", "lot", "couple", "sheet",
+                            "wave", "boat", "bit", "good"})
+# Words with "lost" that are no one missing ("lost a finger", "lost consciousness", "lost his footing")
+_LOST_NOT_MISSING = frozenset({"finger", "fingers", "consciousness", "blood", "footing", "grip", "balance", "brakes",
+                               "power", "control"})
 # A lost child's people ("mum's turned up")
 _KIN = frozenset({"mum", "mom", "mam", "dad", "nan", "gran", "grandma", "grandad", "mother", "father", "parents", "parent",
                   "family"})
@@ -12298,6 +12310,8 @@ def _anchor_receives(rel: Relation, anchor: str) -> bool:
 _SOUND_ALIKE_WORDS = {"leak": "leek", "leaking": "leeking", "leaked": "leeked", "hole": "whole"}
 # Who may clear a place of people ("we've cleared it"), not a danger that has cleared.
 _CLEARING_SUBJECTS = frozenset({"ive", "weve", "theyve", "they", "theyre", "ve", "re", "we", "i"})
+# The reason of a "cleared" that only says a danger said before it has gone, after "but": it takes no safety back
+_CLEARED_AFTER_BUT = "the danger before it was cleared, after 'but'"
 # Things, not people, that clear a danger away ("the extraction fans have cleared it": the fumes, not a search)
 _CLEARING_THINGS = frozenset({"fan", "fans", "extraction", "extractor", "extractors", "ventilation", "vents", "wind",
                               "breeze", "rain", "pump", "pumps"})
