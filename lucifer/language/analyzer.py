@@ -199,17 +199,18 @@ class ReportAnalyzer:
                 self._places.add(key, lm.name)
         self._needs_article -= plain
         # "the halls" (of residence) beside "the main hall": the word said in the one number is the other's head
-        singular_heads = {f.split()[-1].lower() for lm in kb.landmarks for f in lm.surface_forms if f.split()}
+        heads_of: dict[str, set[str]] = {}  # last word as written -> the landmarks with a form ending on it
+        for lm in kb.landmarks:
+            for f in lm.surface_forms:
+                if f.split():
+                    heads_of.setdefault(f.split()[-1].lower(), set()).add(lm.name)
         self._plural_only: dict[tuple[str, ...], str] = {}
         for lm in kb.landmarks:
             for f in lm.surface_forms:
                 raw = f.lower().split()
-                key = name_words(f)
-                if len(key) == 1 and raw and raw[-1].endswith("s") and norm(raw[-1]) != raw[-1] \
-                        and norm(raw[-1]) in singular_heads and any(
-                            f2.split() and f2.split()[-1].lower() == norm(raw[-1])
-                            for lm2 in kb.landmarks if lm2.name != lm.name for f2 in lm2.surface_forms):
-                    self._plural_only[key] = lm.name
+                if len(name_words(f)) == 1 and raw and raw[-1].endswith("s") and norm(raw[-1]) != raw[-1] \
+                        and heads_of.get(norm(raw[-1]), set()) - {lm.name}:
+                    self._plural_only[name_words(f)] = lm.name
         # "the medic's": a name that is someone's premises, said of the person alone ("waiting for the medic") is no
         # place (unless another form of it is the bare word)
         bare = {name_words(f) for lm in kb.landmarks for f in lm.surface_forms
@@ -5654,13 +5655,14 @@ class ReportAnalyzer:
                           and not p.text.lower().replace("’", "'").endswith("'s")] or before
             if before:
                 ante = max(before, key=lambda p: p.end_tok)
-                if phrase and norms[j] == "it" and not any(
-                        r.phrase == phrase and ante.landmark in (r.subject, r.object) for r in self.kb.relations):
+                def stands(name: str) -> bool:  # (by the relation's own name: `_relation_matches`, which takes
+                    # the synonym groups too, moves two control reports, so it is not used here yet)
+                    return any(r.phrase == phrase and name in (r.subject, r.object) for r in self.kb.relations)
+                if phrase and norms[j] == "it" and ante.via is not None and not stands(ante.landmark):
                     # "the area outside the main gate is our muster station, and ... the hut just inside it": the
                     # place spoken of is none of the relation's; its reference point, said with it, is
                     ref = [p for p in ex.places if p.end_tok <= b and p.status == "reference" and p.via is None
-                           and ante.via is not None and ante.start_tok <= p.start_tok < ante.end_tok
-                           and any(r.phrase == phrase and p.landmark in (r.subject, r.object) for r in self.kb.relations)]
+                           and ante.start_tok <= p.start_tok < ante.end_tok and stands(p.landmark)]
                     if len(ref) == 1:
                         return ref[0], j + 1, True
                 return ante, j + 1, True
@@ -6538,6 +6540,23 @@ class ReportAnalyzer:
             norms[p.end_tok + d:p.end_tok + d + 3] in see for d in range(3))
 
     @staticmethod
+    def _kin_waiting_at(toks: Tokens, norms: tuple[str, ...], p: PlaceMention) -> bool:
+        """"two kids missing in the dorms ... their mum is at the lodge": where a lost one's people wait, in a
+        sentence that says someone is lost; nothing is said of the place."""
+        k = _noun_phrase_start(norms, p)
+        if k < 3 or norms[k - 1] not in ("at", "in", "by", "outside"):
+            return False
+        waiting = any(
+            norms[m] in _KIN and all(norms[t] in ("is", "s", "are", "waiting", "now", "still", "sat", "sitting", "stood",
+                                                  "standing")
+                                     or t == m + 1 and toks.tokens[m].text.lower().endswith(("'s", "’s"))
+                                     for t in range(m + 1, k - 1))
+            and (m == 0 or norms[m - 1] in ("their", "his", "her", "my", "the", "and", "whose") or toks.clause_start[m])
+            for m in range(max(0, k - 5), k - 1))
+        return waiting and any(norms[c] in _LOST_WORDS for c in range(0, k)
+                               if toks.sentence_of[c] == toks.sentence_of[p.start_tok])
+
+    @staticmethod
     def _everyone_from(toks: Tokens, norms: tuple[str, ...], p: PlaceMention, places: list[PlaceMention]) -> bool:
         """"Everyone from the screens and the stacker, muster there": the people are named by where they are now, and
         told to go elsewhere; nothing is said of those places."""
@@ -6706,18 +6725,9 @@ class ReportAnalyzer:
             if self._watch_point(toks, norms, p):
                 ex.places[idx] = replace(p, status="reference", reason="where the speaker looks from ('From X I can see')")
                 continue
-            k = _noun_phrase_start(norms, p)
-            if k >= 3 and norms[k - 1] in ("at", "in", "by", "outside") and any(
-                    norms[m] in _KIN and all(norms[t] in ("is", "s", "are", "waiting", "now", "still", "sat", "sitting",
-                                                          "stood", "standing")
-                                             or t == m + 1 and toks.tokens[m].text.lower().endswith(("'s", "’s"))
-                                             for t in range(m + 1, k - 1))
-                    and (m == 0 or norms[m - 1] in ("their", "his", "her", "my", "the", "and", "whose") or toks.clause_start[m])
-                    for m in range(max(0, k - 5), k - 1)) and any(
-                    norms[c] in lx.MISSING_CUES or norms[c] in ("lost", "separated", "missing")
-                    for c in range(0, k) if toks.sentence_of[c] == toks.sentence_of[p.start_tok]):
+            if self._kin_waiting_at(toks, norms, p):
                 ex.places[idx] = replace(p, status="reference", reason="where the lost one's people wait: no claim")
-                continue  # "two kids missing in the dorms ... their mum is at the lodge"
+                continue
             if self._everyone_from(toks, norms, p, ex.places):
                 ex.places[idx] = replace(p, status="reference", reason="where the people told to move are from: no claim")
                 continue
@@ -9101,7 +9111,7 @@ class ReportAnalyzer:
             if norms[k] in ("up", "down", "over", "across", "out") and norms[k + 1:k + 2] in (("to",), ("into",)) \
                     and any(norms[m] in lx.MOVING_VERBS for m in range(max(0, j - 2), j + 1)):
                 continue  # "We've moved our old people up to the tin tabernacle": taken somewhere, no one in need
-            if w in _KIN and any(norms[m] in ("lost", "missing", "separated") or norms[m:m + 2] == ("cant", "find")
+            if w in _KIN and any(norms[m] in _LOST_WORDS or norms[m:m + 2] == ("cant", "find")
                                  for m in range(0, i) if toks.sentence_of[m] == toks.sentence_of[i]):
                 continue  # "lost child at the dodgems, her mum's at the first aid tent": who waits for the child
             t0, t1 = toks.tokens[i], toks.tokens[k]
@@ -9576,16 +9586,17 @@ class ReportAnalyzer:
         return self._role_category.get("undesirable") or next(
             (c.name for c in self.kb.categories_with_role(Role.UNDESIRABLE)), None)
 
-    def _cleared_of_danger_before(self, toks: Tokens, norms: tuple[str, ...], k: int) -> bool:
+    def _cleared_of_danger_before(self, toks: Tokens, norms: tuple[str, ...], k: int) -> str | None:
         """"the chlorine smell at the filters, that's cleared now": "cleared" at ``k`` opens its clause with only words
-        that take up what was said before, and the clause before has a danger in it: the danger has gone."""
+        that take up what was said before, and the clause before has a danger in it: the danger has gone. The reason to
+        deny the cue with (:data:`_CLEARED_AFTER_BUT` where "but" opens the clause), or None."""
         a = k
         while a > 0 and not toks.clause_start[a] and norms[a - 1] in lx.BACK_REFERENCE_WORDS | lx.FILLERS:
             a -= 1
         but = a < k and a > 1 and not toks.clause_start[a] and norms[a - 1] == "but"  # ("had smoke earlier but
         a -= but  # that's cleared now": the clause "but" opens)
         if a == k or not (toks.clause_start[a] or but) or a == 0 or set(norms[a:k]) & _CLEARING_SUBJECTS:
-            return False  # (not "we've cleared it": the crew has emptied the place)
+            return None  # (not "we've cleared it": the crew has emptied the place)
         b = a - 1
         while b > 0 and not toks.clause_start[b]:
             b -= 1
@@ -9594,8 +9605,10 @@ class ReportAnalyzer:
             b -= 1
             while b > 0 and not toks.clause_start[b]:
                 b -= 1
-        return any(self.kb.category_by_name[c].role == Role.UNDESIRABLE and b <= s < a
-                   for s, _, (c, _src) in self._cues.find_all(norms) if c in self.kb.category_by_name)
+        if not any(self.kb.category_by_name[c].role == Role.UNDESIRABLE and b <= s < a
+                   for s, _, (c, _src) in self._cues.find_all(norms) if c in self.kb.category_by_name):
+            return None
+        return _CLEARED_AFTER_BUT if but else "the danger before it was cleared"
 
     def _apply_cue_negation(self, toks: Tokens, norms: tuple[str, ...], cue: CueMention) -> CueMention:
         # negator shortly before, inside the clause: "no fire", "not safe", "no one trapped"
@@ -9667,7 +9680,7 @@ class ReportAnalyzer:
         cancelled_by = None
         said = set(norms[cue.start_tok:cue.end_tok])
         missing = " ".join(norms[cue.start_tok:cue.end_tok]) in lx.MISSING_CUES \
-            or bool({"lost", "missing", "separated"} & said) and not said & (lx.BODY_PARTS | _LOST_NOT_MISSING)
+            or bool(_LOST_WORDS & said) and not said & (lx.BODY_PARTS | _LOST_NOT_MISSING)
         # ("found him" ends only this; a glossary's "separated child" too, not "lost a finger")
         # cancellation after: "the fire is out", "gas leak fixed", "fire under control"
         k = cue.end_tok
@@ -9881,10 +9894,9 @@ class ReportAnalyzer:
                         for s_, _, (c, _src) in self._cues.find_all(norms) if c in self.kb.category_by_name):
             # "the ammonia leak in the engine room, the extraction fans have cleared it": the danger has gone
             return replace(cue, polarity="denied", reason="the danger before it was cleared")
-        if cleared and self._cleared_of_danger_before(toks, norms, cue.start_tok):
+        if cleared and (why := self._cleared_of_danger_before(toks, norms, cue.start_tok)) is not None:
             # "the chlorine smell at the filters, that's cleared now": the danger the clause before spoke of
-            but = "but" in norms[max(0, cue.start_tok - 4):cue.start_tok]  # ("had smoke earlier but that's cleared")
-            return replace(cue, polarity="denied", reason=_CLEARED_AFTER_BUT if but else "the danger before it was cleared")
+            return replace(cue, polarity="denied", reason=why)
         if cleared and (norms[cue.start_tok - 1] in ("been", "has", "have")
                         or toks.tokens[cue.start_tok - 1].text.lower().endswith(("'s", "’s")) and any(
                             b == cue.start_tok and self.kb.category_by_name[c].role == Role.UNDESIRABLE
@@ -12164,6 +12176,8 @@ _REPAIR_GAP_WORDS = frozenset({"no", "wait", "hang", "on", "sorry", "i", "mean",
 # What a place may go under that is water, not a thing ("gone under a foot of water", "went under a wave")
 _UNDER_AMOUNTS = frozenset({"foot", "feet", "metre", "metres", "meter", "meters", "yard", "few", "lot", "couple", "sheet",
                             "wave", "boat", "bit", "good"})
+# Words that say someone is lost ("missing in the dorms", "the separated child"): a lost one's people and finding
+_LOST_WORDS = frozenset({"lost", "missing", "separated"})
 # Words with "lost" that are no one missing ("lost a finger", "lost consciousness", "lost his footing")
 _LOST_NOT_MISSING = frozenset({"finger", "fingers", "consciousness", "blood", "footing", "grip", "balance", "brakes",
                                "power", "control"})
