@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev120) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev126) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -294,6 +294,30 @@ BONFIRE_NIGHT_COMMON = ROOT / "knowledge_bases" / "bonfire_night_common"
 PUMICE_QUARRY_ISLAND = ROOT / "knowledge_bases" / "pumice_quarry_island"
 GREYHOUND_STADIUM = ROOT / "knowledge_bases" / "greyhound_stadium"
 MUSIC_CONSERVATORY = ROOT / "knowledge_bases" / "music_conservatory"
+VELODROME_TRACK_CENTRE = ROOT / "knowledge_bases" / "velodrome_track_centre"
+POLO_CLUB_GROUND = ROOT / "knowledge_bases" / "polo_club_ground"
+RUM_DISTILLERY_ESTATE = ROOT / "knowledge_bases" / "rum_distillery_estate"
+GEYSER_BASIN_PARK = ROOT / "knowledge_bases" / "geyser_basin_park"
+FLOWER_AUCTION_HALL = ROOT / "knowledge_bases" / "flower_auction_hall"
+POLAR_RESEARCH_STATION = ROOT / "knowledge_bases" / "polar_research_station"
+TRUFFLE_OAK_PLANTATION = ROOT / "knowledge_bases" / "truffle_oak_plantation"
+COCOA_FERMENTARY_COOPERATIVE = ROOT / "knowledge_bases" / "cocoa_fermentary_cooperative"
+ROYAL_MINT_COIN_WORKS = ROOT / "knowledge_bases" / "royal_mint_coin_works"
+BOBSLEIGH_TRACK_VENUE = ROOT / "knowledge_bases" / "bobsleigh_track_venue"
+SHIPBREAKING_BEACH_YARD = ROOT / "knowledge_bases" / "shipbreaking_beach_yard"
+LNG_IMPORT_TERMINAL = ROOT / "knowledge_bases" / "lng_import_terminal"
+SCULPTURE_PARK_ESTATE = ROOT / "knowledge_bases" / "sculpture_park_estate"
+BIOGAS_FARM_DIGESTER = ROOT / "knowledge_bases" / "biogas_farm_digester"
+BAZAAR_OLD_CITY_SOUK = ROOT / "knowledge_bases" / "bazaar_old_city_souk"
+ROWING_LAKE_REGATTA_CENTRE = ROOT / "knowledge_bases" / "rowing_lake_regatta_centre"
+ONSEN_HOT_SPRING_TOWN = ROOT / "knowledge_bases" / "onsen_hot_spring_town"
+SAND_DUNE_BUGGY_PARK = ROOT / "knowledge_bases" / "sand_dune_buggy_park"
+CATTLE_FEEDLOT = ROOT / "knowledge_bases" / "cattle_feedlot"
+POSTAL_SORTING_CENTRE = ROOT / "knowledge_bases" / "postal_sorting_centre"
+OFFSHORE_WIND_SERVICE_PORT = ROOT / "knowledge_bases" / "offshore_wind_service_port"
+MONORAIL_THEME_RESORT = ROOT / "knowledge_bases" / "monorail_theme_resort"
+WASTE_INCINERATOR_PLANT = ROOT / "knowledge_bases" / "waste_incinerator_plant"
+CARNIVAL_PARADE_ROUTE = ROOT / "knowledge_bases" / "carnival_parade_route"
 
 
 def _set(path: str, kb: Path, tag: str, counts: dict[str, int], sep: str = "-") -> dict:
@@ -745,6 +769,30 @@ SETS = {
     "dev120/pumice_quarry_island": _set("dev120/pumice_quarry_island.jsonl", PUMICE_QUARRY_ISLAND, "pq120", TWENTY, sep=""),
     "dev120/greyhound_stadium": _set("dev120/greyhound_stadium.jsonl", GREYHOUND_STADIUM, "gs120", TWENTY, sep=""),
     "dev120/music_conservatory": _set("dev120/music_conservatory.jsonl", MUSIC_CONSERVATORY, "mc120", TWENTY, sep=""),
+    "dev121/velodrome_track_centre": _set("dev121/velodrome_track_centre.jsonl", VELODROME_TRACK_CENTRE, "vd121", TWENTY, sep=""),
+    "dev121/polo_club_ground": _set("dev121/polo_club_ground.jsonl", POLO_CLUB_GROUND, "pc121", TWENTY, sep=""),
+    "dev121/rum_distillery_estate": _set("dev121/rum_distillery_estate.jsonl", RUM_DISTILLERY_ESTATE, "rd121", TWENTY, sep=""),
+    "dev121/geyser_basin_park": _set("dev121/geyser_basin_park.jsonl", GEYSER_BASIN_PARK, "gb121", TWENTY, sep=""),
+    "dev122/flower_auction_hall": _set("dev122/flower_auction_hall.jsonl", FLOWER_AUCTION_HALL, "fa122", TWENTY, sep=""),
+    "dev122/polar_research_station": _set("dev122/polar_research_station.jsonl", POLAR_RESEARCH_STATION, "pr122", TWENTY, sep=""),
+    "dev122/truffle_oak_plantation": _set("dev122/truffle_oak_plantation.jsonl", TRUFFLE_OAK_PLANTATION, "to122", TWENTY, sep=""),
+    "dev122/cocoa_fermentary_cooperative": _set("dev122/cocoa_fermentary_cooperative.jsonl", COCOA_FERMENTARY_COOPERATIVE, "cf122", TWENTY, sep=""),
+    "dev123/onsen_hot_spring_town": _set("dev123/onsen_hot_spring_town.jsonl", ONSEN_HOT_SPRING_TOWN, "os123", TWENTY, sep=""),
+    "dev123/sand_dune_buggy_park": _set("dev123/sand_dune_buggy_park.jsonl", SAND_DUNE_BUGGY_PARK, "db123", TWENTY, sep=""),
+    "dev123/cattle_feedlot": _set("dev123/cattle_feedlot.jsonl", CATTLE_FEEDLOT, "cl123", TWENTY, sep=""),
+    "dev123/postal_sorting_centre": _set("dev123/postal_sorting_centre.jsonl", POSTAL_SORTING_CENTRE, "ps123", TWENTY, sep=""),
+    "dev124/offshore_wind_service_port": _set("dev124/offshore_wind_service_port.jsonl", OFFSHORE_WIND_SERVICE_PORT, "ow124", TWENTY, sep=""),
+    "dev124/monorail_theme_resort": _set("dev124/monorail_theme_resort.jsonl", MONORAIL_THEME_RESORT, "mr124", TWENTY, sep=""),
+    "dev124/waste_incinerator_plant": _set("dev124/waste_incinerator_plant.jsonl", WASTE_INCINERATOR_PLANT, "wi124", TWENTY, sep=""),
+    "dev124/carnival_parade_route": _set("dev124/carnival_parade_route.jsonl", CARNIVAL_PARADE_ROUTE, "cv124", TWENTY, sep=""),
+    "dev125/royal_mint_coin_works": _set("dev125/royal_mint_coin_works.jsonl", ROYAL_MINT_COIN_WORKS, "rm125", TWENTY, sep=""),
+    "dev125/bobsleigh_track_venue": _set("dev125/bobsleigh_track_venue.jsonl", BOBSLEIGH_TRACK_VENUE, "bs125", TWENTY, sep=""),
+    "dev125/shipbreaking_beach_yard": _set("dev125/shipbreaking_beach_yard.jsonl", SHIPBREAKING_BEACH_YARD, "sb125", TWENTY, sep=""),
+    "dev125/lng_import_terminal": _set("dev125/lng_import_terminal.jsonl", LNG_IMPORT_TERMINAL, "lg125", TWENTY, sep=""),
+    "dev126/sculpture_park_estate": _set("dev126/sculpture_park_estate.jsonl", SCULPTURE_PARK_ESTATE, "sp126", TWENTY, sep=""),
+    "dev126/biogas_farm_digester": _set("dev126/biogas_farm_digester.jsonl", BIOGAS_FARM_DIGESTER, "bg126", TWENTY, sep=""),
+    "dev126/bazaar_old_city_souk": _set("dev126/bazaar_old_city_souk.jsonl", BAZAAR_OLD_CITY_SOUK, "bz126", TWENTY, sep=""),
+    "dev126/rowing_lake_regatta_centre": _set("dev126/rowing_lake_regatta_centre.jsonl", ROWING_LAKE_REGATTA_CENTRE, "rl126", TWENTY, sep=""),
 }
 
 
