@@ -1046,9 +1046,18 @@ class ReportAnalyzer:
                     and norms[a] in lx.BODY_PARTS:
                 continue  # "a lad with burns on his arms", "burns to both arms": his arms, not "the arms" (a pub)
             if b < len(norms) and norms[b] in lx.SPEAKER_ROLES | lx.ROLE_LABELS and not toks.clause_start[b] and a >= 3 \
-                    and (norms[a - 1] == "the" and (norms[a - 3:a - 1] == ("this", "is") or norms[a - 2] in ("its", "im"))
+                    and (norms[a - 1] == "the" and (norms[a - 3:a - 1] == ("this", "is") or norms[a - 2] in ("its", "im")
+                                                    or norms[a - 2] in lx.FILLERS and norms[a - 4:a - 2] == ("this", "is"))
                          or norms[a - 2:a] == ("of", "the") and toks.tokens[b].text.lower().endswith("s")):
-                continue  # "This is the lock keeper", "one of the start marshals went through": who, no place said
+                # "This is the lock keeper", "one of the start marshals went through": who, no place said (kept as
+                # a reference, so that no later reading takes the words for the place: "the tipping hall marshal")
+                places.append(self._mention(toks, a, b, landmark, status="reference", reason="names who calls"))
+                continue
+            if (a == 0 or toks.sentence_start[a]) and b < len(norms) and norms[b] == "copy" \
+                    and b + 1 < len(norms) and norms[b + 1] in ("we", "weve", "i", "ive", "this", "over", "control"):
+                # "fire station copy we have a pool fire in the sump": the station called, no place of the report
+                places.append(self._mention(toks, a, b, landmark, status="reference", reason="names who is called"))
+                continue
             if b - a == 1 and a > 0 and toks.tokens[a - 1].text.lower() in ("its", "their", "his", "her") \
                     and toks.tokens[a].text.lower().endswith("s") and not any(
                         f.lower().endswith("s") for f in self.kb.landmark_by_name[landmark].surface_forms):
@@ -1650,6 +1659,10 @@ class ReportAnalyzer:
                 if any(norms[k] == "one" and norms[k - 1] not in lx.DETERMINERS and not norms[k - 1].endswith(("th", "st", "rn"))
                        and toks.sentence_of[k] == toks.sentence_of[start] for k in range(max(1, start - 8), start)):
                     continue  # "a dog walker has pulled one out, the other's still out there": the other lad
+                if any(norms[k] == "one" and norms[k + 1] in ("at", "in", "on", "by", "near")
+                       and norms[k - 1] not in lx.DETERMINERS and toks.sentence_of[k] == toks.sentence_of[start]
+                       for k in range(1, start - 1)):
+                    continue  # "two hurt, one at the bouncy castle, ..., and the other one at the food stalls": people
                 if any(end < p.start_tok <= end + 8 and toks.sentence_of[p.start_tok] == toks.sentence_of[start]
                        for p in places):
                     continue  # "no the other one, the one next to it, the school": the speaker goes on to name it
@@ -1671,7 +1684,8 @@ class ReportAnalyzer:
         places.extend(out)
 
     def _telegraphic_subject(self, toks: Tokens, norms: tuple[str, ...], a: int, b: int) -> bool:
-        """"Precinct secure, holding evacuees there": radio speech drops the article of a sentence's subject."""
+        """"Precinct secure, holding evacuees there": radio speech drops the article of a sentence's subject
+        ("Clean air lab reports smoke inside": the subject that reports what it has)."""
         contracted = toks.tokens[b - 1].text.lower().endswith(("'s", "’s"))  # "tower's clear"
         opens = toks.sentence_start[a] or a > 1 and toks.sentence_start[a - 2] and norms[a - 2].isdigit() \
             and norms[a - 1].isdigit() and ":" in toks.gaps[a - 1]  # ("23:09 fosse overtopping": a log's time first)
@@ -1703,8 +1717,14 @@ class ReportAnalyzer:
         if not contracted and norms[b] in _PLACING_PREPOSITIONS and any(
                 self._places.match_at(norms, t) is not None for t in range(b + 1, min(len(norms), b + 4))):
             return True  # "Graveyard behind Bethel is flooded": placed by another
+        if not contracted and norms[b] in ("and", "or") and b + 2 < len(norms) and (
+                self._places.match_at(norms, b + 1) is not None
+                or norms[b + 1] in lx.ARTICLES and self._places.match_at(norms, b + 2) is not None):
+            return True  # "Doo line and the runway are both safe": the first of two subjects
         return toks.clause_start[b] or norms[b] in lx.COPULAS | lx.CREW_ACTION_VERBS \
             or self._cues.match_at(norms, b) is not None \
+            or norms[b] in ("report", "reports", "reporting", "reported") and b + 1 < len(norms) \
+            and self._cues.match_at(norms, b + 1) is not None \
             or (norms[b] in lx.TELEGRAPHIC_LINKS and (self._cues.match_at(norms, b + 1) is not None
                                                         or norms[b + 1:b + 2] == ("and",)  # "Sidings checked and clear"
                                                         and self._cues.match_at(norms, b + 2) is not None))
@@ -1716,8 +1736,8 @@ class ReportAnalyzer:
             return False
         j = w + 1
         while j < len(norms) and j - w <= 3 and not toks.clause_start[j] and norms[j] in lx.COPULAS | lx.FILLERS | {
-                "been", "all", "still", "both", "badly"}:
-            j += 1
+                "been", "all", "still", "both", "badly", "just"} and self._cues.match_at(norms, j) is None:
+            j += 1  # (not past a cue that starts with a copula: "the kid got bit by a dog")
         hit = self._cues.match_at(norms, j) if j < len(norms) and not toks.clause_start[j] else None
         return hit is not None and hit[1][0] == self._person_category
 
@@ -1811,6 +1831,16 @@ class ReportAnalyzer:
                 if len(key) == 2 and len(owners) == 1 and end < len(norms) and norms[end] in lx.MODIFIED_BY \
                         and not toks.clause_start[end] and not any(j in taken for j in range(i, end)):
                     # "the drainage board lads": the name's first words before the people of the place
+                    out.append(self._mention(toks, i, end, next(iter(owners))))
+                    taken.update(range(i, end))
+                    break
+                if len(key) == 2 and len(owners) == 1 and (end == len(norms) or toks.clause_start[end]) \
+                        and not toks.tokens[end - 1].text.lower().replace("’", "'").endswith("'s") \
+                        and not any(j in taken for j in range(i, end)) and self._cues.match_at(norms, i) is None \
+                        and any(len(ws := name_words(f)) == 3 and ws[:2] == key and ws[2] in lx.GENERIC_HEADS
+                                and f.lower().split()[-3:-1] == [t.text.lower() for t in toks.tokens[i:end]]
+                                for f in self.kb.landmark_by_name[next(iter(owners))].surface_forms):
+                    # "the other one at the street food, er, burns": "street food row" without its plain last word
                     out.append(self._mention(toks, i, end, next(iter(owners))))
                     taken.update(range(i, end))
                     break
@@ -2057,7 +2087,10 @@ class ReportAnalyzer:
                 i + 2 >= len(norms) or toks.clause_start[i + 2] or norms[i + 2] in lx.COPULAS | {"has", "have", "had"}
                 or self._cues.match_at(norms, i + 2) is not None)
             if key in self._pair_heads and (i > 0 and norms[i - 1] == "the" or opens) \
-                    and not {i, i + 1} & taken_now and not toks.clause_start[i + 1]:
+                    and not {i, i + 1} & taken_now and not toks.clause_start[i + 1] \
+                    and not (i + 2 < len(norms) and norms[i + 2] in lx.SPEAKER_ROLES | lx.ROLE_LABELS
+                             and not toks.clause_start[i + 2] and norms[max(0, i - 4):i].count("this")):
+                # (not "this is um the tipping hall marshal": who calls, the name only says which marshal)
                 out.append(self._mention(toks, i, i + 2, self._pair_heads[key]))
                 taken_now.update((i, i + 1))
         return out
@@ -2498,6 +2531,16 @@ class ReportAnalyzer:
                     taken.update(range(i - 1, end))
                     continue
             names = shared.get(norms[i])
+            relative_anchor = False
+            if i >= 3 and norms[i - 1] in ("the", "that") and norms[i - 3] == "the" and norms[i - 2].isalpha() \
+                    and norms[i - 2] not in lx.FUNCTION_WORDS and i + 1 < len(norms) and i not in taken \
+                    and (norms[i + 1] in self._relation_verbs or self._relations.match_at(norms, i + 1) is not None):
+                # "the road the field opens onto", "car park field" said before: the anchor of a relative clause,
+                # by the last word of the one place just named with it (a word too plain to name it alone)
+                said = {p.landmark for p in places if p.end_tok <= i - 3 and p.status == "active" and p.via is None
+                        and norms[p.end_tok - 1] == norms[i] and (not names or p.landmark in names)}
+                if len(said) == 1:
+                    names, relative_anchor = said, True
             if not names and norms[i + 1:i + 2] in (("itself",), ("themselve",)):
                 # "the roundels themselves" after "the five roundels": the last word of an alias just said
                 names = {p.landmark for p in places if p.end_tok <= i - 1 and norms[p.end_tok - 1] == norms[i]}
@@ -2513,11 +2556,11 @@ class ReportAnalyzer:
                          # ("the well just downhill of it": where it stands, said of it)
                          or norms[end] in ("just", "right") and self._relations.match_at(norms, end + 1) is not None) \
                     and not toks.tokens[i].text.lower().endswith(("'s", "’s"))
-            if goes_on and not (norms[i - 1] in ("that", "this") and (norms[end] in self._relation_verbs
+            if goes_on and not relative_anchor and not (norms[i - 1] in ("that", "this") and (norms[end] in self._relation_verbs
                                                                       or self._relations.match_at(norms, end) is not None)):
                 continue  # (but "the yard that shed takes its plate from": the shed just said, anchoring a relation)
             before = [p for p in places if p.end_tok <= i - 1 and p.landmark in names]
-            if goes_on:
+            if goes_on and not relative_anchor:
                 # (the demonstrative before a relation: a place itself said, not a description's reference point)
                 before = [p for p in before if p.status == "active" and not any(
                     self._relations.match_at(norms, k) is not None for k in (p.end_tok, p.end_tok + 1) if k < len(norms))]
@@ -3694,6 +3737,9 @@ class ReportAnalyzer:
             for k in range(a0 - 1, max(0, a0 - 9), -1):
                 if k in place_tokens or toks.clause_start[k + 1] and k + 1 < a0 or norms[k] in lx.COORDINATORS:
                     break  # (not across "and": "a holding area and er the zigzag's blocked by a mudflow halfway down")
+                if norms[k] in lx.WHATEVER and k + 1 < a0 and norms[k] != "where":
+                    h = k  # ("whatever pushes water up to the tower": the head is "whatever" itself)
+                    break
                 if norms[k] in heads and (norms[k - 1] in lx.ARTICLES or k >= 2 and norms[k - 2] in lx.ARTICLES
                                           and norms[k - 1].isalpha() and norms[k - 1] not in _NOT_HEADS) \
                         and not (k + 1 < n and norms[k + 1] in lx.PREPOSITIONS and k + 2 == a0) \
@@ -3706,6 +3752,7 @@ class ReportAnalyzer:
             if verb_end and not (norms[h + 1] in ("that", "which") and all(norms[i] in lx.DETERMINERS for i in range(h + 2, a0))):
                 continue  # ("the shed that battery B keeps alive", not "the shed battery B keeps", a claim of its own)
             if closing and not (norms[h + 1] in ("that", "which", "who", "whose") or _reduced_relative_opener(toks.tokens[h + 1].text)
+                                or norms[h] in lx.WHATEVER
                                 or norms[h + 1] in ("you", "they", "we") and h + 2 < a0 and norms[h + 2].isalpha()
                                 and len(norms[h + 2]) >= 3 and norms[h + 2] not in lx.FUNCTION_WORDS | lx.HEARSAY_VERBS
                                 | lx.COPULAS | {"can", "could", "will", "would", "should", "must", "might"}):
@@ -3728,8 +3775,8 @@ class ReportAnalyzer:
                 v = toks.tokens[h + 2].text.lower()
                 if v.isalpha() and len(v) >= 2 and not v.endswith("s") and v not in lx.FUNCTION_WORDS:
                     link = (v + ("es" if v.endswith(("o", "sh", "ch", "x")) else "s")) + link[len(v):]
-            head_start = h - 1 if norms[h - 1] in lx.ARTICLES else h - 2
-            head = " ".join(toks.tokens[i].text.lower() for i in range(head_start + 1, h + 1))
+            head_start = h if norms[h] in lx.WHATEVER else h - 1 if norms[h - 1] in lx.ARTICLES else h - 2
+            head = " ".join(toks.tokens[i].text.lower() for i in range(min(head_start + 1, h), h + 1))
             verbs = [i for i in link_idx if norms[i] in _SUPPLY_VERBS]
             target, via = self._partner_by_meaning(anchor.landmark, link, head, self.PARTNER_CLAUSE_MIN_SCORE,
                                                    self.PARTNER_CLAUSE_MARGIN,
@@ -4749,7 +4796,11 @@ class ReportAnalyzer:
                                              inverse=flipped)[0]) is not None \
                 and (norms[head_place.start_tok] in lx.GENERIC_HEADS
                      or reached != head_place.landmark and head_place.landmark not in self._related_to(anchor.landmark)
-                     and anchor.start_tok - b <= 2 and anchor.landmark != head_place.landmark):
+                     and anchor.start_tok - b <= 2 and anchor.landmark != head_place.landmark
+                     or anchor.landmark == head_place.landmark and reached != head_place.landmark
+                     and anchor.start_tok - b <= 2 and not pronoun and anchor.via is None):
+            # ("the ride at the foot of the castle", "castle ride" one of the castle's names: no place stands at the
+            # foot of itself)
             # ("the trees hanging over the wellhouse": "trees", the head word of "the olive trees" only, and the
             # relation reaches the pine wood: the relation says which trees)
             # (kept when the relation leads nowhere from its anchor: "the bridge below it's been hit")
@@ -4761,11 +4812,19 @@ class ReportAnalyzer:
         if anchor is not None and head_place is not None:
             # "the pharmacy next to the bakery": the place is named; the anchor is only a reference
             broken = anchor.via is not None and anchor.start_tok >= b and any(
-                m in toks.gaps[i] for i in range(b, anchor.start_tok + 1) for m in ("--", "—", "–"))
+                m in toks.gaps[i] for i in range(b, anchor.start_tok + 1) for m in ("--", "—", "–", "...", "…"))
             # ("the boxes the quay cranes feed -- er, the stack they feed": a repair, not the relation's anchor)
             denied = "not" in norms[max(0, head_place.start_tok - 4):head_place.start_tok] \
                 and any(toks.clause_start[i] for i in range(head_place.end_tok, a + 1))
             # ("no, not by the lake, by our caravan": the place denied, then the one meant; no description)
+            if broken and not pronoun and any(q.landmark == head_place.landmark and q is not head_place
+                                              and q is not anchor and q.via is None
+                                              and anchor.start_tok <= q.start_tok < anchor.end_tok for q in ex.places):
+                # "the hangar opens onto... the thing the hangar opens onto": the speaker broke off and said it again
+                # as a description; the place the clause began with is only its reference point
+                idx = ex.places.index(head_place)
+                ex.places[idx] = replace(head_place, status="reference", reason="restarted as a description's anchor")
+                return
             if not pronoun and not broken and not denied:
                 ex.relation_tokens.update(range(a, b))  # ("the loft leaning against the stack": no cue "leaning")
                 idx = ex.places.index(anchor)
@@ -5313,6 +5372,7 @@ class ReportAnalyzer:
                 stop.update(range(a, e))
                 for idx, p in enumerate(ex.places):
                     if p.status == "active" and p.via is None and e <= p.start_tok <= e + 3 \
+                            and toks.sentence_of[p.start_tok] == toks.sentence_of[e - 1] \
                             and (p.start_tok <= e + 1 and all(norms[t] in lx.DETERMINERS for t in range(e, p.start_tok))
                                  or norms[e] in lx.PREPOSITIONS and all(norms[t] in lx.DETERMINERS for t in range(e + 1, p.start_tok))
                                  and not any(toks.clause_start[t] for t in range(e, p.start_tok + 1))):
@@ -7146,7 +7206,12 @@ class ReportAnalyzer:
             if b < len(norms) and norms[b] in lx.COORDINATORS and any(p.end_tok == a for p in ex.places):
                 continue  # "in the coffee shop I mean, and the church ...": the marker closed its own repair
             if a > 0 and b < len(norms) and norms[a - 1] in lx.PREPOSITIONS and norms[b] in lx.PREPOSITIONS \
-                    and norms[a - 1] != norms[b] and not any(p.start_tok <= a - 1 < p.end_tok for p in ex.places):
+                    and norms[a - 1] != norms[b] and not any(p.start_tok <= a - 1 < p.end_tok for p in ex.places) \
+                    and not any((h := self._relations.match_at(norms, i)) is not None and h[0] == a
+                                for i in range(max(0, a - 5), a - 1)) \
+                    and not any(p.via is not None and p.status == "active" and a - 3 <= p.end_tok < a
+                                and not any(toks.clause_start[t] for t in range(p.end_tok, a)) for p in ex.places):
+                # (but not a relation's last word: "in the block the labs' walkway runs to — no, sorry, in the labs")
                 continue  # "two casualties outside-- no, inside the supermarket": where, not which place, repaired
                 # (not "at the gate the coaches drop off at -- no, sorry, at the coach park": the same word)
             if not _strong and (b >= len(norms) or toks.sentence_start[b]) and any(
@@ -7247,15 +7312,17 @@ class ReportAnalyzer:
             e = a
             while e - 1 > last.end_tok and norms[e - 1] in lx.HESITATIONS:
                 e -= 1
-            if e - last.end_tok >= 4 and norms[e - 2] in lx.ARTICLES and norms[e - 1].isalpha() \
+            n_cut = next((n for n in (1, 2) if e - n - 1 > last.end_tok and norms[e - n - 1] in lx.ARTICLES), 0)
+            if n_cut and e - last.end_tok >= 3 + n_cut and all(norms[t].isalpha() for t in range(e - n_cut, e)) \
                     and norms[e - 1] not in lx.FUNCTION_WORDS and any(d in toks.gaps[e] for d in ("—", "–", "--")) \
-                    and not any(p.start_tok <= e - 1 < p.end_tok for p in ex.places) \
-                    and any(len(ws := name_words(f)) >= 2 and ws[0] == norms[e - 1]
+                    and not any(p.start_tok <= t < p.end_tok for p in ex.places for t in range(e - n_cut, e)) \
+                    and any(len(ws := name_words(f)) > n_cut and ws[:n_cut] == norms[e - n_cut:e]
                             for lm in self.kb.landmarks for f in lm.surface_forms) \
-                    and self._cue_between(norms, last.end_tok, e - 2) and not toks.sentence_start[e - 2] \
-                    and any(toks.clause_start[t] or norms[t] == "and" for t in range(last.end_tok, e - 2)):
+                    and self._cue_between(norms, last.end_tok, e - n_cut - 1) and not toks.sentence_start[e - n_cut - 1] \
+                    and any(toks.clause_start[t] or norms[t] == "and" for t in range(last.end_tok, e - n_cut - 1)):
                 continue  # "The place behind the changing huts is our recovery area, and there's a near drowning at
-                # the deep— er, sorry, the paddling pool": a name broken off ("the deep end") is what the marker repairs
+                # the deep— er, sorry, the paddling pool": a name broken off ("the deep end"; "the staff car -- no,
+                # the drop trailers") is what the marker repairs
             if a - last.end_tok >= 6 and norms[a - 2] in lx.ARTICLES and norms[a - 1].isalpha() \
                     and norms[a - 1] not in lx.FUNCTION_WORDS and toks.tokens[a - 1].text.lower().endswith(("'s", "’s")) \
                     and any(d in toks.gaps[a] for d in ("...", "…", "—", "–", "--")) \
@@ -7731,6 +7798,10 @@ class ReportAnalyzer:
                 continue
             if norms[b - 1] == "swamped" and norms[b:b + 1] == ("with",):
                 continue  # "swamped with injured guests": overwhelmed, no water
+            if norms[a:b] == ("block", "the") and toks.tokens[a].text.lower() == "block":
+                continue  # "in the block the labs' walkway runs to": the noun, not "blocks the" way
+            if norms[a:b] == ("medic", "to", "the") and toks.tokens[a].text.lower() == "medic":
+                continue  # "Medic to the sick bay, man down at the crusher": a call, not medics sent there
             if cat == self._person_category and self._safe_for(toks, norms, a):
                 continue  # "confirmed safe for the walking patients and visitors": whom a safe place is for
             if norms[a:b] == ("clear",) and toks.sentence_start[a] and b < len(norms) \
@@ -7981,12 +8052,13 @@ class ReportAnalyzer:
                                                                   or norms[a - 1] in ("re", "m") and a > 1
                                                                   and norms[a - 2] in ("we", "i", "you")):
                 continue  # "we come down past the fish market": the speaker moving, nothing fallen
-            if norms[a] in ("come", "came", "coming") and (subj := next(
+            if norms[a] in ("come", "came", "coming") and cue.category != self._person_category and (subj := next(
                     (i for i in range(a - 1, max(-1, a - 5), -1) if norms[i] not in lx.FILLERS | {
                         "have", "ve", "has", "had", "all", "just", "now", "re"}), None)) is not None \
                     and subj not in self._place_tokens and not toks.clause_start[subj + 1] \
                     and (norms[subj] in _PEOPLE_OR_GROUPS or norms[subj] in ("everyone", "everybody")):
                 continue  # "quite a few people have come down off the trail": people moving, nothing fallen
+                # (but "he came off the ladder" is a person hurt)
                 # (not "the ceiling of the chemist's has come down")
             if b - a == 1 and a >= 3 and norms[a - 1] == "the" and norms[a - 2] == "of" and norms[a - 3] in _COMPASS \
                     and b < len(norms) and norms[b].isalpha() and not toks.clause_start[b] \
@@ -8001,14 +8073,14 @@ class ReportAnalyzer:
                 continue  # "forty of us who came down from the campsite": people moving, nothing fallen
             if norms[a:b] in (("gone", "under"), ("going", "under"), ("went", "under")) \
                     and norms[b:b + 1] in (("a",), ("an",)) and not toks.clause_start[b] \
-                    and b + 1 < len(norms) and norms[b + 1] not in _UNDER_AMOUNTS | lx.WATER_WORDS:
-                # (not "the yard's gone under a foot of water", "went under a wave")
+                    and b + 1 < len(norms) and norms[b + 1] not in _UNDER_WATER:
+                # (not "the yard's gone under a foot of water", "went under a wave", "went under a lake")
                 continue  # "foot went under a lorry wheel": how someone was hurt, not a place's claim
             if norms[a:b] in (("gone", "under"), ("going", "under"), ("went", "under")) \
                     and self.kb.category_by_name[cue.category].role == Role.CRITICAL \
                     and not (norms[b:b + 1] in (("a",), ("an",), ("the",), ("his",), ("her",), ("their",))
                              and not toks.clause_start[b] and b + 1 < len(norms)
-                             and norms[b + 1] not in lx.WATER_WORDS | lx.WATER_BODIES | _UNDER_AMOUNTS | {"surface", "ice"}):
+                             and norms[b + 1] not in _UNDER_WATER):
                 # (not "his foot went under a lorry wheel": under a thing, caught, no water)
                 near = range(max(0, a - 3), a)
                 # a place (or a place's own thing said as a noun: "the yard's gone under") before it, and no person
@@ -8476,6 +8548,12 @@ class ReportAnalyzer:
         while j >= 0 and norms[j] in ("have", "has", "had", "s", "is", "are", "was", "were", "been", "got", "just",
                                       "both", "all", "also", "then", "suddenly", "badly", "very", "bad"):
             j -= 1
+        if j >= 1 and norms[j] == "else" and norms[j - 1] in ("somebody", "someone", "anyone", "anybody"):
+            j -= 1  # "somebody else has collapsed"
+        who = next((m for m in range(j, max(0, j - 7), -1) if norms[m] in ("who", "whos")), None)
+        if who is not None and who >= 1 and (norms[who - 1] in lx.LAY_PERSONS or norms[who - 1] in lx.WORKER_PERSONS
+                                             or norms[who - 1] in lx.PERSON_NOUNS):
+            return True  # "the bloke who went to check it has collapsed": the person a relative clause describes
         if j >= 1 and norms[j] in ("there", "here") and norms[j - 1] in ("up", "down", "in", "over", "out", "back"):
             j -= 2  # "one of the riggers up there has collapsed": where they are, between
         elif j >= 1 and norms[j] in ("there", "here") and norms[j - 1] not in lx.FUNCTION_WORDS:
@@ -8516,6 +8594,11 @@ class ReportAnalyzer:
         counted = j > 0 and (norms[j - 1] in lx.NUMBER_WORDS or norms[j - 1].isdigit())
         if counted and w.endswith(("er", "ent", "ist", "or", "ian")):
             return True
+        if j > 0 and norms[j - 1] == "one" and w.endswith(("ist", "ian")):
+            return True  # "one electrician burned"
+        if j >= 3 and norms[j - 2:j] == ("of", "the") and norms[j - 3] in ("one", "two", "three", "some", "both") \
+                and w.endswith(("er", "ist", "ian")) and w not in lx.VEHICLE_WORDS and len(w) >= 5:
+            return True  # "one of the feeders is burned": one of a crew, named by what they do
         # "old Mr Reid at the end cottage has collapsed": the person before where they are
         at = next((m for m in range(j - 1, max(-1, j - 5), -1) if norms[m] in ("at", "in", "inside")), None)
         return at is not None and at > 1 and norms[at - 2] in ("mr", "mrs", "ms", "miss", "dr") and not any(
@@ -9746,6 +9829,8 @@ class ReportAnalyzer:
             if h is not None and h[1].endswith("out") and h[0] < len(norms) and norms[h[0]] in lx.ROUTE_PREPOSITIONS \
                     and not (h[1] == "confirmed out" and norms[h[0]] == "by"):
                 h = None  # "evacuation route is out through the park": the way out, nothing put out
+            if h is not None and (_out_and_still_ill(h[1], norms[cue.start_tok:cue.end_tok]) or _walked_out_to(norms, h)):
+                h = None
             if h is not None and h[1].endswith("out") and norms[h[0]:h[0] + 1] in (("at",), ("by",), ("on",), ("near",)) \
                     and self.kb.category_by_name[cue.category].role == Role.DESIRABLE:
                 h = None  # "the assembly point is out at the gate": where it is, no safe place put out
@@ -9869,6 +9954,8 @@ class ReportAnalyzer:
                     and self.kb.category_by_name[cue.category].role != Role.CRITICAL:
                 h = None  # "gas in the winding house, we've pulled everyone out, all accounted for": the gas stays
             if h is not None and h[1] in lx.CANCEL_MISSING_ONLY and not missing:
+                h = None
+            if h is not None and _out_and_still_ill(h[1], norms[cue.start_tok:cue.end_tok]):
                 h = None
             if h is not None and h[0] < len(norms) and norms[h[0]] in ("it", "them") \
                     and (h[0] + 1 >= len(norms) or toks.clause_start[h[0] + 1]):
@@ -10287,6 +10374,13 @@ class ReportAnalyzer:
                     # "fire at the hot-- / ... / hotel": a name cut off or said again is the same place, named
                     # in full later
                     nxt = next((q for q in usable if q.landmark == p.landmark and q.start_tok > p.start_tok), None)
+                    mark = next((mb for ma, mb, _ in ex.markers if p.end_tok <= ma <= p.end_tok + 1), None)
+                    if nxt is None and p.reason.startswith("false start") and mark is not None:
+                        # "people trapped in the tourist off-- no, sorry, in the place in front of the bus
+                        # terminal": a name cut off and repaired at once is the place the repair names
+                        nxt = min((q for q in usable if q.status == "active" and mark <= q.start_tok <= mark + 3
+                                   and toks.sentence_of[q.start_tok] == toks.sentence_of[p.start_tok]),
+                                  key=lambda q: q.start_tok, default=None)
                 p = nxt
                 seen += 1
             return p if p is not None and p.status == "active" else None
@@ -10411,8 +10505,15 @@ class ReportAnalyzer:
             fix = k + 1  # (the repair may stand as a segment of its own: "no wait, in the generator shed")
             if fix < len(segs) and not seg_places.get(fix) and not seg_cues.get(fix) and segs[fix][1] - segs[fix][0] <= 3:
                 fix += 1
-            if b - a >= 3 and norms[b - 3] in lx.PREPOSITIONS and norms[b - 2] in lx.ARTICLES and norms[b - 1].isalpha() \
-                    and norms[b - 1] not in lx.FUNCTION_WORDS and not seg_places.get(k) and fix < len(segs) \
+            w0 = b - 2 if b - a >= 3 and norms[b - 2] in lx.ARTICLES else b - 3 if (
+                b - a >= 4 and norms[b - 3] in lx.ARTICLES and norms[b - 2].isalpha()
+                and norms[b - 2] not in lx.FUNCTION_WORDS) else -1  # (or two words cut: "is the staff car --")
+            if w0 > a and (norms[w0 - 1] in lx.PREPOSITIONS or w0 == b - 3 and norms[w0 - 1] in ("is", "s")) \
+                    and norms[b - 1].isalpha() \
+                    and (norms[b - 1] not in lx.FUNCTION_WORDS or w0 == b - 3 and any(  # ("the tourist off--" office)
+                        ws[:1] == norms[b - 2:b - 1] and len(ws) >= 2 and ws[1].startswith(norms[b - 1])
+                        for ws in (name_words(f) for lm in self.kb.landmarks for f in lm.surface_forms))) \
+                    and not seg_places.get(k) and fix < len(segs) \
                     and any(d in toks.gaps[b] for d in ("-", "—", "–")) and seg_places.get(fix) \
                     and any(segs[k + 1][0] <= ma <= segs[k + 1][0] + 1 for ma, _, _ in ex.markers) \
                     and sentence_of[segs[fix][0]] == sentence_of[a]:
@@ -10459,7 +10560,9 @@ class ReportAnalyzer:
                  or norms[i] in ("first", "second", "third", "fourth", "fifth", "top") and norms[i - 2:i] == ("on", "the"))
                 for i in range(max(a, 3), b))  # ("we're at the guest house, two casualties on the second floor")
             that_one = first == "that" and norms[first_at + 1:first_at + 2] in (("one",), ("ones",))
-            if (first in ("it", "its", "there", "thats", "theres") or storey or that_one) and k > 0:
+            thats = first == "that" and toks.tokens[first_at].text.lower().replace("’", "'").endswith("'s") \
+                and all(c.polarity == "affirmed" for c in cs)  # ("bring her to the gatehouse, that's safe and warm")
+            if (first in ("it", "its", "there", "thats", "theres") or storey or that_one or thats) and k > 0:
                 # ("Moving on to the garage, yeah, that one's got actual flames": the place the speaker came to)
                 # "standing by at the garage, it is safe": a position names the place the pronoun claims
                 # ("we're at the bank and it's on fire"; "We're at the bank. It's on fire.")
@@ -10701,6 +10804,10 @@ class ReportAnalyzer:
                 continue
             if _nobody_said(norms, p.start_tok - 4, p.start_tok):
                 continue  # "there's nobody in the queue line": said of its people, and none there
+            if any(q.landmark == p.landmark and q.start_tok > p.start_tok and q.status == "active"
+                   and sentence_of[q.start_tok] == sentence_of[p.start_tok]
+                   and _nobody_said(norms, q.start_tok - 4, q.start_tok) for q in ex.places):
+                continue  # "the rookery isn't— there's nobody at the rookery": broken off, then said of its people
             if self._speaker_at(norms, p) and any(q.landmark == p.landmark and q.start_tok > p.start_tok
                                                   and q.status == "active" for q in ex.places):
                 continue  # "im outside the school the school yard is the assembly point ...": where the caller stands
@@ -11123,6 +11230,10 @@ class ReportAnalyzer:
         for i in range(len(norms)):
             h = self._cancel.match_at(norms, i)
             if h is None or h[1] not in lx.CANCEL_PEOPLE_ONLY or i in cue_ends:
+                continue
+            if _walked_out_to(norms, h) or any(
+                    _out_and_still_ill(h[1], norms[c.start_tok:c.end_tok]) and c.end_tok <= i
+                    and toks.sentence_of[c.start_tok] == toks.sentence_of[i] for c in cues):
                 continue
             if i > 0 and norms[i - 1] in lx.NEGATORS | {"be", "being", "to", "will", "need", "needs"}:
                 continue  # "not rescued yet", "to be lifted off": not done
@@ -12134,15 +12245,21 @@ class _CancelMatcher(PhraseMatcher[str]):
 
 
 # Verbs that send water or stuff somewhere ("the pumps push water up to"), before a cue phrase that is a relation's
-_PUSHING_VERBS = frozenset({"push", "pushes", "pump", "pumps", "send", "sends", "pipe", "pipes", "feed", "feeds", "lift",
-                            "lifts", "carry", "carries", "drive", "drives", "force", "forces"})
+_PUSHING_VERBS = frozenset(w for v in ("push", "pushes", "pump", "pumps", "send", "sends", "pipe", "pipes", "feed", "feeds",
+                                        "lift", "lifts", "carry", "carries", "drive", "drives", "force", "forces")
+                            for w in (v, *norm_phrase(v)))  # (as the tokens are normalised: "pushes" is "pushe")
 
 
 def _stranded_relation_cue(norms: tuple[str, ...], a: int, b: int) -> bool:
     """"the tank the pumps push water up to has split": a cue phrase ("water up to") that ends on a preposition with
     no object, after a verb of sending, is the words of a relation whose object was said before it."""
+    if b - a >= 2 and norms[b - 1] in ("the", "that", "this") and norms[b - 2] in ("to", "into", "onto"):
+        b -= 1  # ("water up to the": the cue took the object's article)
     return norms[b - 1] in ("to", "into", "onto") and a > 0 and norms[a - 1] in _PUSHING_VERBS \
-        and (b == len(norms) or norms[b] in lx.COPULAS | {"has", "have", "had"})
+        and (b == len(norms) or norms[b] in lx.COPULAS | {"has", "have", "had"}
+             or norms[b] in ("the", "that", "this", "it", "them") and a >= 2
+             and norms[a - 2] in ("whatever", "what", "thing", "one", "that", "which"))
+    # (or the relation said forward, from a description: "whatever pushes water up to the tower")
 
 
 def _stove_in(toks: Tokens, norms: tuple[str, ...], a: int) -> bool:
@@ -12176,6 +12293,24 @@ _REPAIR_GAP_WORDS = frozenset({"no", "wait", "hang", "on", "sorry", "i", "mean",
 # What a place may go under that is water, not a thing ("gone under a foot of water", "went under a wave")
 _UNDER_AMOUNTS = frozenset({"foot", "feet", "metre", "metres", "meter", "meters", "yard", "few", "lot", "couple", "sheet",
                             "wave", "boat", "bit", "good"})
+# ... and all that "gone under a ..." may be the flood again (both "gone under" readers take this one set)
+_UNDER_WATER = _UNDER_AMOUNTS | lx.WATER_WORDS | lx.WATER_BODIES | {"surface", "ice"}
+# A person's state that being got out of a place does not end ("unconscious ..., we've pulled him out")
+_STILL_ILL = frozenset({("unconscious",), ("not", "breathing"), ("not", "responding"), ("unresponsive",), ("cpr",),
+                        ("cardiac", "arrest"), ("seizure",), ("fitting",), ("near", "drowning")})
+
+
+def _out_and_still_ill(phrase: str, said: tuple[str, ...]) -> bool:
+    """"a guest is unconscious in the rotenburo, we've pulled him out": got out of the place (``phrase``, a cancel
+    phrase), and the state said of the person (``said``, a cue's words) goes on; nothing is taken back."""
+    return phrase.split()[0] in ("pulled", "got", "gotten", "taken", "took", "brought") and phrase.endswith(" out") \
+        and said in _STILL_ILL
+
+
+def _walked_out_to(norms: tuple[str, ...], hit: tuple[int, str]) -> bool:
+    """"frostbite case in the hut, she walked out there through the herbie": "walked out" (``hit``, a cancel match)
+    to somewhere, where she went, not out of it."""
+    return hit[1] == "walked out" and norms[hit[0]:hit[0] + 1] in (("there",), ("to",), ("towards",))
 # Words that say someone is lost ("missing in the dorms", "the separated child"): a lost one's people and finding
 _LOST_WORDS = frozenset({"lost", "missing", "separated"})
 # Words with "lost" that are no one missing ("lost a finger", "lost consciousness", "lost his footing")

@@ -42,7 +42,7 @@ water has gone over|water's gone over|gone over both ends|is roaring|brown and b
 half under|are afloat|is afloat|afloat and|drifting into|jammed against|starting to bow|stones pinging off|
 thick black stuff|black plumes|plumes of|plume of|exposed conductors|treat as energised|energised|
 fractured main|fractured gas main|lel|percent lel|stinging smell|chemically smell|chemical smell|eyes stream|
-eyes are streaming|eyes streaming|vapour's that strong|hanging by a thread|hanging by one bolt|hanging off its brackets|
+eyes are streaming|eyes streaming|vapour's that strong|hanging by a thread|hanging by one bolt|hanging by one cable|steam everywhere|relief valve blowing|valve blowing|relief valve lifting|relief valve has lifted|icy|really icy|very icy|lost a column|lost a pillar|lost a support|spraying everywhere|digestate everywhere|slurry everywhere|oil everywhere|spraying all over|going for people|dogs loose|loose dogs|dog loose|loose dog|dust everywhere|a release from|gas release|chemical release|ammonia release|full of steam|filled with steam|spitting boiling water|boiling water everywhere|hanging by a cable|hanging by one wire|could fall any minute|could fall at any minute|could come down any minute|could come down at any minute|suspicious package|suspect package|suspicious bag|unattended bag|suspicious item|hanging off its brackets|
 hanging off its bracket|swinging in the wind|oak down|big tree down|branches down|write-off|oven's gone up|
 s a lake|is a lake|like a lake|turned into a lake|come clean over|gone over the top|come over the top|overtopped|
 dropped into the river|dropped into the water|gone into the river|bridge has gone|bridge s gone|
@@ -61,7 +61,7 @@ strong current|fierce current|fast current|swift current|rip current|undertow|cu
 current ripping|fast flowing water|fast-flowing water|
 live wire|live wires|power line down|power lines down|downed lines|sparking|sparks|electrified|arcing|
 chemical|chemicals|chlorine|chlorine gas|toxic|spill|spilled|spilt|hazmat|contaminated|radiation|asbestos|
-dangerous|danger|unsafe|hazard|hazardous|hazards|threat|no go|no-go|off limits|do not enter|keep out|stay away|
+dangerous|danger|unsafe|hazard|hazardous|hazards|threat|no go|no-go|off limits|do not enter|keep out|keep people out|keep everyone out|keep everybody out|stay away|
 avoid|blocked|impassable|sinkhole|landslide|mudslide|hot spot|hotspot|burning debris|roof down|roof collapsed|
 gunfire|shooter|armed|looters|riot|on fire again|reignited|spreading|spread|unsound|structurally unsound|
 compromised|unstable structure|partially collapsed|caving|smouldering|smoldering|charred|gutted|
@@ -78,7 +78,7 @@ fuel pouring|pouring fuel|roof's going|roof is going|everyone out|get everyone o
 smell of gas|strong smell of gas|gas smell|water damage|waist deep|chest deep|electrical hazard|exposed wiring|
 hot zone|exclusion zone|inner cordon|wall down|walls down|fence is down|fence's down|fences are down|fence is flat|roof's in|roof is in|roof's gone|roof has gone|
 roof's off|shedding bricks|shedding slates|unstable masonry|masonry falling|falling masonry|flooded out|mud slide|
-slumping|waterlogged|water logged|halfway up|burst main|burst pipe|pipe burst|pipe's burst|water everywhere|
+slumping|waterlogged|water logged|halfway up|burst main|burst pipe|pipe burst|pipe's burst|pipes bursting|pipes are bursting|pipes have burst|steam line burst|steam line has burst|burst steam line|steam pipe burst|burst steam pipe|steam leak|live steam|water everywhere|
 bowing out|bowing|bulging|bulge|water coming over|coming over the|ripping through|smoke-logged|fully alight|jammed open|stuck open|won't close|wont close|will not close|not closing|won't shut|wont shut|not shutting|
 floor's gone|floor has gone|floor's gone through|gone through the floor|sinking|subsiding|subsidence|cracked right across|
 a crack|crack right across|cracks|venting|hissing|gas bottles|leaking fuel|diesel slick|slick|fuel slick|
@@ -207,7 +207,7 @@ up to his waist|up to her waist|up to his neck|up to her neck|can't get her door
 cant get her door open|cant get his door open|can't get the door open|
 can't get off|cant get off|won't answer|wont answer|can't open the doors|cant open the doors|never came back|
 hasn't come back|hasnt come back|up to his knees|up to her knees|head bleed|query head bleed|can't feel his legs|can't feel her legs|cant feel his legs|cant feel her legs|
-can't feel their legs|come off the ladder|came off the ladder|fallen off the ladder|fell off the ladder|gcs|
+can't feel their legs|come off the ladder|came off the ladder|came off a ladder|come off a ladder|fell off a ladder|fallen off a ladder|fallen off the ladder|fell off the ladder|gcs|
 got it in his eyes|got it in her eyes|in his eyes|in her eyes|very muddled|she's muddled|he's muddled|dehydrated|hasn't had a drink|hasnt had a drink|not had a drink|drowsy and confused|clammy|
 without his insulin|without her insulin|without their insulin|without his medication|without her medication|
 without their medication|without his tablets|without her tablets|shaking and sweating|stuck between floors|
@@ -240,17 +240,17 @@ casualty|casualties|victim|victims|survivor|survivors|patient|patients|
 needs help|need help|needs rescue|need rescue|needs rescuing|need rescuing|calling for help|crying for help|
 cries for help|screaming|shouting for help|banging|knocking|someone inside|people inside|person inside|
 kids inside|children inside|family inside|elderly inside|residents inside|
-missing person|missing persons|missing|been bitten|nasty bite|a bad bite|a bite on his|a bite on her|bite on the hand|got bitten|was bitten|bitten by|bitten on the|man down|person down|woman down|people down|men down|both burnt|both burned|men burned|men burnt|man burned|man burnt|people burned|people burnt|women burned|woman burned|lads burned|crew burned|crew burnt|cut up bad|cut up badly|badly cut up|
+missing person|missing persons|missing|been bitten|nasty bite|a bad bite|a bite on his|a bite on her|bite on the hand|got bitten|was bitten|got bit by|was bit by|been bit by|bitten by|bitten on the|man down|person down|woman down|people down|men down|both burnt|both burned|men burned|men burnt|man burned|man burnt|people burned|people burnt|women burned|woman burned|lads burned|crew burned|crew burnt|cut up bad|cut up badly|badly cut up|
 medical emergency|medical help|needs a medic|needs medic|needs an ambulance|needs evacuation|
 can't get out|cannot get out|can't move|cannot move|burns victim|overcome by smoke|
 stranded|cut off|trapped people|trapped persons|people trapped|someone trapped|somebody trapped|
 hypothermic|going hypo|gone hypo|hypoglycaemic|hypoglycemic|drowning|bleeding out|critical condition|in shock|lost consciousness|passed out|fainted|keeled over|keels over|has keeled over|collapsed inside|
 pinned under debris|pinned under rubble|trapped under debris|trapped under rubble|buried under rubble|buried under debris|
-trapped in rubble|under the rubble|needs medics|need medics|needs a doctor|requires evacuation|unaccounted for|
+trapped in rubble|under the rubble|needs medics|need medics|medics to the|paramedics to the|needs a doctor|requires evacuation|unaccounted for|
 people still inside|still inside|someone still inside|can't get back|cannot get back|can't get back to shore|water all round him|water all round her|water all round them|water all round us|water all around him|water all around them|on the roof with water|still in the cab|still in his cab|still in her cab|driver still in|people stuck|people stuck inside|with people inside|
 twisted ankle|a twisted ankle|a twisted knee|twisted knee|twisted her ankle|twisted his ankle|twisted their ankle|twisted their knee|twisted her knee|twisted his knee|twisted my knee|twisted my ankle|hurt their knee|hurt her knee|hurt his knee|can't find my mummy|can't find my mum|can't find my mommy|can't find my mom|can't find my dad|can't find my daddy|can't find my parents|lost my mummy|lost my mum|lost my mommy|lost my mom|lost my dad|lost my parents|gone over on her ankle|gone over on his ankle|went over on her ankle|went over on his ankle|turned her ankle|turned his ankle|rolled her ankle|rolled his ankle|sprained ankle|broken ankle|is injure|he injure|she injure|he not move|she not move|not move|cut head|a cut head|bleeding head|needs a paramedic|need a paramedic|needs paramedics|deep cut|bad cut|can't find his mum|can't find her mum|can't find his dad|can't find her dad|can't find their parents|
 people under it|people under there|someone under it|somebody under it|people underneath|breathing problems|breathing difficulties|difficulty breathing|struggling to breathe|can't breathe|cannot breathe|
-man collapsed|woman collapsed|person collapsed|someone collapsed|somebody collapsed|he collapsed|she collapsed|
+man collapsed|is choking|was choking|started choking|choking on|he's choking|she's choking|woman collapsed|person collapsed|someone collapsed|somebody collapsed|he collapsed|she collapsed|
 needs oxygen|need oxygen|having a heart attack|heart attack|seizure|having a seizure|can't breathe|cannot breathe|
 asthma attack|asthma attacks|an asthma attack|having an asthma attack|shut in|locked in|
 stuck on the roof|stranded on the roof|on the roof waiting|waving from|trapped upstairs|trapped on|
@@ -897,7 +897,7 @@ TRANSIT = [*(f"{v} {who} {way}to" for v in ("walk", "take", "bring", "carry", "h
            "carrying it up towards", "carrying it over towards", "pushing it towards", "pushing it down towards",
            "blowing it towards", "blowing it down towards", "carried towards", "follow the", "following the", "followed the",
            "passing", "passed", "moving past", "going past", "driving past", "walking past", "past",
-           "on our way to", "on the way to", "our way to", "on my way to", "my way to", "on his way to", "on her way to", "on their way to", "en route to", "enroute to", "going to", "driving to",
+           "on our way to", "on the way to", "our way to", "on my way to", "my way to", "on his way to", "on her way to", "on their way to", "on its way to", "en route to", "enroute to", "going to", "driving to",
            "walking to", "moving to", "moving towards", "proceeding to", "approaching", "leaving",
            "just left", "came from", "come from", "just came from", "coming back from", "returning to",
            "came down from", "come down from", "coming down from", "came up from", "come up from", "coming up from",
@@ -1116,7 +1116,8 @@ LAY_PERSONS = {"man", "woman", "person", "people", "someone", "somebody", "child
                "survivor", "persons", "pedestrian", "cyclist", "jogger", "motorist", "camper", "hiker", "rambler",
                "commuter", "holidaymaker", "friend", "colleague", "grandad", "granddad",
                "grandma", "granny", "nan", "nanna", "grandmother", "grandfather", "mum", "mam", "dad", "uncle",
-               "aunt", "auntie", "cousin", "brother", "boyfriend", "girlfriend"}
+               "aunt", "auntie", "cousin", "brother", "boyfriend", "girlfriend", "pilgrim", "bather", "worshipper",
+               "player"}
 # People at work there: a casualty only when pinned, under or hanging ("a forklift driver under it").
 WORKER_PERSONS = {"driver", "worker", "workman", "lad", "labourer", "passenger", "pupil", "shopper", "baker",
                   "cleaner", "operator", "builder", "steward", "stewardess", "crewman", "deckhand", "fitter",
@@ -1125,7 +1126,8 @@ WORKER_PERSONS = {"driver", "worker", "workman", "lad", "labourer", "passenger",
                   "rigger", "roustabout", "roughneck", "driller", "welder", "scaffolder", "miner", "logger", "docker",
                   "stevedore", "farmhand", "kayaker", "canoeist", "skier", "staff", "skater", "cook", "chef", "lifeguard",
                   "stockman", "stockmen", "exhibitor", "handler", "herdsman", "shepherd", "farrier", "groom",
-                  "bearer", "bearers", "drummer", "piper", "dancer", "performer", "musician", "singer", "juggler"}
+                  "bearer", "bearers", "drummer", "piper", "dancer", "performer", "musician", "singer", "juggler",
+                  "postman", "postwoman", "postie", "courier", "sorter", "picker", "electrician", "plumber", "mechanic"}
 # Who calls in, said before where they are ("Security guard at the savings bank."): a role, not a claim.
 CALLER_ROLES = {"guard", "warden", "officer", "patrol", "assistant", "attendant", "manager", "caretaker", "courier",
                 "inspector", "first-aider", "firstaider", "aider", "volunteer", "medic", "paramedic", "constable",
@@ -1236,7 +1238,7 @@ DANGER_KINDS: dict[str, list[str]] = {
              "snow has come down", "snow's come down", "snow is come down", "buried by snow", "buried in snow",
              "cornice", "cornice collapsed", "cornice has collapsed", "black ice", "sheet ice", "sheet of ice",
              "thin ice", "ice is thin", "ice's thin", "ice is cracking", "ice cracking", "ice's cracking",
-             "ice is breaking", "iced over", "iced up", "snowdrift", "snowdrifts", "drifted shut", "drifted in"],
+             "ice is breaking", "iced over", "iced up", "iced solid", "frozen solid", "snowdrift", "snowdrifts", "drifted shut", "drifted in"],
     "crowd": ["crowd crush", "crowd surge", "surge at", "surge in", "surging", "crammed", "packed solid", "pressed flat",
               "pressed against", "pushed up against", "crushing", "pile-up", "pile up", "overcrowded", "stampede",
               "people pushing", "everyone pushing", "crushed against", "being crushed against", "crush in there",

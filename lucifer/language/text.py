@@ -154,6 +154,17 @@ def _unpunctuated_contrast(toks: list[Token], i: int) -> bool:
         and toks[i + 1].norm in _CONTRAST_NEXT
 
 
+# A hesitation and then a subject start a clause in unpunctuated speech ("... um someone slipped ...")
+_HESITATION_WORDS = frozenset({"um", "uh", "er", "erm", "umm", "uhh"})
+_SUBJECT_WORDS = frozenset({"someone", "somebody", "he", "she", "they", "we", "i", "there's", "theres", "there’s"})
+
+
+_COUNTED_AT = frozenset({"at", "in", "on", "up", "down", "by", "inside", "outside"})
+# Words before "one" that make it part of a noun phrase ("the one at the gate"), not a count's next item
+_BEFORE_A_ONE = frozenset({"the", "that", "this", "which", "each", "every", "no", "only", "just", "number", "any", "a",
+                           "another", "other", "last", "first", "big", "little", "old", "new", "said", "is", "s", "was"})
+
+
 def tokenize(text: str) -> Tokens:
     toks: list[Token] = []
     gaps: list[str] = []
@@ -188,6 +199,14 @@ def tokenize(text: str) -> Tokens:
         starts = is_sent or (not hyphenated and (bool(_CLAUSE.search(gap.strip())) or bool(_CLAUSE.search(g))))
         if not starts and gap.strip() == "" and _unpunctuated_contrast(toks, i):
             starts = True  # "the fire's not at the kestrel it's at the marisol": the place meant, said without a pause
+        if not starts and gap.strip() == "" and i >= 2 and toks[i - 1].text.lower() in _HESITATION_WORDS \
+                and toks[i].text.lower() in _SUBJECT_WORDS and gaps[i - 1].strip() == "":
+            starts = True  # "black ice at the fuel pumps um someone slipped at the canteen": a new subject, unpunctuated
+        if not starts and gap.strip() == "" and i >= 3 and toks[i].text.lower() == "one" and i + 1 < len(toks) \
+                and toks[i + 1].text.lower() in _COUNTED_AT \
+                and toks[i - 1].text.lower() not in _BEFORE_A_ONE and any(
+                    t.text.lower() == "one" and toks[j + 1].text.lower() in _COUNTED_AT for j, t in enumerate(toks[:i - 1])):
+            starts = True  # "two casualties one at the giant hare one at the ha-ha": the second of a count, unpunctuated
         clause.append(starts)
     sentence_of = tuple(itertools.accumulate(int(x) for x in sent)) if sent else ()
     return Tokens(text, tuple(toks), tuple(gaps), tuple(sent), tuple(clause), tuple(n - 1 for n in sentence_of))
