@@ -3737,9 +3737,10 @@ class ReportAnalyzer:
             for k in range(a0 - 1, max(0, a0 - 9), -1):
                 if k in place_tokens or toks.clause_start[k + 1] and k + 1 < a0 or norms[k] in lx.COORDINATORS:
                     break  # (not across "and": "a holding area and er the zigzag's blocked by a mudflow halfway down")
-                if norms[k] in lx.WHATEVER and k + 1 < a0 and norms[k] != "where":
-                    h = k  # ("whatever pushes water up to the tower": the head is "whatever" itself)
-                    break
+                if norms[k] in lx.WHATEVER and k + 1 < a0 and norms[k] != "where" \
+                        and norms[k + 1] not in lx.DETERMINERS | lx.PRONOUNS and k + 1 not in place_tokens:
+                    h = k  # ("whatever pushes water up to the tower": the head is "whatever" itself, its verb next;
+                    break  # not "whatever the pump house draws its fuel from", read by the relation's words)
                 if norms[k] in heads and (norms[k - 1] in lx.ARTICLES or k >= 2 and norms[k - 2] in lx.ARTICLES
                                           and norms[k - 1].isalpha() and norms[k - 1] not in _NOT_HEADS) \
                         and not (k + 1 < n and norms[k + 1] in lx.PREPOSITIONS and k + 2 == a0) \
@@ -8597,8 +8598,11 @@ class ReportAnalyzer:
         if j > 0 and norms[j - 1] == "one" and w.endswith(("ist", "ian")):
             return True  # "one electrician burned"
         if j >= 3 and norms[j - 2:j] == ("of", "the") and norms[j - 3] in ("one", "two", "three", "some", "both") \
-                and w.endswith(("er", "ist", "ian")) and w not in lx.VEHICLE_WORDS and len(w) >= 5:
-            return True  # "one of the feeders is burned": one of a crew, named by what they do
+                and (w.endswith(("ist", "ian")) or w.endswith("er") and any(
+                    norms[m] in ("he", "she", "hes", "shes", "him", "her") for m in range(a, min(len(norms), a + 10)))) \
+                and w not in lx.VEHICLE_WORDS and len(w) >= 5:
+            return True  # "one of the feeders is burned, he's in the yard": one of a crew, named by what they do
+            # (not "one of the containers has collapsed": a thing, no "he" or "she" after it)
         # "old Mr Reid at the end cottage has collapsed": the person before where they are
         at = next((m for m in range(j - 1, max(-1, j - 5), -1) if norms[m] in ("at", "in", "inside")), None)
         return at is not None and at > 1 and norms[at - 2] in ("mr", "mrs", "ms", "miss", "dr") and not any(

@@ -61,7 +61,7 @@ strong current|fierce current|fast current|swift current|rip current|undertow|cu
 current ripping|fast flowing water|fast-flowing water|
 live wire|live wires|power line down|power lines down|downed lines|sparking|sparks|electrified|arcing|
 chemical|chemicals|chlorine|chlorine gas|toxic|spill|spilled|spilt|hazmat|contaminated|radiation|asbestos|
-dangerous|danger|unsafe|hazard|hazardous|hazards|threat|no go|no-go|off limits|do not enter|keep out|keep people out|keep everyone out|keep everybody out|stay away|
+dangerous|danger|unsafe|hazard|hazardous|hazards|threat|no go|no-go|off limits|do not enter|keep out|stay away|
 avoid|blocked|impassable|sinkhole|landslide|mudslide|hot spot|hotspot|burning debris|roof down|roof collapsed|
 gunfire|shooter|armed|looters|riot|on fire again|reignited|spreading|spread|unsound|structurally unsound|
 compromised|unstable structure|partially collapsed|caving|smouldering|smoldering|charred|gutted|
@@ -250,7 +250,8 @@ trapped in rubble|under the rubble|needs medics|need medics|medics to the|parame
 people still inside|still inside|someone still inside|can't get back|cannot get back|can't get back to shore|water all round him|water all round her|water all round them|water all round us|water all around him|water all around them|on the roof with water|still in the cab|still in his cab|still in her cab|driver still in|people stuck|people stuck inside|with people inside|
 twisted ankle|a twisted ankle|a twisted knee|twisted knee|twisted her ankle|twisted his ankle|twisted their ankle|twisted their knee|twisted her knee|twisted his knee|twisted my knee|twisted my ankle|hurt their knee|hurt her knee|hurt his knee|can't find my mummy|can't find my mum|can't find my mommy|can't find my mom|can't find my dad|can't find my daddy|can't find my parents|lost my mummy|lost my mum|lost my mommy|lost my mom|lost my dad|lost my parents|gone over on her ankle|gone over on his ankle|went over on her ankle|went over on his ankle|turned her ankle|turned his ankle|rolled her ankle|rolled his ankle|sprained ankle|broken ankle|is injure|he injure|she injure|he not move|she not move|not move|cut head|a cut head|bleeding head|needs a paramedic|need a paramedic|needs paramedics|deep cut|bad cut|can't find his mum|can't find her mum|can't find his dad|can't find her dad|can't find their parents|
 people under it|people under there|someone under it|somebody under it|people underneath|breathing problems|breathing difficulties|difficulty breathing|struggling to breathe|can't breathe|cannot breathe|
-man collapsed|is choking|was choking|started choking|choking on|he's choking|she's choking|woman collapsed|person collapsed|someone collapsed|somebody collapsed|he collapsed|she collapsed|
+man collapsed|woman collapsed|person collapsed|someone collapsed|somebody collapsed|he collapsed|she collapsed|
+is choking|was choking|started choking|choking on|he's choking|she's choking|
 needs oxygen|need oxygen|having a heart attack|heart attack|seizure|having a seizure|can't breathe|cannot breathe|
 asthma attack|asthma attacks|an asthma attack|having an asthma attack|shut in|locked in|
 stuck on the roof|stranded on the roof|on the roof waiting|waving from|trapped upstairs|trapped on|

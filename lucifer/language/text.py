@@ -159,6 +159,7 @@ _HESITATION_WORDS = frozenset({"um", "uh", "er", "erm", "umm", "uhh"})
 _SUBJECT_WORDS = frozenset({"someone", "somebody", "he", "she", "they", "we", "i", "there's", "theres", "there’s"})
 
 
+# Words after "one" that place an item of a count ("two hurt, one at the hare, one at the ha-ha")
 _COUNTED_AT = frozenset({"at", "in", "on", "up", "down", "by", "inside", "outside"})
 # Words before "one" that make it part of a noun phrase ("the one at the gate"), not a count's next item
 _BEFORE_A_ONE = frozenset({"the", "that", "this", "which", "each", "every", "no", "only", "just", "number", "any", "a",
