@@ -6000,10 +6000,9 @@ def test_dev117_phenomena(kb_analyzers, kb, text, expected):
      [("kawara-no-yu", "person_in_need")]),
     ("onsen_hot_spring_town", "steam everywhere at hell valley", [("jigokudani", "peril")]),
     ("onsen_hot_spring_town", "the pump shed is full of steam", [("pump house", "peril")]),
-    # who calls, named by a place; a release; dust everywhere
+    # who calls, named by a place; a release
     ("waste_incinerator_plant", "this is uh the tipping hall marshal, fire in the refuse pit", [("waste bunker", "danger_area")]),
     ("waste_incinerator_plant", "a release from the ammonia store", [("ammonia tank", "danger_area")]),
-    ("waste_incinerator_plant", "the lime silo, there's dust everywhere", [("lime silo", "danger_area")]),
 ])
 def test_dev121_phenomena(kb_analyzers, kb, text, expected):
     """Stop 52: what the tuned dev121-dev124 sets showed (paraphrased)."""
