@@ -7317,8 +7317,7 @@ class ReportAnalyzer:
             if n_cut and e - last.end_tok >= 3 + n_cut and all(norms[t].isalpha() for t in range(e - n_cut, e)) \
                     and norms[e - 1] not in lx.FUNCTION_WORDS and any(d in toks.gaps[e] for d in ("—", "–", "--")) \
                     and not any(p.start_tok <= t < p.end_tok for p in ex.places for t in range(e - n_cut, e)) \
-                    and any(len(ws := name_words(f)) > n_cut and ws[:n_cut] == norms[e - n_cut:e]
-                            for lm in self.kb.landmarks for f in lm.surface_forms) \
+                    and norms[e - n_cut:e] in self._name_prefix_owners \
                     and self._cue_between(norms, last.end_tok, e - n_cut - 1) and not toks.sentence_start[e - n_cut - 1] \
                     and any(toks.clause_start[t] or norms[t] == "and" for t in range(last.end_tok, e - n_cut - 1)):
                 continue  # "The place behind the changing huts is our recovery area, and there's a near drowning at
@@ -10378,8 +10377,9 @@ class ReportAnalyzer:
                     # "fire at the hot-- / ... / hotel": a name cut off or said again is the same place, named
                     # in full later
                     nxt = next((q for q in usable if q.landmark == p.landmark and q.start_tok > p.start_tok), None)
-                    mark = next((mb for ma, mb, _ in ex.markers if p.end_tok <= ma <= p.end_tok + 1), None)
-                    if nxt is None and p.reason.startswith("false start") and mark is not None:
+                    mark = next((mb for ma, mb, _ in ex.markers if p.end_tok <= ma <= p.end_tok + 1), None) \
+                        if nxt is None and p.reason.startswith("false start") else None
+                    if mark is not None:
                         # "people trapped in the tourist off-- no, sorry, in the place in front of the bus
                         # terminal": a name cut off and repaired at once is the place the repair names
                         nxt = min((q for q in usable if q.status == "active" and mark <= q.start_tok <= mark + 3
