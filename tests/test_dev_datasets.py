@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev126) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev132) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -310,6 +310,30 @@ SCULPTURE_PARK_ESTATE = ROOT / "knowledge_bases" / "sculpture_park_estate"
 BIOGAS_FARM_DIGESTER = ROOT / "knowledge_bases" / "biogas_farm_digester"
 BAZAAR_OLD_CITY_SOUK = ROOT / "knowledge_bases" / "bazaar_old_city_souk"
 ROWING_LAKE_REGATTA_CENTRE = ROOT / "knowledge_bases" / "rowing_lake_regatta_centre"
+ALPACA_TREKKING_FARM = ROOT / "knowledge_bases" / "alpaca_trekking_farm"
+PIPE_ORGAN_CONCERT_HALL = ROOT / "knowledge_bases" / "pipe_organ_concert_hall"
+HIGHRISE_CONSTRUCTION_SITE = ROOT / "knowledge_bases" / "highrise_construction_site"
+MANGROVE_ECO_LODGE = ROOT / "knowledge_bases" / "mangrove_eco_lodge"
+FIBRE_CABLE_FACTORY = ROOT / "knowledge_bases" / "fibre_cable_factory"
+EQUESTRIAN_EVENTING_COURSE = ROOT / "knowledge_bases" / "equestrian_eventing_course"
+PARAGLIDING_LAUNCH_HILL = ROOT / "knowledge_bases" / "paragliding_launch_hill"
+DRINKING_WATER_TREATMENT_WORKS = ROOT / "knowledge_bases" / "drinking_water_treatment_works"
+RIVER_CRUISE_SHIP = ROOT / "knowledge_bases" / "river_cruise_ship"
+SEA_CLIFF_CLIMBING_CRAG = ROOT / "knowledge_bases" / "sea_cliff_climbing_crag"
+PHARMACEUTICAL_PLANT = ROOT / "knowledge_bases" / "pharmaceutical_plant"
+RURAL_WEDDING_VENUE = ROOT / "knowledge_bases" / "rural_wedding_venue"
+WILDLIFE_RESCUE_HOSPITAL = ROOT / "knowledge_bases" / "wildlife_rescue_hospital"
+AIRPORT_CARGO_CENTRE = ROOT / "knowledge_bases" / "airport_cargo_centre"
+CORAL_ISLAND_DIVE_RESORT = ROOT / "knowledge_bases" / "coral_island_dive_resort"
+MEAT_PROCESSING_ABATTOIR = ROOT / "knowledge_bases" / "meat_processing_abattoir"
+ICE_FISHING_LAKE_CAMP = ROOT / "knowledge_bases" / "ice_fishing_lake_camp"
+CINEMA_MULTIPLEX = ROOT / "knowledge_bases" / "cinema_multiplex"
+HYDROGEN_FUEL_DEPOT = ROOT / "knowledge_bases" / "hydrogen_fuel_depot"
+OPEN_PIT_DIAMOND_MINE = ROOT / "knowledge_bases" / "open_pit_diamond_mine"
+TOBACCO_CURING_BARNS = ROOT / "knowledge_bases" / "tobacco_curing_barns"
+ADVENTURE_PLAYGROUND = ROOT / "knowledge_bases" / "adventure_playground"
+FLOATING_SOLAR_RESERVOIR = ROOT / "knowledge_bases" / "floating_solar_reservoir"
+CIVIC_COURTHOUSE_SQUARE = ROOT / "knowledge_bases" / "civic_courthouse_square"
 ONSEN_HOT_SPRING_TOWN = ROOT / "knowledge_bases" / "onsen_hot_spring_town"
 SAND_DUNE_BUGGY_PARK = ROOT / "knowledge_bases" / "sand_dune_buggy_park"
 CATTLE_FEEDLOT = ROOT / "knowledge_bases" / "cattle_feedlot"
@@ -793,6 +817,30 @@ SETS = {
     "dev126/biogas_farm_digester": _set("dev126/biogas_farm_digester.jsonl", BIOGAS_FARM_DIGESTER, "bg126", TWENTY, sep=""),
     "dev126/bazaar_old_city_souk": _set("dev126/bazaar_old_city_souk.jsonl", BAZAAR_OLD_CITY_SOUK, "bz126", TWENTY, sep=""),
     "dev126/rowing_lake_regatta_centre": _set("dev126/rowing_lake_regatta_centre.jsonl", ROWING_LAKE_REGATTA_CENTRE, "rl126", TWENTY, sep=""),
+    "dev127/alpaca_trekking_farm": _set("dev127/alpaca_trekking_farm.jsonl", ALPACA_TREKKING_FARM, "al127", TWENTY, sep=""),
+    "dev127/pipe_organ_concert_hall": _set("dev127/pipe_organ_concert_hall.jsonl", PIPE_ORGAN_CONCERT_HALL, "oh127", TWENTY, sep=""),
+    "dev127/highrise_construction_site": _set("dev127/highrise_construction_site.jsonl", HIGHRISE_CONSTRUCTION_SITE, "hc127", TWENTY, sep=""),
+    "dev127/mangrove_eco_lodge": _set("dev127/mangrove_eco_lodge.jsonl", MANGROVE_ECO_LODGE, "me127", TWENTY, sep=""),
+    "dev128/fibre_cable_factory": _set("dev128/fibre_cable_factory.jsonl", FIBRE_CABLE_FACTORY, "fc128", TWENTY, sep=""),
+    "dev128/equestrian_eventing_course": _set("dev128/equestrian_eventing_course.jsonl", EQUESTRIAN_EVENTING_COURSE, "ev128", TWENTY, sep=""),
+    "dev128/paragliding_launch_hill": _set("dev128/paragliding_launch_hill.jsonl", PARAGLIDING_LAUNCH_HILL, "pg128", TWENTY, sep=""),
+    "dev128/drinking_water_treatment_works": _set("dev128/drinking_water_treatment_works.jsonl", DRINKING_WATER_TREATMENT_WORKS, "dw128", TWENTY, sep=""),
+    "dev129/river_cruise_ship": _set("dev129/river_cruise_ship.jsonl", RIVER_CRUISE_SHIP, "rc129", TWENTY, sep=""),
+    "dev129/sea_cliff_climbing_crag": _set("dev129/sea_cliff_climbing_crag.jsonl", SEA_CLIFF_CLIMBING_CRAG, "cc129", TWENTY, sep=""),
+    "dev129/pharmaceutical_plant": _set("dev129/pharmaceutical_plant.jsonl", PHARMACEUTICAL_PLANT, "ph129", TWENTY, sep=""),
+    "dev129/rural_wedding_venue": _set("dev129/rural_wedding_venue.jsonl", RURAL_WEDDING_VENUE, "wv129", TWENTY, sep=""),
+    "dev130/wildlife_rescue_hospital": _set("dev130/wildlife_rescue_hospital.jsonl", WILDLIFE_RESCUE_HOSPITAL, "wr130", TWENTY, sep=""),
+    "dev130/airport_cargo_centre": _set("dev130/airport_cargo_centre.jsonl", AIRPORT_CARGO_CENTRE, "ac130", TWENTY, sep=""),
+    "dev130/coral_island_dive_resort": _set("dev130/coral_island_dive_resort.jsonl", CORAL_ISLAND_DIVE_RESORT, "dr130", TWENTY, sep=""),
+    "dev130/meat_processing_abattoir": _set("dev130/meat_processing_abattoir.jsonl", MEAT_PROCESSING_ABATTOIR, "ab130", TWENTY, sep=""),
+    "dev131/ice_fishing_lake_camp": _set("dev131/ice_fishing_lake_camp.jsonl", ICE_FISHING_LAKE_CAMP, "if131", TWENTY, sep=""),
+    "dev131/cinema_multiplex": _set("dev131/cinema_multiplex.jsonl", CINEMA_MULTIPLEX, "cm131", TWENTY, sep=""),
+    "dev131/hydrogen_fuel_depot": _set("dev131/hydrogen_fuel_depot.jsonl", HYDROGEN_FUEL_DEPOT, "hf131", TWENTY, sep=""),
+    "dev131/open_pit_diamond_mine": _set("dev131/open_pit_diamond_mine.jsonl", OPEN_PIT_DIAMOND_MINE, "dm131", TWENTY, sep=""),
+    "dev132/tobacco_curing_barns": _set("dev132/tobacco_curing_barns.jsonl", TOBACCO_CURING_BARNS, "tb132", TWENTY, sep=""),
+    "dev132/adventure_playground": _set("dev132/adventure_playground.jsonl", ADVENTURE_PLAYGROUND, "ap132", TWENTY, sep=""),
+    "dev132/floating_solar_reservoir": _set("dev132/floating_solar_reservoir.jsonl", FLOATING_SOLAR_RESERVOIR, "fs132", TWENTY, sep=""),
+    "dev132/civic_courthouse_square": _set("dev132/civic_courthouse_square.jsonl", CIVIC_COURTHOUSE_SQUARE, "cs132", TWENTY, sep=""),
 }
 
 
