@@ -6007,3 +6007,86 @@ def test_dev117_phenomena(kb_analyzers, kb, text, expected):
 def test_dev121_phenomena(kb_analyzers, kb, text, expected):
     """Stop 52: what the tuned dev121-dev124 sets showed (paraphrased)."""
     assert claims(kb_analyzers[kb], text) == sorted(expected)
+
+
+@pytest.mark.parametrize("kb,text,expected", [
+    # a person, where they are, then a state of a person ("collapsed", "burned"); role words of a hall
+    ("pipe_organ_concert_hall", "our organist up in the loft has collapsed", [("organ loft", "patient")]),
+    ("pipe_organ_concert_hall", "an usher has collapsed in the circle", [("balcony", "patient")]),
+    ("mangrove_eco_lodge", "a boy from the kitchen burned his arm on the stove", [("kitchen", "person_at_risk")]),
+    # kicked, knocked over: a person's, where the KB has a category for the horses too
+    ("equestrian_eventing_course", "a groom got kicked in the stables", [("temporary stables", "person_in_need")]),
+    ("equestrian_eventing_course", "a lady's been knocked over in the trade stands",
+     [("trade stand village", "person_in_need")]),
+    # what the smoke only was; who calls from where; a boat launched from a place
+    ("mangrove_eco_lodge", "there's no fire at the genny shed, it was just exhaust smoke", []),
+    ("mangrove_eco_lodge", "Reception, this is Sam down at the jetty. A saltie is on the croc bank.",
+     [("crocodile mudbank", "wildlife_threat")]),
+    ("mangrove_eco_lodge", "capsized paddler in the channel, we're launching the rescue boat from the slipway",
+     [("tidal creek", "person_at_risk")]),
+    # from one thing onto a place, and people moved over to one: no description of a place
+    ("pipe_organ_concert_hall", "a rigger fell off the lighting bar onto the platform",
+     [("concert platform", "patient")]),
+    ("equestrian_eventing_course", "we're moving the queue over to the big ring, that's our muster point",
+     [("show jumping ring", "safe_ground")]),
+    # a fence judge calls; a clear round; an order to clear a stand; the crowd of a stand
+    ("equestrian_eventing_course", "fence judge at the trakehner, horse down in the ditch",
+     [("trakehner", "horse_in_distress")]),
+    ("equestrian_eventing_course", "fence judge at the coffin, rider six through clear", []),
+    ("equestrian_eventing_course", "the grandstand is cracking, get it cleared now", [("grandstand", "course_hazard")]),
+    ("equestrian_eventing_course", "the show jumping ring is the holding area for the stand crowd",
+     [("show jumping ring", "safe_ground")]),
+    ("equestrian_eventing_course", "the rider who fell at the trakehner needs the doctor",
+     [("trakehner", "person_in_need")]),
+    # a thing of a person's own, no slip of a name; a danger died away
+    ("paragliding_launch_hill", "wing snagged on the windsock mast, the pilot is hanging by his risers",
+     [("windsock mast", "flight_danger")]),
+    ("paragliding_launch_hill", "the dust devil over the landing field has died away", []),
+    # the station called: to all stations, said twice; a move still to come
+    ("coral_island_dive_resort", "Reception to all stations, the restaurant is our cyclone shelter tonight",
+     [("restaurant", "haven")]),
+    ("coral_island_dive_resort", "reception, reception, this is Ali at the front desk, a man fainted in the restaurant",
+     [("restaurant", "patient")]),
+    ("coral_island_dive_resort", "diver with decompression sickness in the clinic, we'll move him to the chamber later",
+     [("clinic", "patient")]),
+    # being cleared; crews coming aboard by a way
+    ("river_cruise_ship", "gas leak in the Hotel Krone, the hotel is being cleared", [("hotel krone", "peril")]),
+    ("river_cruise_ship", "man collapsed in the lounge bar, paramedics please come aboard via the gangway",
+     [("lounge bar", "person_in_need")]),
+    # a bad cut, then "lots of" (no place's "lot"); rooms that back onto it, where the KB has a "behind" too
+    ("rural_wedding_venue", "we have a chef with a really bad cut in the kitchen lots of blood",
+     [("kitchen block", "person_in_need")]),
+    ("pipe_organ_concert_hall", "flooding in the loading dock, and in the rooms that back onto it too",
+     [("dressing rooms", "peril"), ("loading dock", "peril")]),
+    # where a person works, when they are said to be elsewhere
+    ("cinema_multiplex", "a lad from the burger bar got burned, he's sitting in the yard",
+     [("service yard", "person_in_distress")]),
+    # a lost rucksack; a stab wound; a snake bit someone; workers down
+    ("civic_courthouse_square", "the suspect package at the fountain was a lost rucksack", []),
+    ("civic_courthouse_square", "a man with a stab wound at the police post", [("police post", "person_at_risk")]),
+    ("tobacco_curing_barns", "a snake bit one of the pickers in the seedbeds", [("seedbeds", "needs_help")]),
+    ("tobacco_curing_barns", "two workers down out in the long lands", [("long field", "needs_help")]),
+    # the edge of a place, in it; soaked and shaking; a vehicle in the water
+    ("ice_fishing_lake_camp", "a pickup went through at the edge of the ice lot, the driver is soaked and shaking",
+     [("ice parking", "person_down")]),
+    ("ice_fishing_lake_camp", "rotten ice along the edge of the groomed trail", [("snowmobile trail", "peril")]),
+    ("ice_fishing_lake_camp", "the truck's in the water at the boat launch", [("boat launch", "peril")]),
+    # people moved into a place, no description headed by "lot"
+    ("civic_courthouse_square", "we've moved the press lot into the library, it's secure",
+     [("library", "secured_area")]),
+    # the station called after "to the, the"; the fire crews are people, not the crash crew's station
+    ("coral_island_dive_resort", "dive centre to the, the clinic, we've got a bent diver here in the dive shop",
+     [("dive centre", "patient")]),
+    ("airport_cargo_centre", "the container yard is the staging area for the fire crews", [("uld yard", "cold_zone")]),
+    # "it" after a description said before it: the described place, once that is read
+    ("rural_wedding_venue", "grass fire in the field the chapel overlooks, the building that overlooks it is safe",
+     [("chapel", "safe_ground"), ("wildflower meadow", "peril")]),
+    # an aside that says which the reference point is; a shared name's last words said with "itself"
+    ("rural_wedding_venue", "kid with burns at the fire circle at the edge of the glamping field, the one you reach "
+                            "through the car park", [("fire pit", "person_in_need")]),
+    ("paragliding_launch_hill", "lightning's hit the mast towering over the top car park and a man is hurt in the car "
+                                "park itself", [("repeater mast", "flight_danger"), ("summit car park", "person_in_need")]),
+])
+def test_dev127_phenomena(kb_analyzers, kb, text, expected):
+    """Stop 53: what the tuned dev127-dev132 sets showed (paraphrased)."""
+    assert claims(kb_analyzers[kb], text) == sorted(expected)

@@ -575,10 +575,12 @@ class ReportAnalyzer:
                 for end in (("top", "top end", "head") if words[-2] == "up" else ("bottom", "bottom end", "foot")):
                     forms.setdefault(norm_phrase(f"at the {end} of"), (rel.phrase, True))
         kb_named = {val[0] for val in forms.values()} & {rel.phrase for rel in self.kb.relations}
+        kb_exact = {norm_phrase(rel.phrase.replace("_", " ")): rel.phrase for rel in self.kb.relations}
         for key, val in list(forms.items()):
-            if len(key) >= 3 and key[0] in ("that", "which") and val[0] not in kb_named \
-                    and forms.get(key[1:], val)[0] in kb_named:
+            if len(key) >= 3 and key[0] in ("that", "which") and (val[0] not in kb_named or kb_exact.get(key[1:]) not in (
+                    None, val[0])) and forms.get(key[1:], val)[0] in kb_named:
                 forms[key] = forms[key[1:]]  # "the houses that back onto it": the KB's own ``back onto``, not "behind"
+                # (also where the KB has a ``behind`` of its own: the words are those of ``back onto``)
         for key, val in list(forms.items()):
             if len(key) >= 2 and key[-1] == "from" and val[0] in kb_phrases and key[-2].endswith("ed"):
                 forms.setdefault((*key[:-1], "off"), val)  # "the station that's fed off it" for ``is fed from``
@@ -1083,11 +1085,15 @@ class ReportAnalyzer:
         places.extend(self._numbered_places(toks, norms, {i for p in places for i in range(p.start_tok, p.end_tok)}))
         places = [p for p in places if not _names_what_came(norms, p)]
         # ("passengers are being walked up onto ...": people, not the "passenger car park" the word is part of)
-        places = [p for p in places if not (p.end_tok - p.start_tok == 1 and norms[p.start_tok] in _PEOPLE_OR_GROUPS
+        places = [p for p in places if not ((p.end_tok - p.start_tok == 1 and norms[p.start_tok] in _PEOPLE_OR_GROUPS
+                                             or p.end_tok - p.start_tok >= 2 and norms[p.end_tok - 1] in ("crew", "crews")
+                                             and toks.tokens[p.end_tok - 1].text.lower() in ("crew", "crews"))
                                             and p.via is None and norms[p.start_tok:p.end_tok] not in {
                                                 name_words(f) for f in self.kb.landmark_by_name[p.landmark].surface_forms})]
+        # (nor "the staging area for the fire crews": a crew, not the "crash crew's" fire station)
         for idx, p in enumerate(places):
             if p.end_tok < len(norms) and norms[p.end_tok] in lx.MODIFIED_BY and not toks.clause_start[p.end_tok] \
+                    and not (toks.tokens[p.end_tok].text.lower() == "lots" and norms[p.end_tok + 1:p.end_tok + 2] == ("of",)) \
                     and norms[p.end_tok : p.end_tok + 2] not in lx.PART_OF_PLACE \
                     and norms[p.end_tok : p.end_tok + 2] not in (("guy", "rope"), ("guy", "ropes")) \
                     and not (norms[p.end_tok] in lx.CARRIAGE_WORDS and p.landmark in self._conveyances) \
@@ -2195,6 +2201,27 @@ class ReportAnalyzer:
                     owners.setdefault(part(words, n), set()).add(lm.name)
         return owners
 
+    def _shared_tail_itself(self, ex: Extraction, toks: Tokens, norms: tuple[str, ...]) -> None:
+        """"the mast towering over the top car park and two spectators hurt in the car park itself": the last words
+        of several names, said with "itself", are the one of those places said last."""
+        taken = {i for p in ex.places for i in range(p.start_tok, p.end_tok)}
+        for k in range(2, len(norms)):
+            if norms[k] != "itself":
+                continue
+            for n in (3, 2, 1):
+                a = k - n
+                if a < 1 or norms[a - 1] != "the" or any(i in taken for i in range(a - 1, k)):
+                    continue
+                owners = self._tail_owners.get(norms[a:k], set())
+                if len(owners) < 2:
+                    continue
+                prev = max((p for p in ex.places if p.end_tok <= a - 1 and p.landmark in owners and p.status != "retracted"),
+                           key=lambda p: p.end_tok, default=None)
+                if prev is not None:
+                    ex.places.append(self._mention(toks, a - 1, k, prev.landmark))
+                    taken.update(range(a - 1, k))
+                break
+
     @functools.cached_property
     def _headless_forms(self) -> dict[tuple[str, ...], str]:
         """Multi-word names without their last word ("cavendish" for "cavendish stand", "valley primary"
@@ -2707,6 +2734,9 @@ class ReportAnalyzer:
                 if typo is not None and i > 0 and norms[i - 1] in ("a", "an") and i + n < len(norms) \
                         and not toks.clause_start[i + n] and norms[i + n] not in lx.FUNCTION_WORDS:
                     typo = None  # "clipped by a bale clamp": a thing counted and named by what it is for, no "baler"
+                if typo is not None and n == 1 and i > 0 and norms[i - 1] in ("his", "her", "my", "your") \
+                        and word not in self._spellings:
+                    typo = None  # "dangling off it by his risers": a thing of a person's own, no slip of "the river"
                 if typo is not None and n == 1 and i > 0 and (norms[i - 1] in lx.NUMBER_WORDS or is_number(norms[i - 1])):
                     typo = None  # "about three bales deep": things counted, no slip of "the baler"
                 if typo is not None and not all(j in cue_tokens for j in span):
@@ -3070,10 +3100,16 @@ class ReportAnalyzer:
         # forward descriptions, then inverse ones, then forward ones that anchor on an inverse one
         # (an inverse one on a pronoun twice: "the field it plays its games on" after "the school that the prims
         # lend ... to", resolved later in the same pass)
-        for pass_no in (1, 2, 3, 1):
+        for round_no, pass_no in enumerate((1, 2, 3, 1)):
             for a, b, (phrase, flipped) in ordered:
                 if pass_no == 3 and not (a > 0 and norms[a - 1] in pronouns):
                     continue
+                if round_no == 0 and norms[b:b + 1] in (("it",), ("them",)):
+                    last = max((p for p in ex.places if p.end_tok <= a and p.status == "active"),
+                               key=lambda p: p.end_tok, default=None)
+                    if last is not None and any(a2 == last.end_tok and a2 < a for a2, _, _ in ordered):
+                        continue  # ("the field the chapel overlooks ..., the building that overlooks it": "it" is the
+                        # field, not the chapel that says which field, known once that description is read)
                 if pass_no == 2 and a > 0 and norms[a - 1] in pronouns and any(
                         b2 < a and "and" in norms[b2:a] for _, b2, _ in ordered):
                     continue  # ("the straight the esses run into — ..., and the corner it runs into": "it" is
@@ -3109,6 +3145,7 @@ class ReportAnalyzer:
             self._unresolved_own_heads(ex, toks, norms, rel_hits)
             self._both_anchors(ex, toks, norms, rel_hits)
         self._restated_anchors(ex, toks, norms)
+        self._shared_tail_itself(ex, toks, norms)
         if self.kb.relations:
             self._named_contact_clauses(ex, toks, norms)
         self._coordinated_anchors(ex, toks, norms)
@@ -3514,6 +3551,8 @@ class ReportAnalyzer:
                 if found is None:
                     continue
                 a, key = found
+                if norms[k] in lx.CALLER_ROLES:
+                    break  # "the fence judge at the trakehner": a person named by where they work, no place
                 related: dict[str, str] = {}  # landmark -> the first KB relation joining it to the anchor
                 for c in tails[key]:
                     for r in self.kb.relations:
@@ -3998,6 +4037,12 @@ class ReportAnalyzer:
             head_start = k - 1
             while head_start > 0 and norms[head_start - 1] in lx.DETERMINERS and (head_start - 1) not in marker_tokens:
                 head_start -= 1
+            if norms[j - 1] in ("to", "onto", "into") and head_start > 0 and norms[k - 1] not in lx.GENERIC_HEADS and (
+                    norms[head_start - 1] in ("off", "from")
+                    or set(norms[k:j]) <= {"over", "across", "up", "down", "back", "out", "round", "to", "onto", "into"}
+                    and _verb_like(toks.tokens[head_start - 1].text)):
+                continue  # "fell off the lighting bar onto the platform", "moving the queue over to the big ring":
+                # what moves, from where, to the place; no description of a place
             idx = ex.places.index(anchor)
             # (a plain noun's description, "the figure cut into the slope below ...", only where MiniLM reads a
             # relation: "the waiting room of the health centre" is in it, no description to leave unresolved)
@@ -4412,7 +4457,9 @@ class ReportAnalyzer:
                     continue
             if norms[head] in lx.ROOMS_OF_A_BUILDING and not named:
                 continue  # "the room above the market hall": a room of it, no landmark of its own
-            if not named and between == ["to"] and any(norms[k] in lx.MOVING_VERBS | lx.BRING_VERBS
+            if not named and between in (["to"], ["into"], ["onto"], ["over", "to"], ["across", "to"], ["down", "to"],
+                                         ["up", "to"], ["back", "to"], ["out", "to"]) \
+                    and any(norms[k] in lx.MOVING_VERBS | lx.BRING_VERBS
                                                        for k in range(max(0, head - 5), head)):
                 continue  # "we're taking the walking ones to the osteria": where people are taken, no place by it
             if norms[head] in lx.ROUTE_HEADS and not named and len(between) == 1 \
@@ -5140,6 +5187,15 @@ class ReportAnalyzer:
                         ("to",), ("for",), ("towards",), ("toward",), ("back",), ("down",), ("up",), ("over",), ("out",), ("off",))
                        for i in range(a, b)):
                     return  # "we're heading to the rope line": where people go, not ``sits at the head of``
+                at = next((i for i in range(a, b) if norms[i] in ("at", "on", "along", "by")), a)
+                if set(norms[at:b]) & {"edge", "end", "side", "corner"} and set(norms[at:b]) <= {
+                        "at", "on", "along", "by", "the", "edge", "end", "side", "corner", "of", "far", "near", "shore",
+                        "north", "south", "east", "west", "top", "bottom", "back", "front"} \
+                        and at - a <= 2 and all(norms[i].isalpha() and norms[i] not in self._place_nouns()
+                                                for i in range(a, at)) \
+                        and (a == 0 or norms[a - 1] not in self._place_nouns()):
+                    return  # "a pickup went through at the edge of the ice lot": a part of the place, in it, where no
+                    # place before it is described
                 named_words = set(norm_phrase(phrase))
                 if b - a >= 3 and any(
                         (m := self._cues.match_at(norms, i)) is not None and m[1][0]
@@ -6473,20 +6529,32 @@ class ReportAnalyzer:
         if norms[p.end_tok:p.end_tok + 2] == ("this", "is") and toks.sentence_of[a] == 0 \
                 and all(w in lx.FILLERS | lx.DETERMINERS for w in norms[:a]):
             return True  # "uh base this is Sue at Heron Court": the station called, then who calls
+        if toks.sentence_of[a] == 0 and all(w in lx.FILLERS | lx.DETERMINERS for w in norms[:a]) and any(
+                q.landmark == p.landmark and q.start_tok == p.end_tok and norms[q.end_tok:q.end_tok + 2] == ("this", "is")
+                for q in places):
+            return True  # "reception, reception, this is Ahmed": the station called twice
         if toks.sentence_of[a] == 0 and all(w in lx.FILLERS | lx.DETERMINERS for w in norms[:a]) \
                 and norms[p.end_tok:p.end_tok + 2] == ("to", "all") and p.end_tok + 4 <= len(norms) \
                 and any(toks.clause_start[i] for i in range(p.end_tok + 2, p.end_tok + 5) if i < len(norms)) \
                 and not {"this", "here", "we", "our", "us", "were", "weve", "ours"} & {
-                    norms[i] for i in range(p.end_tok, len(norms)) if toks.sentence_of[i] == toks.sentence_of[a]}:
+                    norms[i] for i in range(p.end_tok, len(norms)) if toks.sentence_of[i] == toks.sentence_of[a]
+                    and not (norms[i] == "our" and norms[i - 1] in ("is", "s", "as"))}:
+            # (not "the main restaurant is our cyclone shelter": what the other place is to them all)
             # ("Police post to all units: this building ... is now the cold zone": its own place, said of)
             return True  # "Race Control to all posts: the south grandstand is on fire": who broadcasts
-        if a < 2 or norms[a - 1] != "to" or toks.sentence_of[a] != 0 or p.end_tok >= len(norms) \
+        t = a - 1  # ("dive centre to the, the clinic, we got ...": the article said twice)
+        while t > 1 and a - t <= 3 and (norms[t] in lx.ARTICLES or norms[t] in lx.HESITATIONS):
+            t -= 1
+        if t < 1 or norms[t] != "to":
+            t = a - 1
+        if a < 2 or norms[t] != "to" or toks.sentence_of[a] != 0 or p.end_tok >= len(norms) \
                 or not toks.clause_start[p.end_tok]:
             return False
-        before = range(0, a - 1)
-        caller = next((q for q in places if q.start_tok == 0 and q.end_tok == a - 1), None)
+        before = range(0, t)
+        caller = next((q for q in places if q.start_tok <= 1 and q.end_tok == t
+                       and all(w in lx.FILLERS for w in norms[:q.start_tok])), None)
         # ("Fuel bay to race control, we've got ...": a place calling by its own name)
-        numbered = len(before) >= 2 and (is_number(norms[a - 2]) or norms[a - 2] in lx.NUMBER_WORDS)
+        numbered = len(before) >= 2 and (is_number(norms[t - 1]) or norms[t - 1] in lx.NUMBER_WORDS)
         # ("Fire Two to rally office: ...": a call sign's word and number, no fire)
         return len(before) <= 4 and (caller is not None or all(toks.tokens[i].text[:1].isupper() or toks.tokens[i].text.isdigit()
                                                                for i in before)) \
@@ -6874,8 +6942,8 @@ class ReportAnalyzer:
                         "gone", "went", "fallen", "fell", "slipped", "jumped", "go"):
                     continue  # "a fisherman's gone in off the weir": into the water there, no one passing
                 if hit is not None and hit[1].split()[0] in ("came", "come", "coming") and len(hit[1].split()) == 3 \
-                        and not any(norms[m] in lx.MOVING_PEOPLE | lx.WORKER_PERSONS | _MOVING_VEHICLES
-                                    for m in range(max(0, k - 4), k)):
+                        and not any(norms[m] in lx.MOVING_PEOPLE | lx.WORKER_PERSONS | _MOVING_VEHICLES | lx.CREW_NOUNS
+                                    or norms[m] in lx.CALLER_ROLES for m in range(max(0, k - 4), k)):
                     continue  # "debris came down from the roof": a thing fallen, not people who came from there (but
                     # "ambulance is coming in through the car park": a crew on its way)
                 if hit is not None and j <= hit[0] <= p.start_tok and not any(toks.clause_start[i] for i in range(k + 1, min(hit[0], p.start_tok) + 1) if i < p.start_tok):
@@ -6913,6 +6981,17 @@ class ReportAnalyzer:
                 or toks.tokens[p.end_tok - 1].text.lower().endswith(("'s", "’s")) or toks.clause_start[p.end_tok]
             if ref is not None and not own:  # (not "..., the park is safe though": said of it)
                 ex.places[idx] = replace(p, status="reference", reason=f"the reference point said again ({ref.text})")
+        # "the fire circle at the edge of the glamping field, the one you reach through the car park": an aside that
+        # says which the reference point is, described, is still only the reference point
+        for idx, p in enumerate(ex.places):
+            if p.status != "active" or p.via is None or norms[p.start_tok:p.start_tok + 2] != ("the", "one"):
+                continue
+            ref = next((q for q in ex.places if q.status == "reference" and q.landmark == p.landmark and q.via is None
+                        and q.reason.startswith("reference point") and 0 <= p.start_tok - q.end_tok <= 1
+                        and any(d in toks.gaps[i] for i in range(q.end_tok, p.start_tok + 1) for d in ("—", "–", "--", ","))),
+                       None)
+            if ref is not None:
+                ex.places[idx] = replace(p, status="reference", reason=f"the reference point said again ({ref.text})")
         # "we've got twenty folk from the almshouses in already", "kids from the primary": where people came from is
         # no claim, unless what follows says what is wrong with them there ("the kids from the school are stuck
         # on the first floor")
@@ -6921,6 +7000,16 @@ class ReportAnalyzer:
             if j >= 2 and norms[j - 1] == "than" and norms[j - 2] in lx.COMPARATIVES:
                 ex.places[idx] = replace(p, status="reference", reason="a comparison: no claim")
                 continue  # "flames going higher than the arches"
+            if j >= 2 and norms[j - 1] == "from" and norms[j - 2] in _PEOPLE_WORDS and any(
+                    q.status == "active" and q.start_tok >= p.end_tok and q.landmark != p.landmark
+                    and toks.sentence_of[q.start_tok] == toks.sentence_of[p.start_tok]
+                    and any(norms[m] in ("hes", "shes", "theyre") or norms[m] in ("he", "she", "they")
+                            and norms[m + 1] in ("s", "is", "are", "re") for m in range(max(p.end_tok, q.start_tok - 5), q.start_tok))
+                    for q in ex.places):
+                # "A lad from the burger place got burned trying to put it out, he's sitting in the yard": where he
+                # works, not where he is
+                ex.places[idx] = replace(p, status="reference", reason="where people came from: no claim")
+                continue
             if not (j >= 2 and norms[j - 1] == "from" and (norms[j - 2] in lx.ORIGIN_PEOPLE or (
                     is_number(norms[j - 2]) and not is_ordinal(norms[j - 2])
                     and (j < 3 or norms[j - 3] not in ("the", "number", "no"))))):
@@ -7448,6 +7537,32 @@ class ReportAnalyzer:
         # ("Water in the compartment." claims; "Scaffolder on the roof of the hotel, over." calls in)
         return bool(tail) or head in lx.WORKER_PERSONS | lx.CREW_NOUNS | lx.CALLER_ROLES
 
+    @staticmethod
+    def _this_is_who_at(toks: Tokens, norms: tuple[str, ...], p: PlaceMention) -> bool:
+        """"Reception, this is Dan down at the jetty.": the caller's name and where they are, the place ending the
+        sentence."""
+        start = p.start_tok
+        while start > 0 and not toks.sentence_start[start]:
+            start -= 1
+        before = [w for w in norms[start:p.start_tok] if w not in lx.FILLERS]
+        while before and before[-1] in lx.ARTICLES:
+            before.pop()
+        k = next((i for i in range(len(before) - 1) if before[i:i + 2] == ["this", "is"]), None)
+        if k is None:
+            return False
+        rest = before[k + 2:]
+        if len(rest) < 2 or rest[-1] not in lx.POSITION_PREPS:
+            return False
+        rest = rest[:-1]
+        if rest and rest[-1] in ("up", "down", "over", "out", "back", "here"):
+            rest = rest[:-1]
+        if not 1 <= len(rest) <= 2 or any(not w.isalpha() or w in lx.FUNCTION_WORDS for w in rest):
+            return False
+        end = p.end_tok
+        while end < len(norms) and not toks.sentence_start[end]:
+            end += 1
+        return set(norms[p.end_tok:end]) <= lx.FILLERS | {"over", "here", "now"}
+
     def _sheltered_people(self, norms: tuple[str, ...], cues: list[CueMention]) -> list[CueMention]:
         """"twenty patients sheltering in there": people said with the shelter they have are no casualty claim."""
         starts = {c.start_tok: c for c in cues}
@@ -7922,6 +8037,12 @@ class ReportAnalyzer:
                     and not any(toks.clause_start[k] for k in range(max(1, a - 3), a + 1)):
                 continue  # "keep all boats clear of the lock", "stay well clear": an instruction, like "keep clear"; "crew
                 # have stepped well clear": people who moved away, nothing said of the place
+            if norms[a:b] == ("clear",) and a > 0 and (norms[a - 1] in ("through", "jumped", "jumping", "jumps", "went")
+                                                       or norms[b:b + 1] == ("round",)):
+                continue  # "rider forty-two through clear, no penalties": a clear round, nothing said of a place
+            if norms[a:b] == ("cleared",) and a >= 2 and (norms[a - 1] in ("it", "them", "everyone", "everybody")
+                                                          and norms[a - 2] in ("get", "getting") or norms[a - 1] == "being"):
+                continue  # "the grandstand is cracking, get it cleared now": an order to empty it, no safety said
             if norms[a:b] in (("cleared",), ("lifted",)) and a >= 2 and norms[a - 1] in ("has", "have", "s") \
                     and any(self._cues.match_at(norms, k) is not None for k in range(max(0, a - 4), a - 1)):
                 continue  # "the smoke has cleared": the danger has gone, the place is not said to be cleared
@@ -8149,6 +8270,7 @@ class ReportAnalyzer:
         cues = self._spread_of_what(toks, norms, cues)
         cues = self._sheltered_people(norms, cues)
         cues = self._animals_in_trouble(toks, norms, cues)
+        cues = self._things_in_the_water(norms, cues)
         cues.extend(self._animal_states(toks, norms, blocked | neutral | {i for c in cues for i in range(c.start_tok, c.end_tok)}))
         cues.extend(self._cues_into_description(ex, norms, {i for c in cues for i in range(c.start_tok, c.end_tok)}))
         cues.extend(self._predicative_cues(ex, norms, blocked | {i for c in cues for i in range(c.start_tok, c.end_tok)}))
@@ -8602,6 +8724,15 @@ class ReportAnalyzer:
                 and w not in lx.VEHICLE_WORDS and len(w) >= 5:
             return True  # "one of the feeders is burned, he's in the yard": one of a crew, named by what they do
             # (not "one of the containers has collapsed": a thing, no "he" or "she" after it)
+        # "the organist up in the loft has collapsed", "a boy from the kitchen burned both hands": the person, then
+        # where they are (a preposition, its article and one or two plain words)
+        at = next((m for m in range(j - 1, max(-1, j - 4), -1) if norms[m] in ("in", "at", "on", "from")), None)
+        if at is not None and at + 2 <= j and norms[at + 1] in lx.ARTICLES and all(
+                norms[m].isalpha() and norms[m] not in lx.FUNCTION_WORDS and norms[m] not in lx.STRUCTURE_WORDS
+                for m in range(at + 2, j + 1)):
+            p = at - 1 - (at >= 2 and norms[at - 1] in ("up", "down", "over", "out", "back"))
+            if p >= 0 and (norms[p] in lx.LAY_PERSONS or norms[p] in lx.WORKER_PERSONS or norms[p] in lx.PERSON_NOUNS):
+                return True
         # "old Mr Reid at the end cottage has collapsed": the person before where they are
         at = next((m for m in range(j - 1, max(-1, j - 5), -1) if norms[m] in ("at", "in", "inside")), None)
         return at is not None and at > 1 and norms[at - 2] in ("mr", "mrs", "ms", "miss", "dr") and not any(
@@ -8749,6 +8880,7 @@ class ReportAnalyzer:
         animal = self._animal_category
         if animal is None:
             return cues
+        people = [c.name for c in self.kb.categories_with_role(Role.CRITICAL) if c.name != animal]
         out = []
         for c in cues:
             if c.source == "lexicon" and self.kb.category_by_name[c.category].role == Role.UNDESIRABLE \
@@ -8769,6 +8901,33 @@ class ReportAnalyzer:
                             "screaming", "panicking", "trapped", "stuck", "hurt", "injured") \
                         and self._animal_subject(toks, norms, c.start_tok):
                     c = replace(c, category=animal, reason="said of animals")
+            elif c.source == "lexicon" and c.category == animal and len(people) == 1 \
+                    and self.kb.category_by_name[animal].role == Role.CRITICAL \
+                    and not set(norms[c.start_tok:c.end_tok]) & lx.ANIMAL_WORDS \
+                    and self._person_before(norms, c.start_tok) and not self._animal_subject(toks, norms, c.start_tok):
+                # "a groom's been kicked in the bays", "a lady's been knocked over at the food vans": what the
+                # vocabulary reads as the animals' is said of a person
+                c = replace(c, category=people[0], reason="said of a person")
+            out.append(c)
+        return out
+
+    def _things_in_the_water(self, norms: tuple[str, ...], cues: list[CueMention]) -> list[CueMention]:
+        """"the truck's in the water", "the front end's in the water": a vehicle (or its end) in the water is a
+        danger at the place, no person in it."""
+        und = None
+        out = []
+        for c in cues:
+            j = c.start_tok - 1
+            while j >= 0 and norms[j] in ("s", "is", "are", "re", "was", "now", "right", "half", "all", "just", "still"):
+                j -= 1
+            if c.source == "lexicon" and norms[c.start_tok:c.end_tok] == ("in", "the", "water") and j >= 0 \
+                    and self.kb.category_by_name[c.category].role == Role.CRITICAL \
+                    and (norms[j] in lx.VEHICLE_WORDS or norms[j] in ("pickup", "cab", "bonnet")
+                         or norms[j] == "end" and j > 0 and norms[j - 1] in ("front", "back", "rear")):
+                und = und or self._category_for_role(lx.UNDESIRABLE, "a vehicle gone through into the water")
+                if und is None:
+                    continue
+                c = replace(c, category=und, reason="a vehicle in the water")
             out.append(c)
         return out
 
@@ -8887,6 +9046,8 @@ class ReportAnalyzer:
             negated.update(range(a, b))
         # "the kids from the school are all out": got out, nobody left to guess a claim for
         negated.update(i for i in range(len(norms) - 1) if norms[i + 1] == "out" and norms[i] in lx.GOT_OUT_BEFORE)
+        # ("the hotel is being cleared": emptied, no safe place to guess)
+        negated.update(i for i in range(1, len(norms)) if norms[i] == "cleared" and norms[i - 1] == "being")
         asking = self._question_sentences(toks)
         # ("team three at the tank the pumps feed, moving on to the hangar next, no problems seen": all well there)
         well = {toks.sentence_of[i] for i in range(len(norms)) if norms[i:i + 2] in _ALL_WELL}
@@ -8906,7 +9067,8 @@ class ReportAnalyzer:
             if _call_sign_at(toks, norms, p):
                 continue  # "Rescue Two at the gorge.": who calls and where they are, no claim to guess at
             a, b = self._predicate_region(ex, p, norms)
-            if any(a <= c.start_tok < b for c in all_cues) or any(a <= ma < b for ma, _, _ in ex.markers) \
+            if any(a <= c.start_tok < b or c.start_tok < a < c.end_tok for c in all_cues) \
+                    or any(a <= ma < b for ma, _, _ in ex.markers) \
                     or any(a <= i < b for i in getattr(self, "_shut_tokens", ())) \
                     or any(a <= i < b for i in getattr(self, "_neutral_tokens", ())):
                 continue  # the vocabulary (or a repair) already spoke here; the fallback stays silent
@@ -8923,7 +9085,7 @@ class ReportAnalyzer:
             if {norms[i] for i in sent} & {"scared", "worried", "afraid", "fear", "frightened"} \
                     and {norms[i] for i in range(a, b)} & {"might", "could", "may", "will", "ll"}:
                 continue  # "I'm scared the cladding might come off onto the playground": feared, no claim to guess at
-            if self._says_who_and_where(toks, norms, p):
+            if self._says_who_and_where(toks, norms, p) or self._this_is_who_at(toks, norms, p):
                 continue  # "Scaffolder on the roof of the hotel, over.": who is calling and from where
             if any(norms[i] in _MOVING_CREWS and any(
                     norms[m] in _CREW_MOVES for m in range(i + 1, min(i + 4, p.start_tok)))
@@ -8941,7 +9103,8 @@ class ReportAnalyzer:
             if self._kept_clear_for(toks, norms, p.start_tok):
                 continue  # "keep the road clear for the ladder coming down from the fire station": no claim to guess
             if ("from" in norms[max(0, p.start_tok - 3):p.start_tok] or "off" in norms[max(0, p.start_tok - 2):p.start_tok]) \
-                    and any(norms[i] in lx.MOVE_VERBS | lx.EVACUATE_VERBS or norms[i] in ("come", "drive")
+                    and any(norms[i] in lx.MOVE_VERBS | lx.EVACUATE_VERBS | {"launching", "launched", "launch"}
+                            or norms[i] in ("come", "drive")
                             and norms[i - 1] in ("can", "could", "will", "ll", "should") for i in sent if i < p.start_tok - 1):
                 continue  # "we've walked about forty people up there from the caravan park", "walking the evacuees
                 # off the boardwalk": where they came from

@@ -232,7 +232,7 @@ went into labour|gone into labour|in labour|needs a midwife|sitting on the roof|
 on their roofs|lady fallen|old lady fallen|woman fallen|man fallen|old man fallen|someone's fallen|she's fallen|he's fallen|
 need carrying out|needs carrying out|by stretcher|stretcher case|one's collapsed|one has collapsed|one of them's collapsed|one of them has collapsed|coming out coughing|she's still up there|he's still up there|they're still up there|still up there|doesn't walk well|can't walk well|arm deformed|leg deformed|query spinal|spinal injury|suspected fracture|query fracture|fractured|lady gone down|
 woman gone down|man gone down|bloke gone down|someone gone down|somebody gone down|person gone down|gone very grey|gone grey|gone a funny colour|slid off her chair|slid off his chair|slumped|feeling unwell|feeling ill|
-feeling sick|taken ill|been taken ill|can't manage the stairs|cannot manage the stairs|carry chair|with cuts|cuts from|cuts to his|cuts to her|cuts to their|cuts and bruises|nasty cuts|bad cuts|with a cut|
+feeling sick|taken ill|been taken ill|can't manage the stairs|cannot manage the stairs|carry chair|with cuts|cuts from|cuts to his|cuts to her|cuts to their|cuts and bruises|nasty cuts|bad cuts|with a cut|a bad cut|a nasty cut|a deep cut|really bad cut|
 scalded|scalds|scalding burns|badly scalded|with scalds|
 trapped|trapped inside|stuck|stuck inside|pinned|pinned down|buried|injured|injuries|injury|hurt|
 wounded|bleeding|unconscious|unresponsive|not breathing|not moving|cardiac arrest|cardiac|a cardiac thing|heart thing|need the ambulance|needs the ambulance|broken leg|broken arm|
@@ -240,7 +240,7 @@ casualty|casualties|victim|victims|survivor|survivors|patient|patients|
 needs help|need help|needs rescue|need rescue|needs rescuing|need rescuing|calling for help|crying for help|
 cries for help|screaming|shouting for help|banging|knocking|someone inside|people inside|person inside|
 kids inside|children inside|family inside|elderly inside|residents inside|
-missing person|missing persons|missing|been bitten|nasty bite|a bad bite|a bite on his|a bite on her|bite on the hand|got bitten|was bitten|got bit by|was bit by|been bit by|bitten by|bitten on the|man down|person down|woman down|people down|men down|both burnt|both burned|men burned|men burnt|man burned|man burnt|people burned|people burnt|women burned|woman burned|lads burned|crew burned|crew burnt|cut up bad|cut up badly|badly cut up|
+missing person|missing persons|missing|soaked and shaking|soaking wet and shaking|wet and shaking|shaking badly|shivering badly|can't stop shivering|been bitten|a snake bit|the snake bit|snake bit|snake bite|snakebite|bit one of|needs antivenom|antivenom|stab wound|stab wounds|knife wound|nasty bite|a bad bite|a bite on his|a bite on her|bite on the hand|got bitten|was bitten|got bit by|was bit by|been bit by|bitten by|bitten on the|man down|person down|woman down|needs the doctor|need the doctor|needs the medic|needs a medic|workers down|worker down|men down|pickers down|people down|men down|both burnt|both burned|men burned|men burnt|man burned|man burnt|people burned|people burnt|women burned|woman burned|lads burned|crew burned|crew burnt|cut up bad|cut up badly|badly cut up|
 medical emergency|medical help|needs a medic|needs medic|needs an ambulance|needs evacuation|
 can't get out|cannot get out|can't move|cannot move|burns victim|overcome by smoke|
 stranded|cut off|trapped people|trapped persons|people trapped|someone trapped|somebody trapped|
@@ -283,7 +283,7 @@ cut by flying glass|cut by glass|cut by falling glass|hit by flying glass|hit by
 broken his hip|broken her hip|broken his leg|broken her leg|broken his arm|broken her arm|broke his leg|broke her leg|
 waving out the window|waving out of the window|waving out of windows|waving from the window|
 not come out|hasn't come out|has not come out|haven't come out|havent come out|didn't come out|never came out|nobody has seen him come out|nobody has seen her come out|no one has seen him come out|no one has seen her come out|no one's seen him come out|no one's seen her come out|nobody's seen them come out|nobody has seen them come out|no one's seen them come out|no one has seen them come out|nobody's seen him come out|nobody's seen her come out|nobody saw them come out|not come back out|hasn't come back out|
-been knocked down|got knocked down|knocked off her bike|knocked off his bike|was knocked down|knocked over by|been hit by|was hit by|got hit by|hit by a|
+been knocked down|got knocked down|been knocked over|got knocked over|was knocked over|been kicked|got kicked|was kicked|kicked by a|kicked by the|been trodden on|got trodden on|was trodden on|trodden on by|knocked off her bike|knocked off his bike|was knocked down|knocked over by|been hit by|was hit by|got hit by|hit by a|
 struck by a|been run over|was run over|got run over|not conscious|isn't conscious|is not conscious|
 send a boat|please send a boat|need a boat|send help|please send help|come and get us|come get us|get us out|
 please come|please hurry|please help us|fire fighter down|fireman down|fire fighter injured|not answering|isn't answering|he's not answering|she's not answering|
@@ -367,7 +367,7 @@ CANCEL_AFTER = ["fully out", "is fully out", "damping down", "damping down is fi
                 "all been brought down", "got them down", "nobody left", "water's gone down", "water has gone down",
                 "water's receded", "water has receded", "flood's gone down", "flooding's gone down",
                 "extinguished", "under control", "contained", "is over", "has stopped", "stopped",
-                "died down", "cleared up", "gone", "is gone", "has gone", "fixed", "repaired",
+                "died down", "died away", "has died away", "cleared up", "gone", "is gone", "has gone", "fixed", "repaired",
                 "has eased off", "s eased off", "eased off",
                 "turned off", "shut off", "capped", "receded", "drained", "false alarm",
                 "all rescued", "rescued", "evacuated", "got out", "out safely", "accounted for",
@@ -533,7 +533,7 @@ DANGER_EXPLAINED = {"just steam", "only steam", "just fog", "only fog", "just mi
                     "someones extractor fan", "their extractor fan", "just the extractor fan", "only the extractor fan",
                     "was the extractor fan", "controlled burn", "controlled bonfire", "controlled fire", "burning the prunings",
                     "burning prunings", "burning off the", "burning leaves in a brazier", "burning leaves in a",
-                    "was a barbecue", "was a bbq", "was a bonfire", "it's a bonfire", "its a bonfire", "it's just a bonfire",
+                    "was a barbecue", "just exhaust", "only exhaust", "just the exhaust", "only the exhaust", "was a bbq", "was a bonfire", "it's a bonfire", "its a bonfire", "it's just a bonfire",
                     "it's only a bonfire", "it's a barbecue", "its a barbecue", "garden bonfire"}
 
 # Whole-report "nothing to see" markers that cancel every claim in their sentence.
@@ -542,7 +542,7 @@ FALSE_ALARM = ["false alarm", "scratch their earlier call", "scratch my earlier 
                "nothing has happened at ours", "that was yesterday's call", "that was yesterday", "exercise exercise", "for the exercise only", "that's for the exercise",
                "none of this is real", "this is a test message", "the scenario has", "tomorrow's exercise",
                "in the exercise", "stand down on the", "standing down on the", "stood down on the", "never mind", "nevermind", "disregard my last", "disregard the last report",
-               "nothing in it", "nothing to it", "on purpose", "controlled burn", "controlled bonfire", "controlled fire", "burning the prunings", "burning prunings", "burning off the", "like they do every", "just steam", "only steam", "just fog", "only fog", "just mist", "only mist", "someone's extractor fan", "someones extractor fan", "their extractor fan", "just the extractor fan", "only the extractor fan", "was the extractor fan", "was just a", "was only a",
+               "nothing in it", "nothing to it", "on purpose", "controlled burn", "controlled bonfire", "controlled fire", "burning the prunings", "burning prunings", "burning off the", "like they do every", "just steam", "only steam", "just fog", "only fog", "just mist", "only mist", "just exhaust", "only exhaust", "just the exhaust", "only the exhaust", "someone's extractor fan", "someones extractor fan", "their extractor fan", "just the extractor fan", "only the extractor fan", "was the extractor fan", "was just a", "was only a",
                "was just their", "was just the", "its just their", "is just their", "its only their", "nothing to worry about", "ignore my last", "cancel my last",
                "disregard my last message", "nobody in any", "disregard the call about", "disregard the call re", "disregard the report about", "disregard the call from", "burning leaves in a brazier", "burning leaves in a", "disregard previous", "disregard my earlier report",
                "ignore my earlier report", "disregard the earlier report", "disregard the earlier message",
@@ -553,7 +553,7 @@ FALSE_ALARM = ["false alarm", "scratch their earlier call", "scratch my earlier 
                "part of a drill", "part of the drill", "just a drill", "only a drill", "part of the exercise",
                "part of an exercise", "just an exercise", "only an exercise", "is stood down", "been stood down",
                "was stood down", "are stood down", "was a mannequin", "was a dummy", "was a training dummy",
-               "was a barbecue", "was a bbq", "was a bonfire", "was someone's barbecue", "job closed", "incident closed",
+               "was a barbecue", "was a lost bag", "was a lost rucksack", "was a lost backpack", "was a lost suitcase", "owner's come back for it", "owner has come back for it", "owner came back for it", "was a bbq", "was a bonfire", "was someone's barbecue", "job closed", "incident closed",
                "it's a bonfire",
                "its a bonfire", "it's just a bonfire", "it's only a bonfire", "it's a barbecue", "its a barbecue",
                "disregard all of it", "disregard all of that", "disregard all that", "ignore all of that", "ignore all of it",
@@ -882,7 +882,7 @@ RETRACT_VERBS = {"scratch", "strike", "forget", "cancel", "remove", "minus", "dr
 
 # Places in these phrases are being passed or travelled to: the report claims nothing about them.
 TRANSIT = [*(f"{v} {who} {way}to" for v in ("walk", "take", "bring", "carry", "help", "walking", "taking", "bringing",
-                                               "carrying", "helping")
+                                               "carrying", "helping", "move", "moving")
              for who in ("her", "him") for way in ("", "across ", "over ", "down ", "up ", "back ", "round ")),
            "we're stood at", "we are stood at", "i'm stood at", "i am stood at", "we're stood by", "i'm stood by",
            "people in off", "taking people in off", "in off the", "walked up from", "walked down from", "walked over from", "walked from", "drove from", "drove up from",
@@ -891,6 +891,8 @@ TRANSIT = [*(f"{v} {who} {way}to" for v in ("walk", "take", "bring", "carry", "h
            "heading to", "heading for", "heading towards", "heading toward", "headed to", "headed for", "head to",
            "heading out to", "headed out to",
            "launching down", "launching from", "launching off", "launched from", "launched off",
+           "come aboard via", "come in via", "come via", "coming via", "coming in via", "coming aboard via",
+           "come up via", "come down via", "come round via",
            "heading up towards", "heading down towards", "creeping towards", "drifting towards", "hanging down into", "dangling down into", "dangling into", "current towards", "swinging towards", "floating towards",
            "spreading towards", "moving up towards", "running uphill towards", "running downhill towards",
            "running up towards", "running towards", "racing towards", "racing up towards", "burning towards",
@@ -1128,13 +1130,14 @@ WORKER_PERSONS = {"driver", "worker", "workman", "lad", "labourer", "passenger",
                   "stevedore", "farmhand", "kayaker", "canoeist", "skier", "staff", "skater", "cook", "chef", "lifeguard",
                   "stockman", "stockmen", "exhibitor", "handler", "herdsman", "shepherd", "farrier", "groom",
                   "bearer", "bearers", "drummer", "piper", "dancer", "performer", "musician", "singer", "juggler",
-                  "postman", "postwoman", "postie", "courier", "sorter", "picker", "electrician", "plumber", "mechanic"}
+                  "postman", "postwoman", "postie", "courier", "sorter", "picker", "electrician", "plumber", "mechanic",
+                  "usher", "usherette", "organist", "doorkeeper", "doorman", "gatekeeper", "groundsman", "jockey", "pilot"}
 # Who calls in, said before where they are ("Security guard at the savings bank."): a role, not a claim.
 CALLER_ROLES = {"guard", "warden", "officer", "patrol", "assistant", "attendant", "manager", "caretaker", "courier",
                 "inspector", "first-aider", "firstaider", "aider", "volunteer", "medic", "paramedic", "constable",
                 "firefighter", "watchman", "supervisor", "foreman", "receptionist", "janitor", "custodian",
                 "mechanic", "pharmacist", "landlord", "landlady", "publican", "postman", "postwoman", "postie",
-                "porter", "lifeguard", "verger", "vicar", "curate", "ranger", "keeper"}
+                "porter", "lifeguard", "verger", "vicar", "curate", "ranger", "keeper", "judge"}
 # Who says "X <role> here" of the place they work at ("Tea room manager here, the place we get our bread from ...")
 WORKPLACE_ROLES = frozenset(CALLER_ROLES | ROLE_LABELS | SPEAKER_ROLES
                             | {"manager", "owner", "landlord", "landlady", "driver", "staff"})
@@ -1523,7 +1526,8 @@ MODAL_BEFORE_VERB = {"dont", "do", "cant", "cannot", "can", "will", "wont", "ll"
 
 # People named by the place they belong to ("the hotel guests"): after "for the", whom a place serves.
 PEOPLE_OF_PLACE = _keyed({"guests", "guest", "residents", "resident", "staff", "customers", "visitors", "tenants", "pupils",
-                   "kids", "children", "patients", "people", "folk", "lot", "families"})
+                   "kids", "children", "patients", "people", "folk", "lot", "families", "crowd", "crowds", "spectators",
+                   "audience", "passengers", "campers", "workers"})
 
 # Words that say only where something is, no verb a relation could be told apart by ("right under it").
 SPATIAL_WORDS = {"under", "over", "behind", "beside", "besides", "across", "around", "along", "between", "beneath",
