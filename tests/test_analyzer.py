@@ -6086,6 +6086,12 @@ def test_dev121_phenomena(kb_analyzers, kb, text, expected):
                             "through the car park", [("fire pit", "person_in_need")]),
     ("paragliding_launch_hill", "lightning's hit the mast towering over the top car park and a man is hurt in the car "
                                 "park itself", [("repeater mast", "flight_danger"), ("summit car park", "person_in_need")]),
+    # who calls and from where, the sentence going on to another place; fog off the same place; a stretch's two ends
+    ("coral_island_dive_resort", "reception, reception, this is Ali at the, at the front desk, a man fainted in the "
+                                 "restaurant", [("restaurant", "patient")]),
+    ("airport_cargo_centre", "smoke in the store attached to the import shed -- cancel that, it was fog off the chiller "
+                             "doors", []),
+    ("ice_fishing_lake_camp", "slush on the ice road between the launch and shack town", [("ice road", "peril")]),
 ])
 def test_dev127_phenomena(kb_analyzers, kb, text, expected):
     """Stop 53: what the tuned dev127-dev132 sets showed (paraphrased)."""

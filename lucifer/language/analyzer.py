@@ -5493,6 +5493,22 @@ class ReportAnalyzer:
             return next((p for p in ex.places if p.start_tok == i and p.status == "active" and p.via is None), None)
 
         for k in range(1, len(norms) - 3):
+            if norms[k] == "between" and any(p.end_tok == k and p.status == "active" for p in ex.places):
+                # "slush on the ice road between the launch and shack town": the stretch of the place named before,
+                # the two ends only where it is
+                a = place_at(k + 1)
+                if a is None or norms[a.end_tok:a.end_tok + 1] not in (("and",), ("&",)) or toks.clause_start[a.end_tok]:
+                    continue
+                b = place_at(a.end_tok + 1)
+                if b is None or b.landmark == a.landmark:
+                    continue
+                p0 = next(p for p in ex.places if p.end_tok == k and p.status == "active")
+                if p0.landmark in (a.landmark, b.landmark):
+                    continue
+                for idx, p in enumerate(ex.places):
+                    if p is a or p is b:
+                        ex.places[idx] = replace(p, status="reference", reason=f"an end of the stretch of {p0.landmark}")
+                continue
             if norms[k] != "between" or any(p.end_tok == k or p.start_tok <= k < p.end_tok for p in ex.places):
                 continue
             a = place_at(k + 1)
@@ -6533,6 +6549,10 @@ class ReportAnalyzer:
                 q.landmark == p.landmark and q.start_tok == p.end_tok and norms[q.end_tok:q.end_tok + 2] == ("this", "is")
                 for q in places):
             return True  # "reception, reception, this is Ahmed": the station called twice
+        if norms[p.end_tok:p.end_tok + 2] == ("this", "is") and toks.sentence_of[a] == 0 and any(
+                q.landmark == p.landmark and q.end_tok == a and all(w in lx.FILLERS | lx.DETERMINERS for w in norms[:q.start_tok])
+                for q in places):
+            return True  # (and the second time it is said)
         if toks.sentence_of[a] == 0 and all(w in lx.FILLERS | lx.DETERMINERS for w in norms[:a]) \
                 and norms[p.end_tok:p.end_tok + 2] == ("to", "all") and p.end_tok + 4 <= len(norms) \
                 and any(toks.clause_start[i] for i in range(p.end_tok + 2, p.end_tok + 5) if i < len(norms)) \
@@ -6784,6 +6804,11 @@ class ReportAnalyzer:
                 continue
             if self._called_station(toks, norms, p, ex.places):
                 ex.places[idx] = replace(p, status="reference", reason="the station called ('X to Y,'): no claim")
+                continue
+            if p.end_tok < len(norms) and toks.clause_start[p.end_tok] and not toks.sentence_start[p.end_tok] \
+                    and self._this_is_who_at(toks, norms, p, ex.places):
+                # ("this is Ahmed at the front desk, a lady fainted in the restaurant": who calls, from where)
+                ex.places[idx] = replace(p, status="reference", reason="who is calling ('this is X at Y,'): no claim")
                 continue
             if self._calls_by_name(toks, norms, p, ex.places):
                 ex.places[idx] = replace(p, status="reference", reason="who is calling ('X to Y:'), said of no more")
@@ -7538,9 +7563,11 @@ class ReportAnalyzer:
         return bool(tail) or head in lx.WORKER_PERSONS | lx.CREW_NOUNS | lx.CALLER_ROLES
 
     @staticmethod
-    def _this_is_who_at(toks: Tokens, norms: tuple[str, ...], p: PlaceMention) -> bool:
+    def _this_is_who_at(toks: Tokens, norms: tuple[str, ...], p: PlaceMention,
+                        places: Sequence[PlaceMention] = ()) -> bool:
         """"Reception, this is Dan down at the jetty.": the caller's name and where they are, the place ending the
-        sentence."""
+        sentence (or its clause, where the sentence goes on to another place: "this is Ahmed at the front desk, a
+        lady fainted in the restaurant")."""
         start = p.start_tok
         while start > 0 and not toks.sentence_start[start]:
             start -= 1
@@ -7554,6 +7581,8 @@ class ReportAnalyzer:
         if len(rest) < 2 or rest[-1] not in lx.POSITION_PREPS:
             return False
         rest = rest[:-1]
+        while len(rest) >= 2 and rest[-1] in lx.ARTICLES and rest[-2] in lx.POSITION_PREPS:
+            rest = rest[:-2]  # ("Ahmed at the, at the front desk")
         if rest and rest[-1] in ("up", "down", "over", "out", "back", "here"):
             rest = rest[:-1]
         if not 1 <= len(rest) <= 2 or any(not w.isalpha() or w in lx.FUNCTION_WORDS for w in rest):
@@ -7561,6 +7590,10 @@ class ReportAnalyzer:
         end = p.end_tok
         while end < len(norms) and not toks.sentence_start[end]:
             end += 1
+        if places:  # (only where the sentence goes on, past a pause, to another place)
+            return end > p.end_tok and toks.clause_start[p.end_tok] and any(
+                q.status == "active" and q.landmark != p.landmark and q.via is None and p.end_tok < q.start_tok < end
+                for q in places)
         return set(norms[p.end_tok:end]) <= lx.FILLERS | {"over", "here", "now"}
 
     def _sheltered_people(self, norms: tuple[str, ...], cues: list[CueMention]) -> list[CueMention]:
@@ -9081,6 +9114,9 @@ class ReportAnalyzer:
             if any(norms[i] in ("just", "only") and (norms[i - 1] in ("s", "is", "its", "are", "thats") or toks.tokens[
                     i - 1].text.lower().endswith(("'s", "’s"))) for i in range(a + 1, b)):
                 continue  # "The green's just puddles": what it only is, no claim to guess at
+            if any(norms[i] in lx.HARMLESS_SIGHTS and norms[i - 1] == "was" and norms[i - 2] in ("it", "that")
+                   for i in range(max(a, 2), b)):
+                continue  # "cancel that, it was fog off the chiller doors": what it was, harmless, no claim to guess at
             sent = [i for i in range(len(norms)) if toks.sentence_of[i] == toks.sentence_of[p.start_tok]]
             if {norms[i] for i in sent} & {"scared", "worried", "afraid", "fear", "frightened"} \
                     and {norms[i] for i in range(a, b)} & {"might", "could", "may", "will", "ll"}:
@@ -10305,8 +10341,13 @@ class ReportAnalyzer:
                      key=lambda p: p.end_tok, default=None)
         after = [p for p in ex.places if b_after <= p.start_tok < e_after]
         words = [w for w in norms[b_after:e_after] if w not in lx.FILLERS]
+        # ("smoke in the store attached to the import shed — cancel that, it was fog off the chiller doors": what was
+        # seen, said harmless, where it came from the same place)
+        harmless = words[:2] in (["it", "was"], ["that", "was"]) and words[2:3] != [] and (
+            words[2] in lx.HARMLESS_SIGHTS or words[2] in ("just", "only") and words[3:4] != [] and words[3] in lx.HARMLESS_SIGHTS)
         return before is not None and bool(after) and all(p.landmark == before.landmark for p in after) \
-            and words[:2] in (["its", "not"], ["it", "isnt"], ["thats", "not"]) and bool(set(norms[b_after:e_after]) & lx.DISMISSALS)
+            and (words[:2] in (["its", "not"], ["it", "isnt"], ["thats", "not"]) and bool(set(norms[b_after:e_after]) & lx.DISMISSALS)
+                 or harmless)
 
     @staticmethod
     def _repairs_uncued_statement(ex: Extraction, cues: list[CueMention], since: int, a: int, b: int,
