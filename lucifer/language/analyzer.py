@@ -5493,29 +5493,24 @@ class ReportAnalyzer:
             return next((p for p in ex.places if p.start_tok == i and p.status == "active" and p.via is None), None)
 
         for k in range(1, len(norms) - 3):
-            if norms[k] == "between" and any(p.end_tok == k and p.status == "active" for p in ex.places):
-                # "slush on the ice road between the launch and shack town": the stretch of the place named before,
-                # the two ends only where it is
-                a = place_at(k + 1)
-                if a is None or norms[a.end_tok:a.end_tok + 1] not in (("and",), ("&",)) or toks.clause_start[a.end_tok]:
-                    continue
-                b = place_at(a.end_tok + 1)
-                if b is None or b.landmark == a.landmark:
-                    continue
-                p0 = next(p for p in ex.places if p.end_tok == k and p.status == "active")
-                if p0.landmark in (a.landmark, b.landmark):
-                    continue
-                for idx, p in enumerate(ex.places):
-                    if p is a or p is b:
-                        ex.places[idx] = replace(p, status="reference", reason=f"an end of the stretch of {p0.landmark}")
+            if norms[k] != "between":
                 continue
-            if norms[k] != "between" or any(p.end_tok == k or p.start_tok <= k < p.end_tok for p in ex.places):
+            named = next((p for p in ex.places if p.end_tok == k and p.status == "active"), None)
+            if named is None and any(p.end_tok == k or p.start_tok <= k < p.end_tok for p in ex.places):
                 continue
             a = place_at(k + 1)
             if a is None or norms[a.end_tok:a.end_tok + 1] not in (("and",), ("&",)):
                 continue
             b = place_at(a.end_tok + 1)
             if b is None or b.landmark == a.landmark or toks.clause_start[a.end_tok]:
+                continue
+            if named is not None:
+                # "slush on the ice road between the launch and shack town": the stretch of the place named before,
+                # the two ends only where it is
+                if named.landmark not in (a.landmark, b.landmark):
+                    for idx, p in enumerate(ex.places):
+                        if p is a or p is b:
+                            ex.places[idx] = replace(p, status="reference", reason=f"an end of the stretch of {named.landmark}")
                 continue
             linked = {lm.name for lm in self.kb.landmarks if lm.name not in (a.landmark, b.landmark)
                       and (lm.name, a.landmark) in self._related_pairs and (lm.name, b.landmark) in self._related_pairs}
@@ -6542,17 +6537,15 @@ class ReportAnalyzer:
         """"Red Watch to TCC, we're at the east portal": a call sign, "to", the station called, a pause.
         Also the station that calls everyone ("Race Control to all posts: ..."): a broadcast, said of others."""
         a = p.start_tok
-        if norms[p.end_tok:p.end_tok + 2] == ("this", "is") and toks.sentence_of[a] == 0 \
-                and all(w in lx.FILLERS | lx.DETERMINERS for w in norms[:a]):
-            return True  # "uh base this is Sue at Heron Court": the station called, then who calls
-        if toks.sentence_of[a] == 0 and all(w in lx.FILLERS | lx.DETERMINERS for w in norms[:a]) and any(
-                q.landmark == p.landmark and q.start_tok == p.end_tok and norms[q.end_tok:q.end_tok + 2] == ("this", "is")
-                for q in places):
-            return True  # "reception, reception, this is Ahmed": the station called twice
-        if norms[p.end_tok:p.end_tok + 2] == ("this", "is") and toks.sentence_of[a] == 0 and any(
-                q.landmark == p.landmark and q.end_tok == a and all(w in lx.FILLERS | lx.DETERMINERS for w in norms[:q.start_tok])
-                for q in places):
-            return True  # (and the second time it is said)
+        # "uh base this is Sue at Heron Court": the station called, then who calls; or the station called twice,
+        # "reception, reception, this is Ahmed" (either time it is said)
+        twin_before = next((q for q in places if q.landmark == p.landmark and q.end_tok == a), None)
+        twin_after = next((q for q in places if q.landmark == p.landmark and q.start_tok == p.end_tok), None)
+        first, last = twin_before or p, twin_after or p
+        if (twin_before is None or twin_after is None) and toks.sentence_of[a] == 0 \
+                and norms[last.end_tok:last.end_tok + 2] == ("this", "is") \
+                and all(w in lx.FILLERS | lx.DETERMINERS for w in norms[:first.start_tok]):
+            return True
         if toks.sentence_of[a] == 0 and all(w in lx.FILLERS | lx.DETERMINERS for w in norms[:a]) \
                 and norms[p.end_tok:p.end_tok + 2] == ("to", "all") and p.end_tok + 4 <= len(norms) \
                 and any(toks.clause_start[i] for i in range(p.end_tok + 2, p.end_tok + 5) if i < len(norms)) \
