@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev132) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev138) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -334,6 +334,30 @@ TOBACCO_CURING_BARNS = ROOT / "knowledge_bases" / "tobacco_curing_barns"
 ADVENTURE_PLAYGROUND = ROOT / "knowledge_bases" / "adventure_playground"
 FLOATING_SOLAR_RESERVOIR = ROOT / "knowledge_bases" / "floating_solar_reservoir"
 CIVIC_COURTHOUSE_SQUARE = ROOT / "knowledge_bases" / "civic_courthouse_square"
+AIRCRAFT_CARRIER_DECK = ROOT / "knowledge_bases" / "aircraft_carrier_deck"
+SOLAR_TOWER_POWER_PLANT = ROOT / "knowledge_bases" / "solar_tower_power_plant"
+ROOFTOP_GARDEN_BLOCK = ROOT / "knowledge_bases" / "rooftop_garden_block"
+TRUCK_STOP_WEIGH_STATION = ROOT / "knowledge_bases" / "truck_stop_weigh_station"
+SCRAP_METAL_YARD = ROOT / "knowledge_bases" / "scrap_metal_yard"
+TREETOP_CANOPY_WALKWAY = ROOT / "knowledge_bases" / "treetop_canopy_walkway"
+HIGHLAND_GAMES_FIELD = ROOT / "knowledge_bases" / "highland_games_field"
+DINOSAUR_FOSSIL_DIG_SITE = ROOT / "knowledge_bases" / "dinosaur_fossil_dig_site"
+ROMAN_AMPHITHEATRE_OPERA = ROOT / "knowledge_bases" / "roman_amphitheatre_opera"
+HIGH_SPEED_RAIL_STATION = ROOT / "knowledge_bases" / "high_speed_rail_station"
+RICE_MILL_COOPERATIVE = ROOT / "knowledge_bases" / "rice_mill_cooperative"
+SURF_BEACH_LIFEGUARD_CLUB = ROOT / "knowledge_bases" / "surf_beach_lifeguard_club"
+WEST_END_THEATRE_BACKSTAGE = ROOT / "knowledge_bases" / "west_end_theatre_backstage"
+COASTAL_RADAR_STATION = ROOT / "knowledge_bases" / "coastal_radar_station"
+CAR_BOOT_SALE_FIELD = ROOT / "knowledge_bases" / "car_boot_sale_field"
+BAMBOO_RAFT_RIVER_VILLAGE = ROOT / "knowledge_bases" / "bamboo_raft_river_village"
+SHIP_CANAL_SWING_BRIDGE = ROOT / "knowledge_bases" / "ship_canal_swing_bridge"
+GO_KART_TRACK = ROOT / "knowledge_bases" / "go_kart_track"
+QUARANTINE_STATION_ISLAND = ROOT / "knowledge_bases" / "quarantine_station_island"
+ICE_CREAM_FACTORY = ROOT / "knowledge_bases" / "ice_cream_factory"
+CEMETERY_CREMATORIUM_GROUNDS = ROOT / "knowledge_bases" / "cemetery_crematorium_grounds"
+PEARL_FARM_LAGOON = ROOT / "knowledge_bases" / "pearl_farm_lagoon"
+MARKET_GARDEN_SMALLHOLDING = ROOT / "knowledge_bases" / "market_garden_smallholding"
+MOTORWAY_BRIDGE_ROADWORKS = ROOT / "knowledge_bases" / "motorway_bridge_roadworks"
 ONSEN_HOT_SPRING_TOWN = ROOT / "knowledge_bases" / "onsen_hot_spring_town"
 SAND_DUNE_BUGGY_PARK = ROOT / "knowledge_bases" / "sand_dune_buggy_park"
 CATTLE_FEEDLOT = ROOT / "knowledge_bases" / "cattle_feedlot"
@@ -841,6 +865,30 @@ SETS = {
     "dev132/adventure_playground": _set("dev132/adventure_playground.jsonl", ADVENTURE_PLAYGROUND, "ap132", TWENTY, sep=""),
     "dev132/floating_solar_reservoir": _set("dev132/floating_solar_reservoir.jsonl", FLOATING_SOLAR_RESERVOIR, "fs132", TWENTY, sep=""),
     "dev132/civic_courthouse_square": _set("dev132/civic_courthouse_square.jsonl", CIVIC_COURTHOUSE_SQUARE, "cs132", TWENTY, sep=""),
+    "dev133/aircraft_carrier_deck": _set("dev133/aircraft_carrier_deck.jsonl", AIRCRAFT_CARRIER_DECK, "cv133", TWENTY, sep=""),
+    "dev133/solar_tower_power_plant": _set("dev133/solar_tower_power_plant.jsonl", SOLAR_TOWER_POWER_PLANT, "st133", TWENTY, sep=""),
+    "dev133/rooftop_garden_block": _set("dev133/rooftop_garden_block.jsonl", ROOFTOP_GARDEN_BLOCK, "rg133", TWENTY, sep=""),
+    "dev133/truck_stop_weigh_station": _set("dev133/truck_stop_weigh_station.jsonl", TRUCK_STOP_WEIGH_STATION, "ts133", TWENTY, sep=""),
+    "dev134/scrap_metal_yard": _set("dev134/scrap_metal_yard.jsonl", SCRAP_METAL_YARD, "sm134", TWENTY, sep=""),
+    "dev134/treetop_canopy_walkway": _set("dev134/treetop_canopy_walkway.jsonl", TREETOP_CANOPY_WALKWAY, "tw134", TWENTY, sep=""),
+    "dev134/highland_games_field": _set("dev134/highland_games_field.jsonl", HIGHLAND_GAMES_FIELD, "hg134", TWENTY, sep=""),
+    "dev134/dinosaur_fossil_dig_site": _set("dev134/dinosaur_fossil_dig_site.jsonl", DINOSAUR_FOSSIL_DIG_SITE, "fd134", TWENTY, sep=""),
+    "dev135/roman_amphitheatre_opera": _set("dev135/roman_amphitheatre_opera.jsonl", ROMAN_AMPHITHEATRE_OPERA, "ra135", TWENTY, sep=""),
+    "dev135/high_speed_rail_station": _set("dev135/high_speed_rail_station.jsonl", HIGH_SPEED_RAIL_STATION, "hs135", TWENTY, sep=""),
+    "dev135/rice_mill_cooperative": _set("dev135/rice_mill_cooperative.jsonl", RICE_MILL_COOPERATIVE, "rm135", TWENTY, sep=""),
+    "dev135/surf_beach_lifeguard_club": _set("dev135/surf_beach_lifeguard_club.jsonl", SURF_BEACH_LIFEGUARD_CLUB, "sb135", TWENTY, sep=""),
+    "dev136/west_end_theatre_backstage": _set("dev136/west_end_theatre_backstage.jsonl", WEST_END_THEATRE_BACKSTAGE, "wt136", TWENTY, sep=""),
+    "dev136/coastal_radar_station": _set("dev136/coastal_radar_station.jsonl", COASTAL_RADAR_STATION, "cr136", TWENTY, sep=""),
+    "dev136/car_boot_sale_field": _set("dev136/car_boot_sale_field.jsonl", CAR_BOOT_SALE_FIELD, "cb136", TWENTY, sep=""),
+    "dev136/bamboo_raft_river_village": _set("dev136/bamboo_raft_river_village.jsonl", BAMBOO_RAFT_RIVER_VILLAGE, "br136", TWENTY, sep=""),
+    "dev137/ship_canal_swing_bridge": _set("dev137/ship_canal_swing_bridge.jsonl", SHIP_CANAL_SWING_BRIDGE, "sw137", TWENTY, sep=""),
+    "dev137/go_kart_track": _set("dev137/go_kart_track.jsonl", GO_KART_TRACK, "gk137", TWENTY, sep=""),
+    "dev137/quarantine_station_island": _set("dev137/quarantine_station_island.jsonl", QUARANTINE_STATION_ISLAND, "qi137", TWENTY, sep=""),
+    "dev137/ice_cream_factory": _set("dev137/ice_cream_factory.jsonl", ICE_CREAM_FACTORY, "ic137", TWENTY, sep=""),
+    "dev138/cemetery_crematorium_grounds": _set("dev138/cemetery_crematorium_grounds.jsonl", CEMETERY_CREMATORIUM_GROUNDS, "cg138", TWENTY, sep=""),
+    "dev138/pearl_farm_lagoon": _set("dev138/pearl_farm_lagoon.jsonl", PEARL_FARM_LAGOON, "pf138", TWENTY, sep=""),
+    "dev138/market_garden_smallholding": _set("dev138/market_garden_smallholding.jsonl", MARKET_GARDEN_SMALLHOLDING, "mg138", TWENTY, sep=""),
+    "dev138/motorway_bridge_roadworks": _set("dev138/motorway_bridge_roadworks.jsonl", MOTORWAY_BRIDGE_ROADWORKS, "mb138", TWENTY, sep=""),
 }
 
 
