@@ -369,6 +369,25 @@ class ReportAnalyzer:
             cat = self._kind_category(kind, cats)
             if cat is not None:
                 return cat
+        if role == lx.CRITICAL and len(cats) > 1:
+            # two critical categories, one of them for the lost: "a piper has fainted" is no lost person, whatever
+            # MiniLM makes of it; "unaccounted for" is one
+            lost_words, hurt_words = set(norm_phrase("lost missing")), set(norm_phrase("hurt injured ill injury trapped"))
+            # (what says someone is not where they were: "can't find my nan", "now she's gone", "not there")
+            lostish = [c for c in cats if lost_words & set(norm_phrase(c.description))
+                       and not hurt_words & set(norm_phrase(c.description))]
+            said = set(norm_phrase(phrase))
+            if lostish and len(lostish) < len(cats):
+                if said & (lost_words | set(norm_phrase("unaccounted overdue separated seen wandered wandering find found "
+                                                        "contact whereabouts"))):
+                    if len(lostish) == 1:
+                        return lostish[0].name
+                elif said & set(norm_phrase("fainted faint collapsed collapse hurt injured injury bleeding blood burn "
+                                            "burned burnt unconscious broken fell fall stung bitten breathing cut down "
+                                            "trapped pinned stroke attack chest pains casualty casualties hypothermic")):
+                    cats = [c for c in cats if c not in lostish]
+                    if len(cats) == 1:
+                        return cats[0].name
         if self.embedder is None:
             return cats[0].name
         vecs = self.embedder.embed([phrase] + [f"{c.name.replace('_', ' ')}: {c.description}" for c in cats])
@@ -739,6 +758,15 @@ class ReportAnalyzer:
             if t > 0 and norms[t - 1] == "the" and verb.endswith("s") and not verb.endswith("ss") \
                     and toks.tokens[t].text.lower() == verb[:-1] and t + 1 < len(norms) and norms[t + 1] in lx.ARTICLES:
                 continue  # "the tarmac over the pipe the beck drains through": a noun heading a clause, not ``pipes ...``
+            if t > 0 and norms[t - 1] in ("the", "a", "an") and t + 1 < len(norms) and norms[t + 1] in ("the", "a", "an") \
+                    and not toks.clause_start[t + 1] and not word.lower().endswith(("ed", "ing", "s")) \
+                    and norm(hit[0].replace("_", " ").split()[0]) != norms[t] \
+                    and (end := next((m for m in range(t + 2, min(len(norms), t + 10)) if toks.clause_start[m]),
+                                     min(len(norms), t + 10))) > t + 2 \
+                    and norms[end - 1] in _STRANDED_ENDS and hit[0].replace("_", " ").split()[-1] in _STRANDED_ENDS \
+                    and norms[end - 1] != hit[0].replace("_", " ").split()[-1]:
+                continue  # "the water the pump house draws from": a noun heading a clause that ends the other way
+                # from the relation (``pumps water up to``)
             if t > 0 and ("a" in norms[max(0, t - 2):t] or "an" in norms[max(0, t - 2):t]) \
                     and not _same_stem(norms[t], hit[0].split()[0]) and not word.lower().endswith(("ed", "ing")):
                 continue  # "there's a derailed wagon on it": a thing, not the noun inside ``loads_wagons_at``
@@ -879,7 +907,13 @@ class ReportAnalyzer:
         # a cue that is only a preposition before a place's name ("casualty in the river" where "the river" is
         # one): the place, not the cue
         place_cues = set(cue_spans)
-        for a, b, landmark in self._places.find_all(norms):
+        place_hits = list(self._places.find_all(norms))
+        # "people from café they go to laundry next door to lobby": a speaker who leaves out the articles the KB writes
+        # its names with, said so of two names or more
+        bare = {a for a, b, _ in place_hits if b - a == 1 and norms[a:b] in self._needs_article and a > 0
+                and norms[a - 1] in ("to", "from", "in", "at", "into", "inside") and not toks.clause_start[a]}
+        learner_bare = bare if len({norms[a] for a in bare}) >= 2 else set()
+        for a, b, landmark in place_hits:
             if any(ca <= a and b <= cb and cb - ca > b - a and not (
                     (ca, cb) in place_cues and cb == b and a - ca <= 2
                     and all(norms[i] in lx.PREPOSITIONS or norms[i] in lx.ARTICLES for i in range(ca, a)))
@@ -957,7 +991,7 @@ class ReportAnalyzer:
             if norms[a:b] in self._needs_article and prev == "both" and a >= 2 and norms[a - 2] == "across":
                 continue  # "a lorry jackknifed right across both lanes": the two lanes of the road, not "the lanes"
             if norms[a:b] in self._needs_article and prev not in lx.DETERMINERS | {"our", "your", "my", "his", "her", "both"} \
-                    and b not in glossary_ends and not acronym and not heading and not self._telegraphic_subject(toks, norms, a, b) \
+                    and a not in learner_bare and b not in glossary_ends and not acronym and not heading and not self._telegraphic_subject(toks, norms, a, b) \
                     and not (log and (b - a >= 2 or prev in lx.PREPOSITIONS and len(norms[a]) >= 5)) \
                     and not (b - a >= 2 and prev in ("in", "at", "from") and a >= 2 and norms[a - 2] in ("live", "living", "lives", "stay", "staying")) \
                     and not (b - a >= 2 and prev in ("in", "at", "inside") and a >= 2 and not toks.clause_start[a - 1] and any(
@@ -1098,7 +1132,8 @@ class ReportAnalyzer:
                     and norms[p.end_tok : p.end_tok + 2] not in (("guy", "rope"), ("guy", "ropes")) \
                     and not (norms[p.end_tok] in lx.CARRIAGE_WORDS and p.landmark in self._conveyances) \
                     and not self._people_of_place_hurt(toks, norms, p.end_tok) \
-                    and not self._people_of_place_tell(toks, norms, p.end_tok):
+                    and not self._people_of_place_tell(toks, norms, p.end_tok) \
+                    and not self._people_there_with(norms, p):
                 # ("the funicular car has come off its rails": the car is part of the railway)
                 places[idx] = replace(p, status="reference", reason=f"modifier of '{toks.tokens[p.end_tok].text}'")
             elif p.end_tok < len(norms) and norms[p.end_tok] in lx.PEOPLE_OF_PLACE and p.start_tok >= 2 \
@@ -1458,6 +1493,7 @@ class ReportAnalyzer:
             if (p1.landmark, p2.landmark) in related and 4 <= len(gap) <= 6 and toks.clause_start[p1.end_tok] \
                     and not toks.sentence_start[p1.end_tok] and gap[0] in lx.ARTICLES and gap[-1] in lx.ARTICLES \
                     and gap[-2] in lx.PREPOSITIONS | lx.RELATION_ENDINGS and gap[-3].isalpha() \
+                    and not any(w in lx.COPULAS | {"s"} or w in _PEOPLE_WORDS for w in gap[1:-2]) \
                     and not any(toks.clause_start[i] for i in range(p1.end_tok + 1, p2.end_tok)) \
                     and not any(self._cues.match_at(norms, i) is not None for i in range(p1.end_tok, p2.start_tok)):
                 # "she's on the plank, the little footbridge over the leat": an aside that says which place,
@@ -1771,6 +1807,17 @@ class ReportAnalyzer:
         return any(q.end_tok <= k and q.landmark != p.landmark and toks.sentence_of[q.start_tok] == n
                    and q.status == "active" for q in places)
 
+    @staticmethod
+    def _people_there_with(norms: tuple[str, ...], p: PlaceMention) -> bool:
+        """"man down in the truck park lads are with him now" (said without a stop): where the casualty is, then
+        the people with them, no "truck park lads" the place's name modifies."""
+        w = p.end_tok
+        return p.start_tok >= 2 and norms[p.start_tok - 1] in lx.ARTICLES \
+            and norms[p.start_tok - 2] in ("in", "at", "on", "inside", "by") \
+            and norms[w + 1:w + 2] in (("are",), ("re",), ("is",), ("s",)) \
+            and norms[w + 2:w + 3] == ("with",) \
+            and norms[w + 3:w + 4] in (("him",), ("her",), ("them",), ("the",), ("it",))
+
     def _people_of_place_tell(self, toks: Tokens, norms: tuple[str, ...], w: int) -> bool:
         """"Brewery staff tell me their cellars are flooding": the people the place's name modifies (token ``w``)
         tell of their own place ("their" and a thing that is no person), and a cue says what it is."""
@@ -1944,7 +1991,11 @@ class ReportAnalyzer:
                                   and all(w not in name_words(f)[-1:] for other in words_elsewhere.get(w, set()) - names
                                           for f in self.kb.landmark_by_name[other].surface_forms)
                                   and w in last_words and w not in cue_words and w not in rel_words
-                                  and w not in lx.UNNAMING_HEADS | lx.GENERIC_HEADS | lx.DESCRIPTION_HEADS}
+                                  and w not in lx.UNNAMING_HEADS | lx.DESCRIPTION_HEADS
+                                  and (w not in lx.GENERIC_HEADS or words_elsewhere.get(w, set()) == names
+                                       and name_words(next(iter(names)))[-1:] == (w,))}
+            # ("the hut next to the place across from the shop": a generic head, the last word of the one name that
+            # holds it, anchors a relation)
         out = []
         for i in range(0, len(norms)):
             w = norms[i]
@@ -2040,7 +2091,9 @@ class ReportAnalyzer:
             if w in ("path", "track", "trail") and name_words(self._heads[w])[-1:] != (w,) and (i - 1) not in rel_ends \
                     and not _after_same(norms, i):
                 continue  # "stone has come away onto the path": any path, where only other names of the mule track end so
-            if w in lx.UNNAMING_HEADS and w not in self._own_heads \
+            if w in lx.UNNAMING_HEADS and w not in self._own_heads and not (
+                        (i - 1) in rel_ends and w in self._sole_heads and name_words(self._heads[w])[-1:] == (w,)
+                        and (i + 1 >= len(norms) or toks.clause_start[i + 1] or norms[i + 1] in lx.COPULAS)) \
                     or (w in lx.GENERIC_HEADS or w in lx.DESCRIPTION_HEADS) and (i - 1) not in rel_ends \
                     and not ((said_of or verb_next) and (w in lx.GENERIC_HEADS and (contracted or w not in lx.DESCRIPTION_HEADS)
                                           or w in self._sole_heads and (w not in lx.UNNAMING_HEADS or w in self._own_heads)
@@ -2166,6 +2219,18 @@ class ReportAnalyzer:
                         | lx.GENERIC_HEADS | lx.STOREY_WORDS | lx.PART_NOUNS and not _direction_word(w):
                     firsts[w] = lm.name
         return firsts
+
+    @functools.cached_property
+    def _nickname_firsts(self) -> frozenset[str]:
+        """First words (of ``_first_words``) that begin two or more names of their landmark ("genny house", "the genny
+        shed"): the place's own nickname, said bare as well ("the tank that feeds the genny")."""
+        count: dict[str, set[tuple[str, ...]]] = {}
+        for lm in self.kb.landmarks:
+            for form in lm.surface_forms:
+                words = tuple(w for w in name_words(form) if w not in lx.ARTICLES)
+                if len(words) >= 2 and self._first_words.get(words[0]) == lm.name:
+                    count.setdefault(words[0], set()).add(words)
+        return frozenset(w for w, forms in count.items() if len(forms) >= 2)
 
     @functools.cached_property
     def _side_words(self) -> dict[str, str]:
@@ -2368,6 +2433,13 @@ class ReportAnalyzer:
                     and not toks.tokens[i].text.lower().endswith(("'s", "’s")) and w not in lx.WATER_WORDS:
                 # (not "where it dips through the water": the water itself, not the "water bowser")
                 out.append(self._mention(toks, i, nxt, self._first_words[w]))
+            elif w in self._nickname_firsts and norms[i - 1] == "the" \
+                    and (nxt >= len(norms) or toks.clause_start[nxt] or norms[nxt] in lx.COPULAS | {"has", "have"}) \
+                    and not (nxt < len(norms) and re.search(r"[—–-]|\.\.\.|…", toks.gaps[nxt])) \
+                    and (self.embedder is None or w not in self.embedder.vocabulary()) \
+                    and toks.tokens[i].text.lower() == w and w not in lx.WATER_WORDS:
+                # (said as the names say it: not "the giraffes are all right", the animals)
+                out.append(self._mention(toks, i, nxt, self._first_words[w]))  # "the tank that feeds the genny"
         return out
 
     def _resolve_containers(self, ex: Extraction, norms: tuple[str, ...]) -> None:
@@ -2473,8 +2545,9 @@ class ReportAnalyzer:
         taken = {i for p in places for i in range(p.start_tok, p.end_tok)}
         for i in range(1, len(norms) - 1):
             names = self._modifiers.get(norms[i])
-            if not names or norms[i - 1] != "the" or norms[i + 1] != "one" or {i - 1, i, i + 1} & taken:
-                continue
+            if not names or norms[i - 1] != "the" or norms[i + 1] != "one" or {i - 1, i, i + 1} & taken \
+                    or toks.clause_start[i + 1]:
+                continue  # (not "Crew Two on the roof. One of the IBC tanks ...": a new sentence's "one")
             said = set(norms[:i - 1])
             if len(names) > 1:
                 names = {n for n in names if name_words(n)[-1] in said}
@@ -2568,6 +2641,13 @@ class ReportAnalyzer:
                         and norms[p.end_tok - 1] == norms[i] and (not names or p.landmark in names)}
                 if len(said) == 1:
                     names, relative_anchor = said, True
+            if not names and norms[i - 1] in ("that", "this") and i not in taken and norms[i].isalpha() \
+                    and norms[i] not in lx.FUNCTION_WORDS:
+                # "the compound at the back of the toilets. And that compound's smoking": the place just said, by
+                # the last word it was said with
+                said = {p.landmark for p in places if p.end_tok <= i - 1 and norms[p.end_tok - 1] == norms[i]}
+                if len(said) == 1:
+                    names = said
             if not names and norms[i + 1:i + 2] in (("itself",), ("themselve",)):
                 # "the roundels themselves" after "the five roundels": the last word of an alias just said
                 names = {p.landmark for p in places if p.end_tok <= i - 1 and norms[p.end_tok - 1] == norms[i]}
@@ -2845,7 +2925,7 @@ class ReportAnalyzer:
             # the cafe has "a deep-fat fryer" is no slip of "the foyer")
             self._kb_prose_words = {w for lm in self.kb.landmarks for w in norm_phrase(lm.description)} \
                 - {w for lm in self.kb.landmarks for f in lm.surface_forms for w in name_words(f)}
-        if all(w in known or _derived_word(w, known) or w in self._kb_prose_words
+        if all(w in known or _derived_word(w, known) or w in self._kb_prose_words or w in lx.BUILDING_PART_WORDS
                or len(words) > 1 and w in self._name_word_owners for w in words):
             return None  # (nor a known word with an ending: "the heaters going" is no slip of "the header")
             # (nor a word of the KB's names said right: "sulphur gas" is no slip of "sulphur face")
@@ -2928,6 +3008,12 @@ class ReportAnalyzer:
                             best = (n, lm.name)
             if best is not None:
                 start = t.i - (best[0] - 1)
+                rest = [w for w in norms[t.i + 1:t.i + 4] if w not in lx.HESITATIONS]
+                if rest[:2] in (["up", "there"], ["down", "there"]):
+                    # "a bloke's been bitten up at the cem-- up there": the name begun, then only "there" for it
+                    out.append(self._mention(toks, start, t.i + 1, best[1], reason="name begun, then 'there'"))
+                    taken.update(range(start, t.i + 1))
+                    continue
                 out.append(self._mention(toks, start, t.i + 1, best[1], status="retracted",
                                          reason="false start (word cut off)"))
                 taken.update(range(start, t.i + 1))
@@ -3553,6 +3639,8 @@ class ReportAnalyzer:
                 a, key = found
                 if norms[k] in lx.CALLER_ROLES:
                     break  # "the fence judge at the trakehner": a person named by where they work, no place
+                if k == j - 1 and norms[k] in ("in", "at"):
+                    break  # "fell down the steps in the gods": the steps of the place itself, where it is
                 related: dict[str, str] = {}  # landmark -> the first KB relation joining it to the anchor
                 for c in tails[key]:
                     for r in self.kb.relations:
@@ -4258,6 +4346,9 @@ class ReportAnalyzer:
                 continue  # "a jam building up at the rollway": a verb, the jam building up there; no building
             if norms[head] == "ground" and norms[max(0, head - 2):head] == ("on", "the"):
                 continue  # "he's on the ground at the bottom of it": where he lies, by the anchor, no other place
+            if norms[head] in ("lot", "load") and norms[head + 1:head + 2] == ("of",) and head >= 1 \
+                    and norms[head - 1] in ("a", "another"):
+                continue  # "a lot of water coming out the rain tanks": how much, no parking lot
             if norms[head] == norms[anchor.end_tok - 1] and all(norms[i] in lx.DETERMINERS | lx.FILLERS
                                                                 for i in range(head + 1, anchor.start_tok)):
                 continue  # "the hut the toll hut's roof is half off": the speaker starts again on a fuller name
@@ -4493,9 +4584,9 @@ class ReportAnalyzer:
                 # ("whatever the pump house draws its fuel from": not the place it ``pumps fuel out to``, a relation
                 # whose name ends the other way round, with the anchor its subject)
                 said = " ".join(norms[anchor.end_tok:end])
-                pool = {n: v for n, v in pool.items() if not (_ends_opposite(said, phrases[n]) and any(
+                pool = {n: v for n, v in pool.items() if not (n in phrases and _ends_opposite(said, phrases[n]) and any(
                     r.subject == anchor.landmark and r.object == n and r.phrase == phrases[n] for r in self.kb.relations))} \
-                    or pool
+                    or pool  # (a place named outright has no phrase of its own: nothing to read backwards)
             if len(pool) > 1 and any(w in _SUPPLY_VERBS for w in between[:3]) and "by" not in between:
                 # "the building that feeds the tank": a verb of supply before the anchor, the anchor its object; only
                 # a place that supplies the anchor (not one the anchor supplies)
@@ -4517,7 +4608,7 @@ class ReportAnalyzer:
                          for n in pool} if len(pool) > 1 else {}
             best = max(described.values(), default=0)
             outside = " " + " ".join(norms[i] for i in range(head + 1, end) if not anchor.start_tok <= i < anchor.end_tok) + " "
-            worded = [n for n in pool if len(pool) > 1 and len(key := norm_phrase(phrases[n].replace("_", " "))) >= 2
+            worded = [n for n in pool if len(pool) > 1 and len(key := norm_phrase(phrases.get(n, "").replace("_", " "))) >= 2
                       and f" {' '.join(key)} " in outside]
             if len(pool) == 1:
                 target = next(iter(pool))
@@ -4537,7 +4628,7 @@ class ReportAnalyzer:
                 text = " ".join("it" if i == a else toks.tokens[i].text for i in range(first, end)
                                 if not a < i < anchor.end_tok)
                 names = sorted(pool)
-                vecs = self.embedder.embed([text] + [phrases[n] for n in names])
+                vecs = self.embedder.embed([text] + [phrases.get(n, n) for n in names])
                 sims = vecs[1:] @ vecs[0]
                 order = np.argsort(-sims)
                 if float(sims[order[0]] - sims[order[1]]) >= self.RELATED_MARGIN:
@@ -4905,6 +4996,9 @@ class ReportAnalyzer:
                 and not any((m := self._cues.match_at(norms, j)) is not None and m[0] > head_start
                             and not (m[0] > head_end and b - a >= 4) for j in range(max(0, head_start - 3), head_end))
             # (but a cue that runs on into a long relation phrase is none: "the water lapping at the back doors of")
+        if generic and norms[a] == "off" and any(w in ("fell", "fallen", "jumped", "slipped", "fall") for w in words) \
+                and any(w in lx.LAY_PERSONS or w in lx.PERSON_NOUNS or w in lx.WORKER_PERSONS for w in words):
+            generic = False  # "A kid fell off the end of the jetty": a person and where they fell, no place's head
         if generic and anchor is None and any(p.end_tok == a and p.start_tok < head_end
                                               and p.reason.startswith(_THAT_MODIFIER) for p in ex.places):
             generic = False  # "whatever that pool drains into": "that pool" is the anchor, read backwards
@@ -5079,7 +5173,10 @@ class ReportAnalyzer:
                     return
             if bare in lx.AMBIGUOUS_HEADLESS or (words and not self._is_cue_end(norms, head_end) and not participle
                                                        and not set(words) <= lx.HEADLESS_OK
-                                                       and words[-1] not in lx.LAY_PERSONS | {"folk", "folks"}):
+                                                       and words[-1] not in lx.LAY_PERSONS | {"folk", "folks"}) \
+                    or words and words[-1] in ("fell", "fallen", "jumped", "slipped", "fall") and norms[a] == "off" and any(
+                        w in lx.LAY_PERSONS or w in lx.PERSON_NOUNS for w in words[:-1]):
+                # ("A kid fell off the end of the jetty": where he fell from, no place that stands off its end)
                 # ("there's folk over the road from the brewery coughing": people placed by the relation; "a runner
                 # down right under the finish arch": where he lies)
                 return
@@ -6690,13 +6787,21 @@ class ReportAnalyzer:
             return False
         waiting = any(
             norms[m] in _KIN and all(norms[t] in ("is", "s", "are", "waiting", "now", "still", "sat", "sitting", "stood",
-                                                  "standing")
+                                                  "standing", "with", "us", "me")  # ("her mother is waiting with us at")
                                      or t == m + 1 and toks.tokens[m].text.lower().endswith(("'s", "’s"))
                                      for t in range(m + 1, k - 1))
             and (m == 0 or norms[m - 1] in ("their", "his", "her", "my", "the", "and", "whose") or toks.clause_start[m])
-            for m in range(max(0, k - 5), k - 1))
+            for m in range(max(0, k - 7), k - 1))
+        here = toks.sentence_of[p.start_tok]
+        said_safe = any(norms[m] in ("safe", "secure", "warm", "checked", "clear") for m in range(p.end_tok, len(norms))
+                        if toks.sentence_of[m] == here)
+        with_caller = any(norms[m] == "with" and norms[m + 1:m + 2] in (("us",), ("me",)) for m in range(max(0, k - 7), k))
         return waiting and any(norms[c] in _LOST_WORDS for c in range(0, k)
-                               if toks.sentence_of[c] == toks.sentence_of[p.start_tok])
+                               if toks.sentence_of[c] == here
+                               or toks.sentence_of[c] == here - 1 and with_caller and not said_safe)
+        # (or the sentence before, where they wait with the caller: "... last seen at the inflatables. Her mother is
+        # waiting with us at the medical tent."; not "The parents are waiting at the jeep stand, which police say is
+        # safe")
 
     @staticmethod
     def _everyone_from(toks: Tokens, norms: tuple[str, ...], p: PlaceMention, places: list[PlaceMention]) -> bool:
@@ -6844,6 +6949,17 @@ class ReportAnalyzer:
                 # "control marshal hut er we have a casualty at the ford": the station called, who calls, then "we"
                 # and the place told of
                 ex.places[idx] = replace(p, status="reference", reason="who is calling ('control X, we ...'): no claim")
+                continue
+            if (p.start_tok == 0 or toks.sentence_start[p.start_tok]) and norms[p.end_tok:p.end_tok + 1] == ("to",) \
+                    and norms[p.end_tok + 1:p.end_tok + 2] and norms[p.end_tok + 1] in lx.STATIONS_CALLED \
+                    and p.end_tok + 2 < len(norms) and toks.clause_start[p.end_tok + 2] \
+                    and [w for w in norms[p.end_tok + 2:p.end_tok + 6] if w not in lx.FILLERS][:1] in (
+                        ["we"], ["weve"], ["i"], ["ive"]) \
+                    and any(q.status != "retracted" and q.landmark != p.landmark and q.start_tok > p.end_tok
+                            for q in ex.places):
+                # "First aid post to control, we've had a lost child reported, ... last seen at the inflatables":
+                # who calls whom, then the news of another place
+                ex.places[idx] = replace(p, status="reference", reason="who is calling ('X to control, we ...'): no claim")
                 continue
             if toks.sentence_start[p.start_tok] and p.end_tok + 1 < len(norms) \
                     and norms[p.end_tok] in ("reporting", "calling", "speaking") and (toks.clause_start[p.end_tok + 1] \
@@ -7405,6 +7521,18 @@ class ReportAnalyzer:
                     prev = s0[-2] if len(s0) >= 2 else 0
                     before = [p for p in ex.places if p.status == "active" and p.landmark == cut.landmark
                               and prev <= p.start_tok < cut.start_tok]
+                    nxt = min((p for p in ex.places if p.status == "active" and p.landmark != cut.landmark
+                               and p.start_tok > a and toks.sentence_of[p.start_tok] == toks.sentence_of[a]),
+                              key=lambda p: p.start_tok, default=None)
+                    seen = 0
+                    while nxt is not None and nxt.replaces is not None and nxt.replaces > a and seen < 5:
+                        nxt = next((r for r in ex.places if r.start_tok == nxt.replaces), None)  # (said twice after)
+                        seen += 1
+                    if not before and nxt is not None and nxt.replaces is None:
+                        # "he's in the first aid t- no they've moved him, he's in the marshals' tent now": the name
+                        # broken off is repaired by the place said after the marker, which takes up what was said
+                        ex.places[ex.places.index(nxt)] = replace(nxt, replaces=cut.start_tok)
+                        continue
             if not before:
                 continue
             last = max(before, key=lambda p: p.end_tok)
@@ -7430,6 +7558,11 @@ class ReportAnalyzer:
                 continue  # "The place behind the changing huts is our recovery area, and there's a near drowning at
                 # the deep— er, sorry, the paddling pool": a name broken off ("the deep end"; "the staff car -- no,
                 # the drop trailers") is what the marker repairs
+            if a - last.end_tok >= 4 and a >= 2 and norms[a - 1] in ("the", "a", "an") and norms[a - 2] in lx.PREPOSITIONS \
+                    and any(d in toks.gaps[a] for d in ("...", "…", "—", "–", "--")) \
+                    and any(toks.clause_start[t] for t in range(last.end_tok, a - 2)):
+                continue  # "the rope is broken, very dangerous, and my friend she is on the... no, she is in the
+                # playground": where she is, begun and not named, is what the marker repairs
             if a - last.end_tok >= 6 and norms[a - 2] in lx.ARTICLES and norms[a - 1].isalpha() \
                     and norms[a - 1] not in lx.FUNCTION_WORDS and toks.tokens[a - 1].text.lower().endswith(("'s", "’s")) \
                     and any(d in toks.gaps[a] for d in ("...", "…", "—", "–", "--")) \
@@ -7512,7 +7645,12 @@ class ReportAnalyzer:
             # "I said", every earlier one in the report ("A man collapsed in the library. ... Sorry, I said the
             # library, I meant the school."), its claims going to the place that replaces it
             quoted = any(norms[i] in ("said", "say") for i in range(max(0, last.start_tok - 3), last.start_tok))
-            if k > 0 and 0 <= last.start_tok - ex.markers[k - 1][1] <= 2:
+            if k > 0 and (0 <= last.start_tok - ex.markers[k - 1][1] <= 2 or 0 <= last.start_tok - ex.markers[k - 1][1] <= 5
+                          and all(norms[t] in lx.PRONOUNS | lx.COPULAS | lx.PREPOSITIONS | lx.ARTICLES | lx.FILLERS
+                                  | {"hes", "shes", "theyre", "s", "he", "she", "they"}
+                                  for t in range(ex.markers[k - 1][1], _noun_phrase_start(norms, last)))):
+                # ("woman stuck on the avenue ... er no she's on the yew walk no wait the meadow": said again in a
+                # clause of its own, then repaired)
                 # "one at the church — sorry, the chapel — I mean the hardware store": the name it restated goes too
                 pa = ex.markers[k - 1][0]
                 for j, q in enumerate(ex.places):
@@ -8124,7 +8262,13 @@ class ReportAnalyzer:
                 # "two people cut off by the water at the allotments": the water there, and people to rescue
                 cues.append(replace(cue, category=self._person_category, reason="people cut off"))
             if (source == "lexicon" or source == "category" and self.kb.category_by_name[cat].role != Role.CRITICAL) \
-                    and norms[a:b] in lx.PERSON_STATE_CUES and self._person_category and self._person_before(norms, a):
+                    and norms[a:b] in lx.PERSON_STATE_CUES and self._person_category and (
+                        self._person_before(norms, a) or self._person_at_place_before(norms, a)
+                        or self._person_inside_before(norms, a)) \
+                    and not (norms[a + 1:a + 2] == ("fall",) and not any(
+                        norms[m] in lx.LAY_PERSONS or norms[m] in lx.PERSON_NOUNS for m in range(max(0, a - 4), a - 1))):
+                # (a learner's "he is fall down" of a person just named, "my friend he is fall down"; not "the boom,
+                # the big arm for the ship, he is fall down", a thing called "he")
                 # (the undesirable category's description may list "collapsed" too: "one of the riggers has collapsed")
                 cue = replace(cue, category=self._person_category, reason=f"a person {norms[a]}")
             elif (source == "lexicon" or source == "category" and self.kb.category_by_name[cat].role != Role.CRITICAL) \
@@ -8631,6 +8775,8 @@ class ReportAnalyzer:
             if target is None:
                 continue
             instead = "instead" in norms[target.end_tok:target.end_tok + 4]
+            if norms[target.end_tok:target.end_tok + 1] in (("shortly",), ("soon",), ("later",)):
+                continue  # "Moving them to the first aid post shortly": not there yet
             person = obj in ("her", "him", "them") and self._person_category is not None
             if not (instead or w in lx.RELOCATE_EXPLICIT):
                 continue
@@ -8689,13 +8835,39 @@ class ReportAnalyzer:
             or norms[j] in lx.LOCATIVE_PARTS
 
     @staticmethod
+    def _person_inside_before(norms: tuple[str, ...], a: int) -> bool:
+        """"the building's on fire and the engineer inside is badly burned": a person, "inside", then the word."""
+        j = a - 1
+        while j >= 0 and norms[j] in ("is", "s", "was", "has", "been", "badly", "very", "bad", "got"):
+            j -= 1
+        return j >= 2 and norms[j] == "inside" and norms[j - 2] in ("the", "a", "an") and (
+            norms[j - 1] in lx.WORKER_PERSONS or norms[j - 1] in lx.PERSON_NOUNS or norms[j - 1] in lx.LAY_PERSONS)
+
+    def _person_at_place_before(self, norms: tuple[str, ...], a: int) -> bool:
+        """"The guard in the hut that guards the entrance to the truck park has collapsed": a person, then where they
+        are (a preposition and a place the report names, however long its description), then the word at ``a``."""
+        j = a - 1
+        while j >= 0 and norms[j] in ("have", "has", "had", "s", "is", "was", "just", "now"):
+            j -= 1
+        if j < 0 or j not in self._place_tokens:
+            return False
+        while j >= 0 and j in self._place_tokens:
+            j -= 1
+        while j >= 0 and norms[j] in lx.ARTICLES:
+            j -= 1
+        if j < 1 or norms[j] not in ("in", "at", "on", "inside", "from"):
+            return False
+        w = norms[j - 1]
+        return w in lx.LAY_PERSONS or w in lx.WORKER_PERSONS or w in lx.PERSON_NOUNS
+
+    @staticmethod
     def _person_before(norms: tuple[str, ...], a: int) -> bool:
         """Is the subject before token ``a`` a person ("two residents have collapsed", "the gardeners all
         collapsed")? A person word, or a counted noun of a doer ("two gardeners", "3 climbers")."""
         j = a - 1
         while j >= 0 and norms[j] in ("have", "has", "had", "s", "is", "are", "was", "were", "been", "got", "just",
-                                      "both", "all", "also", "then", "suddenly", "badly", "very", "bad"):
-            j -= 1
+                                      "both", "all", "also", "then", "suddenly", "badly", "very", "bad", "like"):
+            j -= 1  # ("he's, like, burned both hands")
         if j >= 1 and norms[j] == "else" and norms[j - 1] in ("somebody", "someone", "anyone", "anybody"):
             j -= 1  # "somebody else has collapsed"
         who = next((m for m in range(j, max(0, j - 7), -1) if norms[m] in ("who", "whos")), None)
@@ -9461,6 +9633,10 @@ class ReportAnalyzer:
                     j += 1
             if j not in starts:
                 continue
+            end = next((p.end_tok for p in ex.places if p.start_tok == j), j + 1)
+            if norms[end:end + 1] in (("shortly",), ("soon",), ("later",)) or norms[end:end + 3] in (
+                    ("in", "a", "minute"), ("in", "a", "bit"), ("in", "a", "moment"), ("in", "a", "sec")):
+                continue  # "Moving them to the first aid post shortly": where they will go, not where they are
             if any(c.start_tok < i < c.end_tok or i < c.start_tok < k for c in cues if c.source != "glossary"):
                 continue  # a cue of its own inside ("moved the injured to ...") speaks for itself
             t0, t1 = toks.tokens[first], toks.tokens[k]
@@ -9773,6 +9949,11 @@ class ReportAnalyzer:
                         and not any(p.end_tok <= c.start_tok < i for c in cues) for p in places_now):
                     continue  # "there's a wash-through ... and the top block - never mind, haven't got to the top
                     # block yet": the speaker drops the place just begun, not what was said before it
+                if phrase == "ignore me" and any(
+                        p.status == "negated" and 0 <= i - p.end_tok <= 3 and sentence_of[p.start_tok] == sentence_of[i]
+                        for p in places_now):
+                    continue  # "the loos are overflowing ... and the hedge is — no, nothing on the hedge, ignore me":
+                    # the place just begun and denied is what the speaker takes back
                 if norms[i : i + len(key)] == key or stutter:
                     # "disregard my last, the spill is at the store": an earlier report is withdrawn and
                     # what follows replaces it
@@ -10064,6 +10245,10 @@ class ReportAnalyzer:
                         and norms[k - 1] not in lx.PRONOUNS \
                         and norms[k - 1] not in lx.ESCAPED_THINGS | {"s"} and self._cues.match_at(norms, k - 1) is None:
                     break  # "the sea's smashed its doors in and the slip's gone": another thing gone, more damage
+                if h[1] in ("gone", "has gone", "have gone") and (h[0] >= len(norms) or toks.clause_start[h[0]]) \
+                        and any(w in ("bottle", "cylinder", "canister", "cylinders", "bottles", "canisters")
+                                for w in norms[cue.start_tok:cue.end_tok]):
+                    break  # "one of the gas bottles has gone": gone off, burst
                 if h[1] == "gone" and norms[h[0]:h[0] + 1] == ("up",) \
                         and self.kb.category_by_name[cue.category].role == Role.DESIRABLE:
                     break  # "that's where the welfare tent's gone up": put up, not gone
@@ -10338,6 +10523,16 @@ class ReportAnalyzer:
         # seen, said harmless, where it came from the same place)
         harmless = words[:2] in (["it", "was"], ["that", "was"]) and words[2:3] != [] and (
             words[2] in lx.HARMLESS_SIGHTS or words[2] in ("just", "only") and words[3:4] != [] and words[3] in lx.HARMLESS_SIGHTS)
+        # ("fire at the silo, no wait, the silo's ok, it's the chute that's burning": the place said again first, and
+        # said to be all right)
+        first = min(after, key=lambda p: p.start_tok) if after else None
+        all_right = first is not None and (
+            toks.tokens[first.end_tok - 1].text.lower().replace("’", "'").endswith("'s")
+            and norms[first.end_tok:first.end_tok + 1] in (("ok",), ("okay",), ("fine",))
+            or norms[first.end_tok:first.end_tok + 2] in (("is", "ok"), ("is", "okay"), ("is", "fine"))) \
+            and (first.end_tok + 2 >= len(norms) or toks.clause_start[first.end_tok + 1 + (norms[first.end_tok] == "is")])
+        if before is not None and all_right and first.landmark == before.landmark:
+            return True
         return before is not None and bool(after) and all(p.landmark == before.landmark for p in after) \
             and (words[:2] in (["its", "not"], ["it", "isnt"], ["thats", "not"]) and bool(set(norms[b_after:e_after]) & lx.DISMISSALS)
                  or harmless)
@@ -10483,6 +10678,38 @@ class ReportAnalyzer:
             else:
                 merged.append(s)
         return merged
+
+    def _counted_ones(self, ex: Extraction, norms: tuple[str, ...], pairs: list[Claim]) -> list[Claim]:
+        """"two hurt — one in the parking lot, one in the ticket hall, and the souvenir shop is safe": each "one at X"
+        of a count is one of the people counted, as the first was; what the next place is said to be is its own."""
+        toks = ex.tokens
+
+        def one_at(p: PlaceMention) -> bool:
+            k = _noun_phrase_start(norms, p)
+            first = next((r for r in ex.places if p.replaces is not None and r.start_tok == p.replaces
+                          and r.status == "retracted"), None)
+            if first is not None:
+                k = _noun_phrase_start(norms, first)  # ("one in the car p-- the parking lot")
+            return k >= 2 and norms[k - 1] in ("in", "at", "on", "by", "inside") and norms[k - 2] == "one" \
+                and toks.clause_start[k - 2]
+
+        def critical(c: Claim) -> bool:
+            return c.cue.polarity == "affirmed" and self.kb.category_by_name[c.cue.category].role == Role.CRITICAL
+
+        ones = sorted((p for p in ex.places if p.status == "active" and one_at(p)), key=lambda p: p.start_tok)
+        add: list[Claim] = []
+        drop: set[int] = set()
+        for i, p in enumerate(ones):
+            prev = [q for q in ones[:i] if toks.sentence_of[q.start_tok] == toks.sentence_of[p.start_tok]]
+            if not prev or any(c.place.start_tok == p.start_tok and critical(c) for c in pairs):
+                continue
+            counted = [c for c in pairs if c.place.start_tok == prev[-1].start_tok and critical(c)]
+            if not counted:
+                continue
+            add.extend(Claim(p, c.cue) for c in counted)
+            drop.update(id(c) for c in pairs if c.place.start_tok == p.start_tok and c.cue.start_tok > p.end_tok
+                        and any(r.status == "active" and p.end_tok <= r.start_tok < c.cue.start_tok for r in ex.places))
+        return [c for c in pairs if id(c) not in drop] + add
 
     def _associate(self, ex: Extraction, cues: list[CueMention]) -> tuple[list[Claim], list[Claim]]:
         """Attach cues to places.
@@ -10786,7 +11013,11 @@ class ReportAnalyzer:
                 prev = k - 1
                 while prev > 0 and all(norms[i] in lx.FILLERS or norms[i] in ("and", "then") for i in range(*segs[prev])):
                     prev -= 1  # ("heading up the tracks and um, there's a derailment": the tracks, past the "um")
-                if here and not seg_usable.get(prev):
+                cut_to_next = b < len(norms) and b - a >= 3 and norms[b - 2] in lx.ARTICLES \
+                    and re.search(r"[—–-]", toks.gaps[b]) is not None and bool(seg_usable.get(k + 1))
+                # (not "there's a hazchem leak coming out of the impound— the prohibition bay": the place the
+                # speaker began to name, given after the break)
+                if here and not seg_usable.get(prev) and not cut_to_next:
                     pairs.extend(Claim(replace(here[-1], status="active"), c) for c in cs)
                     continue
             if k > 0 and all(c.polarity == "denied" for c in cs) and "there" in norms[a:b] \
@@ -11138,6 +11369,7 @@ class ReportAnalyzer:
         pairs.extend(self._last_seen_claims(ex, norms, cues, pairs))
         pairs.extend(self._so_is_claims(ex, norms, pairs))
         pairs.extend(self._shared_by_list(ex, norms, pairs))
+        pairs = self._counted_ones(ex, norms, pairs)
         # (a list member denied after "both of them" was read is no member: "at the bull ring sorry not the bull ring
         # the bus station both of them at the bus station"; but "no wait, both are" takes a repair back)
         gone = {p.landmark for p in ex.places if p.status == "negated"} \
@@ -11759,6 +11991,9 @@ class ReportAnalyzer:
             if words[:1] and words[0] in lx.PERSON_SUBJECTS and any(
                     w in lx.POSITION_PREPS or w == "inside" for w in words[1:4]):
                 return nxt  # "the injured porter, he's in the tea warehouse": where the person is said to be
+            if words[:1] == ["and"] and words[1:2] and words[1] in lx.POSITION_VERBS | {"lying", "standing", "waiting"} \
+                    and any(w in lx.POSITION_PREPS for w in words[2:5]):
+                return nxt  # "the driver's burnt and sitting up on the bank that looks down on the off-slip"
         # the nearest earlier segment with places ("the bakery — it's on fire", "Checked the school. All clear."),
         # over sentences that are transparent (questions, one-word answers, more about the same place)
         lo = segs[k - 1][0] if k > 0 and not seg_places.get(k - 1) and not seg_cues.get(k - 1) \
@@ -12540,6 +12775,10 @@ def _names_what_came(norms: tuple[str, ...], p: PlaceMention) -> bool:
     a = p.start_tok
     if p.end_tok - a != 1 or a < 2 or norms[a - 1] != "the":
         return False
+    if norms[a] in ("rock", "stone", "boulder", "rubble", "debris", "tree", "log") and norms[a - 2] in (
+            "under", "beneath", "underneath") and any(w in ("trapped", "pinned", "buried", "stuck", "crushed")
+                                                     for w in norms[max(0, a - 5):a - 2]):
+        return True  # "Rockfall on the track ..., and a walker's trapped under the rocks": what fell on him
     if norms[a] in lx.WATER_BODIES and norms[a - 2] in ("got", "get", "getting") \
             and norms[p.end_tok:p.end_tok + 1] in (("in",), ("into",)):
         return True
@@ -12676,6 +12915,8 @@ _SUPPLY_VERBS = frozenset({"feeds", "feed", "fed", "supplies", "supply", "suppli
                            "cools", "cool", "cooled", "chills", "chill", "chilled", "lights", "light", "lit",
                            "runs", "drives", "drive", "driven", "empties", "empty", "emptied", "tops", "top",
                            "supplie", "emptie"})  # (the keys of "supplies", "empties")
+# Prepositions a relative clause leaves at its end ("the water the pump house draws from")
+_STRANDED_ENDS = frozenset({"from", "to", "into", "onto", "off", "over", "under"})
 # Heads that say a building ("the building at the shore end of it"), and the name words of landmarks that are none.
 _BUILDING_HEADS = frozenset({"building", "house", "hut", "shed", "block", "office"})
 _OPEN_OR_AFLOAT = frozenset({"float", "floats", "barge", "scow", "boat", "boats", "pontoon", "pontoons", "raft", "hulk",

@@ -32,6 +32,19 @@ def _add(role: str, phrases: str) -> None:
 
 
 _add(UNDESIRABLE, """
+branches still coming off|branches coming off|still coming off it|snapping loose|snapped loose|jammed shut|has jammed|
+won't swing|wont swing|stuck open|stuck shut|
+wasp nest|wasps' nest|wasps nest|hornets' nest|hornet's nest|
+glass falling|glass falling off|glass coming down|water coming out of|water pouring out of|water gushing out of|
+we're holed|we are holed|been holed|is holed|holed on|holed below|
+come off its pegs|off its pegs|pulled its pegs|blowing about|blowing around|
+car's turned over|van's turned over|has turned over|turned over on|flipped over on|
+stones falling|stones are falling|are falling from the|falling from the walls|masonry falling|
+steam blow out|steam blowout|steam blow-out|
+nobody go in there|no one go in there|
+it's been hit|it has been hit|been struck by lightning|
+branch down|big branch down|branch has come down|branch came down|limb down|
+load's shifted|load has shifted|load shifted|loads shifted|shifted load|shifted its load|load's slipped|load has slipped|
 gone live|gone live again|is live again|went live again|is live|s live|are live|still live|
 have come off the|has come off the|running brown|properly under|slid right across|slid across the|come clean off|roof's come off|roof has come off|roof came off|broken straight through its bank|broken through its bank|broken through the bank|is also water|scouring the bank|scouring the bank away|metre above normal|metres above normal|foot above normal|feet above normal|taking the fences with it|up to his windowsills|up to her windowsills|up to their windowsills|up to the windowsills|up to the sills|water is already up to|water's already up to|water is up to the|water's up to the|dropped and split|split in two|split in half|slates have come off|shed half its|has shed half its|
 been torn off|torn away|
@@ -184,6 +197,15 @@ _add(CRITICAL, "|".join(f"{aux} {verb} in" for aux in ("haven't", "havent", "has
 _add(CRITICAL, "|".join(f"pulled {who} out of" for who in ("a man", "a woman", "someone", "somebody", "a child", "a kid",
                                                              "him", "her", "a lad", "a girl", "a boy")))
 _add(CRITICAL, "still out on it|still out on the|stuck out on it|still stuck out on")
+_add(CRITICAL, "has broken his|has broken their|have broken his|'s broken his|have broken leg|has broken leg|"
+               "have broken arm|has broken arm|have broken hip|has broken hip|have broken a|has broken a")
+_add(CRITICAL, "he fall down|she fall down|he not wake up|she not wake up|he not waking|she not waking|"
+               "through his hand|through her hand|hook through his|hook through her|visitors stung|people stung|"
+               "been stung|got stung|were stung|stung badly|badly stung")
+_add(CRITICAL, "sick in bed|lady sick|man sick|she drank it|he drank it|drank diesel|swallowed diesel")
+_add(CRITICAL, "wandering and confused|found wandering|confused and wandering|wandering confused")
+_add(CRITICAL, "still aboard|person still aboard|one person still aboard|still on the boat")
+_add(CRITICAL, "kid lost|child lost|a lost kid|boy lost|girl lost|crew are still down there|crew still down there|are still down there|still trapped down there")
 _add(CRITICAL, "coughing up smoke|coughing smoke|coughing up black")  # (a symptom, not smoke at the place)
 _add(CRITICAL, "breathing trouble|trouble breathing|needing oxygen|short of breath")
 _add(CRITICAL, "need the rescue boat|needs the rescue boat|need a rescue boat|need the lifeboat|needs the lifeboat")
@@ -382,7 +404,7 @@ CANCEL_AFTER = ["fully out", "is fully out", "damping down", "damping down is fi
                 "pumped out", "been pumped out", "no sign of him", "no sign of her", "no sign of them",
                 "no sign of anyone", "no sign of anybody", "no one there", "nobody there",
                 "off now", "s off now", "is off", "s off", "shut it off", "turned it off", "switched off",
-                "switched it off", "sealed", "been sealed", "plugged", "been plugged", "is sorted", "s sorted", "been sorted",
+                "switched it off", "sealed", "been sealed", "plugged", "been plugged", "is sorted", "s sorted", "been sorted", "been dealt with", "dealt with", "sorted", "sorted it", "nothing there now",
                 "all sorted", "sorted now", "neutralised", "neutralized", "been neutralised", "been neutralized",
                 "vented out", "been vented out", "been vented", "been closed off", "all gone", "s all gone", "leak has been closed off",
                 "leak's closed off", "stood down", "have stood down", "has stood down", "was there already", "were there already",
@@ -443,7 +465,7 @@ BACK_REFERENCE_WORDS = {"it", "its", "s", "is", "has", "been", "thats", "that", 
                         "ive"}
 
 # Phrases that contain cue words but claim nothing ("the smoke alarm went off", "fire crew on site").
-NEUTRAL_PHRASES = ["a bonfire",
+NEUTRAL_PHRASES = ["a bonfire", "cooking fires", "cooking fire", "holding, uh, but", "holding, but", "holding but",
                    # (a radio check: "reading you loud and clear")
                    "loud and clear", "reading you clear", "read you clear",
                    # (who reports the all-clear: "All clear from the stamp mill after the tremor")
@@ -465,7 +487,8 @@ NEUTRAL_PHRASES = ["a bonfire",
                    "out cold to the touch", "out and cold to the touch", "looking out over", "looks out over", "look out over", "looked out over", "been cleared out", "cleared out", "drill smoke", "exercise smoke", "smoke grenade", "smoke grenades", "burning hedge trimmings", "burning garden waste", "burning rubbish", "controlled burn", "fire drill", "evacuation drill", "fire practice", "half in the water", "i'm shattered", "im shattered", "i am shattered", "we're shattered", "we are shattered",
                    "keeping the children inside", "keeping the kids inside", "keeping everyone inside",
                    "keeping them inside", "kept the children inside", "kept the kids inside", "went under in the crash", "went bust", "gone bust", "above the flood line", "above the waterline", "above the water line", "above the flood level",
-                   "above the high water mark", "roof is still on", "roof's still on", "been found safe", "found safe and well", "found safe at", "stable staff", "stable lads", "stable lad", "stable hands", "stable hand", "stable girls",
+                   "above the high water mark", "roof is still on", "roof's still on", "been found safe", "found safe and well", "found safe at", "turned up safe and well", "turned up safe and sound",
+                   "turned up safe", "found safe and sound", "stable staff", "stable lads", "stable lad", "stable hands", "stable hand", "stable girls",
                    "stable block", "stable door", "stable doors", "use it to bring", "use it to get", "use it to take", "use it to move", "use it to evacuate",
                    "use that to bring", "use that to get", "out of use", "out of action", "out of service", "out of the smoke", "away from the smoke", "out of the rain", "out of the water", "out of the fumes",
                    "people sitting in here", "people sitting in there", "sitting in here", "waiting in here",
@@ -537,11 +560,11 @@ DANGER_EXPLAINED = {"just steam", "only steam", "just fog", "only fog", "just mi
                     "it's only a bonfire", "it's a barbecue", "its a barbecue", "garden bonfire"}
 
 # Whole-report "nothing to see" markers that cancel every claim in their sentence.
-FALSE_ALARM = ["false alarm", "scratch their earlier call", "scratch my earlier call", "scratch our earlier call",
+FALSE_ALARM = ["false alarm", "smoke from the cooking fires", "smoke from the cooking fire", "smoke from a cooking fire", "scratch their earlier call", "scratch my earlier call", "scratch our earlier call",
                "nobody's gone in", "no one's gone in", "nobody went in", "nothing's happened at ours",
                "nothing has happened at ours", "that was yesterday's call", "that was yesterday", "exercise exercise", "for the exercise only", "that's for the exercise",
                "none of this is real", "this is a test message", "the scenario has", "tomorrow's exercise",
-               "in the exercise", "stand down on the", "standing down on the", "stood down on the", "never mind", "nevermind", "disregard my last", "disregard the last report",
+               "in the exercise", "stand down on the", "standing down on the", "stood down on the", "never mind", "nevermind", "disregard my last", "disregard the last report", "scratch that report", "scratch my last",
                "nothing in it", "nothing to it", "on purpose", "controlled burn", "controlled bonfire", "controlled fire", "burning the prunings", "burning prunings", "burning off the", "like they do every", "just steam", "only steam", "just fog", "only fog", "just mist", "only mist", "just exhaust", "only exhaust", "just the exhaust", "only the exhaust", "someone's extractor fan", "someones extractor fan", "their extractor fan", "just the extractor fan", "only the extractor fan", "was the extractor fan", "was just a", "was only a",
                "was just their", "was just the", "its just their", "is just their", "its only their", "nothing to worry about", "ignore my last", "cancel my last",
                "disregard my last message", "nobody in any", "disregard the call about", "disregard the call re", "disregard the report about", "disregard the call from", "burning leaves in a brazier", "burning leaves in a", "disregard previous", "disregard my earlier report",
@@ -583,7 +606,7 @@ DISMISSED_BEFORE = {"been checked it was the", "been checked it was just", "been
 WHOLE_REPORT_WITHDRAWN = {"disregard all of it", "disregard all of that", "disregard all that", "ignore all of that",
                           "ignore all of it", "ignore me", *_WITHDRAWN_WARNINGS}
 # ... and these, with those, an earlier report: only what comes before them in the sentence is denied
-PREVIOUS_REPORT_WITHDRAWN = {"disregard my last", "disregard the last report", "ignore my last", "cancel my last",
+PREVIOUS_REPORT_WITHDRAWN = {"disregard my last", "disregard the last report", "scratch that report", "scratch my last", "ignore my last", "cancel my last",
                              "disregard my last message", "disregard previous", "never mind", "nevermind",
                              *WHOLE_REPORT_WITHDRAWN}
 
@@ -1020,7 +1043,7 @@ RELATION_ENDINGS = {"to", "from", "of", "with", "onto", "on", "by", "over", "off
 NEGATABLE_STATES = {"safe", "clear", "secure", "secured", "stable", "sound", "passable", "accessible", "cleared",
                     "safe to enter", "safe to shelter", "all clear", "structurally sound", "green"}
 # Words after a correction that dismiss the claim before it ("correction, that's just steam").
-DISMISSALS = {"just", "only", "nothing", "false", "mistake", "steam", "mist", "dust", "fog", "nobody", "fine"}
+DISMISSALS = {"just", "only", "nothing", "false", "mistake", "steam", "mist", "dust", "fog", "nobody", "fine", "ok", "okay"}
 # What was seen, said again as harmless after a plain "no" ("Smoke — no — it's steam")
 HARMLESS_SIGHTS = frozenset({"steam", "mist", "dust", "fog", "spray", "vapour"})
 # Whatever finds a way, sending nobody anywhere ("the satnav sent us to the lodge gate")
@@ -1056,11 +1079,21 @@ PERSON_NOUNS = ["man", "woman", "person", "someone", "somebody", "firefighter", 
                 "patient", "resident", "worker", "officer", "lady", "guy", "bloke", "fella", "casualty", "boy", "girl",
                 "customer", "driver", "student", "teacher", "nurse", "someone's", "somebody's", "chap", "lad", "roofer",
                 "builder", "labourer", "painter", "climber", "mechanic", "spectator", "camper", "walker", "rider",
-                "technician", "farmer", "farmhand", "fisherman"]
+                "technician", "farmer", "farmhand", "fisherman", "dancer", "piper", "swimmer", "surfer", "diver",
+                "skater", "cyclist", "jockey", "competitor", "athlete", "gardener", "secretary", "clerk", "loader",
+                "engineer", "operator", "steward", "marshal", "ranger", "mourner", "guide", "kayaker", "canoeist",
+                "paddler", "groundsman", "nurse"]
 for _p in PERSON_NOUNS:
     ROLE_CUES[f"{_p} fallen through"] = CRITICAL  # ("a worker's fallen through the roof"; a roof that fell is none)
     ROLE_CUES[f"{_p} has fallen through"] = CRITICAL
     ROLE_CUES[f"{_p} fell through"] = CRITICAL
+    ROLE_CUES[f"{_p} still down there"] = CRITICAL  # ("there's a tour guide still down there")
+    ROLE_CUES[f"{_p} swept out"] = CRITICAL  # ("a kayaker swept out through it")
+    ROLE_CUES[f"{_p} swept away"] = CRITICAL
+    ROLE_CUES[f"{_p} stung"] = CRITICAL  # ("Two visitors stung badly")
+    ROLE_CUES[f"{_p} fallen into"] = CRITICAL  # ("Climber fallen into, um, whatever the pillar looks down on")
+    ROLE_CUES[f"{_p} has fallen into"] = CRITICAL
+    ROLE_CUES[f"{_p} fell into"] = CRITICAL
     ROLE_CUES[f"{_p} gone down"] = CRITICAL
     ROLE_CUES[f"{_p} fell down"] = CRITICAL  # ("my teacher fell down"; "the wall fell down" is no person)
     ROLE_CUES[f"{_p} has fallen"] = CRITICAL
@@ -1069,6 +1102,17 @@ for _p in PERSON_NOUNS:
     ROLE_CUES[f"{_p} s collapsed"] = CRITICAL
     ROLE_CUES[f"{_p} underneath it"] = CRITICAL  # ("the barn's come down and the farmer's underneath it")
     ROLE_CUES[f"{_p} under it"] = CRITICAL
+    ROLE_CUES[f"{_p}'s under it"] = CRITICAL  # ("the roof's come in, the secretary's under it")
+    ROLE_CUES[f"{_p} is under it"] = CRITICAL
+    if _p in ("dancer", "piper", "swimmer", "surfer", "diver", "skater", "cyclist", "jockey", "competitor", "athlete",
+              "rider", "climber"):
+        ROLE_CUES[f"{_p} down"] = CRITICAL  # ("Dancer down on the platform": a casualty, as "man down")
+    if _p not in ("he", "she", "someone's", "somebody's"):
+        ROLE_CUES[f"{_p} frozen"] = CRITICAL  # ("a kid frozen on the bridge, won't move": too scared to move)
+        ROLE_CUES[f"{_p} frozen with fear"] = CRITICAL
+        ROLE_CUES[f"{_p}'s been hit"] = CRITICAL  # ("glass coming down off it, and uh somebody's been hit")
+        ROLE_CUES[f"{_p} has been hit"] = CRITICAL
+        ROLE_CUES[f"{_p} got hit"] = CRITICAL
 # Burned on a part of a person ("one of the grinders is burned on both arms"): a casualty, not a fire
 for _v in ("burned", "burnt", "scalded"):
     for _who in ("his", "her", "their", "both", "the"):
@@ -1088,7 +1132,8 @@ THING_SUBJECTS = {"car", "vehicle", "van", "truck", "lorry", "bus", "road", "tra
 # Words that carry a danger said before on to the place after them ("the leak has reached the fuel island").
 SPREAD_PHRASES = [("has", "reached"), ("have", "reached"), ("reached",), ("spread", "to"), ("spreading", "to"),
                   ("spread", "into"), ("spreading", "into"), ("now", "covering"), ("covering",), ("its", "into"),
-                  ("s", "into"), ("got", "into"), ("drifting", "over"), ("drifting", "across"), ("blowing", "across"),
+                  ("s", "into"), ("got", "into"), ("drifting", "over"), ("drifting", "across"), ("drifting", "into"),
+                  ("drifting", "down", "into"), ("drifting", "up", "into"), ("blowing", "across"),
                   ("blowing", "over"), ("reaching",), ("gone", "through"), ("jumped", "to"), ("jumped", "onto"), ("jumped", "across", "to")]
 # Cues that say a place is shut: a danger only where a category is about access.
 LOCK_CUES = {("locked",), ("padlocked",), ("chained",), ("chained", "shut"), ("locked", "up")}
@@ -1103,6 +1148,7 @@ EARTHWORKS = {"face", "bank", "banking", "slope", "spoil", "tip", "heap", "emban
 
 PERSON_STATE_CUES = {("collapsed",), ("collapse",), ("collapsing",), ("burned",), ("burnt",), ("burned", "out"),
                      ("fallen", "in"), ("fell", "in"), ("fell", "down"), ("has", "fallen", "down"), ("slipped", "in"), ("falling", "in"),
+                     ("is", "fall", "down"), ("has", "fall", "down"),  # ("my friend he is fall down": a learner's tense)
                      ("gone", "through", "the", "floor"), ("fallen", "through", "the", "floor"), ("fell", "through", "the", "floor")}
 
 # Parts of a person: "his arm is burned" is said of a person
@@ -1120,7 +1166,7 @@ LAY_PERSONS = {"man", "woman", "person", "people", "someone", "somebody", "child
                "commuter", "holidaymaker", "friend", "colleague", "grandad", "granddad",
                "grandma", "granny", "nan", "nanna", "grandmother", "grandfather", "mum", "mam", "dad", "uncle",
                "aunt", "auntie", "cousin", "brother", "boyfriend", "girlfriend", "pilgrim", "bather", "worshipper",
-               "player"}
+               "player", "grandpa", "nonno", "nonna", "grandson", "granddaughter", "sister", "niece", "nephew"}
 # People at work there: a casualty only when pinned, under or hanging ("a forklift driver under it").
 WORKER_PERSONS = {"driver", "worker", "workman", "lad", "labourer", "passenger", "pupil", "shopper", "baker",
                   "cleaner", "operator", "builder", "steward", "stewardess", "crewman", "deckhand", "fitter",
@@ -1714,7 +1760,7 @@ DANGER_KIND_EXTRA: dict[str, list[str]] = {
                  "started to sag", "starting to sag", "begun to sag", "beginning to sag", "wall's come in", "wall has come in", "walls have come in", "wall's come down on", "roof's come in",
                  "roof has come in", "ceiling's come in", "ceiling has come in", "tipped over", "has tipped over", "have tipped over", "have slid", "has slid",
                  "flattened", "been flattened", "torn to bits", "torn to pieces", "ripped to bits", "ripped to pieces", "blown to bits", "giving way", "is giving way", "gives way", "piles are sheared", "piles have sheared", "pile is sheared", "pile's sheared", "torn open", "been torn open", "gone over into the water", "gone over into the lagoon", "gone over into the sea", "gone over into the river", "split down a seam", "split a seam", "split its seam", "split at the seam", "split along a seam", "has snapped", "have snapped", "cable snapped", "cables snapped", "hanging sideways", "floor went through", "floor went thru", "floor gone through", "developed a lean", "has a lean", "bricks coming off", "bricks are coming off", "wall has split", "walls have split", "has split from", "split right across", "split from top to bottom", "roof's coming in", "roof is coming in", "ceiling's coming in", "ceiling is coming in", "coming off in chunks", "coming away in chunks", "falling off in chunks", "in chunks", "breaking up", "is breaking up", "coming adrift", "come adrift", "broken adrift", "peeling off", "coming off in slabs", "coming away in slabs", "roof fall on", "roof fall in", "roof has dropped", "pole's snapped", "pole has snapped", "poles have snapped", "poles snapped", "canvas is down", "canvas's down", "canvas has come down", "canvas came down", "tent's down", "tent is down", "poles down", "poles are down", "roof's dropped", "roof dropped", "ceiling has dropped", "ceiling's dropped", "roof has split", "roof split", "is bending", "it's bending", "is fall down", "has fall down", "fallen down"],
-    "water": ["jellyfish", "jellyfish bloom", "jellies everywhere", "stingers everywhere", "running bank to bank", "bank to bank", "going down by the bow", "going down by the stern", "down by the bow", "down by the stern",
+    "water": ["in spate", "in full spate", "jellyfish", "jellyfish bloom", "jellies everywhere", "stingers everywhere", "running bank to bank", "bank to bank", "going down by the bow", "going down by the stern", "down by the bow", "down by the stern",
               "down by the head", "waves coming straight over", "waves coming right over", "roof is leaking", "roof's leaking",
               "roof leaking", "roof leaks", "taken the surge", "took the surge", "drums floating", "floating everywhere",
               "taken in loads of water", "taken in water", "taken in a lot of water", "taking in loads of water",
@@ -1802,6 +1848,11 @@ CREW_ACTION_VERBS = frozenset({"shut", "closed", "evacuated", "emptied", "cleare
 MOVED_CLEAR_VERBS = frozenset({"stepped", "stood", "backed", "moved", "pulled", "jumped", "scrambled",
                                "step", "stand", "move", "pull", "standing", "stepping", "backing"})
 SHORT_PLACE_NOUNS = frozenset({"gym", "pub", "inn", "spa", "zoo", "dam", "tip"})
+# Words for parts of a building that MiniLM's vocabulary lacks: English words, no typed slips of a name ("panes
+# cracked overhead" is no slip of "the panels")
+BUILDING_PART_WORDS = _keyed({"pane", "panes", "joist", "joists", "rafter", "rafters", "girder", "girders", "hinge",
+                              "hinges", "gutter", "gutters", "flue", "flues", "soffit", "lintel", "strut", "struts",
+                              "glazing", "truss", "trusses", "purlin", "purlins"})
 # Kinds of place said by another word ("the pub" for a landmark its description calls an inn)
 PLACE_KIND_SYNONYMS = {"pub": ("inn", "tavern", "alehouse"), "inn": ("pub", "tavern"), "tavern": ("pub", "inn"),
                        "shop": ("store",), "store": ("shop",)}

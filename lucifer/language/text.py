@@ -166,6 +166,10 @@ _BEFORE_A_ONE = frozenset({"the", "that", "this", "which", "each", "every", "no"
                            "another", "other", "last", "first", "big", "little", "old", "new", "said", "is", "s", "was"})
 
 
+_AFTERTHOUGHT_FILLERS = frozenset({"like"})
+_LINKS = frozenset({"are", "it's", "he's", "she's", "they're", "that's", "there's", "we're"})
+
+
 def tokenize(text: str) -> Tokens:
     toks: list[Token] = []
     gaps: list[str] = []
@@ -198,6 +202,15 @@ def tokenize(text: str) -> Tokens:
         hyphenated = gap == "-" and i > 0 and len(toks[i].text) > 1 \
             and not toks[i].text.lower().startswith(toks[i - 1].text.lower()[:1])
         starts = is_sent or (not hyphenated and (bool(_CLAUSE.search(gap.strip())) or bool(_CLAUSE.search(g))))
+        if starts and not is_sent and i >= 1 and toks[i].text.lower() == toks[i - 1].text.lower() \
+                and re.search(r"[—–-]", gap) is not None and toks[i].text.lower().replace("’", "'") in _LINKS \
+                and "'" in toks[i].text.replace("’", "'"):
+            starts = False  # "the fire at the pump shed that's-- that's out now": the word begun again
+        if starts and not is_sent and i >= 1 and (
+                toks[i].text.lower() in _AFTERTHOUGHT_FILLERS and toks[i - 1].text.lower().replace("’", "'") in _LINKS
+                or i >= 2 and toks[i - 1].text.lower() in _AFTERTHOUGHT_FILLERS
+                and toks[i - 2].text.lower().replace("’", "'") in _LINKS):
+            starts = False  # "the heavies are, like, still going on": a filler inside the clause, set off by commas
         if not starts and gap.strip() == "" and _unpunctuated_contrast(toks, i):
             starts = True  # "the fire's not at the kestrel it's at the marisol": the place meant, said without a pause
         if not starts and gap.strip() == "" and i >= 2 and toks[i - 1].text.lower() in _HESITATION_WORDS \
