@@ -371,20 +371,15 @@ class ReportAnalyzer:
                 return cat
         if role == lx.CRITICAL and len(cats) > 1:
             # two critical categories, one of them for the lost: "a piper has fainted" is no lost person, whatever
-            # MiniLM makes of it; "unaccounted for" is one
-            lost_words, hurt_words = set(norm_phrase("lost missing")), set(norm_phrase("hurt injured ill injury trapped"))
-            # (what says someone is not where they were: "can't find my nan", "now she's gone", "not there")
-            lostish = [c for c in cats if lost_words & set(norm_phrase(c.description))
-                       and not hurt_words & set(norm_phrase(c.description))]
+            # MiniLM makes of it; "can't find my nan" is one
+            lostish = [c for c in cats if _LOST_CATEGORY_WORDS & (described := set(norm_phrase(c.description)))
+                       and not _HURT_CATEGORY_WORDS & described]
             said = set(norm_phrase(phrase))
             if lostish and len(lostish) < len(cats):
-                if said & (lost_words | set(norm_phrase("unaccounted overdue separated seen wandered wandering find found "
-                                                        "contact whereabouts"))):
+                if said & _SAID_LOST_WORDS:
                     if len(lostish) == 1:
                         return lostish[0].name
-                elif said & set(norm_phrase("fainted faint collapsed collapse hurt injured injury bleeding blood burn "
-                                            "burned burnt unconscious broken fell fall stung bitten breathing cut down "
-                                            "trapped pinned stroke attack chest pains casualty casualties hypothermic")):
+                elif said & _SAID_HURT_WORDS:
                     cats = [c for c in cats if c not in lostish]
                     if len(cats) == 1:
                         return cats[0].name
@@ -758,13 +753,14 @@ class ReportAnalyzer:
             if t > 0 and norms[t - 1] == "the" and verb.endswith("s") and not verb.endswith("ss") \
                     and toks.tokens[t].text.lower() == verb[:-1] and t + 1 < len(norms) and norms[t + 1] in lx.ARTICLES:
                 continue  # "the tarmac over the pipe the beck drains through": a noun heading a clause, not ``pipes ...``
+            rel_words = hit[0].replace("_", " ").split()
             if t > 0 and norms[t - 1] in ("the", "a", "an") and t + 1 < len(norms) and norms[t + 1] in ("the", "a", "an") \
                     and not toks.clause_start[t + 1] and not word.lower().endswith(("ed", "ing", "s")) \
-                    and norm(hit[0].replace("_", " ").split()[0]) != norms[t] \
+                    and norm(rel_words[0]) != norms[t] \
                     and (end := next((m for m in range(t + 2, min(len(norms), t + 10)) if toks.clause_start[m]),
                                      min(len(norms), t + 10))) > t + 2 \
-                    and norms[end - 1] in _STRANDED_ENDS and hit[0].replace("_", " ").split()[-1] in _STRANDED_ENDS \
-                    and norms[end - 1] != hit[0].replace("_", " ").split()[-1]:
+                    and norms[end - 1] in _STRANDED_ENDS and rel_words[-1] in _STRANDED_ENDS \
+                    and norms[end - 1] != rel_words[-1]:
                 continue  # "the water the pump house draws from": a noun heading a clause that ends the other way
                 # from the relation (``pumps water up to``)
             if t > 0 and ("a" in norms[max(0, t - 2):t] or "an" in norms[max(0, t - 2):t]) \
@@ -2641,16 +2637,14 @@ class ReportAnalyzer:
                         and norms[p.end_tok - 1] == norms[i] and (not names or p.landmark in names)}
                 if len(said) == 1:
                     names, relative_anchor = said, True
-            if not names and norms[i - 1] in ("that", "this") and i not in taken and norms[i].isalpha() \
-                    and norms[i] not in lx.FUNCTION_WORDS:
-                # "the compound at the back of the toilets. And that compound's smoking": the place just said, by
-                # the last word it was said with
-                said = {p.landmark for p in places if p.end_tok <= i - 1 and norms[p.end_tok - 1] == norms[i]}
-                if len(said) == 1:
-                    names = said
-            if not names and norms[i + 1:i + 2] in (("itself",), ("themselve",)):
-                # "the roundels themselves" after "the five roundels": the last word of an alias just said
-                names = {p.landmark for p in places if p.end_tok <= i - 1 and norms[p.end_tok - 1] == norms[i]}
+            selfsame = norms[i + 1:i + 2] in (("itself",), ("themselve",))
+            if not names and (selfsame or norms[i - 1] in ("that", "this") and i not in taken and norms[i].isalpha()
+                              and norms[i] not in lx.FUNCTION_WORDS):
+                # the places said before whose last word this is: "the roundels themselves" after "the five roundels"
+                # (any of them); "the compound at the back of the toilets. And that compound's smoking" (the one)
+                ended_so = {p.landmark for p in places if p.end_tok <= i - 1 and norms[p.end_tok - 1] == norms[i]}
+                if selfsame or len(ended_so) == 1:
+                    names = ended_so
             if not names or i in taken or (i - 1) in taken or norms[i - 1] not in ("the", "that", "this"):
                 continue
             end = i + 1
@@ -5173,10 +5167,7 @@ class ReportAnalyzer:
                     return
             if bare in lx.AMBIGUOUS_HEADLESS or (words and not self._is_cue_end(norms, head_end) and not participle
                                                        and not set(words) <= lx.HEADLESS_OK
-                                                       and words[-1] not in lx.LAY_PERSONS | {"folk", "folks"}) \
-                    or words and words[-1] in ("fell", "fallen", "jumped", "slipped", "fall") and norms[a] == "off" and any(
-                        w in lx.LAY_PERSONS or w in lx.PERSON_NOUNS for w in words[:-1]):
-                # ("A kid fell off the end of the jetty": where he fell from, no place that stands off its end)
+                                                       and words[-1] not in lx.LAY_PERSONS | {"folk", "folks"}):
                 # ("there's folk over the road from the brewery coughing": people placed by the relation; "a runner
                 # down right under the finish arch": where he lies)
                 return
@@ -8775,7 +8766,7 @@ class ReportAnalyzer:
             if target is None:
                 continue
             instead = "instead" in norms[target.end_tok:target.end_tok + 4]
-            if norms[target.end_tok:target.end_tok + 1] in (("shortly",), ("soon",), ("later",)):
+            if _still_to_come(norms, target.end_tok):
                 continue  # "Moving them to the first aid post shortly": not there yet
             person = obj in ("her", "him", "them") and self._person_category is not None
             if not (instead or w in lx.RELOCATE_EXPLICIT):
@@ -9633,9 +9624,7 @@ class ReportAnalyzer:
                     j += 1
             if j not in starts:
                 continue
-            end = next((p.end_tok for p in ex.places if p.start_tok == j), j + 1)
-            if norms[end:end + 1] in (("shortly",), ("soon",), ("later",)) or norms[end:end + 3] in (
-                    ("in", "a", "minute"), ("in", "a", "bit"), ("in", "a", "moment"), ("in", "a", "sec")):
+            if _still_to_come(norms, next((p.end_tok for p in ex.places if p.start_tok == j), j + 1)):
                 continue  # "Moving them to the first aid post shortly": where they will go, not where they are
             if any(c.start_tok < i < c.end_tok or i < c.start_tok < k for c in cues if c.source != "glossary"):
                 continue  # a cue of its own inside ("moved the injured to ...") speaks for itself
@@ -12749,6 +12738,15 @@ def _walked_out_to(norms: tuple[str, ...], hit: tuple[int, str]) -> bool:
     return hit[1] == "walked out" and norms[hit[0]:hit[0] + 1] in (("there",), ("to",), ("towards",))
 # Words that say someone is lost ("missing in the dorms", "the separated child"): a lost one's people and finding
 _LOST_WORDS = frozenset({"lost", "missing", "separated"})
+# Of two critical categories, the one for the lost: its description says lost or missing and no hurt; what a phrase
+# says of someone lost ("can't find my nan", "overdue") or hurt ("fainted", "chest pains") picks between them
+_LOST_CATEGORY_WORDS = frozenset(norm_phrase("lost missing"))
+_HURT_CATEGORY_WORDS = frozenset(norm_phrase("hurt injured ill injury trapped"))
+_SAID_LOST_WORDS = _LOST_CATEGORY_WORDS | frozenset(norm_phrase(
+    "unaccounted overdue separated seen wandered wandering find found contact whereabouts"))
+_SAID_HURT_WORDS = frozenset(norm_phrase(
+    "fainted faint collapsed collapse hurt injured injury bleeding blood burn burned burnt unconscious broken fell fall "
+    "stung bitten breathing cut down trapped pinned stroke attack chest pains casualty casualties hypothermic"))
 # Words with "lost" that are no one missing ("lost a finger", "lost consciousness", "lost his footing")
 _LOST_NOT_MISSING = frozenset({"finger", "fingers", "consciousness", "blood", "footing", "grip", "balance", "brakes",
                                "power", "control"})
@@ -12767,6 +12765,13 @@ def _derived_word(word: str, known: frozenset[str], endings: tuple[str, ...] = _
     """An English word the vocabulary holds only by its stem and a common ending: "heater" ("heat"), "planking",
     "beached"."""
     return any(word.endswith(e) and len(word) - len(e) >= 4 and word[:-len(e)] in known for e in endings)
+
+
+def _still_to_come(norms: tuple[str, ...], end: int) -> bool:
+    """Words right after a destination (ending at token ``end``) that put the move later: "moving them to the first aid
+    post shortly", "... in a minute"."""
+    return norms[end:end + 1] in (("shortly",), ("soon",), ("later",)) or norms[end:end + 3] in (
+        ("in", "a", "minute"), ("in", "a", "bit"), ("in", "a", "moment"), ("in", "a", "sec"))
 
 
 def _names_what_came(norms: tuple[str, ...], p: PlaceMention) -> bool:
