@@ -1,4 +1,4 @@
-"""The hand-written dev grounding sets (dev2 to dev138) are well-formed and their labels exist in the right KB."""
+"""The hand-written dev grounding sets (dev2 to dev144) are well-formed and their labels exist in the right KB."""
 
 from __future__ import annotations
 
@@ -358,6 +358,30 @@ CEMETERY_CREMATORIUM_GROUNDS = ROOT / "knowledge_bases" / "cemetery_crematorium_
 PEARL_FARM_LAGOON = ROOT / "knowledge_bases" / "pearl_farm_lagoon"
 MARKET_GARDEN_SMALLHOLDING = ROOT / "knowledge_bases" / "market_garden_smallholding"
 MOTORWAY_BRIDGE_ROADWORKS = ROOT / "knowledge_bases" / "motorway_bridge_roadworks"
+FERRIS_WHEEL_EMBANKMENT = ROOT / "knowledge_bases" / "ferris_wheel_embankment"
+PEA_VINING_STATION = ROOT / "knowledge_bases" / "pea_vining_station"
+ALPINE_DAIRY_PASTURE = ROOT / "knowledge_bases" / "alpine_dairy_pasture"
+DRY_SKI_SLOPE_CENTRE = ROOT / "knowledge_bases" / "dry_ski_slope_centre"
+VILLAGE_FETE_GREEN = ROOT / "knowledge_bases" / "village_fete_green"
+PUMPED_STORAGE_CAVERN = ROOT / "knowledge_bases" / "pumped_storage_cavern"
+FERRY_BRIDGE_TOLL_PLAZA = ROOT / "knowledge_bases" / "ferry_bridge_toll_plaza"
+NATIONAL_ARCHIVES_REPOSITORY = ROOT / "knowledge_bases" / "national_archives_repository"
+OSTRICH_FARM_VISITOR_PARK = ROOT / "knowledge_bases" / "ostrich_farm_visitor_park"
+FLOATING_DRY_DOCK_YARD = ROOT / "knowledge_bases" / "floating_dry_dock_yard"
+RESEARCH_REACTOR_CAMPUS = ROOT / "knowledge_bases" / "research_reactor_campus"
+MAIZE_MAZE_FARM_SHOP = ROOT / "knowledge_bases" / "maize_maze_farm_shop"
+DRIVE_IN_CINEMA_LOT = ROOT / "knowledge_bases" / "drive_in_cinema_lot"
+ESTUARY_COCKLE_BEDS = ROOT / "knowledge_bases" / "estuary_cockle_beds"
+TENNIS_CHAMPIONSHIP_GROUNDS = ROOT / "knowledge_bases" / "tennis_championship_grounds"
+KASBAH_MOUNTAIN_VILLAGE = ROOT / "knowledge_bases" / "kasbah_mountain_village"
+LIGHTHOUSE_KEEPERS_ISLAND = ROOT / "knowledge_bases" / "lighthouse_keepers_island"
+BRASS_BAND_CONTEST_HALL = ROOT / "knowledge_bases" / "brass_band_contest_hall"
+CANAL_LIFT_BRIDGE_VILLAGE = ROOT / "knowledge_bases" / "canal_lift_bridge_village"
+HILL_FORT_ARCHAEOLOGY_CAMP = ROOT / "knowledge_bases" / "hill_fort_archaeology_camp"
+SEASIDE_CRAZY_GOLF_FRONT = ROOT / "knowledge_bases" / "seaside_crazy_golf_front"
+SUGAR_BEET_FACTORY_CAMPAIGN = ROOT / "knowledge_bases" / "sugar_beet_factory_campaign"
+MOUNTAIN_BIKE_RACE_VILLAGE = ROOT / "knowledge_bases" / "mountain_bike_race_village"
+CITY_LIBRARY_AND_ARCHIVE = ROOT / "knowledge_bases" / "city_library_and_archive"
 ONSEN_HOT_SPRING_TOWN = ROOT / "knowledge_bases" / "onsen_hot_spring_town"
 SAND_DUNE_BUGGY_PARK = ROOT / "knowledge_bases" / "sand_dune_buggy_park"
 CATTLE_FEEDLOT = ROOT / "knowledge_bases" / "cattle_feedlot"
@@ -889,6 +913,30 @@ SETS = {
     "dev138/pearl_farm_lagoon": _set("dev138/pearl_farm_lagoon.jsonl", PEARL_FARM_LAGOON, "pf138", TWENTY, sep=""),
     "dev138/market_garden_smallholding": _set("dev138/market_garden_smallholding.jsonl", MARKET_GARDEN_SMALLHOLDING, "mg138", TWENTY, sep=""),
     "dev138/motorway_bridge_roadworks": _set("dev138/motorway_bridge_roadworks.jsonl", MOTORWAY_BRIDGE_ROADWORKS, "mb138", TWENTY, sep=""),
+    "dev139/ferris_wheel_embankment": _set("dev139/ferris_wheel_embankment.jsonl", FERRIS_WHEEL_EMBANKMENT, "fw139", TWENTY, sep=""),
+    "dev139/pea_vining_station": _set("dev139/pea_vining_station.jsonl", PEA_VINING_STATION, "pv139", TWENTY, sep=""),
+    "dev139/alpine_dairy_pasture": _set("dev139/alpine_dairy_pasture.jsonl", ALPINE_DAIRY_PASTURE, "ad139", TWENTY, sep=""),
+    "dev139/dry_ski_slope_centre": _set("dev139/dry_ski_slope_centre.jsonl", DRY_SKI_SLOPE_CENTRE, "ds139", TWENTY, sep=""),
+    "dev140/village_fete_green": _set("dev140/village_fete_green.jsonl", VILLAGE_FETE_GREEN, "vf140", TWENTY, sep=""),
+    "dev140/pumped_storage_cavern": _set("dev140/pumped_storage_cavern.jsonl", PUMPED_STORAGE_CAVERN, "ps140", TWENTY, sep=""),
+    "dev140/ferry_bridge_toll_plaza": _set("dev140/ferry_bridge_toll_plaza.jsonl", FERRY_BRIDGE_TOLL_PLAZA, "ft140", TWENTY, sep=""),
+    "dev140/national_archives_repository": _set("dev140/national_archives_repository.jsonl", NATIONAL_ARCHIVES_REPOSITORY, "na140", TWENTY, sep=""),
+    "dev141/ostrich_farm_visitor_park": _set("dev141/ostrich_farm_visitor_park.jsonl", OSTRICH_FARM_VISITOR_PARK, "of141", TWENTY, sep=""),
+    "dev141/floating_dry_dock_yard": _set("dev141/floating_dry_dock_yard.jsonl", FLOATING_DRY_DOCK_YARD, "fd141", TWENTY, sep=""),
+    "dev141/research_reactor_campus": _set("dev141/research_reactor_campus.jsonl", RESEARCH_REACTOR_CAMPUS, "rr141", TWENTY, sep=""),
+    "dev141/maize_maze_farm_shop": _set("dev141/maize_maze_farm_shop.jsonl", MAIZE_MAZE_FARM_SHOP, "mm141", TWENTY, sep=""),
+    "dev142/drive_in_cinema_lot": _set("dev142/drive_in_cinema_lot.jsonl", DRIVE_IN_CINEMA_LOT, "dc142", TWENTY, sep=""),
+    "dev142/estuary_cockle_beds": _set("dev142/estuary_cockle_beds.jsonl", ESTUARY_COCKLE_BEDS, "ec142", TWENTY, sep=""),
+    "dev142/tennis_championship_grounds": _set("dev142/tennis_championship_grounds.jsonl", TENNIS_CHAMPIONSHIP_GROUNDS, "tc142", TWENTY, sep=""),
+    "dev142/kasbah_mountain_village": _set("dev142/kasbah_mountain_village.jsonl", KASBAH_MOUNTAIN_VILLAGE, "kv142", TWENTY, sep=""),
+    "dev143/lighthouse_keepers_island": _set("dev143/lighthouse_keepers_island.jsonl", LIGHTHOUSE_KEEPERS_ISLAND, "lk143", TWENTY, sep=""),
+    "dev143/brass_band_contest_hall": _set("dev143/brass_band_contest_hall.jsonl", BRASS_BAND_CONTEST_HALL, "bb143", TWENTY, sep=""),
+    "dev143/canal_lift_bridge_village": _set("dev143/canal_lift_bridge_village.jsonl", CANAL_LIFT_BRIDGE_VILLAGE, "cl143", TWENTY, sep=""),
+    "dev143/hill_fort_archaeology_camp": _set("dev143/hill_fort_archaeology_camp.jsonl", HILL_FORT_ARCHAEOLOGY_CAMP, "ha143", TWENTY, sep=""),
+    "dev144/seaside_crazy_golf_front": _set("dev144/seaside_crazy_golf_front.jsonl", SEASIDE_CRAZY_GOLF_FRONT, "sg144", TWENTY, sep=""),
+    "dev144/sugar_beet_factory_campaign": _set("dev144/sugar_beet_factory_campaign.jsonl", SUGAR_BEET_FACTORY_CAMPAIGN, "sb144", TWENTY, sep=""),
+    "dev144/mountain_bike_race_village": _set("dev144/mountain_bike_race_village.jsonl", MOUNTAIN_BIKE_RACE_VILLAGE, "mb144", TWENTY, sep=""),
+    "dev144/city_library_and_archive": _set("dev144/city_library_and_archive.jsonl", CITY_LIBRARY_AND_ARCHIVE, "cy144", TWENTY, sep=""),
 }
 
 
