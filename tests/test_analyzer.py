@@ -6205,3 +6205,79 @@ def test_dev127_phenomena(kb_analyzers, kb, text, expected):
 def test_dev133_phenomena(kb_analyzers, kb, text, expected):
     """Stop 54: what the tuned dev133-dev138 sets showed (paraphrased)."""
     assert claims(kb_analyzers[kb], text) == sorted(expected)
+
+
+@pytest.mark.parametrize("kb,text,expected", [
+    # a "below" word read forwards where another relation would read it backwards
+    ("dry_ski_slope_centre", "the sprinklers have soaked whatever's downstairs from the big hall", [("swimming pool", "danger")]),
+    # "just as bad", "no better": the same news of another place
+    ("dry_ski_slope_centre", "the cafe is smoke logged and the deck on top of it is just as bad",
+     [("cafe", "danger"), ("viewing terrace", "danger")]),
+    ("dry_ski_slope_centre", "the ski hire is full of smoke. The changing rooms are no better.",
+     [("ski hire", "danger"), ("changing rooms", "danger")]),
+    # riders left on a stopped lift
+    ("dry_ski_slope_centre", "the rope tow has stopped with kids still on it", [("rope tow", "rescue")]),
+    # oil on a place; a hurt back; a restarted preposition; "built on the end of"
+    ("pea_vining_station", "it's the settling pond that has the oil on it, not the heap", [("wash water lagoon", "spill")]),
+    ("pea_vining_station", "the driver in the top forty has done his back in", [("top forty", "rescue")]),
+    ("pea_vining_station", "diesel slick on the, um, on the long acre", [("long acre", "spill")]),
+    ("pea_vining_station", "ammonia leak in the shed built on the end of the wash line", [("blast chiller", "danger")]),
+    ("pea_vining_station", "a trailer on its side right across the droveway", [("bottom track", "danger")]),
+    # the water's worst there; the post sent for; "nobody at X's hurt"
+    ("national_archives_repository", "the store sharing an airlock with strongroom three, that's where the water's worst",
+     [("strongroom two", "off_limits")]),
+    ("village_fete_green", "First aid to the cake stall please, an old man's fallen and cut his head.", [("cake stall", "injury")]),
+    ("village_fete_green", "one hurt at the maypole, nobody at the coconut shy is hurt", [("maypole", "injury")]),
+    ("village_fete_green", "a boy went in the duck pond, he's soaked through and shivering", [("duck pond", "injury")]),
+    ("village_fete_green", "there's a gazebo tumbling round the dog ring", [("dog show ring", "danger")]),
+    # a person said before the description of whose thing they are; one of the sparks; a gash
+    ("floating_dry_dock_yard", "the driver of the crane straddling quay one has collapsed", [("goliath crane", "crew_casualty")]),
+    ("floating_dry_dock_yard", "one of the sparks has gashed his hand in the pipe bay", [("pipe shop", "crew_casualty")]),
+    ("floating_dry_dock_yard", "the slop tank is leakin oil into the bund", [("waste oil tank", "spillage")]),
+    # a bird is an animal; still out; got into; a telegraphic head; a mob out there
+    ("ostrich_farm_visitor_park", "the birds have got into the petting corral", [("petting corral", "birds_loose")]),
+    ("ostrich_farm_visitor_park", "a kid got kicked at the grower pens and the bird is still out",
+     [("grower pens", "needs_help"), ("grower pens", "birds_loose")]),
+    ("ostrich_farm_visitor_park", "Platform overlooking the breeding pens is cleared.", [("viewing deck", "cleared")]),
+    ("ostrich_farm_visitor_park", "there's a running mob out there on the back veld", [("back veld", "birds_loose")]),
+    # tide words; the speaker who sees it; a part said after a name; our dry spot; nobody from
+    ("estuary_cockle_beds", "the flood tide is over the causeway now", [("saltcote causeway", "flooding_tide")]),
+    ("estuary_cockle_beds", "the saltings are under a flood tide", [("saltings", "flooding_tide")]),
+    ("estuary_cockle_beds", "Lookout has a visual on a picker stuck in sucking mud on the grey flats",
+     [("greymoor flats", "cut_off"), ("greymoor flats", "soft_sand")]),
+    ("estuary_cockle_beds", "a lad stuck in the mud at the slipway, bottom of the slip",
+     [("saltcote slipway", "cut_off"), ("saltcote slipway", "soft_sand")]),
+    ("estuary_cockle_beds", "the farm is our dry spot today", [("holm farm", "dry_ground")]),
+    ("estuary_cockle_beds", "we're at the bailiff's hut, nobody from the gangs is missing", []),
+    ("estuary_cockle_beds", "we're at the car park, the kids want to walk out to the island", []),
+    # shade; our own people; a place halfway up; a collapsed steward; an order, no relation
+    ("tennis_championship_grounds", "Court 3 is shaded and checked", [("court three", "refuge")]),
+    ("tennis_championship_grounds", "From the media centre: one of our runners down with heat stroke",
+     [("media centre", "patient")]),
+    ("tennis_championship_grounds", "fainted spectator on the hill, halfway up by the nets", [("practice hill", "patient")]),
+    ("tennis_championship_grounds", "the first aid post has a collapsed steward", [("first aid post", "patient")]),
+    ("tennis_championship_grounds", "Open the lawn the clubhouse overlooks as a cooling station",
+     [("north hospitality lawn", "refuge")]),
+    ("tennis_championship_grounds", "the place next door to the pavilion is air-conditioned", [("museum", "refuge")]),
+    # windows lost; broke up; heading down to; a log's article-less head at the report's start
+    ("lighthouse_keepers_island", "the boathouse has lost windows", [("boathouse", "storm_damage")]),
+    ("lighthouse_keepers_island", "it's the jetty that's broke up, not the slipway", [("landing jetty", "storm_damage")]),
+    ("lighthouse_keepers_island", "heading down to the boathouse with the stretcher, the casualty's on the slipway",
+     [("slipway", "person_at_risk")]),
+    ("lighthouse_keepers_island", "pad downhill of the met station has been walked and checked", [("helipad", "safe_ground")]),
+    # out of bounds, both; filled right up
+    ("hill_fort_archaeology_camp", "the north spoil heap has slipped into trench one, both are out of bounds",
+     [("north spoil heap", "no_go"), ("trench one", "no_go")]),
+    ("hill_fort_archaeology_camp", "the test pit has filled right up", [("test pit", "no_go")]),
+    # a label's possessive
+    ("city_library_and_archive", "stair A's swept and clear", [("north stair", "safe_refuge")]),
+    # "right before" for ``straight after``; a rider lying; a dislocated shoulder; the station called on the radio
+    ("mountain_bike_race_village", "rider down at the section right before the rock garden", [("downhill start gate", "patient")]),
+    ("mountain_bike_race_village", "air ambulance inbound for the rider lying at the finish arch", [("finish line", "patient")]),
+    ("mountain_bike_race_village", "a rider on the boards has a dislocated shoulder", [("wall ride", "patient")]),
+    ("mountain_bike_race_village", "crown fire in the pines, someone get the fire tower on the radio",
+     [("pine plantation", "danger")]),
+])
+def test_dev139_phenomena(kb_analyzers, kb, text, expected):
+    """Stop 55: what the tuned dev139-dev144 sets showed (paraphrased)."""
+    assert claims(kb_analyzers[kb], text) == sorted(expected)

@@ -569,6 +569,9 @@ class ReportAnalyzer:
                 owned.setdefault(opposite, phrase)
         own_names = {norm_phrase(rel.phrase): rel.phrase for rel in self.kb.relations}
         kb_phrases = set(own_names.values())
+        # synonym groups a KB relation is said by ("underneath" is a "below" word): read forwards first
+        kb_groups = {canon for canon, syns in lx.RELATION_SYNONYMS.items() for rel in self.kb.relations
+                     if len(rel.phrase.split()) == 1 and rel.phrase in syns}
         for rel in self.kb.relations:
             name = set(norm_phrase(rel.phrase))
             for form, inverse in _relation_forms(rel.phrase):
@@ -578,7 +581,8 @@ class ReportAnalyzer:
                 held = forms.get(key)
                 if held is not None and owned.get(held[0], rel.phrase) != rel.phrase and not name <= set(key):
                     continue
-                if inverse and held is not None and not held[1] and held[0] in kb_phrases and held[0] != rel.phrase:
+                if inverse and held is not None and not held[1] and (held[0] in kb_phrases or held[0] in kb_groups) \
+                        and held[0] != rel.phrase:
                     continue  # "at the foot of": ``sits_at_the_foot_of`` says it, ``looks_out_over`` only reads it backwards
                 forms[key] = (rel.phrase, inverse)
         for rel in self.kb.relations:
@@ -1089,6 +1093,22 @@ class ReportAnalyzer:
                     and b + 1 < len(norms) and norms[b + 1] in ("we", "weve", "i", "ive", "this", "over", "control"):
                 # "fire station copy we have a pool fire in the sump": the station called, no place of the report
                 places.append(self._mention(toks, a, b, landmark, status="reference", reason="names who is called"))
+                continue
+            if norms[b:b + 3] in (("on", "the", "radio"), ("on", "the", "phone")) and a >= 2 \
+                    and "get" in norms[max(0, a - 3):a]:
+                # "somebody get the fire tower on the radio": the station called, no place of the report
+                places.append(self._mention(toks, a, b, landmark, status="reference", reason="names who is called"))
+                continue
+            if (a == 0 or toks.sentence_start[a]) and (norms[b:b + 3] in (("has", "a", "visual"), ("has", "eyes", "on"),
+                                                                       ("have", "a", "visual"), ("have", "eyes", "on"))):
+                # "Lookout has a visual on two figures ...": who sees it, from where, no claim of its own
+                places.append(self._mention(toks, a, b, landmark, status="reference", reason="names who sees it"))
+                continue
+            if (a == 0 or toks.sentence_start[a]) and norms[b:b + 2] == ("to", "the") and b + 2 < len(norms) \
+                    and (h := self._places.match_at(norms, b + 2)) is not None and h[1] != landmark \
+                    and "please" in norms[h[0]:h[0] + 3]:
+                # "First aid to the dog ring please, a lady's been bitten": the post sent for, not where it happened
+                places.append(self._mention(toks, a, b, landmark, status="reference", reason="names who is sent"))
                 continue
             if b - a == 1 and a > 0 and toks.tokens[a - 1].text.lower() in ("its", "their", "his", "her") \
                     and toks.tokens[a].text.lower().endswith("s") and not any(
@@ -4787,11 +4807,18 @@ class ReportAnalyzer:
                      flipped: bool, place_tokens: set[int], marker_tokens: set[int], inverse_pass: bool) -> None:
         if any(i in place_tokens for i in range(a, b)):
             return  # already inside a resolved description
+        if b - a == 1 and (a == 0 or toks.sentence_start[a]) and toks.tokens[a].text[:1].isupper() \
+                and norms[a] not in lx.NOT_VERBS and not norms[a].endswith(("s", "ed", "ing")):
+            return  # "Open the lawn that the slope ... looks down on as a cooling station": an order, no ``opens onto``
         unit = next((i for i in range(a, b) if norms[i] in lx.MEASURE_UNITS), None)
         if unit is not None and unit > 0 and (norms[unit - 1] in ("a", "an", "one") or is_number(norms[unit - 1])
                                               or norms[unit - 1] in lx.NUMBER_WORDS):
             return  # "the caravans are standing in a foot of it": how deep, not "the foot of" a place
         anchor, anchor_end, pronoun = self._anchor_after(ex, norms, b, phrase)
+        if anchor is not None and not pronoun and norms[a] in ("bottom", "top", "foot", "head") and any(
+                q.landmark == anchor.landmark and q is not anchor and q.status == "active" and 0 <= a - q.end_tok <= 1
+                for q in ex.places):
+            return  # "at the slipway, bottom of the slip": a part of the place just named, said after it
         if anchor is not None and not pronoun and anchor.status == "active" and anchor.via is None \
                 and set(norms[a:b]) & _COMPASS and not self._compass_relations:
             # "a landslip just east of the lift line": a bearing from a place the KB relates nothing to by compass;
@@ -4974,6 +5001,13 @@ class ReportAnalyzer:
         after_article = head_start > 0 and (norms[head_start - 1] in lx.ARTICLES or head_start > 1 and norms[head_start - 2]
                                             in lx.ARTICLES and norms[head_start - 1] in lx.DETERMINERS | lx.NAME_ADJECTIVES)
         # ("the old workings overlooking the holiday park": an adjective between)
+        if not after_article and words and len(words) <= 2 and (head_start == 0 or toks.sentence_start[head_start]
+                                                                  and toks.tokens[head_start].text[:1].isupper()) and not any(
+                    w in lx.LAY_PERSONS or w in lx.WORKER_PERSONS or w in lx.PERSON_NOUNS or w in _PEOPLE_WORDS
+                    or w in lx.ANIMAL_WORDS or w in lx.VEHICLE_WORDS or w in lx.FLOATING_THINGS for w in words) \
+                and any(words[-1] in ws for ws in self._description_words().values()):
+            # (a word the KB's places are described by)
+            after_article = True  # a log's "Platform overlooking the breeder pens is cleared": the article left off
         if not generic and words and len(words) <= 3 and after_article \
                 and (norms[a:b] not in lx.AMBIGUOUS_HEADLESS or (words[-1],) in self._shared_tails()
                      or words[-1] in _SEGMENT_HEADS  # ("cracked along the stretch by the pump house")
@@ -5284,6 +5318,11 @@ class ReportAnalyzer:
                         and (a == 0 or norms[a - 1] not in self._place_nouns()):
                     return  # "a pickup went through at the edge of the ice lot": a part of the place, in it, where no
                     # place before it is described
+                r = a - 1
+                while r >= 0 and (norms[r] in lx.FILLERS or norms[r] in lx.ARTICLES) and a - r <= 4:
+                    r -= 1
+                if b - a == 1 and r >= 0 and r < a - 1 and norms[r] == norms[a] and norms[a] in lx.PREPOSITIONS:
+                    return  # "fuel slick on the, erm, on the long acre": the preposition said again, no description
                 named_words = set(norm_phrase(phrase))
                 if b - a >= 3 and any(
                         (m := self._cues.match_at(norms, i)) is not None and m[1][0]
@@ -6964,8 +7003,10 @@ class ReportAnalyzer:
                 ex.places[idx] = replace(p, status="reference", reason="who is calling ('X reporting,'): no claim")
                 continue
             if self._from_label(toks, norms, p, ex.places) and not (
-                    norms[_noun_phrase_start(norms, p) - 1] == "at"
+                    (norms[_noun_phrase_start(norms, p) - 1] == "at"
+                     or {"our", "we", "were", "weve", "us"} & set(norms[p.end_tok:p.end_tok + 8]))
                     and not any(q.landmark != p.landmark and q.status != "retracted" for q in ex.places)):
+                # ("From the OB compound: two of our riggers down with heat stroke": its own people, its own news)
                 # ("Paramedic at the mission hut: two lads brought in": no other place told of, the news is its own)
                 ex.places[idx] = replace(p, status="reference", reason="who is calling ('From X:'): no claim")
                 continue
@@ -8170,6 +8211,11 @@ class ReportAnalyzer:
                 continue  # "that was Mrs Patel leaning on it": a person leaning, nothing giving way
             if norms[b - 1] == "fall" and norms[b:b + 1] == ("of",):
                 continue  # "the top bench has had a fall of ground": a fall of rock, no person's fall
+            if norms[a:b] == ("halfway", "up") and norms[b:b + 1] in (("by",), ("at",), ("near",), ("next",)):
+                continue  # "collapsed spectator on the hill, halfway up by the practice nets": where on it
+            if norms[a:b] == ("spark",) and norms[max(0, a - 3):a] == ("one", "of", "the") \
+                    and norms[b:b + 1] in (("has",), ("is",), ("s",), ("was",), ("got",)):
+                continue  # "one of the sparks has gashed his arm open": an electrician, no sparks
             if norms[a:b] in (("everyone", "out"), ("everybody", "out")) and norms[b:b + 2] == ("of", "the") \
                     and norms[b + 2:b + 3] and norms[b + 2] in lx.ESCAPED_THINGS:
                 continue  # "moved everyone out of the smoke into the school": out of the danger, no order about a place
@@ -8263,9 +8309,9 @@ class ReportAnalyzer:
                 # (the undesirable category's description may list "collapsed" too: "one of the riggers has collapsed")
                 cue = replace(cue, category=self._person_category, reason=f"a person {norms[a]}")
             elif (source == "lexicon" or source == "category" and self.kb.category_by_name[cat].role != Role.CRITICAL) \
-                    and norms[a:b] in (("burned",), ("burnt",)) and self._person_category and a > 0 \
+                    and norms[a:b] in (("burned",), ("burnt",), ("collapsed",)) and self._person_category and a > 0 \
                     and norms[a - 1] in ("a", "an", "one", "two", "three", "badly", "the") and b < len(norms) \
-                    and norms[b] in _PEOPLE_WORDS | lx.CREW_NOUNS:
+                    and (norms[b] in _PEOPLE_WORDS | lx.CREW_NOUNS or norms[a] == "collapsed" and norms[b] in lx.WORKER_PERSONS):
                 cue = replace(cue, category=self._person_category, reason=f"a {norms[a]} person")  # "a burned worker"
             if norms[a:b] == ("slumped",) and cue.category == self._person_category and not self._person_before(norms, a) \
                     and (self._thing_before(norms, a, self._place_tokens) or next(
@@ -8873,6 +8919,10 @@ class ReportAnalyzer:
         if k is not None and k >= 1 and (norms[k - 1] in lx.LAY_PERSONS or norms[k - 1] in lx.WORKER_PERSONS) \
                 and all(norms[m].isalpha() or "-" in norms[m] for m in range(k + 1, j + 1)):
             return True  # "Bloke in hi-vis collapsed": what the person wears, between
+        d = next((m for m in range(j - 1, max(-1, j - 8), -1) if norms[m:m + 2] == ("of", "the")), None)
+        if d is not None and d >= 1 and (norms[d - 1] in lx.LAY_PERSONS or norms[d - 1] in lx.WORKER_PERSONS) \
+                and not any(norms[m] in ("and", "but", "who", "which", "that", "where") for m in range(d + 2, j + 1)):
+            return True  # "the driver of the crane straddling quay one has collapsed": whose the person is, between
         if j < 0:
             return False
         if any(norms[m].endswith("ing") and norms[m - 1] in _DOERS for m in range(max(1, j - 3), j)) \
@@ -10254,6 +10304,7 @@ class ReportAnalyzer:
                 or k > cue.end_tok and toks.tokens[k - 1].text.lower().endswith(("'s", "’s"))  # "the cafe's out"
             if norms[k] == "out" and undesirable and (right_after or copula) \
                     and not (norms[k + 1:k + 2] == ("there",) and norms[cue.end_tok - 1].endswith("out")) \
+                    and not (norms[k + 1:k + 2] == ("there",) and not copula and not contracted) \
                     and not (norms[k + 1:k + 2] == ("there",) and norms[k + 2:k + 3] in (
                         ("is",), ("s",), ("are",), ("was",), ("has",), ("getting",), ("still",))) \
                     and (k + 1 >= len(norms) or toks.clause_start[k + 1] or norms[k + 1] in ("now", "completely", "over", "there")
@@ -10334,6 +10385,15 @@ class ReportAnalyzer:
                                   or norms[h[0]] == "and" and norms[h[0] + 1:h[0] + 2] in (
                                       ("theyre",), ("they",), ("were",), ("we",), ("crews",), ("everyone",))):
                 cancelled_by = h[1]  # ("fire service confirm it's out and they're leaving": a new clause after it)
+        if negated_by is None and cue.start_tok >= 4 and self.kb.category_by_name[cue.category].role == Role.CRITICAL:
+            # "nobody at the tombola's hurt": "nobody", where, then what is not so
+            nb = next((m for m in range(cue.start_tok - 1, max(-1, cue.start_tok - 9), -1)
+                       if norms[m] in ("nobody", "noone") or norms[m:m + 2] == ("no", "one")), None)
+            if nb is not None and norms[nb + 1 + (norms[nb] == "no"):][:1] in (("at",), ("in",), ("on",), ("inside",), ("from",)) \
+                    and not any(toks.clause_start[m] for m in range(nb + 1, cue.start_tok)) \
+                    and (norms[cue.start_tok - 1] in ("is", "was", "s", "got", "been", "hurt")
+                         or toks.tokens[cue.start_tok - 1].text.lower().endswith(("'s", "’s"))):
+                negated_by = norms[nb]
         if negated_by is None:
             j = cue.start_tok - 1
             while j >= 0 and norms[j] in lx.DETERMINERS | lx.FILLERS:
@@ -11521,11 +11581,20 @@ class ReportAnalyzer:
                 and norms[e:e + 2] == ("the", "same") and toks.sentence_start[j] \
                 and (e + 2 >= len(norms) or toks.clause_start[e + 2]) \
                 and not any(c.place.landmark == p.landmark for c in pairs)
-            too = too or same
+            # "the deck's smoke logged, ... and the slope it looks out over is just as bad": the same danger again
+            e2 = p.end_tok + (norms[p.end_tok:p.end_tok + 1] in (("is",), ("s",), ("was",), ("are",), ("were",)))
+            m = e2 + (norms[e2:e2 + 1] in (("just",), ("about",), ("nearly",), ("almost",)))
+            as_bad = e2 > p.end_tok and (norms[m:m + 2] in (("as", "bad"), ("no", "better"))
+                                        or norms[m:m + 4] == ("every", "bit", "as", "bad")) \
+                and (m + 2 >= len(norms) or norms[m + 2] in (".", ",", "too") or toks.clause_start[m + 2]
+                     or norms[m:m + 4] == ("every", "bit", "as", "bad")) \
+                and (toks.clause_start[j] or norms[j - 1:j] == ("and",)) \
+                and not any(c.place.landmark == p.landmark for c in pairs)
+            too = too or same or as_bad
             if not (so_is or too):
                 continue
             n = toks.sentence_of[p.start_tok]
-            k = j - 3 if so_is else j if same else j - 1
+            k = j - 3 if so_is else j if same or as_bad else j - 1
             said_in = (n,) if so_is else (n, n - 1)  # ("too" reaches the sentence before)
             before = [c for c in pairs if c.place.end_tok <= k and c.place.landmark != p.landmark
                       and toks.sentence_of[c.place.start_tok] in said_in and c.cue.start_tok < k]
@@ -12829,6 +12898,9 @@ _PARTICLES = frozenset({"on", "onto", "off", "down", "up", "from", "to", "into",
 _SAME_PARTICLE = {"on": ("onto",), "onto": ("on",), "in": ("into",), "into": ("in",)}
 
 
+_GROUP_VERBS = {"neighbours": "next to", "neighbors": "next to", "neighbour": "next to", "neighbor": "next to"}
+
+
 def _relation_core(phrase: str) -> str:
     """The synonym group a relation name belongs to, read through its extra words: without its leading
     adverbs ("directly above" -> "above"), its final direction ("on the levee above" -> "above"), or the
@@ -12848,7 +12920,9 @@ def _relation_core(phrase: str) -> str:
     if len(words) > 3 and words[-3] == "the" and words[-2] in lx.PART_NOUNS and words[-1] == "of":
         words = words[:-3]  # "built onto the side of" is an "attached to" relation
     core = " ".join(words)
-    return "across from" if _ACROSS_THE.match(core) else core
+    # (a relation named by a verb of its group's words only: ``museum neighbours players' pavilion`` is "next to";
+    # "neighbours" said in a report stays people)
+    return "across from" if _ACROSS_THE.match(core) else _GROUP_VERBS.get(core, core)
 
 
 def _nobody_said(norms: tuple[str, ...], start: int, end: int) -> bool:
@@ -13073,8 +13147,10 @@ def _relation_forms(phrase: str) -> list[tuple[str, bool]]:
         out.append((" ".join(swapped), True))
     # (an adverb inside said another way: "whatever comes right before the wax tunnel" for ``comes straight after``)
     for ws, inverse in ((words, False), (swapped, True)) if swapped != words else ((words, False),):
-        for i, w in enumerate(ws[1:-1], start=1):
-            if w in ("straight", "right", "just", "directly"):
+        if len(ws) == 2 and ws[0] in ("straight", "right", "just", "directly"):
+            out.append((ws[1], inverse))  # ("the feature before the final jump": the adverb left unsaid)
+        for i, w in enumerate(ws[:-1]):  # ("straight after" said "the section right before ...", read backwards)
+            if w in ("straight", "right", "just", "directly") and (i > 0 or len(ws) == 2):
                 out.extend((" ".join([*ws[:i], other, *ws[i + 1:]]), inverse)
                            for other in ("straight", "right", "just", "directly") if other != w)
     if words[0] in ("sits", "stands", "lies") and len(words) >= 4 and words[-1] in ("with", "to", "of"):

@@ -99,8 +99,8 @@ jammed shut|jammed|locked|padlocked|chained|chained shut|can't get in|cannot get
 can't get through|cannot get through|can't get round|cannot get round|can't get past|cannot get past|can't get along|cannot get along|can't get at|can't be got at|
 no access|no vehicle access|no way in|no way through|no way onto|no way out|inaccessible|not passable|
 no through route|piled across|right across it|lying across|come down across|came down across|
-blocking|blocks the|blocked off|cordoned off|shed its load|gridlocked|choked with|full of parked cars|
-can't reach|cannot reach|unable to reach|unable to get in|can't access|cannot access|washed away|
+blocking|blocks the|blocked off|cordoned off|out of bounds|out-of-bounds|shed its load|gridlocked|choked with|full of parked cars|
+filled right up|can't reach|cannot reach|unable to reach|unable to get in|can't access|cannot access|washed away|
 foot of water|feet of water|under a foot of water|ankle deep|water coming up|water coming in|water's coming in|coming in under the door|coming in under the doors|
 petrol all over|fuel all over|diesel all over|oil all over|petrol everywhere|diesel everywhere|fuel everywhere|
 petrol leak|diesel leak|fuel spill|petrol spill|diesel spill|exploding|explode|could explode|
@@ -160,7 +160,7 @@ sending people there|moving evacuees there|send them there|
 undamaged|casualty clearing point|casualty clearing post|casualty clearing centre|clearing point|
 treatment area|treatment centre|treatment center|treatment point|treatment tent|stand-down area|stand down area|
 stand-down point|designated holding area|
-rest point|rest area|letting people in|free tea|free food|bedding down|bedded down|been taken in at|been taken in by|taken in at|feeding station|feeding centre|rendezvous|rendezvous with|
+rest point|rest area|is shaded|shaded and checked|got shade and water|has shade and water|our dry spot|a dry spot|the dry spot|letting people in|free tea|free food|bedding down|bedded down|been taken in at|been taken in by|taken in at|feeding station|feeding centre|rendezvous|rendezvous with|
 can stay put|can stay where they are|stay put in there|no risk there|is no risk|s no risk|wait it out|wait it out in|sit it out in|safe to stay|
 """.replace("\n", ""))
 
@@ -262,7 +262,7 @@ casualty|casualties|victim|victims|survivor|survivors|patient|patients|
 needs help|need help|needs rescue|need rescue|needs rescuing|need rescuing|calling for help|crying for help|
 cries for help|screaming|shouting for help|banging|knocking|someone inside|people inside|person inside|
 kids inside|children inside|family inside|elderly inside|residents inside|
-missing person|missing persons|missing|soaked and shaking|soaking wet and shaking|wet and shaking|shaking badly|shivering badly|can't stop shivering|been bitten|a snake bit|the snake bit|snake bit|snake bite|snakebite|bit one of|needs antivenom|antivenom|stab wound|stab wounds|knife wound|nasty bite|a bad bite|a bite on his|a bite on her|bite on the hand|got bitten|was bitten|got bit by|was bit by|been bit by|bitten by|bitten on the|man down|person down|woman down|needs the doctor|need the doctor|needs the medic|needs a medic|workers down|worker down|men down|pickers down|people down|men down|both burnt|both burned|men burned|men burnt|man burned|man burnt|people burned|people burnt|women burned|woman burned|lads burned|crew burned|crew burnt|cut up bad|cut up badly|badly cut up|
+missing person|missing persons|missing|soaked and shaking|dislocated shoulder|dislocated his shoulder|dislocated her shoulder|dislocated his knee|dislocated her knee|rider lying|riders lying|lying injured|gashed his arm|gashed her arm|gashed his leg|gashed her leg|gashed his hand|gashed her hand|gashed his head|gashed her head|soaked through and shivering|soaked and shivering|wet and shivering|shivering|needs a blanket|needs checking over|needs a check over|soaking wet and shaking|wet and shaking|shaking badly|shivering badly|can't stop shivering|been bitten|a snake bit|the snake bit|snake bit|snake bite|snakebite|bit one of|needs antivenom|antivenom|stab wound|stab wounds|knife wound|nasty bite|a bad bite|a bite on his|a bite on her|bite on the hand|got bitten|was bitten|got bit by|was bit by|been bit by|bitten by|bitten on the|man down|person down|woman down|needs the doctor|need the doctor|needs the medic|needs a medic|workers down|worker down|men down|pickers down|people down|men down|both burnt|both burned|men burned|men burnt|man burned|man burnt|people burned|people burnt|women burned|woman burned|lads burned|crew burned|crew burnt|cut up bad|cut up badly|badly cut up|
 medical emergency|medical help|needs a medic|needs medic|needs an ambulance|needs evacuation|
 can't get out|cannot get out|can't move|cannot move|burns victim|overcome by smoke|
 stranded|cut off|trapped people|trapped persons|people trapped|someone trapped|somebody trapped|
@@ -280,7 +280,7 @@ stuck on the roof|stranded on the roof|on the roof waiting|waving from|trapped u
 can't get up|cannot get up|can't get out|can't free|cannot free|waving for help|yelling for help|for help|
 can't climb out|cannot climb out|can't climb back up|cannot climb back up|can't climb back out|can't get back out|
 can't get back up|
-still on board|riders still on board|stuck at the top|stranded at the top|leg is broken|arm is broken|broken leg|broken arm|broken hip|busted leg|busted arm|busted ankle|busted wrist|broke his leg|broke her leg|broke his arm|
+still on board|riders still on board|done his back in|done her back in|done his back|done her back|hurt his back|hurt her back|put his back out|put her back out|riders still on it|people still on it|kids still on it|children still on it|passengers still on it|skiers still on it|stuck at the top|stranded at the top|leg is broken|arm is broken|broken leg|broken arm|broken hip|busted leg|busted arm|busted ankle|busted wrist|broke his leg|broke her leg|broke his arm|
 stung all over|been stung|badly stung|stung by bees|stung by a bee|broke her arm|broke his hip|broke her hip|broken ankle|broke his ankle|broke her ankle|burnt arm|burnt hand|burned arm|burned hand|burnt leg|burnt face|burned face|with burns|burns to his|
 burns to her|burnt his|burnt her|burned his|burned her|cracked his head|cracked her head|cracked their head|cracked his skull|cracked her skull|banged his head|
 banged her head|hit his head|hit her head|split his head|split her head|cut his hand|cut her hand|cut his head|
@@ -646,7 +646,8 @@ RELATION_SYNONYMS: dict[str, list[str]] = {
                     "built up against", "fixed onto", "part of the same building as", "joined up with",
                     "sharing a party wall with", "shares a party wall with", "that shares a party wall with",
                     "party wall with", "built hard against", "built against", "backing on to", "built on the side of",
-                    "built onto the side of", "built on to the side of", "stuck on the side of"],
+                    "built onto the side of", "built on to the side of", "stuck on the side of", "built on the end of",
+                    "built onto the end of", "built on to the end of", "stuck on the end of", "tacked on the end of"],
     "next to": ["next to", "next door to", "next door", "beside", "next building over from", "next one over from",
                 "next along from", "next one along from", "the next building over from", "next door along from", "besides", "alongside", "adjacent to", "right by",
                 "right next to", "just next to", "by", "neighbouring", "neighboring", "next door from",
@@ -911,7 +912,7 @@ TRANSIT = [*(f"{v} {who} {way}to" for v in ("walk", "take", "bring", "carry", "h
            "people in off", "taking people in off", "in off the", "walked up from", "walked down from", "walked over from", "walked from", "drove from", "drove up from",
            "driven from", "ran from", "run from", "cycled from", "anyone coming off", "anyone walked off", "anybody walked off", "everyone walked off", "people walked off", "anyone walking off", "people walking off", "anybody coming off", "everyone coming off", "people coming off", "families coming off",
            "visitors coming off", "crowds coming off", "folk coming off", "riders coming off", "families coming out of", "anyone coming out of", "anybody coming out of", "everyone coming out of", "people coming out of", "evacuated from", "moved out of", "moved from", "relocated from", "decanted from", "brought out of",
-           "heading to", "heading for", "heading towards", "heading toward", "headed to", "headed for", "head to",
+           "heading to", "redirect them through", "redirect crews through", "send them through", "heading for", "heading towards", "heading toward", "headed to", "headed for", "head to",
            "heading out to", "headed out to",
            "launching down", "launching from", "launching off", "launched from", "launched off",
            "come aboard via", "come in via", "come via", "coming via", "coming in via", "coming aboard via",
@@ -924,7 +925,7 @@ TRANSIT = [*(f"{v} {who} {way}to" for v in ("walk", "take", "bring", "carry", "h
            "blowing it towards", "blowing it down towards", "carried towards", "follow the", "following the", "followed the",
            "passing", "passed", "moving past", "going past", "driving past", "walking past", "past",
            "on our way to", "on the way to", "our way to", "on my way to", "my way to", "on his way to", "on her way to", "on their way to", "on its way to", "en route to", "enroute to", "going to", "driving to",
-           "walking to", "moving to", "moving towards", "proceeding to", "approaching", "leaving",
+           "walking to", "walk out to", "walk over to", "walk across to", "walking back to", "walking back towards", "walking back up to", "moving to", "moving towards", "proceeding to", "approaching", "leaving",
            "just left", "came from", "come from", "just came from", "coming back from", "returning to",
            "came down from", "come down from", "coming down from", "came up from", "come up from", "coming up from",
            "watching from", "watching it from", "looking on from", "see it from", "seen from", "spotted from", "spotted it from", "spotted them from", "spotted him from", "spotted her from", "sighted from", "seen it from",
@@ -1721,15 +1722,16 @@ WATER_SUPPLY_FULL = ["full to the brim", "full to the top", "tank is full", "tan
 DANGER_KIND_EXTRA: dict[str, list[str]] = {
     "explosion": ["from the bang", "by the bang", "in the bang", "cooking off", "rounds cooking off"],
     # (stop 37's words, kept out of the kinds' votes: a word added to DANGER_KINDS moves a whole kind in some KB)
-    "chemical": ["black with oil", "thick with oil", "oil pouring out", "crude pouring out", "crude everywhere",
+    "chemical": ["leakin oil", "leakin fuel", "leakin diesel", "the oil on it", "hydraulic oil", "hydraulic fluid", "leaking oil",
+                 "oil leak", "black with oil", "thick with oil", "oil pouring out", "crude pouring out", "crude everywhere",
                  "crude all over", "crude on the ground", "crude spilling"],
-    "breakage": ["broken down", "broke down", "has broken down", "has broke down", "s broken down", "s broke down",
+    "breakage": ["lost windows", "lost its windows", "lost their windows", "lost all its windows", "broken down", "broke down", "has broken down", "has broke down", "s broken down", "s broke down",
                  "has jammed", "s jammed", "seized up", "has seized",
                  "pipe is broken", "pipe's broken", "pipes are broken", "pipe has broken", "pipe is snapped",
                  "pipe's snapped", "is snapped", "s snapped", "lost its last two spans", "lost two spans", "lost a span",
                  "lost its spans", "lost two of its spans", "been ripped out", "ripped out", "hole right through it", "hole right through", "punched a hole in", "punched a hole through", "hole punched", "punched right through", "punched through"],  # "a hole punched right through the wall"
     # (the surge's damage to moorings: "the diesel jetty has broken loose", "pontoons torn off their piles")
-    "storm": ["roof is half off", "roof's half off", "roof half off", "roof is like half off", "roof's like half off",
+    "storm": ["tumbling round", "tumbling around", "tumbling across", "cartwheeling", "flying gazebo", "roof is half off", "roof's half off", "roof half off", "roof is like half off", "roof's like half off",
               "wedged across it", "wedged across the",
               "come clean off", "came clean off", "lightning strike", "took a lightning strike", "struck by lightning", "hit by lightning", "lightning struck",
               "lightning's struck", "lightning has struck", "lightning hit", "lightning's hit", "lightning has hit",
@@ -1756,11 +1758,12 @@ DANGER_KIND_EXTRA: dict[str, list[str]] = {
     "gas": ["smell like bleach", "smells like bleach", "smell of bleach", "smells of bleach", "stink of bleach",
             "the cloud's now", "the cloud is now", "cloud's got into", "cloud has got into", "cloud's drifting",
             "cloud is drifting", "cloud's moving", "cloud is moving", "gassing off", "gassing out", "is gassing", "s gassing", "rotten egg", "rotten eggs", "rotten-egg smell", "rotten egg smell", "eggy smell", "smell like eggs", "smells like eggs", "smell of eggs", "smells of eggs", "smell like rotten eggs", "stinks of eggs", "stinks of rotten eggs", "stink of eggs", "reeks of eggs", "reeks of rotten eggs", "smell of rotten eggs", "smells of rotten eggs", "like egg", "like eggs", "like rotten egg", "there's a hiss", "a loud hiss", "hissing out of", "h2s", "so2", "co2", "sulphur dioxide", "hydrogen sulphide", "carbon dioxide", "methane", "methane leak", "natural gas", "co detected", "co reading", "co readings", "co levels", "high co", "carbon monoxide", "carbon monoxide alarm", "co alarm"],
-    "collapse": ["it's all rotten", "it's rotten", "ice is rotten", "ice s rotten", "rotten right across", "the fallen roof of", "fallen roof of", "whole house just dropped", "house just dropped", "whole house dropped", "slab come off", "slab came off", "slab has come off", "slab's come off", "a big hole in", "big hole in the", "huge hole in the", "a hole in the ground", "hole in the crust",
+    "collapse": ["that's broke up", "thats broke up", "is broke up", "has broke up", "s broke up", "broken up", "has broken up", "it's all rotten", "it's rotten", "ice is rotten", "ice s rotten", "rotten right across", "the fallen roof of", "fallen roof of", "whole house just dropped", "house just dropped", "whole house dropped", "slab come off", "slab came off", "slab has come off", "slab's come off", "a big hole in", "big hole in the", "huge hole in the", "a hole in the ground", "hole in the crust",
                  "started to sag", "starting to sag", "begun to sag", "beginning to sag", "wall's come in", "wall has come in", "walls have come in", "wall's come down on", "roof's come in",
                  "roof has come in", "ceiling's come in", "ceiling has come in", "tipped over", "has tipped over", "have tipped over", "have slid", "has slid",
                  "flattened", "been flattened", "torn to bits", "torn to pieces", "ripped to bits", "ripped to pieces", "blown to bits", "giving way", "is giving way", "gives way", "piles are sheared", "piles have sheared", "pile is sheared", "pile's sheared", "torn open", "been torn open", "gone over into the water", "gone over into the lagoon", "gone over into the sea", "gone over into the river", "split down a seam", "split a seam", "split its seam", "split at the seam", "split along a seam", "has snapped", "have snapped", "cable snapped", "cables snapped", "hanging sideways", "floor went through", "floor went thru", "floor gone through", "developed a lean", "has a lean", "bricks coming off", "bricks are coming off", "wall has split", "walls have split", "has split from", "split right across", "split from top to bottom", "roof's coming in", "roof is coming in", "ceiling's coming in", "ceiling is coming in", "coming off in chunks", "coming away in chunks", "falling off in chunks", "in chunks", "breaking up", "is breaking up", "coming adrift", "come adrift", "broken adrift", "peeling off", "coming off in slabs", "coming away in slabs", "roof fall on", "roof fall in", "roof has dropped", "pole's snapped", "pole has snapped", "poles have snapped", "poles snapped", "canvas is down", "canvas's down", "canvas has come down", "canvas came down", "tent's down", "tent is down", "poles down", "poles are down", "roof's dropped", "roof dropped", "ceiling has dropped", "ceiling's dropped", "roof has split", "roof split", "is bending", "it's bending", "is fall down", "has fall down", "fallen down"],
-    "water": ["in spate", "in full spate", "jellyfish", "jellyfish bloom", "jellies everywhere", "stingers everywhere", "running bank to bank", "bank to bank", "going down by the bow", "going down by the stern", "down by the bow", "down by the stern",
+    "water": ["flood tide", "under a flood tide", "flood tide is over", "flood tide's over", "tide is over", "tide's over",
+              "tide is coming over", "tide's coming over", "water's worst", "water is worst", "water's at its worst", "water's deepest", "water is deepest", "in spate", "in full spate", "jellyfish", "jellyfish bloom", "jellies everywhere", "stingers everywhere", "running bank to bank", "bank to bank", "going down by the bow", "going down by the stern", "down by the bow", "down by the stern",
               "down by the head", "waves coming straight over", "waves coming right over", "roof is leaking", "roof's leaking",
               "roof leaking", "roof leaks", "taken the surge", "took the surge", "drums floating", "floating everywhere",
               "taken in loads of water", "taken in water", "taken in a lot of water", "taking in loads of water",
@@ -1817,7 +1820,7 @@ SHORT_DANGER_WORDS = frozenset({"gas", "oil", "mud", "ice", "ash", "fog"})
 GENERIC_DANGER_WORDS = frozenset({"danger", "dangerous", "dangerously", "unsafe", "hazard", "hazardous", "hazards",
                                   "threat", "risk", "risky", "getting"})
 # Animals, where a KB gives them a category of their own ("bullocks stuck in the cattle lines")
-ANIMAL_WORDS = _keyed({"sheep", "ewe", "ewes", "lamb", "lambs", "tup", "tups", "ram", "rams", "cow", "cows", "cattle", "bullock", "bullocks", "heifer", "heifers", "calf", "calves", "bull", "bulls", "steer", "steers", "beast", "beasts", "stock", "livestock", "horse", "horses", "pony", "ponies", "foal", "pig", "pigs", "sow", "sows", "goat", "goats", "dog", "dogs", "animal", "animals", "hens", "chickens", "elephant", "elephants", "lion", "lions", "tiger", "tigers", "cats", "camel",
+ANIMAL_WORDS = _keyed({"bird", "birds", "sheep", "ewe", "ewes", "lamb", "lambs", "tup", "tups", "ram", "rams", "cow", "cows", "cattle", "bullock", "bullocks", "heifer", "heifers", "calf", "calves", "bull", "bulls", "steer", "steers", "beast", "beasts", "stock", "livestock", "horse", "horses", "pony", "ponies", "foal", "pig", "pigs", "sow", "sows", "goat", "goats", "dog", "dogs", "animal", "animals", "hens", "chickens", "elephant", "elephants", "lion", "lions", "tiger", "tigers", "cats", "camel",
                           "camels", "donkey", "donkeys", "llama", "llamas", "alpaca", "alpacas", "mare", "mares",
                           "stallion", "stallions", "geese", "lioness", "lionesses", "zebra", "zebras", "giraffe",
                           "giraffes", "rhino", "rhinos", "hippo", "hippos", "baboon", "baboons", "monkey", "monkeys",
@@ -1834,7 +1837,7 @@ INJURY_WORDS = frozenset({"burns", "burn", "burned", "burnt", "cut", "cuts", "in
 ANIMAL_STATES = ("panicking", "frantic", "bolting", "bolted", "stampeding", "spooked", "screaming", "trumpeting",
                  "rearing", "going frantic", "going mental", "going berserk", "kicking off", "loose", "escaped",
                  "got out", "roaming", "wandering about", "wandering around", "running loose", "are through",
-                 "got through", "broken through", "broke through", "is through", "is out", "are out", "s out")
+                 "got through", "broken through", "broke through", "is through", "is out", "are out", "s out", "still out", "got into", "run into", "ran into")
 # What animals in trouble are said to be ("a bullock loose", "ewes swimming"), for a KB with a category for them
 ANIMAL_TROUBLE = ("loose", "on the loose", "got loose", "got out", "escaped", "swimming", "stranded", "trapped", "stuck",
                   "down", "cast", "in the water", "washed away", "drowning", "panicking", "bolting", "bolted", "stampeding",

@@ -50,7 +50,8 @@ def norm(word: str) -> str:
     w = word.lower().replace("’", "'").replace(" ", "")
     if not w.isascii():
         w = "".join(ch for ch in unicodedata.normalize("NFKD", w) if not unicodedata.combining(ch))
-    if w.endswith("'s") and (len(w) > 3 or w[:-2].isdigit()) and w[:-2] not in _KEEP_S:
+    if w.endswith("'s") and (len(w) > 3 or w[:-2].isdigit() or len(w) == 3 and word[:1].isupper()) \
+            and w[:-2] not in _KEEP_S:  # ("stair A's swept": the label's possessive)
         w = w[:-2]  # "op's" -> "op" (a short word's possessive, as in "Co-op's")
     w = w.replace("'", "")
     if len(w) > 3 and w.endswith("s") and not w.endswith("ss") and not w.endswith("us") and not w.endswith("is"):
