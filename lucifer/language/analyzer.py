@@ -1089,26 +1089,9 @@ class ReportAnalyzer:
                 # a reference, so that no later reading takes the words for the place: "the tipping hall marshal")
                 places.append(self._mention(toks, a, b, landmark, status="reference", reason="names who calls"))
                 continue
-            if (a == 0 or toks.sentence_start[a]) and b < len(norms) and norms[b] == "copy" \
-                    and b + 1 < len(norms) and norms[b + 1] in ("we", "weve", "i", "ive", "this", "over", "control"):
-                # "fire station copy we have a pool fire in the sump": the station called, no place of the report
-                places.append(self._mention(toks, a, b, landmark, status="reference", reason="names who is called"))
-                continue
-            if norms[b:b + 3] in (("on", "the", "radio"), ("on", "the", "phone")) and a >= 2 \
-                    and "get" in norms[max(0, a - 3):a]:
-                # "somebody get the fire tower on the radio": the station called, no place of the report
-                places.append(self._mention(toks, a, b, landmark, status="reference", reason="names who is called"))
-                continue
-            if (a == 0 or toks.sentence_start[a]) and (norms[b:b + 3] in (("has", "a", "visual"), ("has", "eyes", "on"),
-                                                                       ("have", "a", "visual"), ("have", "eyes", "on"))):
-                # "Lookout has a visual on two figures ...": who sees it, from where, no claim of its own
-                places.append(self._mention(toks, a, b, landmark, status="reference", reason="names who sees it"))
-                continue
-            if (a == 0 or toks.sentence_start[a]) and norms[b:b + 2] == ("to", "the") and b + 2 < len(norms) \
-                    and (h := self._places.match_at(norms, b + 2)) is not None and h[1] != landmark \
-                    and "please" in norms[h[0]:h[0] + 3]:
-                # "First aid to the dog ring please, a lady's been bitten": the post sent for, not where it happened
-                places.append(self._mention(toks, a, b, landmark, status="reference", reason="names who is sent"))
+            station = self._station_named(toks, norms, a, b, landmark)
+            if station is not None:
+                places.append(self._mention(toks, a, b, landmark, status="reference", reason=station))
                 continue
             if b - a == 1 and a > 0 and toks.tokens[a - 1].text.lower() in ("its", "their", "his", "her") \
                     and toks.tokens[a].text.lower().endswith("s") and not any(
@@ -1822,6 +1805,23 @@ class ReportAnalyzer:
         n = toks.sentence_of[p.start_tok]
         return any(q.end_tok <= k and q.landmark != p.landmark and toks.sentence_of[q.start_tok] == n
                    and q.status == "active" for q in places)
+
+    def _station_named(self, toks: Tokens, norms: tuple[str, ...], a: int, b: int, landmark: str) -> str | None:
+        """The name at ``a:b`` names a station the report speaks to or of, not a place of its news: why, or None."""
+        opens = a == 0 or toks.sentence_start[a]
+        if opens and norms[b:b + 1] == ("copy",) \
+                and b + 1 < len(norms) and norms[b + 1] in ("we", "weve", "i", "ive", "this", "over", "control"):
+            return "names who is called"  # "fire station copy we have a pool fire in the sump"
+        if norms[b:b + 3] in (("on", "the", "radio"), ("on", "the", "phone")) and a >= 2 and "get" in norms[max(0, a - 3):a]:
+            return "names who is called"  # "somebody get the fire tower on the radio"
+        if opens and norms[b:b + 3] in (("has", "a", "visual"), ("has", "eyes", "on"), ("have", "a", "visual"),
+                                        ("have", "eyes", "on")):
+            return "names who sees it"  # "Lookout has a visual on two figures ...": from where, no claim of its own
+        if opens and norms[b:b + 2] == ("to", "the") and b + 2 < len(norms) \
+                and (h := self._places.match_at(norms, b + 2)) is not None and h[1] != landmark \
+                and "please" in norms[h[0]:h[0] + 3]:
+            return "names who is sent"  # "First aid to the dog ring please, a lady's been bitten": not where it happened
+        return None
 
     @staticmethod
     def _people_there_with(norms: tuple[str, ...], p: PlaceMention) -> bool:
@@ -10387,8 +10387,7 @@ class ReportAnalyzer:
                 cancelled_by = h[1]  # ("fire service confirm it's out and they're leaving": a new clause after it)
         if negated_by is None and cue.start_tok >= 4 and self.kb.category_by_name[cue.category].role == Role.CRITICAL:
             # "nobody at the tombola's hurt": "nobody", where, then what is not so
-            nb = next((m for m in range(cue.start_tok - 1, max(-1, cue.start_tok - 9), -1)
-                       if norms[m] in ("nobody", "noone") or norms[m:m + 2] == ("no", "one")), None)
+            nb = _nobody_at(norms, cue.start_tok - 8, cue.start_tok)
             if nb is not None and norms[nb + 1 + (norms[nb] == "no"):][:1] in (("at",), ("in",), ("on",), ("inside",), ("from",)) \
                     and not any(toks.clause_start[m] for m in range(nb + 1, cue.start_tok)) \
                     and (norms[cue.start_tok - 1] in ("is", "was", "s", "got", "been", "hurt")
@@ -11584,10 +11583,9 @@ class ReportAnalyzer:
             # "the deck's smoke logged, ... and the slope it looks out over is just as bad": the same danger again
             e2 = p.end_tok + (norms[p.end_tok:p.end_tok + 1] in (("is",), ("s",), ("was",), ("are",), ("were",)))
             m = e2 + (norms[e2:e2 + 1] in (("just",), ("about",), ("nearly",), ("almost",)))
-            as_bad = e2 > p.end_tok and (norms[m:m + 2] in (("as", "bad"), ("no", "better"))
-                                        or norms[m:m + 4] == ("every", "bit", "as", "bad")) \
-                and (m + 2 >= len(norms) or norms[m + 2] in (".", ",", "too") or toks.clause_start[m + 2]
-                     or norms[m:m + 4] == ("every", "bit", "as", "bad")) \
+            every_bit = norms[m:m + 4] == ("every", "bit", "as", "bad")  # (said out, no end to wait for)
+            as_bad = e2 > p.end_tok and (every_bit or norms[m:m + 2] in (("as", "bad"), ("no", "better")) and (
+                m + 2 >= len(norms) or norms[m + 2] == "too" or toks.clause_start[m + 2])) \
                 and (toks.clause_start[j] or norms[j - 1:j] == ("and",)) \
                 and not any(c.place.landmark == p.landmark for c in pairs)
             too = too or same or as_bad
@@ -12898,6 +12896,8 @@ _PARTICLES = frozenset({"on", "onto", "off", "down", "up", "from", "to", "into",
 _SAME_PARTICLE = {"on": ("onto",), "onto": ("on",), "in": ("into",), "into": ("in",)}
 
 
+# Adverbs a relation name may carry that another says in its place ("comes straight after" / "right after")
+_ORDER_ADVERBS = ("straight", "right", "just", "directly")
 _GROUP_VERBS = {"neighbours": "next to", "neighbors": "next to", "neighbour": "next to", "neighbor": "next to"}
 
 
@@ -12931,7 +12931,17 @@ def _nobody_said(norms: tuple[str, ...], start: int, end: int) -> bool:
     >>> _nobody_said(("nobody", "has", "brought", "him"), -1, 2), _nobody_said(("no", "one", "out"), 0, 1)
     (True, True)
     """
-    return any(norms[j] in ("nobody", "noone") or norms[j:j + 2] == ("no", "one") for j in range(max(0, start), end))
+    return _nobody_at(norms, start, end) is not None
+
+
+def _nobody_at(norms: tuple[str, ...], start: int, end: int) -> int | None:
+    """Where the last "nobody" ("noone", "no one") between ``start`` and ``end`` begins (``start`` clipped at 0), if any.
+
+    >>> _nobody_at(("one", "hurt", "nobody", "at", "the", "tombola", "hurt"), 0, 6)
+    2
+    """
+    return next((j for j in range(end - 1, max(0, start) - 1, -1)
+                 if norms[j] in ("nobody", "noone") or norms[j:j + 2] == ("no", "one")), None)
 
 
 def _reduced_relative_opener(word: str) -> bool:
@@ -13147,12 +13157,11 @@ def _relation_forms(phrase: str) -> list[tuple[str, bool]]:
         out.append((" ".join(swapped), True))
     # (an adverb inside said another way: "whatever comes right before the wax tunnel" for ``comes straight after``)
     for ws, inverse in ((words, False), (swapped, True)) if swapped != words else ((words, False),):
-        if len(ws) == 2 and ws[0] in ("straight", "right", "just", "directly"):
+        if len(ws) == 2 and ws[0] in _ORDER_ADVERBS:
             out.append((ws[1], inverse))  # ("the feature before the final jump": the adverb left unsaid)
         for i, w in enumerate(ws[:-1]):  # ("straight after" said "the section right before ...", read backwards)
-            if w in ("straight", "right", "just", "directly") and (i > 0 or len(ws) == 2):
-                out.extend((" ".join([*ws[:i], other, *ws[i + 1:]]), inverse)
-                           for other in ("straight", "right", "just", "directly") if other != w)
+            if w in _ORDER_ADVERBS and (i > 0 or len(ws) == 2):
+                out.extend((" ".join([*ws[:i], other, *ws[i + 1:]]), inverse) for other in _ORDER_ADVERBS if other != w)
     if words[0] in ("sits", "stands", "lies") and len(words) >= 4 and words[-1] in ("with", "to", "of"):
         out.append((" ".join(words[1:]), False))  # "the cottage cheek by jowl with the tea room": the posture unsaid
     elif words[0] in ("runs", "stretches", "extends") and len(words) >= 4 and words[1] in ("along", "across", "around",
